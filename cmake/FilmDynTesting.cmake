@@ -1,0 +1,32 @@
+# filmdyn_add_qtest(<name> SOURCES <files...> LIBS <targets...> LABEL core|ui|app [GL] [TIMEOUT s])
+# Every test is a Qt Test executable. Non-GL tests run on the `offscreen` platform; GL tests need
+# a real X server (Qt 6.4 segfaults rendering a QOpenGLWidget offscreen), so they are wrapped in
+# xvfb-run automatically unless a DISPLAY is already set.
+find_program(XVFB_RUN_EXECUTABLE xvfb-run)
+function(filmdyn_add_qtest name)
+  cmake_parse_arguments(T "GL" "LABEL;TIMEOUT" "SOURCES;LIBS" ${ARGN})
+  if(NOT T_LABEL)
+    message(FATAL_ERROR "filmdyn_add_qtest(${name}): LABEL is required")
+  endif()
+  if(NOT T_TIMEOUT)
+    set(T_TIMEOUT 300)
+  endif()
+  add_executable(${name} ${T_SOURCES})
+  target_link_libraries(${name} PRIVATE ${T_LIBS} Qt6::Test)
+  target_compile_definitions(${name} PRIVATE
+    FILMDYN_SOURCE_DIR="${PROJECT_SOURCE_DIR}" FILMDYN_BINARY_DIR="${PROJECT_BINARY_DIR}")
+  set_target_properties(${name} PROPERTIES AUTOMOC ON)
+  filmdyn_warnings(${name})
+  set(labels ${T_LABEL})
+  if(T_GL)
+    list(APPEND labels gl)
+    add_test(NAME ${name} COMMAND ${CMAKE_COMMAND}
+      -DEXE=$<TARGET_FILE:${name}> -DXVFB_RUN=${XVFB_RUN_EXECUTABLE}
+      -P ${PROJECT_SOURCE_DIR}/cmake/RunWithDisplay.cmake)
+    set_tests_properties(${name} PROPERTIES ENVIRONMENT "QT_QPA_PLATFORM=xcb")
+  else()
+    add_test(NAME ${name} COMMAND ${name})
+    set_tests_properties(${name} PROPERTIES ENVIRONMENT "QT_QPA_PLATFORM=offscreen")
+  endif()
+  set_tests_properties(${name} PROPERTIES LABELS "${labels}" TIMEOUT ${T_TIMEOUT})
+endfunction()

@@ -1,0 +1,12 @@
+# Runs a GL test under the current X display, or under xvfb-run when there is none.
+if(DEFINED ENV{DISPLAY} AND NOT "$ENV{DISPLAY}" STREQUAL "")
+  execute_process(COMMAND "${EXE}" RESULT_VARIABLE rc)
+else()
+  if(NOT XVFB_RUN OR NOT EXISTS "${XVFB_RUN}")
+    message(FATAL_ERROR "GL test needs an X server: no DISPLAY and no xvfb-run (install xvfb)")
+  endif()
+  execute_process(COMMAND "${XVFB_RUN}" -a -s "-screen 0 1600x1000x24" "${EXE}" RESULT_VARIABLE rc)
+endif()
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "test exited with ${rc}")
+endif()

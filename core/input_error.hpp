@@ -1,0 +1,39 @@
+#pragma once
+/// @file Bad user input (STYLE.md "Errors"): an exception whose message names the field, the
+/// value and what is allowed. Bugs in our own code are assertions instead, never this.
+#include <stdexcept>
+#include <string>
+
+namespace filmdyn {
+
+/// Thrown for any invalid input from a case file, a CLI option, a CSV table or a GUI cell.
+/// what() reads: "<field> = <value>: <allowed>", e.g.
+/// "bearing.radial_clearance = -1e-05: must be a finite number > 0 [m]".
+class InputError : public std::runtime_error {
+ public:
+  InputError(std::string field, std::string value, std::string allowed);
+
+  const std::string& field() const { return field_; }
+  const std::string& value() const { return value_; }
+  const std::string& allowed() const { return allowed_; }
+
+ private:
+  std::string field_;
+  std::string value_;
+  std::string allowed_;
+};
+
+/// Formats a double for error messages with enough digits to be recognised ("nan", "inf" too).
+std::string FormatValue(double value);
+
+/// Throws InputError unless value is finite and > 0. unit is appended to the message, e.g. "m".
+void RequirePositive(const std::string& field, double value, const std::string& unit = "");
+/// Throws InputError unless value is finite and >= 0.
+void RequireNonNegative(const std::string& field, double value, const std::string& unit = "");
+/// Throws InputError unless value is finite.
+void RequireFinite(const std::string& field, double value, const std::string& unit = "");
+/// Throws InputError unless lo <= value <= hi (or lo < value < hi when the bounds are open).
+void RequireInRange(const std::string& field, double value, double lo, double hi,
+                    bool lo_open = false, bool hi_open = false, const std::string& unit = "");
+
+}  // namespace filmdyn

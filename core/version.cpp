@@ -1,0 +1,7 @@
+#include "core/version.hpp"
+
+namespace filmdyn {
+
+std::string_view Version() { return FILMDYN_VERSION; }
+
+}  // namespace filmdyn
