@@ -8,8 +8,8 @@
 namespace filmdyn::verification {
 
 struct ValidationRow {
-  std::string suite;      ///< e.g. "surface", "bearing", "multibody"
-  std::string name;       ///< what is compared, e.g. "Raimondi-Boyd L/D=1 eps=0.6 Sommerfeld"
+  std::string suite;  ///< e.g. "surface", "bearing", "multibody"
+  std::string name;   ///< what is compared, e.g. "Raimondi-Boyd L/D=1 eps=0.6 Sommerfeld"
   std::string reference_source;  ///< citation of the reference value, e.g. "Raimondi & Boyd 1958"
   double ours = 0.0;
   double reference = 0.0;

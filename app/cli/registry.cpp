@@ -1,0 +1,17 @@
+#include "app/cli/registry.hpp"
+
+#include "app/commands/commands.hpp"
+
+namespace filmdyn::cli {
+
+const std::vector<Command>& AllCommands() {
+  static const std::vector<Command> commands = [] {
+    std::vector<Command> list;
+    // One line per subcommand; only commands that work are listed.
+    list.push_back(MakeVersionsCommand());
+    return list;
+  }();
+  return commands;
+}
+
+}  // namespace filmdyn::cli

@@ -1,0 +1,10 @@
+#pragma once
+/// @file One factory per subcommand (one file each in app/commands/). Register new ones in
+/// app/cli/registry.cpp.
+#include "app/cli/command.hpp"
+
+namespace filmdyn::cli {
+
+Command MakeVersionsCommand();
+
+}  // namespace filmdyn::cli
