@@ -1,6 +1,7 @@
 #include "ui/vtk/scalar_field_view.hpp"
 
 #include <vtkActor.h>
+#include <vtkCamera.h>
 #include <vtkDataArray.h>
 #include <vtkDataSet.h>
 #include <vtkDataSetMapper.h>
@@ -57,6 +58,11 @@ void ScalarFieldView::showField(vtkDataSet* data, const QString& array_name, con
   actor_->VisibilityOn();
   scalar_bar_->VisibilityOn();
   if (!camera_set_) {
+    // An oblique view shows curved surfaces (skirt, bearing) as 3D rather than edge-on.
+    renderer()->ResetCamera();
+    renderer()->GetActiveCamera()->Elevation(25.0);
+    renderer()->GetActiveCamera()->Azimuth(30.0);
+    renderer()->ResetCameraClippingRange();
     renderer()->ResetCamera();
     camera_set_ = true;
   }

@@ -1,0 +1,13 @@
+#!/usr/bin/env bash
+# Configures and builds FilmDyn (Release) in build/ (or $FILMDYN_BUILD_DIR). Used by both set-up
+# commands; incremental when the build directory exists.
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build="${FILMDYN_BUILD_DIR:-$root/build}"
+jobs="${FILMDYN_JOBS:-$(nproc)}"
+generator=()
+command -v ninja >/dev/null 2>&1 && generator=(-G Ninja)
+if [ ! -f "$build/CMakeCache.txt" ]; then
+  cmake -S "$root" -B "$build" "${generator[@]}" -DCMAKE_BUILD_TYPE=Release
+fi
+cmake --build "$build" -j "$jobs"

@@ -1,0 +1,125 @@
+// The real `filmdyn` executable, run as a user would: help, version, dispatching, and clear
+// one-line errors with exit code 2 for bad input.
+#include <QProcess>
+#include <QtTest>
+
+#include "app/cli/command.hpp"
+#include "app/cli/dispatcher.hpp"
+#include "core/input_error.hpp"
+
+namespace {
+
+struct Result {
+  int exit_code = -1;
+  QString out;
+  QString err;
+};
+
+Result Run(const QStringList& arguments, const QProcessEnvironment& env =
+                                             QProcessEnvironment::systemEnvironment()) {
+  QProcess process;
+  process.setProcessEnvironment(env);
+  process.start(FILMDYN_EXECUTABLE, arguments);
+  if (!process.waitForFinished(60000)) {
+    process.kill();
+    return {};
+  }
+  return {process.exitCode(), QString::fromUtf8(process.readAllStandardOutput()),
+          QString::fromUtf8(process.readAllStandardError())};
+}
+
+}  // namespace
+
+class TestCli : public QObject {
+  Q_OBJECT
+ private slots:
+  void helpListsRegisteredCommands() {
+    const Result result = Run({"--help"});
+    QCOMPARE(result.exit_code, 0);
+    QVERIFY(result.out.contains("Usage:"));
+    QVERIFY(result.out.contains("versions"));
+  }
+
+  void versionPrintsProjectVersion() {
+    const Result result = Run({"--version"});
+    QCOMPARE(result.exit_code, 0);
+    QCOMPARE(result.out.trimmed(), QString("filmdyn ") + FILMDYN_VERSION);
+  }
+
+  void commandHelp() {
+    const Result result = Run({"versions", "--help"});
+    QCOMPARE(result.exit_code, 0);
+    QVERIFY(result.out.contains("Usage: filmdyn versions"));
+    QVERIFY(result.out.contains("--json"));
+  }
+
+  void versionsAsJson() {
+    const Result result = Run({"versions", "--json"});
+    QCOMPARE(result.exit_code, 0);
+    QJsonParseError error;
+    const QJsonDocument doc = QJsonDocument::fromJson(result.out.toUtf8(), &error);
+    QCOMPARE(error.error, QJsonParseError::NoError);
+    QCOMPARE(doc.object().value("FilmDyn").toString(), QString(FILMDYN_VERSION));
+    QVERIFY(doc.object().value("VTK").toString().startsWith("9.1"));
+  }
+
+  void unknownCommandIsAOneLineError() {
+    const Result result = Run({"frobnicate"});
+    QCOMPARE(result.exit_code, 2);
+    QVERIFY(result.err.contains("unknown command 'frobnicate'"));
+    QCOMPARE(result.err.trimmed().count('\n'), 0);
+  }
+
+  void unknownOptionNamesTheOptionAndTheAllowedOnes() {
+    const Result result = Run({"versions", "--jsn"});
+    QCOMPARE(result.exit_code, 2);
+    QVERIFY(result.err.contains("--jsn"));
+    QVERIFY(result.err.contains("allowed: --json"));
+  }
+
+  void guiWithoutDisplayExplainsInsteadOfCrashing() {
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    env.remove("DISPLAY");
+    env.remove("WAYLAND_DISPLAY");
+    env.remove("QT_QPA_PLATFORM");
+    const Result result = Run({}, env);
+    QCOMPARE(result.exit_code, 1);
+    QVERIFY(result.err.contains("no display"));
+    QVERIFY(result.err.contains("filmdyn run"));
+  }
+
+  // The parser itself, in process.
+  void parserAcceptsBothValueForms() {
+    const std::vector<filmdyn::cli::OptionSpec> specs = {
+        {"rpm", "N", "speed", false}, {"set", "K=V", "override", true}, {"json", "", "", false}};
+    const auto args = filmdyn::cli::Args::Parse(
+        "run", {"case.json", "--rpm=6000", "--set", "a.b=1", "--set", "c=2", "--json"}, specs, 1);
+    QCOMPARE(*args.Double("rpm"), 6000.0);
+    QCOMPARE(args.Values("set").size(), std::size_t(2));
+    QVERIFY(args.Has("json"));
+    QCOMPARE(args.positional().front(), std::string("case.json"));
+  }
+
+  void parserRejectsBadInputWithField() {
+    const std::vector<filmdyn::cli::OptionSpec> specs = {{"rpm", "N", "speed", false}};
+    auto expect_error = [&](const std::vector<std::string>& argv, const QString& needle) {
+      try {
+        const auto args = filmdyn::cli::Args::Parse("run", argv, specs, 0);
+        (void)args.Double("rpm");
+      } catch (const filmdyn::InputError& error) {
+        QVERIFY2(QString(error.what()).contains(needle), error.what());
+        return;
+      }
+      QFAIL("no InputError thrown");
+    };
+    expect_error({"--rpm"}, "needs a value");
+    expect_error({"--rpm", "fast"}, "--rpm = 'fast': must be a finite number");
+    expect_error({"--rpm", "nan"}, "must be a finite number");
+    expect_error({"--rpm", "1", "--rpm", "2"}, "only once");
+    expect_error({"extra"}, "takes no positional");
+    QCOMPARE(filmdyn::cli::ParseDoubleList("--rpm", "1000,2000").size(), std::size_t(2));
+  }
+};
+
+QTEST_GUILESS_MAIN(TestCli)
+#include "test_cli.moc"

@@ -1,0 +1,120 @@
+// The VTK-in-Qt-6 bridge really draws: a coloured scalar field with a scalar bar is rendered in a
+// real window (under xvfb-run) and the grabbed framebuffer is checked by pixel statistics.
+#include <vtkDoubleArray.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkScalarBarActor.h>
+#include <vtkSmartPointer.h>
+#include <vtkStructuredGrid.h>
+
+#include <QImage>
+#include <QSet>
+#include <QtTest>
+#include <cmath>
+
+#include "ui/vtk/scalar_field_view.hpp"
+
+namespace {
+
+// A half cylinder (like a skirt panel) with a pressure-like bump: values 0 .. 1.
+vtkSmartPointer<vtkStructuredGrid> MakeField(double peak_position) {
+  const int n_theta = 40, n_z = 20;
+  auto grid = vtkSmartPointer<vtkStructuredGrid>::New();
+  grid->SetDimensions(n_theta, n_z, 1);
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkDoubleArray> pressure;
+  pressure->SetName("pressure");
+  for (int k = 0; k < n_z; ++k) {
+    for (int i = 0; i < n_theta; ++i) {
+      const double theta = M_PI * i / (n_theta - 1);
+      const double z = 1.5 * k / (n_z - 1);
+      points->InsertNextPoint(std::cos(theta), std::sin(theta), z);
+      const double s = theta / M_PI - peak_position;
+      pressure->InsertNextValue(std::exp(-20.0 * s * s) * std::sin(M_PI * z / 1.5));
+    }
+  }
+  grid->SetPoints(points);
+  grid->GetPointData()->AddArray(pressure);
+  return grid;
+}
+
+struct PixelStats {
+  int distinct_colours = 0;
+  double non_background_fraction = 0.0;
+  int reddish = 0;
+  int bluish = 0;
+};
+
+PixelStats Analyse(const QImage& image, QRgb background) {
+  PixelStats stats;
+  QSet<QRgb> colours;
+  int non_background = 0;
+  for (int y = 0; y < image.height(); ++y) {
+    for (int x = 0; x < image.width(); ++x) {
+      const QRgb c = image.pixel(x, y) | 0xff000000u;
+      colours.insert(c);
+      const int dr = std::abs(qRed(c) - qRed(background));
+      const int dg = std::abs(qGreen(c) - qGreen(background));
+      const int db = std::abs(qBlue(c) - qBlue(background));
+      if (dr + dg + db > 30) ++non_background;
+      if (qRed(c) > 180 && qGreen(c) < 90 && qBlue(c) < 90) ++stats.reddish;
+      if (qBlue(c) > 180 && qRed(c) < 90 && qGreen(c) < 120) ++stats.bluish;
+    }
+  }
+  stats.distinct_colours = colours.size();
+  stats.non_background_fraction = double(non_background) / (image.width() * image.height());
+  return stats;
+}
+
+}  // namespace
+
+class TestScalarFieldView : public QObject {
+  Q_OBJECT
+ private slots:
+  void rendersColouredFieldWithScalarBar() {
+    filmdyn::ui::ScalarFieldView view;
+    view.resize(640, 480);
+    auto grid = MakeField(0.3);
+    view.showField(grid, "pressure", "p [MPa]");
+    view.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&view));
+    QTRY_VERIFY_WITH_TIMEOUT(view.renderedFrames() > 0, 10000);
+    QVERIFY(view.scalarBar()->GetVisibility());
+
+    const QImage image = view.grabFramebuffer();
+    QVERIFY(!image.isNull());
+    if (qEnvironmentVariableIsSet("FILMDYN_TEST_SAVE_IMAGES")) image.save("scalar_field_view.png");
+    QCOMPARE(image.width(), int(640 * view.devicePixelRatioF()));
+    // Background colour of the renderer (0.13, 0.14, 0.16).
+    const QRgb background = qRgb(33, 36, 41);
+    const PixelStats stats = Analyse(image, background);
+    qInfo("distinct colours %d, covered %.3f, red %d, blue %d", stats.distinct_colours,
+          stats.non_background_fraction, stats.reddish, stats.bluish);
+    // A blank or black frame has 1-2 colours; the shaded colour map plus bar has hundreds.
+    QVERIFY2(stats.distinct_colours > 100, "image has too few colours: blank render?");
+    QVERIFY2(stats.non_background_fraction > 0.10, "almost nothing drawn");
+    QVERIFY2(stats.non_background_fraction < 0.95, "the whole frame is one colour block");
+    // Both ends of the blue-to-red map must appear (field and scalar bar).
+    QVERIFY(stats.reddish > 200);
+    QVERIFY(stats.bluish > 200);
+  }
+
+  void updatingTheFieldChangesThePicture() {
+    filmdyn::ui::ScalarFieldView view;
+    view.resize(400, 300);
+    view.setScalarRange(0.0, 1.0);
+    view.showField(MakeField(0.15), "pressure", "p");
+    view.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&view));
+    QTRY_VERIFY_WITH_TIMEOUT(view.renderedFrames() > 0, 10000);
+    const QImage first = view.grabFramebuffer();
+    const int frames = view.renderedFrames();
+    view.showField(MakeField(0.85), "pressure", "p");
+    QTRY_VERIFY_WITH_TIMEOUT(view.renderedFrames() > frames, 10000);
+    const QImage second = view.grabFramebuffer();
+    QVERIFY(first != second);
+  }
+};
+
+QTEST_MAIN(TestScalarFieldView)
+#include "test_scalar_field_view.moc"
