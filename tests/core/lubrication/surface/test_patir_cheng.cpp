@@ -136,6 +136,29 @@ class TestPatirCheng : public QObject {
     QVERIFY(Near(pc::ShearStressFpTabulated(6, 2.0), 0.8817212018182671, 1e-9));
   }
 
+  // Every row of every table at H = 2, evaluated independently from the printed coefficients
+  // (1e-12 relative): a mistyped digit in any row fails here.
+  void everyTableRowAtH2() {
+    const double phi_x[] = {0.361068425324962, 0.40423947766787, 0.490581582353686,
+                            0.706348184839265, 1.07954951288349, 1.1838477631085,
+                            1.30759144981615};
+    const double phi_s[] = {1.05359856532401,  1.00256660425163,  0.922728066335598,
+                            0.726593335636421, 0.404081343794414, 0.308631728603733,
+                            0.238172379834565};
+    const double phi_fs[] = {1.15532927480545,  1.07537655494236,  0.920996282855439,
+                             0.732065780792156, 0.354149386867332, 0.298829106279711,
+                             0.208793294879452};
+    const double phi_fp[] = {0.466283430242242, 0.487210756276142, 0.53917531410257,
+                             0.62601057724781,  0.798144403759214, 0.842835021594136,
+                             0.881721201818267};
+    for (int i = 0; i < pc::kNumGammas; ++i) {
+      QVERIFY(Near(pc::PressureFlowTabulated(i, 2.0), phi_x[i], 1e-12));
+      QVERIFY(Near(pc::ShearFlowTabulated(i, 2.0), phi_s[i], 1e-12));
+      QVERIFY(Near(pc::ShearStressFsTabulated(i, 2.0), phi_fs[i], 1e-12));
+      QVERIFY(Near(pc::ShearStressFpTabulated(i, 2.0), phi_fp[i], 1e-12));
+    }
+  }
+
   // [PC79] closed form of Phi_f: both branches give 35/32 * 16/15 = 7/6 at H = 3; -> 1 + 1/H^2
   // for large H (series of the closed form); the large-H series joins the closed form at
   // H = 15 within 1e-10 (slope there ~6e-4, so the 2e-9 probe itself accounts for ~1e-12).
