@@ -73,7 +73,8 @@ class SurfaceModel {
  public:
   /// Validates (field prefix "surface"; call pair.Validate with your own prefix first for
   /// better messages) and precomputes the gamma interpolation brackets; the first model with
-  /// the exact Greenwood–Tripp integral builds the process-wide table (~1 ms, once).
+  /// the exact Greenwood–Tripp integral builds the process-wide tables (~2.6e6 exp, tens of ms,
+  /// once).
   explicit SurfaceModel(const SurfacePair& pair);
 
   /// Flow factors at H = h / sigma (composite). Continuous in H for all real H.
