@@ -1,0 +1,160 @@
+#include "core/engine/crank_train.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include "core/input_error.hpp"
+#include "core/multibody/joints.hpp"
+
+namespace filmdyn::engine {
+
+using multibody::Body;
+using multibody::BodyState;
+using multibody::kGround;
+
+CrankTrain BuildCrankTrain(const EngineCase& c, double rpm, PressureCurve pressure,
+                           const LubricatedJointFactories& factories) {
+  const CrankTrainGeometry& g = c.geometry;
+  RequirePositive("operating.rpm", rpm, "rpm");
+  if (g.rod_length <= g.crank_radius + std::abs(g.pin_offset)) {
+    throw InputError("geometry.rod_length", FormatValue(g.rod_length),
+                     "must exceed crank_radius + |pin_offset| = " +
+                         FormatValue(g.crank_radius + std::abs(g.pin_offset)) + " [m]");
+  }
+  CrankTrain train;
+  train.system = std::make_unique<multibody::MultibodySystem>();
+  multibody::MultibodySystem& sys = *train.system;
+  CrankTrainLayout& lay = train.layout;
+  lay.omega = rpm * 2.0 * std::numbers::pi / 60.0;
+  lay.crank = sys.AddBody(Body{"crank", g.crank_mass, g.crank_inertia});
+  lay.rod = sys.AddBody(Body{"connecting rod", g.rod_mass, g.rod_inertia});
+  lay.piston = sys.AddBody(Body{"piston", g.piston_mass, g.piston_inertia});
+  lay.crank_main_journal = {0.0, -g.crank_com_radius};
+  lay.crank_pin = {0.0, g.crank_radius - g.crank_com_radius};
+  lay.rod_big_end = {0.0, -g.rod_com_from_big_end};
+  lay.rod_small_end = {0.0, g.rod_length - g.rod_com_from_big_end};
+  lay.piston_pin_point = {g.pin_offset - g.piston_com_lateral_offset,
+                          -(g.skirt_top_to_pin - g.skirt_top_to_com)};
+  lay.piston_axis_point = {-g.piston_com_lateral_offset, 0.0};
+
+  using multibody::DrivingConstraint;
+  using multibody::PrismaticJoint;
+  using multibody::RevoluteJoint;
+  lay.main_bearing = sys.AddConstraint(std::make_unique<RevoluteJoint>(
+      "main bearing", kGround, Eigen::Vector2d::Zero(), lay.crank, lay.crank_main_journal));
+  lay.crank_drive = sys.AddConstraint(std::make_unique<DrivingConstraint>(
+      "crank drive", kGround, lay.crank,
+      multibody::AngleLaw::ConstantSpeed(c.operating.start_crank_angle, lay.omega)));
+  lay.piston_pin = sys.AddConstraint(std::make_unique<RevoluteJoint>(
+      "piston pin", lay.rod, lay.rod_small_end, lay.piston, lay.piston_pin_point));
+  if (c.big_end.model == JointModel::kIdeal) {
+    lay.big_end = sys.AddConstraint(std::make_unique<RevoluteJoint>(
+        "big end", lay.crank, lay.crank_pin, lay.rod, lay.rod_big_end));
+  }
+  if (c.skirt.model == JointModel::kIdeal) {
+    lay.liner = sys.AddConstraint(std::make_unique<PrismaticJoint>(
+        "liner", kGround, Eigen::Vector2d::Zero(), Eigen::Vector2d(0.0, 1.0), lay.piston,
+        lay.piston_axis_point));
+  }
+  sys.AddForceElement(
+      std::make_unique<multibody::Gravity>(sys.Masses(), Eigen::Vector2d(0.0, -g.gravity)));
+  auto gas =
+      std::make_unique<GasForce>(std::move(pressure), c.operating.crankcase_pressure,
+                                 g.liner_radius, lay.crank, 0.0, lay.piston, lay.piston_axis_point);
+  train.gas_force = gas.get();
+  sys.AddForceElement(std::move(gas));
+  auto add_lubricated = [&](const JointForceFactory& factory, const char* field) {
+    if (!factory) {
+      throw InputError(field, "lubricated",
+                       "this build has no lubricated joint model yet; use \"ideal\"");
+    }
+    auto element = factory(c, lay);
+    multibody::JointForceElement* raw = element.get();
+    sys.AddForceElement(std::move(element));
+    return raw;
+  };
+  if (c.skirt.model == JointModel::kLubricated) {
+    train.skirt_element = add_lubricated(factories.skirt, "skirt.model");
+  }
+  if (c.big_end.model == JointModel::kLubricated) {
+    train.big_end_element = add_lubricated(factories.big_end, "big_end.model");
+  }
+  sys.SetBaumgarte({c.solver.baumgarte_alpha, c.solver.baumgarte_beta});
+
+  // Initial guess from the closed-form slider crank (the assembly then makes it exact).
+  const double phi = c.operating.start_crank_angle;
+  const double span = g.pin_offset + g.crank_radius * std::sin(phi);
+  const double rod_angle = -std::asin(span / g.rod_length);
+  multibody::SystemState state(sys.NumBodies());
+  BodyState crank, rod, piston;
+  crank.q << -g.crank_com_radius * std::sin(phi), g.crank_com_radius * std::cos(phi), phi;
+  const Eigen::Vector2d pin_crank = g.crank_radius * Eigen::Vector2d(-std::sin(phi), std::cos(phi));
+  const Eigen::Vector2d rod_com =
+      pin_crank +
+      g.rod_com_from_big_end * Eigen::Vector2d(-std::sin(rod_angle), std::cos(rod_angle));
+  rod.q << rod_com, rod_angle;
+  const Eigen::Vector2d pin =
+      pin_crank + g.rod_length * Eigen::Vector2d(-std::sin(rod_angle), std::cos(rod_angle));
+  piston.q << pin - lay.piston_pin_point, 0.0;
+  state.SetBody(lay.crank, crank);
+  state.SetBody(lay.rod, rod);
+  state.SetBody(lay.piston, piston);
+  state.v.setZero();
+  // With a clearance joint the guess is the centred (ideal) position; Assemble keeps it.
+  sys.Assemble(0.0, &state);
+  train.initial_state = state;
+  return train;
+}
+
+CrankTrainSample SampleCrankTrain(CrankTrain& train, const EngineCase& c, double t,
+                                  const multibody::SystemState& integrated) {
+  multibody::MultibodySystem& sys = *train.system;
+  const CrankTrainLayout& lay = train.layout;
+  CrankTrainSample s;
+  s.constraint_violation = sys.PositionViolation(t, integrated).lpNorm<Eigen::Infinity>();
+  // Outputs are evaluated on the state projected onto Φ = 0, Φ̇ = 0: otherwise the Baumgarte
+  // feedback β²Φ (1e8 · 1e-9 m = 0.1 m/s² with the paper's β) would pollute accelerations and
+  // reactions. The projection moves the state by about the integration tolerance.
+  multibody::SystemState state = integrated;
+  sys.Assemble(t, &state, 1e-14);
+  const multibody::DynamicsEvaluation eval = sys.Evaluate(t, state);
+  s.time = t;
+  s.crank_angle = train.gas_force->CrankAngle(state);
+  const BodyState piston = state.Body(lay.piston);
+  const Eigen::Matrix2d rot_p = multibody::Rotation(piston.Angle());
+  const Eigen::Vector2d pin_arm = rot_p * lay.piston_pin_point;
+  s.piston_position = piston.q[1] + pin_arm.y();
+  s.piston_velocity = multibody::PointVelocity(piston, lay.piston_pin_point).y();
+  const double wp = piston.AngularVelocity();
+  const Eigen::Vector2d pin_acc = eval.acceleration.segment<2>(3 * lay.piston) +
+                                  eval.acceleration[3 * lay.piston + 2] * multibody::Perp(pin_arm) -
+                                  wp * wp * pin_arm;
+  s.piston_acceleration = pin_acc.y();
+  // Secondary motion (zero for the ideal liner): pin lateral position relative to C_p, tilt.
+  s.piston_lateral = piston.q[0] + pin_arm.x() - c.geometry.pin_offset;
+  s.piston_lateral_velocity = multibody::PointVelocity(piston, lay.piston_pin_point).x();
+  s.piston_tilt = piston.Angle();
+  s.piston_tilt_rate = wp;
+  const BodyState rod = state.Body(lay.rod);
+  s.rod_angle = rod.Angle();
+  s.rod_angular_velocity = rod.AngularVelocity();
+  s.rod_angular_acceleration = eval.acceleration[3 * lay.rod + 2];
+  s.cylinder_pressure = train.gas_force->CylinderPressure(s.crank_angle);
+  s.gas_force = train.gas_force->Force(s.crank_angle);
+  const Eigen::VectorXd& lambda = eval.multipliers;
+  if (lay.liner >= 0) {
+    const multibody::JointReaction r = sys.Reaction(lay.liner, t, state, lambda);
+    s.liner_force_on_piston = r.on_j.head<2>();
+    // Moment about the pin = moment about the CoM + (r_CoM − r_pin) × F.
+    s.liner_moment_about_pin = r.on_j[2] + multibody::Cross(-pin_arm, r.on_j.head<2>());
+  }
+  if (lay.big_end >= 0) {
+    s.big_end_force_on_rod = sys.Reaction(lay.big_end, t, state, lambda).on_j.head<2>();
+  }
+  s.pin_force_on_piston = sys.Reaction(lay.piston_pin, t, state, lambda).on_j.head<2>();
+  s.main_bearing_force_on_crank = sys.Reaction(lay.main_bearing, t, state, lambda).on_j.head<2>();
+  s.crank_torque = sys.Reaction(lay.crank_drive, t, state, lambda).on_j[2];
+  return s;
+}
+
+}  // namespace filmdyn::engine

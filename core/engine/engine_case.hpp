@@ -1,0 +1,109 @@
+#pragma once
+/// @file The case: every constant input of a run (Table I of Zhao & Shen plus what the paper does
+/// not give), SI units. Plain structs with defaults; the one mapping to and from JSON is
+/// core/io/case_file.cpp (VisitCase). Field meanings, units, ranges, sources: docs/case-file.md.
+#include <map>
+#include <string>
+#include <vector>
+
+namespace filmdyn::engine {
+
+/// How a joint is modelled (SPEC §3.2).
+enum class JointModel { kIdeal, kLubricated };
+
+/// Crank, connecting rod and piston (Table I; layout in docs/outputs.md).
+struct CrankTrainGeometry {
+  double crank_radius = 39.93e-3;          ///< L_1 [m]
+  double rod_length = 129.5e-3;            ///< L_2, big-end to small-end centre [m]
+  double crank_com_radius = 20.0e-3;       ///< L_r, main journal to crank CoM [m]
+  double crank_mass = 2.0;                 ///< [kg] (assumed; speed is imposed)
+  double crank_inertia = 3.0e-3;           ///< about its CoM [kg·m²] (assumed)
+  double rod_com_from_big_end = 28.49e-3;  ///< L_c [m]
+  double rod_mass = 0.345;                 ///< m_2 [kg]
+  double rod_inertia = 9.67e-4;            ///< J_2 about its CoM [kg·m²]
+  double piston_mass = 0.264;              ///< m_3 [kg]
+  double piston_inertia = 1.29e-4;         ///< J_3 about its CoM [kg·m²]
+  double pin_offset = 0.7e-3;  ///< C_p, pin axis from bore axis, + toward thrust side [m]
+  double piston_com_lateral_offset = 0.13e-3;  ///< c_g, CoM from bore axis, + toward thrust [m]
+  double skirt_top_to_pin = 11.8e-3;           ///< a_p, + toward the crank [m]
+  double skirt_top_to_com = -1.737e-3;         ///< b_p, + toward the crank [m]
+  double liner_radius = 36.50e-3;              ///< R_l, bore radius; gas force area π R_l² [m]
+  double gravity = 9.81;  ///< [m/s²], along −Y (cylinder axis vertical, head up)
+};
+
+/// The piston skirt–liner joint (Table I); used by the lubricated model (issue 5).
+struct SkirtCase {
+  JointModel model = JointModel::kIdeal;
+  double piston_radius = 36.475e-3;                ///< R [m]
+  double length = 28.0e-3;                         ///< L_skirt [m]
+  double thrust_half_width = 0.802851455917;       ///< α_1 [rad] (46°)
+  double anti_thrust_half_width = 0.802851455917;  ///< α_2 [rad] (46°)
+  double roughness_skirt = 0.615e-6;               ///< σ_skirt [m]
+  double roughness_liner = 0.815e-6;               ///< σ_liner [m]
+  double peklenik = 1.0;                           ///< γ of the composite surface [-] (assumed)
+  double composite_modulus = 1.0e11;               ///< E' [Pa] (assumed)
+  double boundary_friction = 0.13;                 ///< μ_f [-]
+  /// Barrel profile h_skirt(y): axial positions from the skirt top [m] and radial drop [m].
+  std::vector<double> profile_y = {0.0, 7.0e-3, 14.0e-3, 21.0e-3, 28.0e-3};
+  std::vector<double> profile_h = {20.0e-6, 5.0e-6, 0.0, 5.0e-6, 20.0e-6};
+};
+
+/// The connecting-rod big-end bearing (Table I); used by the lubricated model (issue 5).
+struct BigEndCase {
+  JointModel model = JointModel::kIdeal;
+  double bearing_radius = 15.00e-3;     ///< R_b [m]
+  double journal_radius = 14.95e-3;     ///< R_j [m]; R_b − R_j is the radial clearance
+  double width = 22.0e-3;               ///< b [m]
+  double roughness_journal = 0.308e-6;  ///< σ_journal [m]
+  double roughness_bearing = 0.408e-6;  ///< σ_bearing [m]
+  double peklenik = 1.0;                ///< [-] (assumed)
+  double composite_modulus = 2.0e11;    ///< E' [Pa] (assumed)
+  double boundary_friction = 0.13;      ///< μ_f [-]
+  double oil_feed_pressure = 0.0;       ///< gauge [Pa]; 0 = no feed hole (assumed)
+};
+
+/// One cylinder-pressure curve: absolute pressure vs crank angle at one speed.
+struct PressureCurveSource {
+  double rpm = 0.0;                     ///< crank speed the curve belongs to [rpm]
+  std::string file;                     ///< CSV path relative to the case file, or empty
+  std::vector<double> crank_angle_deg;  ///< inline table [°CA] (when file is empty)
+  std::vector<double> pressure;         ///< inline table, absolute [Pa]
+};
+
+struct OperatingCase {
+  double rpm = 6000.0;                ///< crank speed [rpm]
+  double crankcase_pressure = 1.0e5;  ///< absolute [Pa]
+  double start_crank_angle = 0.0;     ///< [rad]
+};
+
+struct SolverCase {
+  double baumgarte_alpha = 1.0e4;                 ///< 𝒢 of eq. 39 [1/s] (Table II)
+  double baumgarte_beta = 1.0e4;                  ///< ζ of eq. 39 [1/s] (Table II)
+  double relative_tolerance = 1.0e-7;             ///< BDF local error, relative [-]
+  double position_tolerance = 1.0e-10;            ///< absolute [m]
+  double output_interval = 0.017453292519943295;  ///< [rad of crank] (1 °CA)
+  double steady_state_tolerance = 0.01;           ///< cycle-to-cycle change / range [-]
+  int max_cycles = 30;                            ///< [-]
+};
+
+struct LubricantCase {
+  double viscosity = 0.02;              ///< μ [Pa·s]
+  double greenwood_tripp_k = 1.198e-4;  ///< K of eq. 29 [-]
+};
+
+struct EngineCase {
+  std::string name = "zhao-shen-gasoline";
+  std::string description;
+  CrankTrainGeometry geometry;
+  SkirtCase skirt;
+  BigEndCase big_end;
+  LubricantCase lubricant;
+  OperatingCase operating;
+  std::vector<PressureCurveSource> pressure_curves;
+  SolverCase solver;
+  double compression_ratio = 10.5;  ///< for the synthetic pressure model only [-] (assumed)
+  /// Dotted path → reason, for every value the paper does not give (SPEC §3.3).
+  std::map<std::string, std::string> assumed;
+};
+
+}  // namespace filmdyn::engine

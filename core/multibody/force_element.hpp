@@ -1,0 +1,103 @@
+#pragma once
+/// @file Force elements: anything that adds generalised applied forces Q (paper eq. 36) —
+/// gravity, the gas force, and the lubricated clearance joints (which the paper models as
+/// "force constraints" instead of kinematic ones, §3).
+#include <Eigen/Dense>
+#include <string>
+#include <vector>
+
+#include "core/multibody/system_state.hpp"
+
+namespace filmdyn::multibody {
+
+/// Derivatives of the generalised forces, ∂Q/∂q and ∂Q/∂v (both 3n × 3n). Elements add into them.
+struct ForceJacobian {
+  Eigen::MatrixXd dq;
+  Eigen::MatrixXd dv;
+  void Reset(int num_coordinates) {
+    dq.setZero(num_coordinates, num_coordinates);
+    dv.setZero(num_coordinates, num_coordinates);
+  }
+};
+
+class ForceElement {
+ public:
+  explicit ForceElement(std::string name) : name_(std::move(name)) {}
+  virtual ~ForceElement() = default;
+
+  const std::string& Name() const { return name_; }
+  /// Bodies whose states the element reads; the integrator differentiates the element by finite
+  /// differences over exactly these bodies when ProvidesJacobian() is false.
+  virtual std::vector<BodyIndex> Bodies() const = 0;
+  /// Adds the element's generalised forces (F_x, F_y, M_z about each centre of mass, global) to
+  /// q_force (size 3n). When `jacobian` is non-null and ProvidesJacobian(), also adds ∂Q/∂q, ∂Q/∂v.
+  virtual void AddForces(double t, const SystemState& state, Eigen::Ref<Eigen::VectorXd> q_force,
+                         ForceJacobian* jacobian) = 0;
+  virtual bool ProvidesJacobian() const { return false; }
+  /// Called once per accepted integrator step (history, caches, counters). Default: nothing.
+  virtual void OnStepAccepted(double /*t*/, const SystemState& /*state*/) {}
+
+ private:
+  std::string name_;
+};
+
+/// Uniform gravity acting on every body: F = m·g at the centre of mass.
+class Gravity final : public ForceElement {
+ public:
+  Gravity(std::vector<double> masses, Eigen::Vector2d g)
+      : ForceElement("gravity"), masses_(std::move(masses)), g_(g) {}
+  std::vector<BodyIndex> Bodies() const override { return {}; }
+  void AddForces(double t, const SystemState& state, Eigen::Ref<Eigen::VectorXd> q_force,
+                 ForceJacobian* jacobian) override;
+  bool ProvidesJacobian() const override { return true; }  // constant: zero derivatives
+
+ private:
+  std::vector<double> masses_;
+  Eigen::Vector2d g_;
+};
+
+/// States of the two bodies a joint force element connects (either may be the ground).
+struct JointForceInput {
+  double t = 0.0;
+  BodyState body_i;
+  BodyState body_j;
+};
+
+/// Wrenches on both bodies and, optionally, their derivatives.
+struct JointForceOutput {
+  Eigen::Vector3d wrench_i = Eigen::Vector3d::Zero();  ///< (F_x, F_y, M_z about CoM_i), global
+  Eigen::Vector3d wrench_j = Eigen::Vector3d::Zero();  ///< (F_x, F_y, M_z about CoM_j), global
+  /// Rows: wrench_i, wrench_j; columns: q_i, q_j, v_i, v_j (each 3). Filled only when
+  /// the element ProvidesJacobian() and the caller asked for it.
+  Eigen::Matrix<double, 6, 12> jacobian = Eigen::Matrix<double, 6, 12>::Zero();
+};
+
+/// The interface the lubricated clearance joints implement (skirt–liner, big-end bearing): given
+/// both bodies' states, the forces and moments on both, with state derivatives where available
+/// (e.g. the squeeze-film damping ∂F/∂v, which is what makes the film stiff).
+class JointForceElement : public ForceElement {
+ public:
+  JointForceElement(std::string name, BodyIndex body_i, BodyIndex body_j)
+      : ForceElement(std::move(name)), body_i_(body_i), body_j_(body_j) {}
+  BodyIndex BodyI() const { return body_i_; }
+  BodyIndex BodyJ() const { return body_j_; }
+
+  /// Computes the wrenches; fills out->jacobian when want_jacobian && ProvidesJacobian().
+  virtual void EvaluateJoint(const JointForceInput& in, bool want_jacobian,
+                             JointForceOutput* out) = 0;
+
+  std::vector<BodyIndex> Bodies() const override;
+  void AddForces(double t, const SystemState& state, Eigen::Ref<Eigen::VectorXd> q_force,
+                 ForceJacobian* jacobian) final;
+
+ private:
+  BodyIndex body_i_;
+  BodyIndex body_j_;
+};
+
+/// Largest |analytic − finite-difference| entry of a joint element's Jacobian, relative to the
+/// largest analytic entry (a check for element authors; central differences, step h·max(1,|x|)).
+double JointJacobianMismatch(JointForceElement& element, const JointForceInput& in,
+                             double h = 1e-7);
+
+}  // namespace filmdyn::multibody
