@@ -1,0 +1,119 @@
+#include "ui/case_editor/array_table_model.hpp"
+
+#include <QBrush>
+#include <QColor>
+#include <cmath>
+
+#include "ui/case_editor/case_document.hpp"
+#include "ui/case_editor/parameter_table_model.hpp"
+
+namespace filmdyn::ui {
+
+ArrayTableModel::ArrayTableModel(CaseDocument* document, std::vector<ArrayColumn> columns,
+                                 std::function<std::string()> issue_key, QString edit_name,
+                                 QObject* parent)
+    : QAbstractTableModel(parent),
+      document_(document),
+      columns_(std::move(columns)),
+      issue_key_(std::move(issue_key)),
+      edit_name_(std::move(edit_name)) {
+  connect(document_, &CaseDocument::caseChanged, this, &ArrayTableModel::refresh);
+  refresh();
+}
+
+std::vector<double>* ArrayTableModel::column(engine::EngineCase& c, int col) const {
+  return columns_[size_t(col)].array(c);
+}
+
+const std::vector<double>* ArrayTableModel::column(int col) const {
+  // The accessor takes a mutable case; it only locates the array.
+  auto& c = const_cast<engine::EngineCase&>(document_->engineCase());
+  return columns_[size_t(col)].array(c);
+}
+
+void ArrayTableModel::refresh() {
+  const std::vector<double>* first = column(0);
+  const int rows = first ? int(first->size()) : 0;
+  if (rows != rows_) {
+    beginResetModel();
+    rows_ = rows;
+    endResetModel();
+  } else if (rows_ > 0) {
+    emit dataChanged(index(0, 0), index(rows_ - 1, columnCount() - 1));
+  }
+}
+
+int ArrayTableModel::rowCount(const QModelIndex& parent) const {
+  return parent.isValid() ? 0 : rows_;
+}
+
+int ArrayTableModel::columnCount(const QModelIndex& parent) const {
+  return parent.isValid() ? 0 : int(columns_.size());
+}
+
+QVariant ArrayTableModel::data(const QModelIndex& index, int role) const {
+  if (!index.isValid()) return {};
+  const std::vector<double>* values = column(index.column());
+  const auto& issues = document_->issues();
+  const auto issue = issues.find(issue_key_());
+  const bool bad = issue != issues.end();
+  if (role == Qt::DisplayRole || role == Qt::EditRole) {
+    if (!values || index.row() >= int(values->size())) return {};
+    return FormatDisplayNumber((*values)[size_t(index.row())] /
+                               columns_[size_t(index.column())].to_si);
+  }
+  if (role == Qt::ToolTipRole && bad) return QString::fromStdString(issue->second);
+  if (role == Qt::BackgroundRole && bad) return QBrush(QColor(255, 225, 225));
+  if (role == Qt::TextAlignmentRole) return int(Qt::AlignRight | Qt::AlignVCenter);
+  return {};
+}
+
+bool ArrayTableModel::setData(const QModelIndex& index, const QVariant& value, int role) {
+  if (role != Qt::EditRole || !index.isValid()) return false;
+  engine::EngineCase next = document_->engineCase();
+  std::vector<double>* values = column(next, index.column());
+  if (!values || index.row() >= int(values->size())) return false;
+  const double si = ParseUserNumber(value.toString()) * columns_[size_t(index.column())].to_si;
+  (*values)[size_t(index.row())] = si;
+  document_->edit(next, tr("Edit %1").arg(edit_name_));
+  return true;
+}
+
+Qt::ItemFlags ArrayTableModel::flags(const QModelIndex& index) const {
+  return QAbstractTableModel::flags(index) | Qt::ItemIsEditable;
+}
+
+QVariant ArrayTableModel::headerData(int section, Qt::Orientation orientation, int role) const {
+  if (role != Qt::DisplayRole) return {};
+  if (orientation == Qt::Horizontal) return columns_[size_t(section)].header;
+  return section + 1;
+}
+
+void ArrayTableModel::insertRowAfter(int row) {
+  engine::EngineCase next = document_->engineCase();
+  for (int col = 0; col < columnCount(); ++col) {
+    std::vector<double>* v = column(next, col);
+    if (!v) return;
+    const int n = int(v->size());
+    const int at = std::clamp(row + 1, 0, n);
+    double value = 0.0;
+    if (n > 0 && at > 0 && at < n)
+      value = 0.5 * ((*v)[size_t(at - 1)] + (*v)[size_t(at)]);
+    else if (n > 0)
+      value = (*v)[size_t(at > 0 ? at - 1 : 0)];
+    v->insert(v->begin() + at, value);
+  }
+  document_->edit(next, tr("Insert %1 row").arg(edit_name_));
+}
+
+void ArrayTableModel::removeRowAt(int row) {
+  engine::EngineCase next = document_->engineCase();
+  for (int col = 0; col < columnCount(); ++col) {
+    std::vector<double>* v = column(next, col);
+    if (!v || row < 0 || row >= int(v->size())) return;
+    v->erase(v->begin() + row);
+  }
+  document_->edit(next, tr("Remove %1 row").arg(edit_name_));
+}
+
+}  // namespace filmdyn::ui

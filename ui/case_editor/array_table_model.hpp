@@ -1,0 +1,57 @@
+#pragma once
+/// @file A table over parallel arrays of the case (skirt profile y/h, a pressure curve's angle and
+/// pressure), shown in display units. Edits become undoable document edits; the table's issue
+/// (core's message) tints every row and is the tooltip.
+#include <QAbstractTableModel>
+#include <QStringList>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "core/engine/engine_case.hpp"
+
+namespace filmdyn::ui {
+
+class CaseDocument;
+
+struct ArrayColumn {
+  QString header;  ///< with unit, e.g. "y [mm]"
+  double to_si = 1.0;
+  /// The array in the case (nullptr when the table has no rows now, e.g. no curve selected).
+  std::function<std::vector<double>*(engine::EngineCase&)> array;
+};
+
+class ArrayTableModel : public QAbstractTableModel {
+  Q_OBJECT
+
+ public:
+  /// issue_key(): the validation key of this table ("skirt.profile", "pressure_curves[2]").
+  ArrayTableModel(CaseDocument* document, std::vector<ArrayColumn> columns,
+                  std::function<std::string()> issue_key, QString edit_name,
+                  QObject* parent = nullptr);
+
+  int rowCount(const QModelIndex& parent = {}) const override;
+  int columnCount(const QModelIndex& parent = {}) const override;
+  QVariant data(const QModelIndex& index, int role) const override;
+  bool setData(const QModelIndex& index, const QVariant& value, int role) override;
+  Qt::ItemFlags flags(const QModelIndex& index) const override;
+  QVariant headerData(int section, Qt::Orientation orientation, int role) const override;
+
+  /// Inserts a row after `row` (interpolated between neighbours) / removes a row; undoable.
+  void insertRowAfter(int row);
+  void removeRowAt(int row);
+  /// Re-reads everything (the array behind the columns changed, e.g. another curve selected).
+  void refresh();
+
+ private:
+  std::vector<double>* column(engine::EngineCase& c, int col) const;
+  const std::vector<double>* column(int col) const;
+
+  CaseDocument* document_;
+  std::vector<ArrayColumn> columns_;
+  std::function<std::string()> issue_key_;
+  QString edit_name_;
+  int rows_ = 0;
+};
+
+}  // namespace filmdyn::ui

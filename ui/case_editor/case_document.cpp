@@ -1,0 +1,93 @@
+#include "ui/case_editor/case_document.hpp"
+
+#include <QUndoCommand>
+
+#include "ui/case_editor/case_json.hpp"
+#include "ui/case_editor/case_parameters.hpp"
+
+namespace filmdyn::ui {
+
+class CaseSnapshotCommand : public QUndoCommand {
+ public:
+  CaseSnapshotCommand(CaseDocument* document, engine::EngineCase before, engine::EngineCase after,
+                      const QString& text, int merge_key)
+      : QUndoCommand(text),
+        document_(document),
+        before_(std::move(before)),
+        after_(std::move(after)),
+        merge_key_(merge_key) {}
+
+  void undo() override { document_->apply(before_); }
+  void redo() override { document_->apply(after_); }
+  int id() const override { return merge_key_; }
+  bool mergeWith(const QUndoCommand* other) override {
+    if (other->id() != id()) return false;
+    after_ = static_cast<const CaseSnapshotCommand*>(other)->after_;
+    return true;
+  }
+
+ private:
+  CaseDocument* document_;
+  engine::EngineCase before_;
+  engine::EngineCase after_;
+  int merge_key_;
+};
+
+CaseDocument::CaseDocument(QObject* parent) : QObject(parent) {
+  connect(&undo_stack_, &QUndoStack::cleanChanged, this,
+          [this](bool clean) { emit modifiedChanged(!clean); });
+  apply(case_);
+}
+
+void CaseDocument::edit(const engine::EngineCase& new_case, const QString& description,
+                        int merge_key) {
+  undo_stack_.push(new CaseSnapshotCommand(this, case_, new_case, description, merge_key));
+}
+
+void CaseDocument::setParameter(const std::string& path, double si_value) {
+  const CaseParameter* p = FindCaseParameter(path);
+  Q_ASSERT(p != nullptr);
+  engine::EngineCase next = case_;
+  p->set(next, si_value);
+  // Merge repeated edits of the same cell into one undo step.
+  const int key = 1000 + int(p - CaseParameters().data());
+  edit(next, QObject::tr("Edit %1").arg(p->label), key);
+}
+
+void CaseDocument::apply(const engine::EngineCase& engine_case) {
+  case_ = engine_case;
+  issues_ = ValidateCase(case_);
+  const QString blocker = QString::fromStdString(RunBlocker(case_, issues_));
+  emit caseChanged();
+  if (blocker != run_blocker_ || blocker.isEmpty()) {
+    run_blocker_ = blocker;
+    emit validityChanged(run_blocker_);
+  }
+}
+
+void CaseDocument::reset(const engine::EngineCase& engine_case, const QString& file_path) {
+  undo_stack_.clear();
+  apply(engine_case);
+  file_path_ = file_path;
+  emit filePathChanged(file_path_);
+  emit modifiedChanged(false);
+}
+
+bool CaseDocument::save(const QString& path, QString* error) {
+  if (!SaveCaseFile(case_, path, error)) return false;
+  undo_stack_.setClean();
+  if (file_path_ != path) {
+    file_path_ = path;
+    emit filePathChanged(file_path_);
+  }
+  return true;
+}
+
+bool CaseDocument::load(const QString& path, QString* error) {
+  engine::EngineCase loaded;
+  if (!LoadCaseFile(path, &loaded, error)) return false;
+  reset(loaded, path);
+  return true;
+}
+
+}  // namespace filmdyn::ui

@@ -1,0 +1,50 @@
+#pragma once
+/// @file The scalar inputs of an EngineCase as the editor shows them: one row per value with its
+/// dotted path (the case-file key), label, display unit and the factor to SI. This table is the
+/// single place where the UI knows the case's scalar fields (editor rows, JSON mapping,
+/// validation), so switching to core's case_file only touches case_json.cpp.
+#include <QString>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "core/engine/engine_case.hpp"
+
+namespace filmdyn::ui {
+
+enum class CaseGroup { kGeometry, kMasses, kSkirt, kBigEnd, kLubricant, kOperating, kSolver };
+
+/// Title of a group as shown on its editor tab.
+QString CaseGroupTitle(CaseGroup group);
+
+struct CaseParameter {
+  CaseGroup group;
+  std::string path;      ///< dotted case-file key, e.g. "big_end.journal_radius"
+  QString label;         ///< with the paper's symbol, e.g. "Journal radius R_j"
+  QString unit;          ///< display unit, e.g. "mm"
+  double to_si = 1.0;    ///< SI value = display value × to_si
+  bool integer = false;  ///< shown and edited as a whole number
+  std::function<double(const engine::EngineCase&)> get;  ///< SI
+  std::function<void(engine::EngineCase&, double)> set;  ///< SI
+  /// Throws filmdyn::InputError (core's helpers) when the SI value is not allowed.
+  std::function<void(const std::string& field, double si_value)> check;
+};
+
+/// Every scalar parameter, in editor order.
+const std::vector<CaseParameter>& CaseParameters();
+/// The parameter with this dotted path, or nullptr.
+const CaseParameter* FindCaseParameter(const std::string& path);
+
+/// The run models of SPEC §3.2 and how they set the two joints.
+struct RunModel {
+  QString key;    ///< CLI spelling: "ideal", "only-skirt", "only-lbrbe", "skirt-lbrbe"
+  QString title;  ///< "Ideal", "Only-Skirt", ...
+  engine::JointModel skirt;
+  engine::JointModel big_end;
+};
+const std::vector<RunModel>& RunModels();
+/// The model key for the case's joint settings.
+QString RunModelKey(const engine::EngineCase& engine_case);
+void ApplyRunModel(engine::EngineCase& engine_case, const QString& key);
+
+}  // namespace filmdyn::ui

@@ -1,0 +1,129 @@
+#include "ui/case_editor/parameter_table_model.hpp"
+
+#include <QBrush>
+#include <QColor>
+#include <QLocale>
+#include <cmath>
+#include <limits>
+
+#include "ui/case_editor/case_document.hpp"
+
+namespace filmdyn::ui {
+
+double ParseUserNumber(const QString& text) {
+  bool ok = false;
+  const QString trimmed = text.trimmed();
+  double v = QLocale::c().toDouble(trimmed, &ok);
+  if (!ok) v = QLocale().toDouble(trimmed, &ok);
+  return ok ? v : std::numeric_limits<double>::quiet_NaN();
+}
+
+QString FormatDisplayNumber(double value) {
+  if (std::isnan(value)) return {};
+  return QLocale::c().toString(value, 'g', 6);
+}
+
+ParameterTableModel::ParameterTableModel(CaseDocument* document, CaseGroup group, QObject* parent)
+    : QAbstractTableModel(parent), document_(document) {
+  for (const CaseParameter& p : CaseParameters()) {
+    if (p.group == group) rows_.push_back(&p);
+  }
+  connect(document_, &CaseDocument::caseChanged, this, [this] {
+    if (!rows_.empty()) emit dataChanged(index(0, 0), index(rowCount() - 1, kColumnCount - 1));
+  });
+}
+
+int ParameterTableModel::rowCount(const QModelIndex& parent) const {
+  return parent.isValid() ? 0 : int(rows_.size());
+}
+
+int ParameterTableModel::columnCount(const QModelIndex& parent) const {
+  return parent.isValid() ? 0 : kColumnCount;
+}
+
+int ParameterTableModel::rowOf(const std::string& path) const {
+  for (size_t i = 0; i < rows_.size(); ++i) {
+    if (rows_[i]->path == path) return int(i);
+  }
+  return -1;
+}
+
+QVariant ParameterTableModel::data(const QModelIndex& index, int role) const {
+  if (!index.isValid()) return {};
+  const CaseParameter& p = *rows_[size_t(index.row())];
+  const auto& issues = document_->issues();
+  const auto issue = issues.find(p.path);
+  const bool bad = issue != issues.end();
+  const auto assumed = document_->engineCase().assumed.find(p.path);
+  switch (role) {
+    case Qt::DisplayRole:
+    case Qt::EditRole:
+      switch (index.column()) {
+        case kQuantity:
+          return p.label;
+        case kValue: {
+          const double display = p.get(document_->engineCase()) / p.to_si;
+          if (role == Qt::EditRole) return FormatDisplayNumber(display);
+          return bad && std::isnan(display) ? tr("(invalid)") : FormatDisplayNumber(display);
+        }
+        case kUnit:
+          return p.unit;
+        case kNote:
+          if (bad) return QString::fromStdString(issue->second);
+          if (assumed != document_->engineCase().assumed.end()) {
+            return tr("assumed: %1").arg(QString::fromStdString(assumed->second));
+          }
+          return {};
+      }
+      break;
+    case Qt::ToolTipRole:
+      if (bad) return QString::fromStdString(issue->second);
+      return QString::fromStdString(p.path);
+    case Qt::BackgroundRole:
+      if (bad) return QBrush(QColor(255, 205, 205));
+      break;
+    case Qt::ForegroundRole:
+      if (bad && index.column() == kNote) return QBrush(QColor(170, 0, 0));
+      break;
+    case Qt::TextAlignmentRole:
+      if (index.column() == kValue) return int(Qt::AlignRight | Qt::AlignVCenter);
+      break;
+    case Qt::UserRole:
+      return QString::fromStdString(p.path);
+  }
+  return {};
+}
+
+bool ParameterTableModel::setData(const QModelIndex& index, const QVariant& value, int role) {
+  if (role != Qt::EditRole || index.column() != kValue) return false;
+  const CaseParameter& p = *rows_[size_t(index.row())];
+  const double display = ParseUserNumber(value.toString());
+  const double si = display * p.to_si;
+  const double old = p.get(document_->engineCase());
+  if (si == old || (std::isnan(si) && std::isnan(old))) return true;
+  document_->setParameter(p.path, si);
+  return true;
+}
+
+Qt::ItemFlags ParameterTableModel::flags(const QModelIndex& index) const {
+  Qt::ItemFlags f = QAbstractTableModel::flags(index);
+  if (index.column() == kValue) f |= Qt::ItemIsEditable;
+  return f;
+}
+
+QVariant ParameterTableModel::headerData(int section, Qt::Orientation orientation, int role) const {
+  if (role != Qt::DisplayRole || orientation != Qt::Horizontal) return {};
+  switch (section) {
+    case kQuantity:
+      return tr("Quantity");
+    case kValue:
+      return tr("Value");
+    case kUnit:
+      return tr("Unit");
+    case kNote:
+      return tr("Note");
+  }
+  return {};
+}
+
+}  // namespace filmdyn::ui

@@ -1,0 +1,43 @@
+#pragma once
+/// @file One group of scalar case parameters as an editable table: Quantity | Value | Unit | Note.
+/// Values are shown in display units; an invalid value is kept (never lose an edit), its row is
+/// tinted and the reason (core's InputError message) is the tooltip.
+#include <QAbstractTableModel>
+#include <vector>
+
+#include "ui/case_editor/case_parameters.hpp"
+
+namespace filmdyn::ui {
+
+class CaseDocument;
+
+class ParameterTableModel : public QAbstractTableModel {
+  Q_OBJECT
+
+ public:
+  enum Column { kQuantity, kValue, kUnit, kNote, kColumnCount };
+
+  ParameterTableModel(CaseDocument* document, CaseGroup group, QObject* parent = nullptr);
+
+  int rowCount(const QModelIndex& parent = {}) const override;
+  int columnCount(const QModelIndex& parent = {}) const override;
+  QVariant data(const QModelIndex& index, int role) const override;
+  bool setData(const QModelIndex& index, const QVariant& value, int role) override;
+  Qt::ItemFlags flags(const QModelIndex& index) const override;
+  QVariant headerData(int section, Qt::Orientation orientation, int role) const override;
+
+  /// Row of a dotted path in this table, or -1.
+  int rowOf(const std::string& path) const;
+  const CaseParameter& parameter(int row) const { return *rows_[size_t(row)]; }
+
+ private:
+  CaseDocument* document_;
+  std::vector<const CaseParameter*> rows_;
+};
+
+/// Parses a number typed by the user ("1.5", "1,5" in a comma locale, "1e-3"); NaN if none.
+double ParseUserNumber(const QString& text);
+/// Formats a display value with 6 significant digits ("" for NaN).
+QString FormatDisplayNumber(double value);
+
+}  // namespace filmdyn::ui

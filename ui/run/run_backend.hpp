@@ -1,0 +1,47 @@
+#pragma once
+/// @file What the GUI needs from a solver run, independent of which core API provides it: a
+/// function called on the worker thread that streams samples and progress into a sink, polls a
+/// cancel flag, and throws (InputError or std::runtime_error) with the reason when it fails.
+/// core_run_backend.cpp adapts core's run-job API to it; tests substitute their own.
+#include <atomic>
+#include <functional>
+#include <string>
+
+#include "core/engine/engine_case.hpp"
+#include "ui/run/result_columns.hpp"
+
+namespace filmdyn::ui {
+
+struct RunRequest {
+  engine::EngineCase engine_case;  ///< a copy: the user may keep editing while it runs
+  std::string model;               ///< "ideal", "only-skirt", "only-lbrbe", "skirt-lbrbe"
+  double rpm = 0.0;
+};
+
+struct RunProgress {
+  int cycle = 0;  ///< current cycle, 1-based
+  int max_cycles = 0;
+  double cycle_fraction = 0;  ///< 0..1 within the current cycle
+  double cycle_change = -1;   ///< last cycle-to-cycle change (relative), < 0 when unknown
+};
+
+/// Receives results on the worker thread. Thread-safe (RunRecord implements it).
+class RunSink {
+ public:
+  virtual ~RunSink() = default;
+  /// Starts a new cycle: the live plots show the cycle being computed; the samples of the last
+  /// completed cycle are what a finished run reports.
+  virtual void BeginCycle(int cycle) = 0;
+  virtual void Append(const RunSample& sample) = 0;
+  virtual void Progress(const RunProgress& progress) = 0;
+  /// Free-form solver statistics for the run table ("steps", "rejected steps", ...).
+  virtual void Statistic(const std::string& name, double value) = 0;
+};
+
+using RunBackend =
+    std::function<void(const RunRequest& request, const std::atomic<bool>& cancel, RunSink& sink)>;
+
+/// The backend built on core's run API (see core_run_backend.cpp for what it covers).
+RunBackend CoreRunBackend();
+
+}  // namespace filmdyn::ui

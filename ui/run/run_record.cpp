@@ -1,0 +1,107 @@
+#include "ui/run/run_record.hpp"
+
+#include <QObject>
+
+#include "ui/case_editor/case_parameters.hpp"
+#include "ui/case_editor/parameter_table_model.hpp"
+
+namespace filmdyn::ui {
+
+QString RunStatusText(RunStatus status) {
+  switch (status) {
+    case RunStatus::kRunning:
+      return QObject::tr("running");
+    case RunStatus::kFinished:
+      return QObject::tr("finished");
+    case RunStatus::kFailed:
+      return QObject::tr("failed");
+    case RunStatus::kCancelled:
+      return QObject::tr("cancelled");
+  }
+  return {};
+}
+
+RunRecord::RunRecord(int id, RunRequest request) : id_(id), request_(std::move(request)) {
+  clock_.start();
+}
+
+QString RunRecord::label() const {
+  QString model = QString::fromStdString(request_.model);
+  for (const RunModel& m : RunModels()) {
+    if (m.key == model) model = m.title;
+  }
+  return QObject::tr("%1 %2 rpm").arg(model, FormatDisplayNumber(request_.rpm));
+}
+
+void RunRecord::BeginCycle(int cycle) {
+  std::lock_guard lock(mutex_);
+  if (!current_cycle_.empty()) last_complete_cycle_.swap(current_cycle_);
+  current_cycle_.clear();
+  progress_.cycle = cycle;
+  progress_.cycle_fraction = 0;
+  ++version_;
+}
+
+void RunRecord::Append(const RunSample& sample) {
+  std::lock_guard lock(mutex_);
+  current_cycle_.push_back(sample);
+  ++version_;
+}
+
+void RunRecord::Progress(const RunProgress& progress) {
+  std::lock_guard lock(mutex_);
+  progress_ = progress;
+  ++version_;
+}
+
+void RunRecord::Statistic(const std::string& name, double value) {
+  std::lock_guard lock(mutex_);
+  statistics_[name] = value;
+}
+
+std::vector<RunSample> RunRecord::samples() const {
+  std::lock_guard lock(mutex_);
+  if (status_ == RunStatus::kFinished && !last_complete_cycle_.empty()) {
+    // A normal end reports the last full cycle; a partial cycle after it would be a bug of the
+    // backend, so prefer the complete one.
+    return current_cycle_.size() >= last_complete_cycle_.size() ? current_cycle_
+                                                                : last_complete_cycle_;
+  }
+  if (current_cycle_.empty()) return last_complete_cycle_;
+  return current_cycle_;
+}
+
+RunProgress RunRecord::progress() const {
+  std::lock_guard lock(mutex_);
+  return progress_;
+}
+
+std::map<std::string, double> RunRecord::statistics() const {
+  std::lock_guard lock(mutex_);
+  return statistics_;
+}
+
+RunStatus RunRecord::status() const {
+  std::lock_guard lock(mutex_);
+  return status_;
+}
+
+QString RunRecord::reason() const {
+  std::lock_guard lock(mutex_);
+  return reason_;
+}
+
+void RunRecord::finish(RunStatus status, const QString& reason) {
+  std::lock_guard lock(mutex_);
+  status_ = status;
+  reason_ = reason;
+  wall_seconds_ = clock_.elapsed() / 1000.0;
+  ++version_;
+}
+
+double RunRecord::elapsedSeconds() const {
+  std::lock_guard lock(mutex_);
+  return wall_seconds_ >= 0 ? wall_seconds_ : clock_.elapsed() / 1000.0;
+}
+
+}  // namespace filmdyn::ui
