@@ -1,0 +1,229 @@
+#include "core/lubrication/bearing_solver.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "core/input_error.hpp"
+
+namespace filmdyn::lubrication {
+
+namespace {
+constexpr double kPi = std::numbers::pi;
+
+double WrapTwoPi(double a) {
+  a = std::fmod(a, 2.0 * kPi);
+  return a < 0.0 ? a + 2.0 * kPi : a;
+}
+}  // namespace
+
+void BearingConfig::Validate(const std::string& prefix) const {
+  RequirePositive(prefix + ".radius", geometry.radius, "m");
+  RequirePositive(prefix + ".length", geometry.length, "m");
+  RequirePositive(prefix + ".radial_clearance", geometry.radial_clearance, "m");
+  if (geometry.radial_clearance >= geometry.radius) {
+    throw InputError(prefix + ".radial_clearance", FormatValue(geometry.radial_clearance),
+                     "must be smaller than the radius " + FormatValue(geometry.radius) + " [m]");
+  }
+  RequirePositive(prefix + ".viscosity", viscosity, "Pa*s");
+  RequireInRange(prefix + ".mesh.n_theta", mesh.n_theta, 8, 20000);
+  RequireInRange(prefix + ".mesh.n_z", mesh.n_z, 2, 5000);
+  RequireInRange(prefix + ".solver.max_iterations", solver.max_iterations, 1, 100000);
+  if (feed.kind != OilFeed::Kind::kLineOfCentres) {
+    RequireFinite(prefix + ".feed.angle", feed.angle, "rad");
+    RequireNonNegative(prefix + ".feed.pressure", feed.pressure, "Pa");
+    RequireInRange(prefix + ".feed.angular_width", feed.angular_width, 0.0, 2.0 * kPi, false, true,
+                   "rad");
+    RequireNonNegative(prefix + ".feed.axial_width", feed.axial_width, "m");
+  }
+}
+
+void BearingState::Validate(const std::string& prefix) const {
+  RequireInRange(prefix + ".eps", eps, 0.0, 1.0, false, true);
+  RequireFinite(prefix + ".eps_dot", eps_dot, "1/s");
+  RequireFinite(prefix + ".line_of_centres_angle", line_of_centres_angle, "rad");
+  RequireFinite(prefix + ".line_of_centres_rate", line_of_centres_rate, "rad/s");
+  RequireFinite(prefix + ".omega_journal", omega_journal, "rad/s");
+  RequireFinite(prefix + ".omega_bearing", omega_bearing, "rad/s");
+  RequireFinite(prefix + ".bearing_angle", bearing_angle, "rad");
+}
+
+TriMesh BearingSolver::MakeMesh(const BearingGeometry& g, const BearingMeshSpec& spec,
+                                bool fix_theta0) {
+  const double period = 2.0 * kPi * g.radius;
+  std::vector<double> xs = Linspace(0.0, period, spec.n_theta);
+  xs.pop_back();  // periodic: x = 2 pi R is node column 0
+  const double width = spec.symmetric_half ? 0.5 * g.length : g.length;
+  TriMesh m = MakeTensorMesh(std::move(xs), Linspace(0.0, width, spec.n_z), true, period);
+  const int nx = m.nx_nodes(), ny = m.ny_nodes();
+  for (int i = 0; i < nx; ++i) {
+    m.fixed[m.Node(i, 0)] = 1;                                 // edge z = 0
+    if (!spec.symmetric_half) m.fixed[m.Node(i, ny - 1)] = 1;  // edge z = L
+  }
+  if (fix_theta0)
+    for (int j = 0; j < ny; ++j) m.fixed[m.Node(0, j)] = 1;  // film start, p = 0 (eq. 19)
+  return m;
+}
+
+BearingSolver::BearingSolver(BearingConfig config)
+    : config_((config.Validate(), std::move(config))),
+      fem_(MakeMesh(config_.geometry, config_.mesh,
+                    config_.feed.kind == OilFeed::Kind::kLineOfCentres),
+           0, config_.solver) {
+  const TriMesh& m = fem_.mesh();
+  const int n = m.NodeCount();
+  theta_.resize(n);
+  cos_.resize(n);
+  sin_.resize(n);
+  ptot_.resize(n);
+  for (int k = 0; k < n; ++k) {
+    theta_[k] = m.x[k] / config_.geometry.radius;
+    cos_[k] = std::cos(theta_[k]);
+    sin_[k] = std::sin(theta_[k]);
+  }
+}
+
+const BearingResult& BearingSolver::Solve(const BearingState& s) {
+  s.Validate();
+  const BearingGeometry& g = config_.geometry;
+  const TriMesh& m = fem_.mesh();
+  const int n = m.NodeCount();
+  const double c = g.radial_clearance, R = g.radius;
+  Eigen::VectorXd& h = fem_.film_thickness();
+  Eigen::VectorXd& hdot = fem_.film_rate();
+  for (int k = 0; k < n; ++k) {
+    h[k] = c * (1.0 + s.eps * cos_[k]);  // paper eq. 13
+    hdot[k] = c * s.eps_dot * cos_[k];   // rotating line-of-centres frame
+  }
+  // Feed hole / groove fixed in the bearing body: its theta in the line-of-centres frame.
+  if (config_.feed.kind != OilFeed::Kind::kLineOfCentres) {
+    auto& extra = fem_.extra_fixed();
+    Eigen::VectorXd& pb = fem_.boundary_pressure();
+    std::fill(extra.begin(), extra.end(), 0);
+    pb.setZero();
+    const double theta_feed =
+        WrapTwoPi(s.bearing_angle + config_.feed.angle - (s.line_of_centres_angle + kPi));
+    const double half_w = 0.5 * config_.feed.angular_width;
+    const double zc = 0.5 * g.length;
+    int nearest = 0;
+    double best = 1e300;
+    for (int i = 0; i < m.nx_nodes(); ++i) {
+      double d = std::abs(WrapTwoPi(theta_[m.Node(i, 0)] - theta_feed + kPi) - kPi);
+      if (d < best) best = d, nearest = i;
+    }
+    for (int j = 0; j < m.ny_nodes(); ++j) {
+      const double z = m.y_lines[j];
+      const bool in_z = config_.feed.kind == OilFeed::Kind::kGroove ||
+                        std::abs(z - zc) <= 0.5 * config_.feed.axial_width + 1e-15 ||
+                        (config_.mesh.symmetric_half && j == m.ny_nodes() - 1);
+      if (!in_z) continue;
+      for (int i = 0; i < m.nx_nodes(); ++i) {
+        const int k = m.Node(i, j);
+        const double d = std::abs(WrapTwoPi(theta_[k] - theta_feed + kPi) - kPi);
+        if ((d <= half_w || i == nearest) && !m.fixed[k]) {
+          extra[k] = 1;
+          pb[k] = config_.feed.pressure;
+        }
+      }
+    }
+    // A hole narrower than a z-row still gets the nearest row at mid-width.
+    bool any = std::any_of(extra.begin(), extra.end(), [](auto v) { return v != 0; });
+    if (!any) {
+      int jmid = static_cast<int>(
+          std::lround((m.ny_nodes() - 1) * (config_.mesh.symmetric_half ? 1.0 : 0.5)));
+      extra[m.Node(nearest, jmid)] = 1;
+      pb[m.Node(nearest, jmid)] = config_.feed.pressure;
+    }
+  }
+  ReynoldsParams params;
+  params.viscosity = config_.viscosity;
+  params.u_sum = R * (s.omega_journal + s.omega_bearing - 2.0 * s.line_of_centres_rate);
+  params.u_diff = R * (s.omega_journal - s.omega_bearing);
+  params.film = config_.film.get();
+  const ReynoldsSolution& sol = fem_.Solve(params);
+
+  BearingResult& r = result_;
+  r = BearingResult{};
+  r.stats = sol.stats;
+  const double sym = config_.mesh.symmetric_half ? 2.0 : 1.0;
+  // Force on the journal: F = -int p r_hat dA with r_hat = cos(theta) a1 + sin(theta) a2 and
+  // a1 = -n, a2 = -t  =>  F_n = int p cos(theta) dA, F_t = int p sin(theta) dA.
+  ptot_ = sol.pressure + sol.contact_pressure;
+  r.force_n = sym * fem_.IntegrateProduct(ptot_, cos_);
+  r.force_t = sym * fem_.IntegrateProduct(ptot_, sin_);
+  r.contact_force_n = sym * fem_.IntegrateProduct(sol.contact_pressure, cos_);
+  r.contact_force_t = sym * fem_.IntegrateProduct(sol.contact_pressure, sin_);
+  const double cphi = std::cos(s.line_of_centres_angle), sphi = std::sin(s.line_of_centres_angle);
+  r.force_x = r.force_n * cphi - r.force_t * sphi;
+  r.force_y = r.force_n * sphi + r.force_t * cphi;
+  r.load = std::hypot(r.force_n, r.force_t);
+  r.attitude_deg = std::atan2(r.force_t, -r.force_n) * 180.0 / kPi;
+
+  // Friction: shear stress on the journal (lower surface z = 0, velocity U1 = R omega_j) in +x,
+  //   tau_j = -mu U_rel/h (Phi_f + Phi_fs) - Phi_fp (h/2) dp/dx   (Patir & Cheng 1979; paper
+  // eq. 31), on the bearing tau_b = +mu U_rel/h (Phi_f - Phi_fs) - Phi_fp (h/2) dp/dx; the
+  // asperity part mu_f p_c opposes the relative sliding. With Reynolds cavitation the Couette
+  // shear acts over the whole film (as in Raimondi & Boyd's friction variable); with JFO it is
+  // scaled by the fluid fraction.
+  const auto& fac = fem_.factors();
+  const double mu = config_.viscosity;
+  const double u_rel = params.u_diff;
+  const bool jfo = config_.solver.cavitation == CavitationModel::kJfo;
+  double couette_j = 0.0, couette_b = 0.0, poiseuille = 0.0, contact = 0.0;
+  for (const auto& e : fem_.elements()) {
+    double cj = 0.0, cb = 0.0, hfp = 0.0, dpdx = 0.0, pc = 0.0;
+    for (int a = 0; a < 3; ++a) {
+      const int k = e.node[a];
+      const double theta_f = jfo ? sol.fluid_fraction[k] : 1.0;
+      cj += theta_f * (fac[k].shear_f + fac[k].shear_fs) / h[k];
+      cb += theta_f * (fac[k].shear_f - fac[k].shear_fs) / h[k];
+      hfp += fac[k].shear_fp * h[k];
+      dpdx += e.dndx[a] * sol.pressure[k];
+      pc += sol.contact_pressure[k];
+    }
+    couette_j += e.area * cj / 3.0;
+    couette_b += e.area * cb / 3.0;
+    poiseuille += e.area * 0.5 * (hfp / 3.0) * dpdx;
+    contact += e.area * pc / 3.0;
+  }
+  const double mu_f = config_.film ? config_.film->boundary_friction() : 0.0;
+  const double sgn = (u_rel > 0) - (u_rel < 0);
+  const double shear_j = -mu * u_rel * couette_j - poiseuille - sgn * mu_f * contact;
+  const double shear_b = mu * u_rel * couette_b - poiseuille + sgn * mu_f * contact;
+  r.friction_torque_journal = sym * R * shear_j;
+  r.friction_torque_bearing = sym * R * shear_b;
+  r.friction_power_loss = std::abs(r.friction_torque_journal * (s.omega_journal - s.omega_bearing));
+
+  // MOFT, peak pressure, cavitated fraction, flows.
+  r.moft = 1e300;
+  double cav_area = 0.0, film_area = 0.0;
+  const auto& area = fem_.lumped_area();
+  const int ny = m.ny_nodes();
+  for (int k = 0; k < n; ++k) {
+    if (h[k] < r.moft) {
+      r.moft = h[k];
+      r.moft_theta = theta_[k];
+      r.moft_z = m.y[k];
+    }
+    if (sol.pressure[k] > r.max_pressure) {
+      r.max_pressure = sol.pressure[k];
+      r.max_pressure_theta = theta_[k];
+    }
+    r.max_contact_pressure = std::max(r.max_contact_pressure, sol.contact_pressure[k]);
+    film_area += area[k];
+    if (sol.cavitated[k]) cav_area += area[k] * (jfo ? 1.0 - sol.fluid_fraction[k] : 1.0);
+    // Outflow through prescribed-pressure nodes is -w (w = nodal residual of the interior rows).
+    const int j = k / m.nx_nodes();
+    const bool edge = j == 0 || (!config_.mesh.symmetric_half && j == ny - 1);
+    if (edge)
+      r.side_flow -= sol.residual[k];
+    else if (m.fixed[k] || fem_.extra_fixed()[k])
+      r.feed_flow += sol.residual[k];
+  }
+  r.cavitated_fraction = film_area > 0 ? cav_area / film_area : 0.0;
+  r.side_flow *= sym;
+  r.feed_flow *= sym;
+  return r;
+}
+
+}  // namespace filmdyn::lubrication

@@ -1,0 +1,166 @@
+#pragma once
+/// @file Galerkin P1 finite elements for the average Reynolds equation with exact cavitation.
+///
+/// Strong form (Patir & Cheng 1978 eq. 1 with the Wu & Zheng 1989 contact factor; dimensional, SI):
+///   div( phi h^3/(12 mu) grad p ) = (U_sum/2) phi_c dh/ds + (U_diff/2) sigma dphi_s/ds
+///                                   + phi_c dh/dt
+/// with s the sliding direction (mesh axis x or y), U_sum = U1 + U2 (surface velocities in the
+/// frame of the mesh), U_diff = U1 - U2 (surface 1 = the one whose roughness is sigma1).
+/// Weak form: K p = f with K_kl = integral(k_x dN_k/dx dN_l/dx + k_y dN_k/dy dN_l/dy) and
+///   f_k = -integral N_k [ (U_sum/2) phi_c dh/ds + (U_diff/2) sigma dphi_s/ds + phi_c dh/dt ],
+/// every term integrated exactly for P1 nodal fields (element conductivity = mean of the nodal
+/// phi h^3/(12 mu), which is the exact integral of its P1 interpolant).
+///
+/// Cavitation:
+///  - kReynolds (Swift-Stieber): the LCP  p >= 0, w = K p - f >= 0, p.w = 0, solved by the
+///    primal-dual active-set method (Hintermueller, Ito & Kunisch 2003), i.e. a semismooth Newton
+///    method; for the M-matrices of our meshes it terminates finitely with the exact solution of
+///    the discrete LCP. Each iteration is one numeric LDL^T refactorisation on the pattern analysed
+///    once in the constructor (rows/columns of active nodes are replaced by unit rows).
+///  - kJfo: mass-conserving Jakobsson-Floberg-Olsson cavitation in the complementarity form of
+///    Giacopini, Fowell, Dini & Strozzi (2010, J. Tribol. 132 041702): lubricant density ratio
+///    1 - r, with p >= 0, r >= 0, p.r = 0 and one mass balance per node
+///        (K p - f)_k + (B r)_k = 0,
+///    B = first-order upwind finite-volume transport of the void content (U_sum/2) h r plus
+///    -r dh/dt, on the dual cells of the structured mesh. Solved by the same active-set
+///    (semismooth Newton) iteration on the mixed unknowns (p on full-film nodes, r on cavitated
+///    ones), started from the Reynolds solution; non-symmetric, so a sparse LU is used.
+///    Quasi-static: d(r h)/dt history is not carried between solves (the r dh/dt term only).
+///  - kNone: full Sommerfeld film, negative pressures allowed (verification only).
+#include <Eigen/Sparse>
+#include <Eigen/SparseLU>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "core/lubrication/film_factors.hpp"
+#include "core/lubrication/sparse_ldlt.hpp"
+#include "core/lubrication/tri_mesh.hpp"
+
+namespace filmdyn::lubrication {
+
+enum class CavitationModel { kReynolds, kJfo, kNone };
+
+/// Numerical status of one solve (STYLE.md: numerical trouble is a status, never an exception).
+enum class SolveStatus { kConverged, kNotConverged, kFactorizationFailed };
+const char* ToString(SolveStatus status);
+const char* ToString(CavitationModel model);
+
+struct ReynoldsOptions {
+  CavitationModel cavitation = CavitationModel::kReynolds;
+  LdltBackend backend = LdltBackend::kEigenSimplicial;
+  int max_iterations = 200;  ///< active-set iterations before giving up (status kNotConverged)
+  bool warm_start = true;    ///< start the active set from the previous solve's
+};
+
+/// Scalars of one solve. Nodal inputs are set through ReynoldsFem's mutable accessors.
+struct ReynoldsParams {
+  double viscosity = 0.0;                 ///< dynamic viscosity mu [Pa s]
+  double u_sum = 0.0;                     ///< U1 + U2 along the sliding axis [m/s]
+  double u_diff = 0.0;                    ///< U1 - U2 along the sliding axis [m/s]
+  const FilmFactorModel* film = nullptr;  ///< nullptr = smooth surfaces
+};
+
+/// Statistics of one solve.
+struct ReynoldsStats {
+  SolveStatus status = SolveStatus::kConverged;
+  int iterations = 0;                   ///< active-set iterations (= numeric factorisations)
+  int jfo_iterations = 0;               ///< of which in the JFO stage
+  double complementarity_residual = 0;  ///< max_k |min(p_k/p_ref, w_k/w_ref)| over free nodes
+  double min_pressure = 0;              ///< most negative nodal pressure [Pa] (0 when exact)
+  double max_mass_residual = 0;         ///< JFO: max nodal mass-balance residual / flow scale
+  double assembly_s = 0, factorization_s = 0, complementarity_s = 0;  ///< wall times [s]
+};
+
+/// Fields of one solve; all vectors have one entry per mesh node.
+struct ReynoldsSolution {
+  Eigen::VectorXd pressure;             ///< p [Pa] (gauge, relative to the cavitation pressure)
+  Eigen::VectorXd contact_pressure;     ///< asperity pressure p_c [Pa]
+  Eigen::VectorXd fluid_fraction;       ///< JFO theta = 1 - r (1 in the full film) [-]
+  Eigen::VectorXd residual;             ///< w = K p - f (+B r): nodal net outflow [m^3/s]; at
+                                        ///< fixed nodes minus the boundary outflow
+  std::vector<std::uint8_t> cavitated;  ///< 1 where the film is cavitated (active set)
+  ReynoldsStats stats;
+};
+
+/// Reusable Reynolds solver on one mesh: constructed once (pattern + symbolic analysis), then
+/// Solve() any number of times without reallocating.
+class ReynoldsFem {
+ public:
+  /// sliding_axis: 0 = mesh x, 1 = mesh y.
+  ReynoldsFem(TriMesh mesh, int sliding_axis, ReynoldsOptions options);
+  ~ReynoldsFem();
+  ReynoldsFem(const ReynoldsFem&) = delete;
+  ReynoldsFem& operator=(const ReynoldsFem&) = delete;
+
+  const TriMesh& mesh() const { return mesh_; }
+  const ReynoldsOptions& options() const { return options_; }
+  void set_cavitation(CavitationModel model) { options_.cavitation = model; }
+  int NodeCount() const { return mesh_.NodeCount(); }
+
+  /// Nodal inputs, filled by the caller before each Solve().
+  Eigen::VectorXd& film_thickness() { return h_; }           ///< h [m], must be > 0
+  Eigen::VectorXd& film_rate() { return dhdt_; }             ///< dh/dt [m/s]
+  Eigen::VectorXd& boundary_pressure() { return p_fixed_; }  ///< p on fixed nodes [Pa] (>= 0)
+  std::vector<std::uint8_t>& extra_fixed() { return extra_fixed_; }  ///< per-solve Dirichlet
+  const Eigen::VectorXd& film_thickness() const { return h_; }
+  const Eigen::VectorXd& film_rate() const { return dhdt_; }
+
+  /// Solves for the current nodal inputs. Returns a reference valid until the next Solve().
+  const ReynoldsSolution& Solve(const ReynoldsParams& params);
+  const ReynoldsSolution& solution() const { return sol_; }
+
+  /// Nodal roughness factors of the last solve.
+  const std::vector<NodalFilmFactors>& factors() const { return factors_; }
+  /// Integral of the product of two P1 fields over the mesh (exact) [unit a * unit b * m^2].
+  double IntegrateProduct(const Eigen::VectorXd& a, const Eigen::VectorXd& b) const;
+  /// Integral of one P1 field.
+  double Integrate(const Eigen::VectorXd& a) const;
+  /// Lumped nodal areas [m^2].
+  const std::vector<double>& lumped_area() const { return lumped_area_; }
+  /// Element geometry: area and shape-function gradients.
+  struct Element {
+    std::array<int, 3> node;
+    double area;
+    std::array<double, 3> dndx, dndy;
+  };
+  const std::vector<Element>& elements() const { return elements_; }
+  /// True when every off-diagonal of the last assembled matrix is <= 0 (M-matrix check).
+  bool LastMatrixIsMMatrix() const;
+  /// The last assembled stiffness matrix (lower triangle) and load vector, for benchmarks.
+  const Eigen::SparseMatrix<double>& stiffness_lower() const { return k_lower_; }
+  const Eigen::VectorXd& load() const { return f_; }
+
+ private:
+  void Assemble(const ReynoldsParams& params);
+  bool SolveReynoldsLcp(bool unconstrained);
+  bool SolveJfo();
+  void FinishStats();
+
+  TriMesh mesh_;
+  int axis_;
+  ReynoldsOptions options_;
+  std::vector<Element> elements_;
+  std::vector<double> lumped_area_;
+  // Lower-triangular stiffness (SPD solver) and its full version (JFO LU), same element maps.
+  Eigen::SparseMatrix<double> k_lower_, work_lower_, k_full_, m_full_;
+  std::vector<std::array<int, 6>> elem_pos_lower_;  // (00,11,22,10,20,21) -> value index
+  std::vector<std::array<int, 9>> elem_pos_full_;
+  std::vector<int> nz_row_, nz_col_;  // lower pattern: row/col of each value
+  std::vector<int> full_col_of_;      // full pattern: col of each value
+  std::vector<int> diag_pos_full_, down_pos_plus_, down_pos_minus_;  // JFO transport slots
+  std::vector<int> down_node_plus_, down_node_minus_;
+  std::vector<double> face_width_;  // dual-cell width across the sliding direction [m]
+  std::unique_ptr<SparseLdlt> ldlt_;
+  std::unique_ptr<Eigen::SparseLU<Eigen::SparseMatrix<double>>> lu_;
+  bool lu_analyzed_ = false;
+  Eigen::VectorXd h_, dhdt_, p_fixed_, f_, rhs_, x_, work_;
+  std::vector<std::uint8_t> extra_fixed_, fixed_, active_, prev_active_, next_active_;
+  bool have_prev_ = false;
+  std::vector<NodalFilmFactors> factors_;
+  Eigen::VectorXd phi_c_, source_scale_;
+  double u_sum_ = 0, flow_scale_ = 1;
+  ReynoldsSolution sol_;
+};
+
+}  // namespace filmdyn::lubrication

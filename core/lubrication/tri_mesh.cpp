@@ -1,0 +1,72 @@
+#include "core/lubrication/tri_mesh.hpp"
+
+#include <cassert>
+#include <cmath>
+#include <stdexcept>
+
+namespace filmdyn::lubrication {
+
+double TriMesh::ColumnWidth(int i) const {
+  const int n = nx_nodes();
+  if (periodic_x && i == n - 1) return x_period - x_lines[n - 1];
+  return x_lines[i + 1] - x_lines[i];
+}
+
+std::vector<double> Linspace(double a, double b, int n) {
+  std::vector<double> v(n + 1);
+  for (int k = 0; k <= n; ++k) v[k] = a + (b - a) * static_cast<double>(k) / n;
+  v[n] = b;  // exact end point
+  return v;
+}
+
+TriMesh MakeTensorMesh(std::vector<double> x_lines, std::vector<double> y_lines, bool periodic_x,
+                       double x_period) {
+  // Meshes are built by our own joint code from validated counts: bad sizes here are bugs.
+  if (x_lines.size() < 2 || y_lines.size() < 2) {
+    throw std::logic_error("MakeTensorMesh: need at least 2 lines per direction");
+  }
+  TriMesh m;
+  m.x_lines = std::move(x_lines);
+  m.y_lines = std::move(y_lines);
+  m.periodic_x = periodic_x;
+  m.x_period = x_period;
+  const int nx = m.nx_nodes();
+  const int ny = m.ny_nodes();
+  m.x.resize(static_cast<size_t>(nx) * ny);
+  m.y.resize(m.x.size());
+  m.fixed.assign(m.x.size(), 0);
+  for (int j = 0; j < ny; ++j) {
+    for (int i = 0; i < nx; ++i) {
+      m.x[m.Node(i, j)] = m.x_lines[i];
+      m.y[m.Node(i, j)] = m.y_lines[j];
+    }
+  }
+  const int ncol = m.ElementColumns();
+  m.triangles.reserve(static_cast<size_t>(2) * ncol * (ny - 1));
+  for (int j = 0; j + 1 < ny; ++j) {
+    for (int i = 0; i < ncol; ++i) {
+      const int i1 = (i + 1) % nx;
+      const int a = m.Node(i, j), b = m.Node(i1, j), c = m.Node(i1, j + 1), d = m.Node(i, j + 1);
+      // Two right triangles per rectangle, right angles at a and c: legs along x and y.
+      m.triangles.push_back({a, b, d});
+      m.triangles.push_back({c, d, b});
+    }
+  }
+  return m;
+}
+
+std::vector<double> LumpedAreas(const TriMesh& mesh) {
+  std::vector<double> area(mesh.NodeCount(), 0.0);
+  for (const auto& t : mesh.triangles) {
+    // Right triangle with legs along the axes: node 0 is the right angle (see MakeTensorMesh).
+    const double lx = std::abs(mesh.x[t[1]] - mesh.x[t[0]]);
+    const double ly = std::abs(mesh.y[t[2]] - mesh.y[t[0]]);
+    double wx = lx;
+    if (mesh.periodic_x && lx > 0.5 * mesh.x_period) wx = mesh.x_period - lx;  // wrap column
+    const double third = 0.5 * wx * ly / 3.0;  // integral of N_k over a triangle is A/3
+    for (int k = 0; k < 3; ++k) area[t[k]] += third;
+  }
+  return area;
+}
+
+}  // namespace filmdyn::lubrication
