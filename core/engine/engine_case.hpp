@@ -28,7 +28,8 @@ struct CrankTrainGeometry {
   double skirt_top_to_pin = 11.8e-3;           ///< a_p, + toward the crank [m]
   double skirt_top_to_com = -1.737e-3;         ///< b_p, + toward the crank [m]
   double liner_radius = 36.50e-3;              ///< R_l, bore radius; gas force area π R_l² [m]
-  double gravity = 9.81;  ///< [m/s²], along −Y (cylinder axis vertical, head up)
+  double compression_ratio = 10.5;  ///< for the synthetic pressure model only [-] (assumed)
+  double gravity = 9.81;            ///< [m/s²], along −Y (cylinder axis vertical, head up)
 };
 
 /// The piston skirt–liner joint (Table I); used by the lubricated model (issue 5).
@@ -41,8 +42,8 @@ struct SkirtCase {
   double roughness_skirt = 0.615e-6;               ///< σ_skirt [m]
   double roughness_liner = 0.815e-6;               ///< σ_liner [m]
   double peklenik = 1.0;                           ///< γ of the composite surface [-] (assumed)
-  double composite_modulus = 1.0e11;               ///< E' [Pa] (assumed)
-  double boundary_friction = 0.13;                 ///< μ_f [-]
+  double composite_modulus = 9.82e10;  ///< E' [Pa] (assumed: Al-Si piston, cast-iron liner)
+  double boundary_friction = 0.13;     ///< μ_f [-]
   /// Barrel profile h_skirt(y): axial positions from the skirt top [m] and radial drop [m].
   std::vector<double> profile_y = {0.0, 7.0e-3, 14.0e-3, 21.0e-3, 28.0e-3};
   std::vector<double> profile_h = {20.0e-6, 5.0e-6, 0.0, 5.0e-6, 20.0e-6};
@@ -57,7 +58,7 @@ struct BigEndCase {
   double roughness_journal = 0.308e-6;  ///< σ_journal [m]
   double roughness_bearing = 0.408e-6;  ///< σ_bearing [m]
   double peklenik = 1.0;                ///< [-] (assumed)
-  double composite_modulus = 2.0e11;    ///< E' [Pa] (assumed)
+  double composite_modulus = 1.172e11;  ///< E' [Pa] (assumed: steel journal, Al-Sn lining)
   double boundary_friction = 0.13;      ///< μ_f [-]
   double oil_feed_pressure = 0.0;       ///< gauge [Pa]; 0 = no feed hole (assumed)
 };
@@ -101,7 +102,6 @@ struct EngineCase {
   OperatingCase operating;
   std::vector<PressureCurveSource> pressure_curves;
   SolverCase solver;
-  double compression_ratio = 10.5;  ///< for the synthetic pressure model only [-] (assumed)
   /// Dotted path → reason, for every value the paper does not give (SPEC §3.3).
   std::map<std::string, std::string> assumed;
 };

@@ -1,0 +1,43 @@
+#pragma once
+/// @file The case file (JSON, SPEC §3.3; every field in docs/case-file.md). One visitor,
+/// VisitCase, lists every field once with its unit and allowed range; reading, writing and
+/// checking are visitors over it (Drake's Serialize(Archive*) pattern).
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "core/engine/engine_case.hpp"
+#include "core/engine/pressure_curve.hpp"
+
+namespace filmdyn::io {
+
+/// Reads and checks a case from JSON. Missing fields keep their defaults; unknown fields, wrong
+/// types, values out of range, NaN and inconsistent geometry throw InputError naming the dotted
+/// path (e.g. "geometry.rod_length").
+engine::EngineCase CaseFromJson(const nlohmann::json& json);
+/// Writes every field (and the "assumed" notes).
+nlohmann::json CaseToJson(const engine::EngineCase& engine_case);
+
+/// `--set key=value`: replaces the scalar at a dotted JSON path ("geometry.rod_length=0.13",
+/// "skirt.model=lubricated", "pressure_curves.0.rpm=1000"). The path must name an existing
+/// scalar; numbers are parsed strictly. Throws InputError naming the path.
+void ApplyOverride(nlohmann::json* json, const std::string& assignment);
+
+/// A case and the directory its relative file names resolve against.
+struct LoadedCase {
+  engine::EngineCase value;
+  std::filesystem::path directory;  ///< empty for the embedded default case
+  std::string source;               ///< file path or "embedded:cases/default.json"
+};
+
+/// Loads a case file (or the embedded default when path is empty), applies the overrides.
+LoadedCase LoadCase(const std::filesystem::path& path,
+                    const std::vector<std::string>& overrides = {});
+
+/// The cylinder-pressure curve for `rpm`: the case curve at that speed, or linear interpolation
+/// between the two neighbouring speeds; InputError outside the tabulated speeds. CSV files are
+/// resolved against the case directory, then against resources/ (embedded copies).
+engine::PressureCurve PressureCurveForSpeed(const LoadedCase& loaded, double rpm);
+
+}  // namespace filmdyn::io

@@ -1,0 +1,105 @@
+#include "core/io/pressure_csv.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <numbers>
+#include <sstream>
+
+#include "core/input_error.hpp"
+
+namespace filmdyn::io {
+
+namespace {
+
+std::string Trim(const std::string& text) {
+  const auto begin = text.find_first_not_of(" \t\r\n");
+  if (begin == std::string::npos) return "";
+  return text.substr(begin, text.find_last_not_of(" \t\r\n") - begin + 1);
+}
+
+std::string Lower(std::string text) {
+  std::transform(text.begin(), text.end(), text.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return text;
+}
+
+double ParseCell(const std::string& cell, const std::string& where, const char* column) {
+  const std::string text = Trim(cell);
+  double value = 0.0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (text.empty() || error != std::errc() || end != text.data() + text.size() ||
+      !std::isfinite(value)) {
+    throw InputError(where + " " + column, "\"" + text + "\"", "must be a finite number");
+  }
+  return value;
+}
+
+}  // namespace
+
+engine::PressureCurve ReadPressureCsv(std::istream& in, const std::string& source) {
+  std::string line;
+  int line_number = 0;
+  bool header_seen = false;
+  std::vector<double> angles_deg, pressures;
+  while (std::getline(in, line)) {
+    ++line_number;
+    const std::string text = Trim(line);
+    if (text.empty() || text[0] == '#') continue;
+    const std::string where = source + ":" + std::to_string(line_number);
+    const auto comma = text.find(',');
+    if (!header_seen) {
+      std::string header = Lower(text);
+      header.erase(std::remove_if(header.begin(), header.end(),
+                                  [](unsigned char c) { return std::isspace(c); }),
+                   header.end());
+      if (header != "crank_angle[deg],pressure[pa]") {
+        throw InputError(where + " header", "\"" + text + "\"",
+                         "must be \"crank_angle[deg],pressure[Pa]\" (absolute pressure in Pa)");
+      }
+      header_seen = true;
+      continue;
+    }
+    if (comma == std::string::npos || text.find(',', comma + 1) != std::string::npos) {
+      throw InputError(where, "\"" + text + "\"", "must have exactly two columns: angle, pressure");
+    }
+    angles_deg.push_back(ParseCell(text.substr(0, comma), where, "crank_angle[deg]"));
+    pressures.push_back(ParseCell(text.substr(comma + 1), where, "pressure[Pa]"));
+    if (pressures.back() < 0) {
+      throw InputError(where + " pressure[Pa]", FormatValue(pressures.back()),
+                       "must be an absolute pressure >= 0 [Pa]");
+    }
+    if (angles_deg.back() < 0 || angles_deg.back() > 720) {
+      throw InputError(where + " crank_angle[deg]", FormatValue(angles_deg.back()),
+                       "must lie in [0, 720] °CA");
+    }
+  }
+  if (!header_seen) throw InputError(source, "empty", "needs a header and rows covering 0–720 °CA");
+  std::vector<double> angles(angles_deg.size());
+  std::transform(angles_deg.begin(), angles_deg.end(), angles.begin(),
+                 [](double d) { return d * std::numbers::pi / 180.0; });
+  return engine::PressureCurve(std::move(angles), std::move(pressures), source);
+}
+
+engine::PressureCurve ReadPressureCsvFile(const std::filesystem::path& path) {
+  std::ifstream file(path);
+  if (!file) throw InputError("--pressure-curve", path.string(), "cannot open the file");
+  return ReadPressureCsv(file, path.string());
+}
+
+void WritePressureCsv(std::ostream& out, const std::vector<double>& crank_angle_deg,
+                      const std::vector<double>& pressure, const std::string& comment) {
+  std::istringstream lines(comment);
+  std::string line;
+  while (std::getline(lines, line)) out << "# " << line << "\n";
+  out << "crank_angle[deg],pressure[Pa]\n";
+  char buffer[64];
+  for (std::size_t k = 0; k < crank_angle_deg.size(); ++k) {
+    std::snprintf(buffer, sizeof buffer, "%.2f,%.1f\n", crank_angle_deg[k], pressure[k]);
+    out << buffer;
+  }
+}
+
+}  // namespace filmdyn::io

@@ -1,0 +1,21 @@
+#pragma once
+/// @file Cylinder-pressure tables as CSV: a header `crank_angle[deg],pressure[Pa]` (absolute
+/// pressure), one row per crank angle covering 0–720 °CA; lines starting with '#' are comments.
+#include <filesystem>
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+#include "core/engine/pressure_curve.hpp"
+
+namespace filmdyn::io {
+
+/// Parses CSV text; `source` names the file in errors ("curve.csv:12"). Throws InputError.
+engine::PressureCurve ReadPressureCsv(std::istream& in, const std::string& source);
+engine::PressureCurve ReadPressureCsvFile(const std::filesystem::path& path);
+
+/// Writes the table with the standard header, after `comment` lines (each prefixed "# ").
+void WritePressureCsv(std::ostream& out, const std::vector<double>& crank_angle_deg,
+                      const std::vector<double>& pressure, const std::string& comment);
+
+}  // namespace filmdyn::io

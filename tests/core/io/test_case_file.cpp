@@ -1,0 +1,161 @@
+// The case file: the shipped default loads and equals the built-in defaults (Table I in SI), every
+// field round-trips, bad input is rejected naming the field, --set overrides, the pressure curve
+// resolves from the case (on disk and embedded) at and between the shipped speeds.
+#include <QtTest>
+
+#include <fstream>
+
+#include "core/input_error.hpp"
+#include "core/io/case_file.hpp"
+#include "core/io/resources.hpp"
+
+using namespace filmdyn;
+using nlohmann::json;
+
+namespace {
+json DefaultJson() {
+  std::ifstream file(std::string(FILMDYN_SOURCE_DIR) + "/resources/cases/default.json");
+  return json::parse(file);
+}
+// The InputError's field for a case JSON, or "" if it loads.
+std::string ErrorField(const json& j) {
+  try {
+    io::CaseFromJson(j);
+  } catch (const InputError& e) {
+    return e.field();
+  }
+  return "";
+}
+}  // namespace
+
+class TestCaseFile : public QObject {
+  Q_OBJECT
+ private slots:
+  void defaultCaseIsTableOne() {
+    const engine::EngineCase c = io::CaseFromJson(DefaultJson());
+    QCOMPARE(c.geometry.crank_radius, 39.93e-3);
+    QCOMPARE(c.geometry.rod_length, 129.5e-3);
+    QCOMPARE(c.geometry.rod_mass, 0.345);
+    QCOMPARE(c.geometry.piston_inertia, 1.29e-4);
+    QCOMPARE(c.big_end.bearing_radius - c.big_end.journal_radius, 15.00e-3 - 14.95e-3);
+    QCOMPARE(c.lubricant.viscosity, 0.02);
+    QCOMPARE(c.pressure_curves.size(), std::size_t(4));
+    // The file and the struct defaults agree (one source of truth for the GUI's "reset").
+    engine::EngineCase defaults;
+    defaults.description = c.description;
+    defaults.pressure_curves = c.pressure_curves;
+    defaults.assumed = c.assumed;
+    QCOMPARE(io::CaseToJson(c), io::CaseToJson(defaults));
+    // Values the paper lacks are marked with a reason.
+    for (const char* field : {"geometry.crank_mass", "skirt.peklenik", "big_end.composite_modulus",
+                              "skirt.profile_h", "big_end.oil_feed_pressure"}) {
+      QVERIFY2(c.assumed.count(field) && !c.assumed.at(field).empty(), field);
+    }
+  }
+  void roundTrip() {
+    engine::EngineCase c = io::CaseFromJson(DefaultJson());
+    c.geometry.pin_offset = -1.25e-3;
+    c.skirt.model = engine::JointModel::kLubricated;
+    c.solver.max_cycles = 7;
+    engine::PressureCurveSource inline_curve;
+    inline_curve.rpm = 3000;
+    inline_curve.crank_angle_deg = {0, 360};
+    inline_curve.pressure = {1, 2};
+    c.pressure_curves.push_back(inline_curve);
+    const json once = io::CaseToJson(c);
+    const json twice = io::CaseToJson(io::CaseFromJson(once));
+    QCOMPARE(once, twice);
+    QCOMPARE(io::CaseFromJson(once).skirt.model, engine::JointModel::kLubricated);
+  }
+  void badInputNamesTheField() {
+    auto with = [](const std::string& section, const std::string& key, json value) {
+      json j = DefaultJson();
+      j[section][key] = value;
+      return j;
+    };
+    QCOMPARE(ErrorField(with("geometry", "rod_mass", -0.3)), std::string("geometry.rod_mass"));
+    QCOMPARE(ErrorField(with("geometry", "crank_radius", -0.04)),
+             std::string("geometry.crank_radius"));
+    QCOMPARE(ErrorField(with("geometry", "rod_length", 0.03)), std::string("geometry.rod_length"));
+    QCOMPARE(ErrorField(with("big_end", "width", "nan")), std::string("big_end.width"));
+    QCOMPARE(ErrorField(with("lubricant", "viscosity", "wet")), std::string("lubricant.viscosity"));
+    QCOMPARE(ErrorField(with("skirt", "model", "greasy")), std::string("skirt.model"));
+    QCOMPARE(ErrorField(with("big_end", "journal_radius", 0.016)),
+             std::string("big_end.journal_radius"));
+    QCOMPARE(ErrorField(with("solver", "max_cycles", 2.5)), std::string("solver.max_cycles"));
+    QCOMPARE(ErrorField(with("geometry", "rod_lenght", 0.13)), std::string("geometry.rod_lenght"));
+    json bad_note = DefaultJson();
+    bad_note["assumed"]["geometry.nothing"] = "x";
+    QCOMPARE(ErrorField(bad_note), std::string("assumed.geometry.nothing"));
+    // The message names value and range.
+    try {
+      io::CaseFromJson(with("geometry", "rod_mass", -0.3));
+      QFAIL("no error");
+    } catch (const InputError& e) {
+      QVERIFY(std::string(e.what()).find("-0.3") != std::string::npos);
+      QVERIFY(std::string(e.what()).find("> 0") != std::string::npos);
+    }
+  }
+  void setOverrides() {
+    json j = DefaultJson();
+    io::ApplyOverride(&j, "geometry.rod_length=0.14");
+    io::ApplyOverride(&j, "skirt.model=lubricated");
+    io::ApplyOverride(&j, "pressure_curves.0.rpm=1500");
+    const engine::EngineCase c = io::CaseFromJson(j);
+    QCOMPARE(c.geometry.rod_length, 0.14);
+    QCOMPARE(c.pressure_curves[0].rpm, 1500.0);
+    auto field = [&](const std::string& assignment) {
+      json k = DefaultJson();
+      try {
+        io::ApplyOverride(&k, assignment);
+        io::CaseFromJson(k);
+      } catch (const InputError& e) {
+        return e.field();
+      }
+      return std::string();
+    };
+    QCOMPARE(field("geometry.rod_length=abc"), std::string("--set geometry.rod_length"));
+    QCOMPARE(field("geometry.no_such=1"), std::string("--set geometry.no_such"));
+    QCOMPARE(field("geometry=1"), std::string("--set geometry"));
+    QCOMPARE(field("geometry.rod_mass=nan"), std::string("geometry.rod_mass"));
+    QCOMPARE(field("novalue"), std::string("--set"));
+  }
+  void pressureCurvesResolve() {
+    const io::LoadedCase embedded = io::LoadCase({});  // the compiled-in default
+    QVERIFY(embedded.directory.empty());
+    const auto at_6000 = io::PressureCurveForSpeed(embedded, 6000);
+    QVERIFY(at_6000.PeakPressure() > 4e6);
+    const io::LoadedCase on_disk =
+        io::LoadCase(std::string(FILMDYN_SOURCE_DIR) + "/resources/cases/default.json");
+    QCOMPARE(io::PressureCurveForSpeed(on_disk, 6000).PeakPressure(), at_6000.PeakPressure());
+    // Between speeds: a blend, within the neighbours' peaks.
+    const double p2 = io::PressureCurveForSpeed(embedded, 2000).PeakPressure();
+    const double p4 = io::PressureCurveForSpeed(embedded, 4000).PeakPressure();
+    const double p3 = io::PressureCurveForSpeed(embedded, 3000).PeakPressure();
+    QVERIFY(p3 >= std::min(p2, p4) - 1 && p3 <= std::max(p2, p4) + 1);
+    try {
+      io::PressureCurveForSpeed(embedded, 9000);
+      QFAIL("no error");
+    } catch (const InputError& e) {
+      QCOMPARE(e.field(), std::string("operating.rpm"));
+    }
+    // A curve file that does not exist names the field.
+    json j = DefaultJson();
+    j["pressure_curves"][0]["file"] = "missing.csv";
+    io::LoadedCase broken{io::CaseFromJson(j), "/nonexistent", "test"};
+    try {
+      io::PressureCurveForSpeed(broken, 1000);
+      QFAIL("no error");
+    } catch (const InputError& e) {
+      QCOMPARE(e.field(), std::string("pressure_curves.0.file"));
+    }
+  }
+  void embeddedResourcesPresent() {
+    QVERIFY(io::ReadResource("cases/default.json").has_value());
+    QVERIFY(io::ReadResource("pressure/synthetic_1000rpm.csv").has_value());
+    QVERIFY(!io::ReadResource("pressure/none.csv").has_value());
+  }
+};
+
+QTEST_GUILESS_MAIN(TestCaseFile)
+#include "test_case_file.moc"
