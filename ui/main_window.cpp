@@ -3,39 +3,487 @@
 #include <QAction>
 #include <QApplication>
 #include <QCloseEvent>
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QInputDialog>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QProgressBar>
 #include <QSettings>
+#include <QSplitter>
 #include <QStatusBar>
+#include <QStyle>
 #include <QTabWidget>
+#include <QToolBar>
+#include <QUndoStack>
+#include <QVBoxLayout>
 
 #include "ui/about_info.hpp"
+#include "ui/case_editor/case_document.hpp"
+#include "ui/case_editor/case_editor.hpp"
+#include "ui/case_editor/case_json.hpp"
+#include "ui/case_editor/case_parameters.hpp"
+#include "ui/charts/chart_export.hpp"
+#include "ui/fields/field_view.hpp"
+#include "ui/plots/plot_panel.hpp"
+#include "ui/run/run_controller.hpp"
+#include "ui/runs/results_csv.hpp"
+#include "ui/runs/run_table.hpp"
 
 namespace filmdyn::ui {
+
+namespace {
+constexpr int kMaxRecentFiles = 8;
+const char* kProjectFilter = QT_TRANSLATE_NOOP("MainWindow", "FilmDyn case (*.json)");
+}  // namespace
 
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   setWindowTitle("FilmDyn");
   setObjectName("MainWindow");
+  document_ = new CaseDocument(this);
+  engine::EngineCase initial;
+  QString error;
+  if (!LoadCaseFile({}, &initial, &error)) {
+    initial = engine::EngineCase{};
+    statusBar()->showMessage(error);
+  }
+  document_->reset(initial);
+
   workspace_ = new QTabWidget(this);
   workspace_->setObjectName("workspace");
   workspace_->setDocumentMode(true);
   setCentralWidget(workspace_);
+  case_editor_ = new CaseEditor(document_, workspace_);
+  workspace_->addTab(case_editor_, tr("Case"));
+  run_controller_ = new RunController(this);
+  createRunPage();
+  field_view_ = new FieldView(workspace_);
+  field_view_->setObjectName("field_view");
+  workspace_->addTab(field_view_, tr("Pressure fields"));
+  connect(field_view_, &FieldView::crankAngleChanged, plot_panel_, &PlotPanel::setCursorAngle);
+
   createMenus();
-  statusBar()->showMessage(tr("Ready"));
+  blocker_label_ = new QLabel(this);
+  blocker_label_->setObjectName("run_blocker");
+  blocker_label_->setStyleSheet("color: #a00000");
+  statusBar()->addPermanentWidget(blocker_label_);
+  connect(case_editor_, &CaseEditor::statusMessage, this,
+          [this](const QString& m) { statusBar()->showMessage(m, 8000); });
+  connect(plot_panel_, &PlotPanel::statusMessage, this,
+          [this](const QString& m) { statusBar()->showMessage(m, 8000); });
+  connect(document_, &CaseDocument::validityChanged, this, &MainWindow::updateRunActions);
+  connect(document_, &CaseDocument::modifiedChanged, this, &MainWindow::updateTitle);
+  connect(document_, &CaseDocument::filePathChanged, this, &MainWindow::updateTitle);
+  connect(run_controller_, &RunController::runStarted, this, &MainWindow::onRunUpdated);
+  connect(run_controller_, &RunController::runUpdated, this, &MainWindow::onRunUpdated);
+  connect(run_controller_, &RunController::runFinished, this, &MainWindow::onRunFinished);
+  if (statusBar()->currentMessage().isEmpty()) statusBar()->showMessage(tr("Ready"));
+  updateRunActions();
+  updateTitle();
   restoreWindowState();
 }
 
 MainWindow::~MainWindow() = default;
 
+void MainWindow::createRunPage() {
+  auto* page = new QWidget(workspace_);
+  auto* layout = new QVBoxLayout(page);
+  layout->setContentsMargins(0, 0, 0, 0);
+  run_splitter_ = new QSplitter(Qt::Vertical, page);
+  run_splitter_->setObjectName("run_splitter");
+  plot_panel_ = new PlotPanel(run_splitter_);
+  run_table_ = new RunTable(run_splitter_);
+  run_splitter_->addWidget(plot_panel_);
+  run_splitter_->addWidget(run_table_);
+  run_splitter_->setStretchFactor(0, 4);
+  run_splitter_->setStretchFactor(1, 1);
+  layout->addWidget(run_splitter_);
+  connect(run_table_, &RunTable::visibilityToggled, plot_panel_, &PlotPanel::setRunVisible);
+  connect(run_table_, &QTableWidget::currentCellChanged, this, [this] {
+    if (RunHandle run = run_table_->currentRun()) field_view_->setFrames(nullptr, run->label());
+  });
+  workspace_->addTab(page, tr("Run and results"));
+}
+
 void MainWindow::createMenus() {
+  auto icon = [this](QStyle::StandardPixmap p) { return style()->standardIcon(p); };
   QMenu* file_menu = menuBar()->addMenu(tr("&File"));
+  QAction* new_action = file_menu->addAction(icon(QStyle::SP_FileIcon), tr("&New (default case)"),
+                                             this, &MainWindow::newProject);
+  new_action->setShortcut(QKeySequence::New);
+  QAction* open = file_menu->addAction(icon(QStyle::SP_DialogOpenButton), tr("&Open…"), this,
+                                       &MainWindow::openProjectInteractive);
+  open->setShortcut(QKeySequence::Open);
+  recent_menu_ = file_menu->addMenu(tr("Open &recent"));
+  rebuildRecentMenu();
+  QAction* save = file_menu->addAction(icon(QStyle::SP_DialogSaveButton), tr("&Save"), this,
+                                       &MainWindow::saveProject);
+  save->setShortcut(QKeySequence::Save);
+  QAction* save_as =
+      file_menu->addAction(tr("Save &as…"), this, &MainWindow::saveProjectAsInteractive);
+  save_as->setShortcut(QKeySequence::SaveAs);
+  file_menu->addSeparator();
+  QMenu* export_menu = file_menu->addMenu(tr("&Export"));
+  QAction* export_plots = export_menu->addAction(tr("All &plots (PNG, SVG, PDF)…"), this,
+                                                 &MainWindow::exportPlotsInteractive);
+  export_plots->setShortcut(QKeySequence(tr("Ctrl+E")));
+  export_menu->addAction(tr("&Results of the selected run (CSV)…"), this,
+                         &MainWindow::exportResultsInteractive);
+  export_menu->addAction(tr("Pressure &fields (VTU/PVD)…"), this,
+                         &MainWindow::exportFieldsInteractive);
+  export_menu->addAction(tr("Cylinder pressure curve (CSV)…"), case_editor_,
+                         [this] { case_editor_->exportPressureCsv(); });
+  file_menu->addAction(tr("&Import cylinder pressure (CSV)…"), case_editor_,
+                       [this] { case_editor_->importPressureCsv(); });
+  file_menu->addSeparator();
   QAction* quit = file_menu->addAction(tr("&Quit"), this, &QWidget::close);
   quit->setShortcut(QKeySequence::Quit);
 
+  QMenu* edit_menu = menuBar()->addMenu(tr("&Edit"));
+  QAction* undo = document_->undoStack()->createUndoAction(this, tr("&Undo"));
+  undo->setShortcut(QKeySequence::Undo);
+  QAction* redo = document_->undoStack()->createRedoAction(this, tr("&Redo"));
+  redo->setShortcuts({QKeySequence::Redo, QKeySequence(tr("Ctrl+Y"))});
+  edit_menu->addAction(undo);
+  edit_menu->addAction(redo);
+
+  QMenu* run_menu = menuBar()->addMenu(tr("&Run"));
+  run_action_ =
+      run_menu->addAction(icon(QStyle::SP_MediaPlay), tr("&Run"), this, &MainWindow::startRun);
+  run_action_->setShortcuts({QKeySequence(Qt::Key_F5), QKeySequence(tr("Ctrl+R"))});
+  cancel_action_ = run_menu->addAction(icon(QStyle::SP_MediaStop), tr("&Cancel run"),
+                                       run_controller_, &RunController::cancel);
+  cancel_action_->setShortcut(QKeySequence(tr("Shift+F5")));
+  run_menu->addAction(tr("Re&move selected run"), this, &MainWindow::removeSelectedRun);
+
+  QMenu* view_menu = menuBar()->addMenu(tr("&View"));
+  const QStringList pages = {tr("&Case"), tr("Run and &results"), tr("Pressure &fields")};
+  for (int i = 0; i < pages.size(); ++i) {
+    QAction* a =
+        view_menu->addAction(pages[i], this, [this, i] { workspace_->setCurrentIndex(i); });
+    a->setShortcut(QKeySequence(QString("Ctrl+%1").arg(i + 1)));
+  }
+
   QMenu* help_menu = menuBar()->addMenu(tr("&Help"));
   help_menu->addAction(tr("&About FilmDyn"), this, &MainWindow::showAbout);
+
+  QToolBar* toolbar = addToolBar(tr("Main"));
+  toolbar->setObjectName("main_toolbar");
+  toolbar->addAction(new_action);
+  toolbar->addAction(open);
+  toolbar->addAction(save);
+  toolbar->addSeparator();
+  toolbar->addAction(undo);
+  toolbar->addAction(redo);
+  toolbar->addSeparator();
+  toolbar->addAction(run_action_);
+  toolbar->addAction(cancel_action_);
+  progress_bar_ = new QProgressBar(toolbar);
+  progress_bar_->setObjectName("run_progress");
+  progress_bar_->setRange(0, 1000);
+  progress_bar_->setValue(0);
+  progress_bar_->setTextVisible(true);
+  progress_bar_->setFormat(tr("idle"));
+  progress_bar_->setMaximumWidth(360);
+  progress_bar_->setMinimumWidth(260);
+  toolbar->addWidget(progress_bar_);
+  run_state_label_ = new QLabel(toolbar);
+  run_state_label_->setObjectName("run_state");
+  run_state_label_->setContentsMargins(8, 0, 8, 0);
+  toolbar->addWidget(run_state_label_);
 }
+
+void MainWindow::updateTitle() {
+  // Plain "FilmDyn" for the untouched default case; otherwise "file * — FilmDyn".
+  const bool modified = document_->isModified();
+  QString title = "FilmDyn";
+  if (!document_->filePath().isEmpty() || modified) {
+    const QString file = document_->filePath().isEmpty()
+                             ? tr("default case")
+                             : QFileInfo(document_->filePath()).fileName();
+    title = QString("%1%2 — FilmDyn").arg(file, modified ? " *" : "");
+  }
+  setWindowTitle(title);
+}
+
+void MainWindow::updateRunActions() {
+  const QString blocker = document_->runBlocker();
+  const bool running = run_controller_->isRunning();
+  run_action_->setEnabled(blocker.isEmpty() && !running);
+  cancel_action_->setEnabled(running);
+  run_action_->setToolTip(blocker.isEmpty() ? tr("Run the case (F5)")
+                                            : tr("Cannot run: %1").arg(blocker));
+  blocker_label_->setText(blocker.isEmpty() ? QString() : tr("Cannot run: %1").arg(blocker));
+  blocker_label_->setToolTip(blocker);
+}
+
+void MainWindow::startRun() {
+  if (!document_->runBlocker().isEmpty() || run_controller_->isRunning()) return;
+  RunRequest request;
+  request.engine_case = document_->engineCase();
+  request.model = RunModelKey(request.engine_case).toStdString();
+  request.rpm = request.engine_case.operating.rpm;
+  RunHandle run = run_controller_->start(std::move(request));
+  if (!run) return;
+  run_state_label_->setStyleSheet({});
+  run_state_label_->setText(tr("Running %1").arg(run->label()));
+  workspace_->setCurrentIndex(1);
+  updateRunActions();
+}
+
+void MainWindow::onRunUpdated(const RunHandle& run) {
+  plot_panel_->updateRun(run);
+  run_table_->updateRun(run);
+  if (run->status() != RunStatus::kRunning) return;
+  const RunProgress p = run->progress();
+  const double fraction = p.fraction >= 0 ? p.fraction : p.cycle_fraction;
+  progress_bar_->setValue(int(1000 * std::clamp(fraction, 0.0, 1.0)));
+  const QString eta =
+      p.remaining >= 0 ? tr(", about %1 s left").arg(p.remaining, 0, 'f', 0) : QString();
+  progress_bar_->setFormat(tr("cycle %1 of ≤ %2 · %3 °CA%4")
+                               .arg(p.cycle)
+                               .arg(p.max_cycles)
+                               .arg(720.0 * p.cycle_fraction, 0, 'f', 0)
+                               .arg(eta));
+  updateRunActions();
+}
+
+void MainWindow::onRunFinished(const RunHandle& run) {
+  onRunUpdated(run);
+  updateRunActions();
+  progress_bar_->setValue(run->status() == RunStatus::kFinished ? 1000 : progress_bar_->value());
+  progress_bar_->setFormat(
+      tr("%1 (%2 s)").arg(RunStatusText(run->status())).arg(run->elapsedSeconds(), 0, 'f', 1));
+  const QString reason = run->reason();
+  if (run->status() == RunStatus::kFailed) {
+    // Inputs stay as they are and the partial results stay in the plots and the table.
+    run_state_label_->setStyleSheet("color: #a00000");
+    run_state_label_->setText(tr("%1 failed: %2").arg(run->label(), reason));
+    statusBar()->showMessage(tr("Run failed: %1 (inputs and partial results kept)").arg(reason));
+  } else {
+    run_state_label_->setStyleSheet({});
+    run_state_label_->setText(tr("%1 %2").arg(run->label(), RunStatusText(run->status())) +
+                              (reason.isEmpty() ? QString() : QString(": %1").arg(reason)));
+    statusBar()->showMessage(run_state_label_->text(), 10000);
+  }
+  run_state_label_->setToolTip(reason);
+  field_view_->setFrames(nullptr, run->label());
+}
+
+void MainWindow::removeSelectedRun() {
+  RunHandle run = run_table_->currentRun();
+  if (!run || run == run_controller_->current()) return;
+  plot_panel_->removeRun(run->id());
+  run_table_->removeRun(run->id());
+}
+
+// ---- Projects ----
+
+void MainWindow::newProject() {
+  if (!maybeSave()) return;
+  engine::EngineCase initial;
+  QString error;
+  if (!LoadCaseFile({}, &initial, &error)) statusBar()->showMessage(error);
+  document_->reset(initial);
+}
+
+bool MainWindow::openProject(const QString& path, QString* error) {
+  QString message;
+  if (!document_->load(path, &message)) {
+    if (error) *error = message;
+    statusBar()->showMessage(message);
+    return false;
+  }
+  addRecentFile(path);
+  statusBar()->showMessage(tr("Opened %1").arg(path), 5000);
+  return true;
+}
+
+void MainWindow::openProjectInteractive() {
+  if (!maybeSave()) return;
+  QSettings settings;
+  const QString path = QFileDialog::getOpenFileName(
+      this, tr("Open case"), settings.value("paths/last_dir").toString(), tr(kProjectFilter));
+  if (path.isEmpty()) return;
+  settings.setValue("paths/last_dir", QFileInfo(path).absolutePath());
+  QString error;
+  if (!openProject(path, &error)) QMessageBox::warning(this, tr("Cannot open case"), error);
+}
+
+bool MainWindow::saveProjectAs(const QString& path, QString* error) {
+  QString message;
+  if (!document_->issues().empty()) {
+    // Core refuses such a file; the edits stay here until the cell is fixed.
+    message = tr("Not saved: the case has an invalid value (%1). Fix the marked cell first.")
+                  .arg(QString::fromStdString(document_->issues().begin()->second));
+  } else if (document_->save(path, &message)) {
+    addRecentFile(path);
+    statusBar()->showMessage(tr("Saved %1").arg(path), 5000);
+    return true;
+  }
+  if (error) *error = message;
+  statusBar()->showMessage(message);
+  return false;
+}
+
+bool MainWindow::saveProject() {
+  if (document_->filePath().isEmpty()) return saveProjectAsInteractive();
+  QString error;
+  if (saveProjectAs(document_->filePath(), &error)) return true;
+  QMessageBox::warning(this, tr("Cannot save case"), error);
+  return false;
+}
+
+bool MainWindow::saveProjectAsInteractive() {
+  QSettings settings;
+  QString path = QFileDialog::getSaveFileName(
+      this, tr("Save case"),
+      QDir(settings.value("paths/last_dir").toString())
+          .filePath(QString::fromStdString(document_->engineCase().name) + ".json"),
+      tr(kProjectFilter));
+  if (path.isEmpty()) return false;
+  if (QFileInfo(path).suffix().isEmpty()) path += ".json";
+  settings.setValue("paths/last_dir", QFileInfo(path).absolutePath());
+  QString error;
+  if (saveProjectAs(path, &error)) return true;
+  QMessageBox::warning(this, tr("Cannot save case"), error);
+  return false;
+}
+
+bool MainWindow::maybeSave() {
+  if (!document_->isModified()) return true;
+  const auto answer = QMessageBox::question(
+      this, tr("Unsaved changes"), tr("The case has unsaved changes. Save them?"),
+      QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
+  if (answer == QMessageBox::Cancel) return false;
+  if (answer == QMessageBox::Save) return saveProject();
+  return true;
+}
+
+QStringList MainWindow::recentFiles() const {
+  return QSettings().value("recent_files").toStringList();
+}
+
+void MainWindow::addRecentFile(const QString& path) {
+  QStringList files = recentFiles();
+  const QString absolute = QFileInfo(path).absoluteFilePath();
+  files.removeAll(absolute);
+  files.prepend(absolute);
+  while (files.size() > kMaxRecentFiles) files.removeLast();
+  QSettings().setValue("recent_files", files);
+  rebuildRecentMenu();
+}
+
+void MainWindow::rebuildRecentMenu() {
+  recent_menu_->clear();
+  const QStringList files = recentFiles();
+  for (int i = 0; i < files.size(); ++i) {
+    const QString path = files[i];
+    QAction* a =
+        recent_menu_->addAction(QString("&%1 %2").arg(i + 1).arg(path), this, [this, path] {
+          if (!maybeSave()) return;
+          QString error;
+          if (!openProject(path, &error)) QMessageBox::warning(this, tr("Cannot open case"), error);
+        });
+    a->setToolTip(path);
+  }
+  recent_menu_->setEnabled(!files.isEmpty());
+}
+
+// ---- Export ----
+
+bool MainWindow::exportResultsCsv(const RunHandle& run, const QString& path, QString* error) {
+  if (!run) {
+    if (error) *error = tr("no run to export");
+    return false;
+  }
+  return WriteResultsCsv(run->samples(), path, error);
+}
+
+bool MainWindow::exportAllPlots(const QString& directory, const QStringList& suffixes,
+                                QString* error) {
+  if (!QDir().mkpath(directory)) {
+    if (error) *error = tr("Cannot create %1").arg(directory);
+    return false;
+  }
+  for (int i = 0; i < plot_panel_->chartCount(); ++i) {
+    for (const QString& suffix : suffixes) {
+      const QString path = QDir(directory).filePath(plot_panel_->chartId(i) + "." + suffix);
+      ImageFormat format;
+      if (!FormatFromSuffix(path, &format)) {
+        if (error) *error = tr("unknown image format: %1").arg(suffix);
+        return false;
+      }
+      if (!ExportChart(plot_panel_->chart(i), path, format, QSize(960, 600), error)) return false;
+    }
+  }
+  return true;
+}
+
+void MainWindow::exportPlotsInteractive() {
+  QSettings settings;
+  const QString dir = QFileDialog::getExistingDirectory(
+      this, tr("Export all plots to"), settings.value("paths/export_dir").toString());
+  if (dir.isEmpty()) return;
+  settings.setValue("paths/export_dir", dir);
+  bool ok = false;
+  const QStringList choices = {"png, svg, pdf", "png", "svg", "pdf"};
+  const QString last = settings.value("export/formats", choices.first()).toString();
+  const QString chosen = QInputDialog::getItem(this, tr("Export plots"), tr("Formats:"), choices,
+                                               std::max(0, int(choices.indexOf(last))), false, &ok);
+  if (!ok) return;
+  settings.setValue("export/formats", chosen);
+  QStringList suffixes = chosen.split(", ");
+  QString error;
+  if (exportAllPlots(dir, suffixes, &error)) {
+    statusBar()->showMessage(tr("Wrote %1 plots to %2").arg(plot_panel_->chartCount()).arg(dir),
+                             8000);
+  } else {
+    QMessageBox::warning(this, tr("Export failed"), error);
+  }
+}
+
+void MainWindow::exportResultsInteractive() {
+  RunHandle run = run_table_->currentRun();
+  if (!run) {
+    statusBar()->showMessage(tr("No run to export yet"), 5000);
+    return;
+  }
+  QSettings settings;
+  const QString path = QFileDialog::getSaveFileName(
+      this, tr("Export results"),
+      QDir(settings.value("paths/export_dir").toString()).filePath("results.csv"),
+      tr("CSV (*.csv)"));
+  if (path.isEmpty()) return;
+  settings.setValue("paths/export_dir", QFileInfo(path).absolutePath());
+  QString error;
+  if (exportResultsCsv(run, path, &error)) {
+    statusBar()->showMessage(tr("Wrote %1").arg(path), 8000);
+  } else {
+    QMessageBox::warning(this, tr("Export failed"), error);
+  }
+}
+
+void MainWindow::exportFieldsInteractive() {
+  const FieldFrames* frames = field_view_->frames();
+  if (!frames || frames->empty()) {
+    statusBar()->showMessage(
+        tr("No pressure fields to export: only runs with a lubricated joint have them"), 8000);
+    return;
+  }
+  const QString dir = QFileDialog::getExistingDirectory(this, tr("Export fields to"));
+  if (dir.isEmpty()) return;
+  QString error;
+  if (ExportFieldFrames(*frames, dir, &error)) {
+    statusBar()->showMessage(tr("Wrote fields to %1").arg(dir), 8000);
+  } else {
+    QMessageBox::warning(this, tr("Export failed"), error);
+  }
+}
+
+// ---- Window ----
 
 void MainWindow::showAbout() {
   QString text =
@@ -53,12 +501,21 @@ void MainWindow::restoreWindowState() {
   QSettings settings;
   if (!restoreGeometry(settings.value("main_window/geometry").toByteArray())) resize(1280, 820);
   restoreState(settings.value("main_window/state").toByteArray());
+  run_splitter_->restoreState(settings.value("main_window/run_splitter").toByteArray());
+  workspace_->setCurrentIndex(settings.value("main_window/tab", 0).toInt());
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {
+  if (!maybeSave()) {
+    event->ignore();
+    return;
+  }
+  if (run_controller_->isRunning()) run_controller_->cancel();
   QSettings settings;
   settings.setValue("main_window/geometry", saveGeometry());
   settings.setValue("main_window/state", saveState());
+  settings.setValue("main_window/run_splitter", run_splitter_->saveState());
+  settings.setValue("main_window/tab", workspace_->currentIndex());
   event->accept();
 }
 

@@ -1,11 +1,28 @@
 #pragma once
-/// @file The FilmDyn main window: menus, central workspace tabs, status bar. Window geometry
-/// and state are remembered between sessions (QSettings).
+/// @file The FilmDyn main window: the case editor, the run page (Run/Cancel, progress, live plots
+/// overlaid for every run of the session, the run comparison table) and the pressure-field view;
+/// menus and shortcuts; project files with recent files and an unsaved-changes prompt. Window
+/// geometry, state and preferences are remembered between sessions (QSettings).
 #include <QMainWindow>
+#include <QStringList>
 
+#include "ui/run/run_record.hpp"
+
+class QAction;
+class QLabel;
+class QMenu;
+class QProgressBar;
+class QSplitter;
 class QTabWidget;
 
 namespace filmdyn::ui {
+
+class CaseDocument;
+class CaseEditor;
+class FieldView;
+class PlotPanel;
+class RunController;
+class RunTable;
 
 class MainWindow : public QMainWindow {
   Q_OBJECT
@@ -15,18 +32,68 @@ class MainWindow : public QMainWindow {
   ~MainWindow() override;
 
   QTabWidget* workspace() const { return workspace_; }
+  CaseDocument* document() const { return document_; }
+  CaseEditor* caseEditor() const { return case_editor_; }
+  RunController* runController() const { return run_controller_; }
+  PlotPanel* plotPanel() const { return plot_panel_; }
+  RunTable* runTable() const { return run_table_; }
+  FieldView* fieldView() const { return field_view_; }
+  QAction* runAction() const { return run_action_; }
+  QAction* cancelAction() const { return cancel_action_; }
+  QProgressBar* progressBar() const { return progress_bar_; }
+  QLabel* runStateLabel() const { return run_state_label_; }
+  QStringList recentFiles() const;
+
+  /// Non-interactive operations (menus call them after asking; tests and scripts call directly).
+  bool openProject(const QString& path, QString* error = nullptr);
+  bool saveProjectAs(const QString& path, QString* error = nullptr);
+  bool exportResultsCsv(const RunHandle& run, const QString& path, QString* error = nullptr);
+  /// Writes every plot as <dir>/<plot id>.<suffix> for each suffix in {png, svg, pdf}.
+  bool exportAllPlots(const QString& directory, const QStringList& suffixes,
+                      QString* error = nullptr);
 
  public slots:
   void showAbout();
+  void startRun();
+  void newProject();
+  void openProjectInteractive();
+  bool saveProject();
+  bool saveProjectAsInteractive();
+  void exportPlotsInteractive();
+  void exportResultsInteractive();
+  void exportFieldsInteractive();
+  void removeSelectedRun();
 
  protected:
   void closeEvent(QCloseEvent* event) override;
 
  private:
+  void createRunPage();
   void createMenus();
   void restoreWindowState();
+  void updateTitle();
+  void updateRunActions();
+  void addRecentFile(const QString& path);
+  void rebuildRecentMenu();
+  /// Asks to save unsaved edits; false when the user cancels.
+  bool maybeSave();
+  void onRunUpdated(const RunHandle& run);
+  void onRunFinished(const RunHandle& run);
 
   QTabWidget* workspace_ = nullptr;
+  CaseDocument* document_ = nullptr;
+  CaseEditor* case_editor_ = nullptr;
+  RunController* run_controller_ = nullptr;
+  PlotPanel* plot_panel_ = nullptr;
+  RunTable* run_table_ = nullptr;
+  FieldView* field_view_ = nullptr;
+  QSplitter* run_splitter_ = nullptr;
+  QAction* run_action_ = nullptr;
+  QAction* cancel_action_ = nullptr;
+  QMenu* recent_menu_ = nullptr;
+  QProgressBar* progress_bar_ = nullptr;
+  QLabel* run_state_label_ = nullptr;
+  QLabel* blocker_label_ = nullptr;
 };
 
 }  // namespace filmdyn::ui

@@ -1,7 +1,8 @@
 #pragma once
-/// @file The one place where the GUI maps an EngineCase to and from its JSON project file.
-/// TODO(core case_file): when core/io/case_file lands, these call its load/save (one visitor)
-/// and this file shrinks to the atomic QSaveFile write. Keys are the struct's dotted paths.
+/// @file Project files of the GUI: core's case file (core/io/case_file, one visitor) written
+/// atomically with QSaveFile, so a project opens in `filmdyn run` unchanged. Curves given as CSV
+/// files are read into inline tables on load, so they can be edited and the saved project is
+/// self-contained.
 #include <QString>
 #include <string>
 
@@ -9,15 +10,15 @@
 
 namespace filmdyn::ui {
 
-/// JSON text of a case (SI values, as core reads them).
+/// JSON text of a case (core's CaseToJson).
 std::string CaseToJsonText(const engine::EngineCase& engine_case);
-/// Parses JSON text; unknown keys are an error naming them; missing keys keep their default.
-/// Throws filmdyn::InputError naming the field.
+/// Parses and checks JSON text (core's CaseFromJson). Throws filmdyn::InputError naming the field.
 engine::EngineCase CaseFromJsonText(const std::string& text);
 
 /// Writes atomically (QSaveFile: the old file stays intact on any failure).
 bool SaveCaseFile(const engine::EngineCase& engine_case, const QString& path, QString* error);
-/// Reads a case file; false with *error naming the file and the field on failure.
+/// Reads a case file (core's LoadCase; empty path = the embedded default case) and turns file
+/// curves into inline tables; false with *error naming the file and the field on failure.
 bool LoadCaseFile(const QString& path, engine::EngineCase* engine_case, QString* error);
 
 }  // namespace filmdyn::ui

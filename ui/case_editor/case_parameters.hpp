@@ -1,8 +1,8 @@
 #pragma once
 /// @file The scalar inputs of an EngineCase as the editor shows them: one row per value with its
-/// dotted path (the case-file key), label, display unit and the factor to SI. This table is the
-/// single place where the UI knows the case's scalar fields (editor rows, JSON mapping,
-/// validation), so switching to core's case_file only touches case_json.cpp.
+/// dotted path (the case-file key of core/io/case_file), label, display unit and the factor to SI.
+/// The file mapping itself is core's (case_json.cpp calls it); this table only drives the editor
+/// and the per-cell checks.
 #include <QString>
 #include <functional>
 #include <string>

@@ -5,6 +5,7 @@
 
 #include "core/engine/pressure_curve.hpp"
 #include "core/input_error.hpp"
+#include "core/io/case_file.hpp"
 #include "ui/case_editor/case_parameters.hpp"
 
 namespace filmdyn::ui {
@@ -95,6 +96,26 @@ CaseIssues ValidateCase(const engine::EngineCase& c) {
       }
     } catch (const InputError& e) {
       issues[key] = e.what();
+    }
+  }
+  // Core's own reader checks everything once more (its ranges win where they are stricter).
+  if (issues.empty()) {
+    try {
+      io::CaseFromJson(io::CaseToJson(c));
+    } catch (const InputError& e) {
+      std::string key = e.field();
+      if (key.rfind("pressure_curves", 0) == 0) {
+        // "pressure_curves.2.pressure" or "pressure_curves[2]..." → the table key.
+        const size_t digit = key.find_first_of("0123456789");
+        const size_t end = key.find_first_not_of("0123456789", digit);
+        if (digit != std::string::npos)
+          key = "pressure_curves[" + key.substr(digit, end - digit) + "]";
+      } else if (key.rfind("skirt.profile", 0) == 0) {
+        key = "skirt.profile";
+      }
+      issues[key] = e.what();
+    } catch (const std::exception& e) {
+      issues["case"] = e.what();
     }
   }
   return issues;

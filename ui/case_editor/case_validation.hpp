@@ -1,7 +1,8 @@
 #pragma once
 /// @file Validation of a whole EngineCase for the editor: every problem with the dotted path of the
-/// offending value and core's InputError message. Uses core's Require* helpers and core's
-/// PressureCurve constructor; when core/io/case_file exposes a whole-case check, call it here.
+/// offending value and core's InputError message. Per-cell checks use core's Require* helpers and
+/// core's PressureCurve constructor (every bad cell at once); then core's case reader
+/// (io::CaseFromJson) checks the whole case, so the GUI never accepts what `filmdyn run` refuses.
 #include <map>
 #include <string>
 

@@ -2,6 +2,7 @@
 /// @file The per-output-step quantities of a run: exactly the results.csv columns of SPEC §4, in
 /// SI. A model that lacks a quantity leaves it NaN (an empty CSV cell).
 #include <array>
+#include <cstddef>
 #include <limits>
 
 namespace filmdyn::ui {
@@ -54,8 +55,8 @@ constexpr std::array<const char*, kColumnCount> kColumnHeaders = {"crank_angle[d
 /// One output step.
 struct RunSample {
   RunSample() { values.fill(std::numeric_limits<double>::quiet_NaN()); }
-  double operator[](Column c) const { return values[size_t(c)]; }
-  double& operator[](Column c) { return values[size_t(c)]; }
+  double operator[](Column c) const { return values[std::size_t(c)]; }
+  double& operator[](Column c) { return values[std::size_t(c)]; }
   std::array<double, kColumnCount> values;
 };
 

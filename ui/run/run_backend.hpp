@@ -2,10 +2,12 @@
 /// @file What the GUI needs from a solver run, independent of which core API provides it: a
 /// function called on the worker thread that streams samples and progress into a sink, polls a
 /// cancel flag, and throws (InputError or std::runtime_error) with the reason when it fails.
-/// core_run_backend.cpp adapts core's run-job API to it; tests substitute their own.
+/// core_run_backend.cpp adapts core's run-job API (core/engine/run_job) to it; tests substitute
+/// their own.
 #include <atomic>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "core/engine/engine_case.hpp"
 #include "ui/run/result_columns.hpp"
@@ -23,6 +25,8 @@ struct RunProgress {
   int max_cycles = 0;
   double cycle_fraction = 0;  ///< 0..1 within the current cycle
   double cycle_change = -1;   ///< last cycle-to-cycle change (relative), < 0 when unknown
+  double fraction = -1;       ///< overall progress 0..1 (< 0: unknown)
+  double remaining = -1;      ///< estimated wall time left [s] (< 0: unknown)
 };
 
 /// Receives results on the worker thread. Thread-safe (RunRecord implements it).
@@ -36,6 +40,8 @@ class RunSink {
   virtual void Progress(const RunProgress& progress) = 0;
   /// Free-form solver statistics for the run table ("steps", "rejected steps", ...).
   virtual void Statistic(const std::string& name, double value) = 0;
+  /// The run's reported cycle (what results.csv holds), replacing the streamed samples.
+  virtual void Report(std::vector<RunSample> reported_cycle) = 0;
 };
 
 using RunBackend =

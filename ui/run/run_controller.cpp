@@ -30,6 +30,10 @@ class NotifyingSink : public RunSink {
   void Statistic(const std::string& name, double value) override {
     record_->Statistic(name, value);
   }
+  void Report(std::vector<RunSample> reported_cycle) override {
+    record_->Report(std::move(reported_cycle));
+    Notify();
+  }
 
  private:
   void Notify() {

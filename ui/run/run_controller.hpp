@@ -39,6 +39,7 @@ class RunController : public QObject {
   void runUpdated(filmdyn::ui::RunHandle run);
   void runFinished(filmdyn::ui::RunHandle run);
 
+ public:
   /// Called (queued) by the worker once per batch of samples.
   Q_INVOKABLE void onWorkerNotified();
 

@@ -59,14 +59,16 @@ void RunRecord::Statistic(const std::string& name, double value) {
   statistics_[name] = value;
 }
 
+void RunRecord::Report(std::vector<RunSample> reported_cycle) {
+  std::lock_guard lock(mutex_);
+  reported_ = std::move(reported_cycle);
+  has_report_ = true;
+  ++version_;
+}
+
 std::vector<RunSample> RunRecord::samples() const {
   std::lock_guard lock(mutex_);
-  if (status_ == RunStatus::kFinished && !last_complete_cycle_.empty()) {
-    // A normal end reports the last full cycle; a partial cycle after it would be a bug of the
-    // backend, so prefer the complete one.
-    return current_cycle_.size() >= last_complete_cycle_.size() ? current_cycle_
-                                                                : last_complete_cycle_;
-  }
+  if (has_report_ && !reported_.empty()) return reported_;
   if (current_cycle_.empty()) return last_complete_cycle_;
   return current_cycle_;
 }

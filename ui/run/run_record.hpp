@@ -31,9 +31,10 @@ class RunRecord : public RunSink {
   void Append(const RunSample& sample) override;
   void Progress(const RunProgress& progress) override;
   void Statistic(const std::string& name, double value) override;
+  void Report(std::vector<RunSample> reported_cycle) override;
 
-  /// The samples to show: the last completed cycle once the run ended normally, otherwise the
-  /// cycle in progress (or, before any, nothing). Copy, safe on any thread.
+  /// The samples to show: the reported cycle once the backend reported it, otherwise the cycle
+  /// in progress (or the last complete one at a cycle start). Copy, safe on any thread.
   std::vector<RunSample> samples() const;
   /// Monotonic counter bumped by every change (lets viewers skip redundant redraws).
   long version() const { return version_.load(); }
@@ -54,6 +55,8 @@ class RunRecord : public RunSink {
   mutable std::mutex mutex_;
   std::vector<RunSample> current_cycle_;
   std::vector<RunSample> last_complete_cycle_;
+  std::vector<RunSample> reported_;
+  bool has_report_ = false;
   RunProgress progress_;
   std::map<std::string, double> statistics_;
   RunStatus status_ = RunStatus::kRunning;

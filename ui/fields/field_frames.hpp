@@ -1,0 +1,38 @@
+#pragma once
+/// @file Film fields of a run for the 3D views: per joint and per output step one triangulated
+/// surface (node coordinates [m]) with nodal arrays in SI named "pressure" [Pa],
+/// "contact_pressure" [Pa] and "film_thickness" [m]. The coupled lubricated run (issue 5) fills
+/// this; the ideal model has no fields. Same surface type as core's VTU writer, so the GUI
+/// exports exactly the files the headless run writes.
+#include <QString>
+#include <string>
+#include <vector>
+
+#include "core/io/vtk_xml_writer.hpp"
+
+namespace filmdyn::ui {
+
+struct JointFieldFrames {
+  std::string name;                      ///< "skirt", "big_end"
+  std::vector<io::SurfaceField> frames;  ///< one per crank angle
+};
+
+struct FieldFrames {
+  std::vector<double> crank_angle_deg;  ///< one per frame [°CA]
+  std::vector<double> time;             ///< [s], same length
+  std::vector<JointFieldFrames> joints;
+  bool empty() const { return crank_angle_deg.empty() || joints.empty(); }
+};
+
+/// The arrays the views offer: (array name, title with display unit, display scale).
+struct FieldArrayInfo {
+  const char* name;
+  const char* title;
+  double scale;
+};
+const std::vector<FieldArrayInfo>& FieldArrays();
+
+/// Writes <dir>/<joint>_<k>.vtu and <dir>/<joint>.pvd for every joint (core's writer).
+bool ExportFieldFrames(const FieldFrames& frames, const QString& directory, QString* error);
+
+}  // namespace filmdyn::ui
