@@ -9,6 +9,8 @@ const std::vector<Command>& AllCommands() {
     std::vector<Command> list;
     // One line per subcommand; only commands that work are listed.
     list.push_back(MakeVersionsCommand());
+    list.push_back(MakeBearingCommand());
+    list.push_back(MakeRunCommand());
     return list;
   }();
   return commands;

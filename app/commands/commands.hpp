@@ -6,5 +6,7 @@
 namespace filmdyn::cli {
 
 Command MakeVersionsCommand();
+Command MakeBearingCommand();
+Command MakeRunCommand();
 
 }  // namespace filmdyn::cli

@@ -1,0 +1,102 @@
+// `filmdyn run`: one headless run (SPEC §4). All the work is in core (io::LoadCase,
+// engine::RunJob, io::WriteRunFolder); this file only parses options and prints progress on
+// stderr. Ctrl-C stops the run cleanly: the cycle computed so far is written, marked incomplete.
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+
+#include "app/commands/commands.hpp"
+#include "core/engine/run_job.hpp"
+#include "core/input_error.hpp"
+#include "core/io/case_file.hpp"
+#include "core/io/pressure_csv.hpp"
+#include "core/io/results_writer.hpp"
+
+namespace filmdyn::cli {
+
+namespace {
+std::atomic<bool> g_interrupted{false};
+extern "C" void OnInterrupt(int) { g_interrupted = true; }
+}  // namespace
+
+Command MakeRunCommand() {
+  Command command;
+  command.name = "run";
+  command.summary = "headless run of a case; results.csv and summary.json in an output folder";
+  command.positional_usage = "[CASE.json]";
+  command.max_positional = 1;
+  command.options = {
+      {"model", "MODEL", "skirt-lbrbe | only-skirt | only-lbrbe | ideal (default: the case's)"},
+      {"rpm", "N", "crank speed [rpm] (default: operating.rpm of the case)"},
+      {"out", "DIR", "output folder (default: ./results/<case>-<model>-<rpm>)"},
+      {"set", "KEY=VALUE", "override a case field by its dotted JSON path", true},
+      {"pressure-curve", "FILE.csv", "cylinder pressure: crank_angle[deg],pressure[Pa] (absolute)"},
+      {"time-limit", "S", "stop after S seconds of wall time, keeping what was computed"},
+      {"quiet", "", "no progress on stderr"}};
+  command.details =
+      "Without CASE.json the built-in default case (Table I of the coupling-model paper) is used.\n"
+      "Examples:\n  filmdyn run --model ideal --rpm 4000\n"
+      "  filmdyn run my.json --set geometry.pin_offset=0.001 --out /tmp/r1";
+  command.run = [](const Args& args, Streams& streams) {
+    const std::string case_path = args.positional().empty() ? "" : args.positional()[0];
+    const io::LoadedCase loaded = io::LoadCase(case_path, args.Values("set"));
+    const engine::EngineCase& c = loaded.value;
+    engine::Model model = engine::Model::kIdeal;
+    if (const auto name = args.Value("model")) {
+      model = engine::ParseModel(*name);
+    } else {
+      const bool skirt = c.skirt.model == engine::JointModel::kLubricated;
+      const bool big_end = c.big_end.model == engine::JointModel::kLubricated;
+      model = skirt && big_end ? engine::Model::kSkirtLbrbe
+              : skirt          ? engine::Model::kOnlySkirt
+              : big_end        ? engine::Model::kOnlyLbrbe
+                               : engine::Model::kIdeal;
+    }
+    const double rpm = args.Double("rpm").value_or(c.operating.rpm);
+    RequireInRange("--rpm", rpm, 0.0, 30000.0, true, false, "rpm");
+    engine::PressureCurve pressure = args.Value("pressure-curve")
+                                         ? io::ReadPressureCsvFile(*args.Value("pressure-curve"))
+                                         : io::PressureCurveForSpeed(loaded, rpm);
+    engine::RunConfig config = engine::MakeRunConfig(c, model, rpm, std::move(pressure));
+    if (const auto limit = args.Double("time-limit")) {
+      RequirePositive("--time-limit", *limit, "s");
+      config.wall_time_limit = *limit;
+    }
+    const std::filesystem::path out = args.Value("out")
+                                          ? std::filesystem::path(*args.Value("out"))
+                                          : io::DefaultOutputFolder(c.name, model, rpm);
+    const bool quiet = args.Has("quiet");
+    auto last_print = std::chrono::steady_clock::now() - std::chrono::seconds(1);
+    const engine::RunMonitor monitor = [&](const engine::RunProgress& p) {
+      const auto now = std::chrono::steady_clock::now();
+      if (!quiet && now - last_print > std::chrono::milliseconds(200)) {
+        last_print = now;
+        char line[160];
+        std::snprintf(line, sizeof line,
+                      "\rcycle %d/%d  %5.1f °CA  %3.0f %%  elapsed %.1f s  ETA %.1f s ", p.cycle,
+                      p.max_cycles, p.crank_angle_deg, 100.0 * std::min(p.fraction, 1.0), p.elapsed,
+                      p.remaining);
+        streams.err << line << std::flush;
+      }
+      return true;
+    };
+    g_interrupted = false;
+    auto previous_handler = std::signal(SIGINT, OnInterrupt);
+    const engine::RunResult result = engine::RunJob(config, monitor, &g_interrupted);
+    std::signal(SIGINT, previous_handler);
+    io::WriteRunFolder(out, c.name, config, result);
+    if (!quiet) streams.err << "\n";
+    streams.err << "filmdyn run: " << engine::StatusName(result.status) << ", " << result.cycles
+                << " cycles, " << result.stats.steps << " steps, " << result.wall_time
+                << " s; results in " << out.string() << "\n";
+    if (result.status != engine::RunStatus::kCompleted) {
+      streams.err << "filmdyn run: incomplete: " << result.message << "\n";
+      return 1;
+    }
+    return 0;
+  };
+  return command;
+}
+
+}  // namespace filmdyn::cli

@@ -1,0 +1,75 @@
+#pragma once
+/// @file One headless run of the crank train: config in, result out, a per-output-step monitor that
+/// may stop the run, an atomic cancel flag. The CLI (`filmdyn run`) and the GUI worker make the
+/// same call; only the monitor differs (STYLE.md "Long work off the GUI thread").
+#include <atomic>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "core/engine/crank_train.hpp"
+#include "core/engine/engine_case.hpp"
+#include "core/engine/pressure_curve.hpp"
+#include "core/multibody/integrator.hpp"
+
+namespace filmdyn::engine {
+
+/// SPEC §3.2 models.
+enum class Model { kIdeal, kOnlySkirt, kOnlyLbrbe, kSkirtLbrbe };
+/// "ideal", "only-skirt", "only-lbrbe", "skirt-lbrbe"; throws InputError("--model", ...).
+Model ParseModel(const std::string& text);
+std::string ModelName(Model model);
+/// Sets skirt.model / big_end.model of a case for a model.
+void ApplyModel(Model model, EngineCase* engine_case);
+
+struct RunConfig {
+  EngineCase engine_case;  ///< joint models already set (ApplyModel)
+  Model model = Model::kIdeal;
+  double rpm = 6000.0;
+  PressureCurve pressure;                  ///< cylinder pressure at rpm (io::PressureCurveForSpeed)
+  LubricatedJointFactories factories;      ///< empty until issue 5 provides the film elements
+  multibody::IntegratorConfig integrator;  ///< tolerances (set from the case by MakeRunConfig)
+  double wall_time_limit = 0.0;  ///< [s]; 0 = none. Reached: result incomplete, partial rows kept
+};
+
+/// Fills the integrator tolerances from the case's solver section.
+RunConfig MakeRunConfig(const EngineCase& engine_case, Model model, double rpm,
+                        PressureCurve pressure);
+
+/// What the monitor sees after each output step.
+struct RunProgress {
+  int cycle = 0;  ///< 1-based cycle being computed
+  int max_cycles = 0;
+  double crank_angle_deg = 0.0;              ///< within the cycle, [0, 720)
+  double fraction = 0.0;                     ///< rough overall progress [0, 1]
+  double elapsed = 0.0;                      ///< wall time so far [s]
+  double remaining = 0.0;                    ///< estimate [s]
+  const CrankTrainSample* sample = nullptr;  ///< the step just computed
+};
+
+/// Return false to stop the run (it then ends as kCancelled with the rows so far).
+using RunMonitor = std::function<bool(const RunProgress&)>;
+
+enum class RunStatus { kCompleted, kNotConverged, kCancelled, kTimeLimit, kFailed };
+std::string StatusName(RunStatus status);
+
+struct RunResult {
+  RunStatus status = RunStatus::kFailed;
+  std::string message;                    ///< the reason, with the crank angle, when not completed
+  std::vector<CrankTrainSample> samples;  ///< the reported (last) cycle, one per output step
+  int cycles = 0;                         ///< cycles computed
+  int cycles_to_steady_state = 0;         ///< 0 when not reached
+  double cycle_change = 0.0;              ///< last cycle-to-cycle change / range (largest quantity)
+  multibody::SolverStats stats;
+  double wall_time = 0.0;  ///< [s]
+  double max_constraint_violation = 0.0;
+};
+
+/// Runs cycles from the assembled start until the periodic steady state (cycle-to-cycle change of
+/// the monitored outputs below solver.steady_state_tolerance of their range) or max_cycles, and
+/// keeps the last cycle. Never throws for numerical trouble (status + message instead); bad input
+/// still throws InputError before anything runs.
+RunResult RunJob(const RunConfig& config, const RunMonitor& monitor = {},
+                 const std::atomic<bool>* cancel = nullptr);
+
+}  // namespace filmdyn::engine

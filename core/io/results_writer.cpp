@@ -1,0 +1,219 @@
+#include "core/io/results_writer.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <numbers>
+
+#include "core/input_error.hpp"
+#include "core/version.hpp"
+
+namespace filmdyn::io {
+
+namespace {
+
+using Member = std::optional<double> OutputRow::*;
+struct Column {
+  const char* header;
+  Member member;
+};
+
+// The one list of columns: SPEC §4 order first.
+const std::vector<Column>& Columns() {
+  static const std::vector<Column> columns = {
+      {"crank_angle[deg]", &OutputRow::crank_angle_deg},
+      {"time[s]", &OutputRow::time},
+      {"piston_lateral[m]", &OutputRow::piston_lateral},
+      {"piston_tilt[rad]", &OutputRow::piston_tilt},
+      {"piston_lateral_velocity[m/s]", &OutputRow::piston_lateral_velocity},
+      {"piston_tilt_rate[rad/s]", &OutputRow::piston_tilt_rate},
+      {"skirt_normal_force[N]", &OutputRow::skirt_normal_force},
+      {"skirt_friction_force[N]", &OutputRow::skirt_friction_force},
+      {"skirt_moment[N*m]", &OutputRow::skirt_moment},
+      {"skirt_moft[m]", &OutputRow::skirt_moft},
+      {"skirt_fpl[W]", &OutputRow::skirt_fpl},
+      {"journal_ecc_x[m]", &OutputRow::journal_ecc_x},
+      {"journal_ecc_y[m]", &OutputRow::journal_ecc_y},
+      {"bearing_eps[-]", &OutputRow::bearing_eps},
+      {"bearing_moft[m]", &OutputRow::bearing_moft},
+      {"bearing_fpl[W]", &OutputRow::bearing_fpl},
+      {"bigend_force_x[N]", &OutputRow::bigend_force_x},
+      {"bigend_force_y[N]", &OutputRow::bigend_force_y},
+      {"gas_force[N]", &OutputRow::gas_force},
+      {"piston_position[m]", &OutputRow::piston_position},
+      {"piston_velocity[m/s]", &OutputRow::piston_velocity},
+      {"piston_acceleration[m/s^2]", &OutputRow::piston_acceleration},
+      {"rod_angle[rad]", &OutputRow::rod_angle},
+      {"rod_angular_velocity[rad/s]", &OutputRow::rod_angular_velocity},
+      {"rod_angular_acceleration[rad/s^2]", &OutputRow::rod_angular_acceleration},
+      {"pin_force_x[N]", &OutputRow::pin_force_x},
+      {"pin_force_y[N]", &OutputRow::pin_force_y},
+      {"main_bearing_force_x[N]", &OutputRow::main_bearing_force_x},
+      {"main_bearing_force_y[N]", &OutputRow::main_bearing_force_y},
+      {"crank_torque[N*m]", &OutputRow::crank_torque},
+      {"cylinder_pressure[Pa]", &OutputRow::cylinder_pressure},
+      {"constraint_violation[-]", &OutputRow::constraint_violation},
+  };
+  return columns;
+}
+
+}  // namespace
+
+std::vector<std::string> ResultsHeader() {
+  std::vector<std::string> header;
+  for (const Column& c : Columns()) header.push_back(c.header);
+  return header;
+}
+
+OutputRow RowFromSample(const engine::CrankTrainSample& s, engine::Model model,
+                        double cycle_start_time) {
+  OutputRow r;
+  const double deg = 180.0 / std::numbers::pi;
+  r.time = s.time - cycle_start_time;
+  r.crank_angle_deg = std::fmod(s.crank_angle * deg, 720.0);
+  if (*r.crank_angle_deg < 0) *r.crank_angle_deg += 720.0;
+  if (*r.crank_angle_deg > 720.0 - 1e-9) *r.crank_angle_deg = 0.0;
+  const bool skirt_lubricated =
+      model == engine::Model::kOnlySkirt || model == engine::Model::kSkirtLbrbe;
+  const bool big_end_lubricated =
+      model == engine::Model::kOnlyLbrbe || model == engine::Model::kSkirtLbrbe;
+  // Ideal liner: no secondary motion (exactly zero, not round-off), the prismatic joint's
+  // reaction as side force and moment, frictionless.
+  r.piston_lateral = skirt_lubricated ? s.piston_lateral : 0.0;
+  r.piston_tilt = skirt_lubricated ? s.piston_tilt : 0.0;
+  r.piston_lateral_velocity = skirt_lubricated ? s.piston_lateral_velocity : 0.0;
+  r.piston_tilt_rate = skirt_lubricated ? s.piston_tilt_rate : 0.0;
+  if (!skirt_lubricated) {
+    r.skirt_normal_force = s.liner_force_on_piston.x();
+    r.skirt_friction_force = 0.0;
+    r.skirt_moment = s.liner_moment_about_pin;
+    r.skirt_fpl = 0.0;
+  }
+  if (!big_end_lubricated) {  // ideal pin joint: centred journal, frictionless
+    r.journal_ecc_x = 0.0;
+    r.journal_ecc_y = 0.0;
+    r.bearing_eps = 0.0;
+    r.bearing_fpl = 0.0;
+    r.bigend_force_x = s.big_end_force_on_rod.x();
+    r.bigend_force_y = s.big_end_force_on_rod.y();
+  }
+  r.gas_force = s.gas_force;
+  r.piston_position = s.piston_position;
+  r.piston_velocity = s.piston_velocity;
+  r.piston_acceleration = s.piston_acceleration;
+  r.rod_angle = s.rod_angle;
+  r.rod_angular_velocity = s.rod_angular_velocity;
+  r.rod_angular_acceleration = s.rod_angular_acceleration;
+  r.pin_force_x = s.pin_force_on_piston.x();
+  r.pin_force_y = s.pin_force_on_piston.y();
+  r.main_bearing_force_x = s.main_bearing_force_on_crank.x();
+  r.main_bearing_force_y = s.main_bearing_force_on_crank.y();
+  r.crank_torque = s.crank_torque;
+  r.cylinder_pressure = s.cylinder_pressure;
+  r.constraint_violation = s.constraint_violation;
+  return r;
+}
+
+void WriteResultsCsv(std::ostream& out, const std::vector<OutputRow>& rows) {
+  const auto& columns = Columns();
+  for (std::size_t c = 0; c < columns.size(); ++c) out << (c ? "," : "") << columns[c].header;
+  out << "\n";
+  char buffer[40];
+  for (const OutputRow& row : rows) {
+    for (std::size_t c = 0; c < columns.size(); ++c) {
+      if (c) out << ",";
+      if (const auto& value = row.*(columns[c].member)) {
+        std::snprintf(buffer, sizeof buffer, "%.10g", *value);
+        out << buffer;
+      }
+    }
+    out << "\n";
+  }
+}
+
+std::filesystem::path DefaultOutputFolder(const std::string& case_name, engine::Model model,
+                                          double rpm) {
+  char speed[32];
+  std::snprintf(speed, sizeof speed, "%g", rpm);
+  return std::filesystem::path("results") /
+         (case_name + "-" + engine::ModelName(model) + "-" + speed);
+}
+
+std::vector<OutputRow> WriteRunFolder(const std::filesystem::path& directory,
+                                      const std::string& case_name, const engine::RunConfig& config,
+                                      const engine::RunResult& result) {
+  std::error_code error;
+  std::filesystem::create_directories(directory, error);
+  if (error)
+    throw InputError("--out", directory.string(), "cannot create the folder: " + error.message());
+  std::vector<OutputRow> rows;
+  const double start = result.samples.empty() ? 0.0 : result.samples.front().time;
+  for (const auto& s : result.samples) rows.push_back(RowFromSample(s, config.model, start));
+  {
+    std::ofstream csv(directory / "results.csv");
+    if (!csv) throw InputError("--out", directory.string(), "cannot write results.csv");
+    WriteResultsCsv(csv, rows);
+  }
+  using nlohmann::json;
+  json summary;
+  summary["filmdyn_version"] = std::string(Version());
+  summary["case"] = case_name;
+  summary["model"] = engine::ModelName(config.model);
+  summary["rpm"] = config.rpm;
+  summary["status"] = engine::StatusName(result.status);
+  summary["complete"] = result.status == engine::RunStatus::kCompleted;
+  summary["message"] = result.message;
+  summary["cycles"] = result.cycles;
+  summary["cycles_to_steady_state"] = result.cycles_to_steady_state;
+  summary["cycle_to_cycle_change"] = result.cycle_change;
+  summary["wall_time_s"] = result.wall_time;
+  summary["max_constraint_violation"] = result.max_constraint_violation;
+  json extremes = json::object();
+  const auto header = ResultsHeader();
+  const auto& columns = Columns();
+  for (std::size_t c = 2; c < columns.size(); ++c) {
+    double lo = INFINITY, hi = -INFINITY;
+    bool any = false;
+    for (const OutputRow& row : rows) {
+      if (const auto& v = row.*(columns[c].member)) {
+        lo = std::min(lo, *v);
+        hi = std::max(hi, *v);
+        any = true;
+      }
+    }
+    if (any) extremes[header[c]] = {{"min", lo}, {"max", hi}};
+  }
+  summary["extremes"] = extremes;
+  auto mean_of = [&](Member m) -> json {
+    double sum = 0;
+    int n = 0;
+    for (const OutputRow& row : rows) {
+      if (const auto& v = row.*m) {
+        sum += *v;
+        ++n;
+      }
+    }
+    return n ? json(sum / n) : json(nullptr);
+  };
+  summary["mean_fpl_w"] = {{"skirt", mean_of(&OutputRow::skirt_fpl)},
+                           {"bearing", mean_of(&OutputRow::bearing_fpl)}};
+  summary["solver"] = {{"integrator", "CVODE BDF (SUNDIALS), dense Newton"},
+                       {"steps", result.stats.steps},
+                       {"rejected_steps", result.stats.rejected_steps},
+                       {"newton_iterations", result.stats.newton_iterations},
+                       {"newton_failures", result.stats.newton_failures},
+                       {"rhs_evaluations", result.stats.rhs_evaluations},
+                       {"jacobian_evaluations", result.stats.jacobian_evaluations},
+                       {"reynolds_solves", 0},
+                       {"baumgarte_alpha", config.engine_case.solver.baumgarte_alpha},
+                       {"baumgarte_beta", config.engine_case.solver.baumgarte_beta},
+                       {"relative_tolerance", config.integrator.relative_tolerance}};
+  const double peak_deg = config.pressure.PeakAngle() * 180.0 / std::numbers::pi;
+  summary["pressure_curve"] = {{"peak_pa", config.pressure.PeakPressure()},
+                               {"peak_crank_angle_deg", peak_deg}};
+  std::ofstream(directory / "summary.json") << summary.dump(2) << "\n";
+  return rows;
+}
+
+}  // namespace filmdyn::io

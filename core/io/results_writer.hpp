@@ -1,0 +1,45 @@
+#pragma once
+/// @file The output folder of a run (SPEC §4): results.csv (every SPEC column in SPEC order, then
+/// extra crank-train columns; a column a model does not have is present and empty) and
+/// summary.json. Columns, frames and signs: docs/outputs.md.
+#include <filesystem>
+#include <iosfwd>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/engine/run_job.hpp"
+
+namespace filmdyn::io {
+
+/// One row of results.csv; std::nullopt = empty cell.
+struct OutputRow {
+  std::optional<double> crank_angle_deg, time, piston_lateral, piston_tilt, piston_lateral_velocity,
+      piston_tilt_rate, skirt_normal_force, skirt_friction_force, skirt_moment, skirt_moft,
+      skirt_fpl, journal_ecc_x, journal_ecc_y, bearing_eps, bearing_moft, bearing_fpl,
+      bigend_force_x, bigend_force_y, gas_force,
+      // Extras (after the SPEC columns):
+      piston_position, piston_velocity, piston_acceleration, rod_angle, rod_angular_velocity,
+      rod_angular_acceleration, pin_force_x, pin_force_y, main_bearing_force_x,
+      main_bearing_force_y, crank_torque, cylinder_pressure, constraint_violation;
+};
+
+/// Header names with units, in column order.
+std::vector<std::string> ResultsHeader();
+/// The row of a crank-train sample for a model (ideal joints fill zero secondary motion, zero
+/// friction and FPL; film quantities stay empty). crank_angle_deg within the reported cycle.
+OutputRow RowFromSample(const engine::CrankTrainSample& sample, engine::Model model,
+                        double cycle_start_time);
+
+void WriteResultsCsv(std::ostream& out, const std::vector<OutputRow>& rows);
+
+/// Writes results.csv and summary.json into `directory` (created). Returns the rows written.
+std::vector<OutputRow> WriteRunFolder(const std::filesystem::path& directory,
+                                      const std::string& case_name, const engine::RunConfig& config,
+                                      const engine::RunResult& result);
+
+/// The default output folder `results/<case>-<model>-<rpm>` (SPEC §4).
+std::filesystem::path DefaultOutputFolder(const std::string& case_name, engine::Model model,
+                                          double rpm);
+
+}  // namespace filmdyn::io

@@ -1,0 +1,105 @@
+// A whole ideal run as the CLI and the GUI worker make it: steady state, the reported cycle, the
+// output folder (every SPEC §4 column in order, empty where the model has none), monitor stop,
+// cancel flag, and a lubricated model without film elements rejected naming the field.
+#include <QtTest>
+
+#include <QTemporaryDir>
+#include <atomic>
+#include <fstream>
+#include <sstream>
+
+#include "core/engine/run_job.hpp"
+#include "core/input_error.hpp"
+#include "core/io/case_file.hpp"
+#include "core/io/results_writer.hpp"
+
+using namespace filmdyn;
+
+namespace {
+engine::RunConfig DefaultConfig(double rpm, engine::Model model = engine::Model::kIdeal) {
+  const io::LoadedCase loaded = io::LoadCase({});
+  return engine::MakeRunConfig(loaded.value, model, rpm, io::PressureCurveForSpeed(loaded, rpm));
+}
+}  // namespace
+
+class TestRunJob : public QObject {
+  Q_OBJECT
+ private slots:
+  void idealRunReachesSteadyStateAndWritesFolder() {
+    const engine::RunConfig config = DefaultConfig(6000);
+    int calls = 0;
+    const engine::RunResult result =
+        engine::RunJob(config, [&](const engine::RunProgress&) { return ++calls > 0; });
+    QCOMPARE(engine::StatusName(result.status), std::string("completed"));
+    QCOMPARE(result.cycles_to_steady_state, 2);
+    QCOMPARE(result.samples.size(), std::size_t(720));
+    QCOMPARE(calls, 1440);
+    qInfo("6000 rpm ideal: %.3f s wall, %ld steps, %ld rejected, %ld Newton, %ld f evals",
+          result.wall_time, result.stats.steps, result.stats.rejected_steps,
+          result.stats.newton_iterations, result.stats.rhs_evaluations);
+
+    QTemporaryDir dir;
+    const auto rows = io::WriteRunFolder(dir.path().toStdString(), "default", config, result);
+    std::ifstream csv(dir.path().toStdString() + "/results.csv");
+    std::string header, first;
+    std::getline(csv, header);
+    std::getline(csv, first);
+    const std::string spec =
+        "crank_angle[deg],time[s],piston_lateral[m],piston_tilt[rad],"
+        "piston_lateral_velocity[m/s],piston_tilt_rate[rad/s],skirt_normal_force[N],"
+        "skirt_friction_force[N],skirt_moment[N*m],skirt_moft[m],skirt_fpl[W],"
+        "journal_ecc_x[m],journal_ecc_y[m],bearing_eps[-],bearing_moft[m],bearing_fpl[W],"
+        "bigend_force_x[N],bigend_force_y[N],gas_force[N]";
+    QVERIFY(header.rfind(spec, 0) == 0);  // SPEC columns first, in SPEC order
+    // MOFT columns present and empty: fields 10 and 15 (1-based).
+    std::vector<std::string> cells;
+    std::stringstream line(first);
+    for (std::string cell; std::getline(line, cell, ',');) cells.push_back(cell);
+    QVERIFY(cells.at(9).empty());
+    QVERIFY(cells.at(14).empty());
+    QVERIFY(!cells.at(6).empty());
+    QCOMPARE(cells.at(0), std::string("0"));
+    QCOMPARE(rows.back().crank_angle_deg.value(), 719.0);
+    std::ifstream summary_file(dir.path().toStdString() + "/summary.json");
+    const auto summary = nlohmann::json::parse(summary_file);
+    QCOMPARE(summary["cycles_to_steady_state"].get<int>(), 2);
+    QVERIFY(summary["solver"]["steps"].get<long>() > 0);
+    QVERIFY(summary["extremes"].contains("bigend_force_y[N]"));
+  }
+  void monitorCanStop() {
+    const engine::RunConfig config = DefaultConfig(2000);
+    int calls = 0;
+    const auto result = engine::RunJob(
+        config, [&](const engine::RunProgress& p) { return ++calls < 100 && p.cycle == 1; });
+    QCOMPARE(engine::StatusName(result.status), std::string("cancelled"));
+    QCOMPARE(calls, 100);
+    QVERIFY(!result.samples.empty());
+  }
+  void cancelFlagStops() {
+    const engine::RunConfig config = DefaultConfig(4000);
+    std::atomic<bool> cancel{false};
+    int calls = 0;
+    const auto result = engine::RunJob(
+        config,
+        [&](const engine::RunProgress&) {
+          if (++calls == 10) cancel = true;
+          return true;
+        },
+        &cancel);
+    QCOMPARE(engine::StatusName(result.status), std::string("cancelled"));
+    QCOMPARE(calls, 10);
+  }
+  void lubricatedWithoutFilmModelIsAnInputError() {
+    const engine::RunConfig config = DefaultConfig(6000, engine::Model::kOnlySkirt);
+    try {
+      engine::RunJob(config);
+      QFAIL("no error");
+    } catch (const InputError& e) {
+      QCOMPARE(e.field(), std::string("skirt.model"));
+    }
+    QVERIFY_THROWS_EXCEPTION(InputError, engine::ParseModel("wet"));
+  }
+};
+
+QTEST_GUILESS_MAIN(TestRunJob)
+#include "test_run_job.moc"
