@@ -1,0 +1,277 @@
+// The case editor driven through its real widgets: typing into a table cell changes the case (in
+// SI), undo/redo restore it, an invalid value is marked with core's reason and blocks Run, the
+// skirt profile and pressure tables edit the arrays, pressure CSV export/import round-trips, and
+// a project round-trips through save/load (core's case file, written atomically).
+#include <QAction>
+#include <QApplication>
+#include <QComboBox>
+#include <QFile>
+#include <QLabel>
+#include <QLineEdit>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QTableView>
+#include <QTemporaryDir>
+#include <QUndoStack>
+#include <QtTest>
+#include <cmath>
+
+#include "core/io/case_file.hpp"
+#include "ui/case_editor/array_table_model.hpp"
+#include "ui/case_editor/case_document.hpp"
+#include "ui/case_editor/case_editor.hpp"
+#include "ui/case_editor/case_json.hpp"
+#include "ui/case_editor/parameter_table_model.hpp"
+#include "ui/main_window.hpp"
+
+using filmdyn::ui::ArrayTableModel;
+using filmdyn::ui::CaseGroup;
+using filmdyn::ui::MainWindow;
+using filmdyn::ui::ParameterTableModel;
+
+namespace {
+
+// Types `text` into the cell like a user: select it, start editing, type, press Enter.
+void TypeIntoCell(QTableView* table, const QModelIndex& index, const QString& text) {
+  QWidget* window = table->window();
+  window->activateWindow();
+  table->setFocus();
+  table->setCurrentIndex(index);
+  table->edit(index);
+  // The delegate's editor is a QLineEdit child of the viewport.
+  QLineEdit* editor = table->viewport()->findChild<QLineEdit*>();
+  QVERIFY2(editor != nullptr, "no line editor opened on the cell");
+  editor->selectAll();
+  QTest::keyClicks(editor, text);
+  QTest::keyClick(editor, Qt::Key_Return);
+  // The delegate commits on a queued call after Return.
+  QTRY_VERIFY(table->viewport()->findChild<QLineEdit*>() == nullptr ||
+              !table->viewport()->findChild<QLineEdit*>()->isVisible());
+}
+
+QModelIndex ValueCell(MainWindow& window, CaseGroup group, const std::string& path) {
+  ParameterTableModel* model = window.caseEditor()->parameterModel(group);
+  const int row = model->rowOf(path);
+  return model->index(row, ParameterTableModel::kValue);
+}
+
+}  // namespace
+
+class TestCaseEditor : public QObject {
+  Q_OBJECT
+ private slots:
+  void initTestCase() {
+    QStandardPaths::setTestModeEnabled(true);
+    QCoreApplication::setOrganizationName("FilmDynTest");
+    QCoreApplication::setApplicationName("test_case_editor");
+    QSettings().clear();
+  }
+
+  void startsFromTheDefaultCaseAndCanRun() {
+    MainWindow window;
+    const auto& c = window.document()->engineCase();
+    QCOMPARE(c.name, std::string("zhao-shen-gasoline"));
+    QVERIFY2(c.pressure_curves.size() >= 1, "default case has pressure curves");
+    QVERIFY2(!c.pressure_curves.front().pressure.empty(), "file curves are loaded inline");
+    QVERIFY2(window.document()->issues().empty(),
+             window.document()->issues().empty()
+                 ? ""
+                 : window.document()->issues().begin()->second.c_str());
+    QVERIFY(window.runAction()->isEnabled());
+    QVERIFY(!window.document()->isModified());
+  }
+
+  void editingACellChangesTheCaseInSi() {
+    MainWindow window;
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QTableView* table = window.caseEditor()->parameterTable(CaseGroup::kGeometry);
+    window.workspace()->setCurrentIndex(0);
+    // Geometry tab: the case editor's own tab widget.
+    auto* tabs = window.caseEditor()->findChild<QTabWidget*>("case_tabs");
+    tabs->setCurrentIndex(1);
+    const QModelIndex cell = ValueCell(window, CaseGroup::kGeometry, "geometry.rod_length");
+    QVERIFY(cell.isValid());
+    QCOMPARE(cell.data().toString(), QString("129.5"));  // shown in mm
+    TypeIntoCell(table, cell, "131.25");
+    QCOMPARE(window.document()->engineCase().geometry.rod_length, 0.13125);  // stored in m
+    QCOMPARE(cell.data().toString(), QString("131.25"));
+    QVERIFY(window.document()->isModified());
+    QVERIFY(window.windowTitle().contains("*"));
+
+    // µm cell on the skirt tab: σ_skirt 0.615 µm → 0.7 µm.
+    tabs->setCurrentIndex(3);
+    TypeIntoCell(window.caseEditor()->parameterTable(CaseGroup::kSkirt),
+                 ValueCell(window, CaseGroup::kSkirt, "skirt.roughness_skirt"), "0.7");
+    QVERIFY(std::abs(window.document()->engineCase().skirt.roughness_skirt - 0.7e-6) < 1e-18);
+
+    // Undo / redo through the stack the Edit menu uses.
+    window.document()->undoStack()->undo();
+    QVERIFY(std::abs(window.document()->engineCase().skirt.roughness_skirt - 0.615e-6) < 1e-18);
+    window.document()->undoStack()->undo();
+    QCOMPARE(window.document()->engineCase().geometry.rod_length, 0.1295);
+    QVERIFY(!window.document()->isModified());
+    window.document()->undoStack()->redo();
+    QCOMPARE(window.document()->engineCase().geometry.rod_length, 0.13125);
+  }
+
+  void invalidValueIsMarkedAndBlocksRun() {
+    MainWindow window;
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    auto* tabs = window.caseEditor()->findChild<QTabWidget*>("case_tabs");
+    tabs->setCurrentIndex(4);
+    QTableView* table = window.caseEditor()->parameterTable(CaseGroup::kBigEnd);
+    const QModelIndex cell = ValueCell(window, CaseGroup::kBigEnd, "big_end.journal_radius");
+    QVERIFY(window.runAction()->isEnabled());
+    // Journal larger than the bearing: no clearance.
+    TypeIntoCell(table, cell, "15.2");
+    QVERIFY(cell.data(Qt::BackgroundRole).isValid());
+    const QString reason = cell.data(Qt::ToolTipRole).toString();
+    QVERIFY2(reason.contains("big_end.journal_radius"), qPrintable(reason));
+    QVERIFY2(reason.contains("bearing_radius"), qPrintable(reason));
+    QVERIFY(!window.runAction()->isEnabled());
+    auto* blocker = window.findChild<QLabel*>("run_blocker");
+    QVERIFY(blocker->text().contains("journal_radius"));
+    QVERIFY(window.runAction()->toolTip().contains("journal_radius"));
+    // The value typed is kept (never lose an edit) and shown.
+    QCOMPARE(cell.data().toString(), QString("15.2"));
+
+    // Not a number at all: core's finite-number rule.
+    TypeIntoCell(table, ValueCell(window, CaseGroup::kBigEnd, "big_end.width"), "abc");
+    const QModelIndex width = ValueCell(window, CaseGroup::kBigEnd, "big_end.width");
+    QVERIFY(width.data(Qt::ToolTipRole).toString().contains("big_end.width"));
+
+    TypeIntoCell(table, ValueCell(window, CaseGroup::kBigEnd, "big_end.width"), "22");
+    TypeIntoCell(table, cell, "14.95");
+    QVERIFY(!cell.data(Qt::BackgroundRole).isValid());
+    QVERIFY(window.runAction()->isEnabled());
+    QVERIFY(blocker->text().isEmpty());
+
+    // Saving an invalid case is refused with the reason; the edit stays in the editor.
+    TypeIntoCell(table, ValueCell(window, CaseGroup::kBigEnd, "big_end.roughness_journal"), "-1");
+    QTemporaryDir dir;
+    QString error;
+    QVERIFY(!window.saveProjectAs(dir.filePath("bad.json"), &error));
+    QVERIFY2(error.contains("roughness_journal"), qPrintable(error));
+    QVERIFY(!QFile::exists(dir.filePath("bad.json")));
+    QCOMPARE(window.document()->engineCase().big_end.roughness_journal, -1e-6);
+  }
+
+  void profileAndPressureTablesEditTheArrays() {
+    MainWindow window;
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    auto* tabs = window.caseEditor()->findChild<QTabWidget*>("case_tabs");
+    tabs->setCurrentIndex(3);
+    auto* profile = window.caseEditor()->findChild<QTableView*>("profile_table");
+    ArrayTableModel* model = window.caseEditor()->profileModel();
+    QCOMPARE(model->rowCount(), 5);
+    TypeIntoCell(profile, model->index(0, 1), "25");  // h at the skirt top [µm]
+    QVERIFY(std::abs(window.document()->engineCase().skirt.profile_h[0] - 25e-6) < 1e-15);
+    // Non-increasing y: the profile table is marked, Run blocked.
+    TypeIntoCell(profile, model->index(2, 0), "3");
+    QVERIFY(model->index(2, 0).data(Qt::BackgroundRole).isValid());
+    QVERIFY(!window.runAction()->isEnabled());
+    window.document()->undoStack()->undo();
+    QVERIFY(window.runAction()->isEnabled());
+    model->insertRowAfter(1);
+    QCOMPARE(window.document()->engineCase().skirt.profile_y.size(), size_t(6));
+    QCOMPARE(window.document()->engineCase().skirt.profile_y[2], 0.0105);
+
+    // Pressure table: edit one point of the selected curve (MPa → Pa).
+    tabs->setCurrentIndex(7);
+    auto* pressure = window.caseEditor()->findChild<QTableView*>("pressure_table");
+    ArrayTableModel* p_model = window.caseEditor()->pressureModel();
+    QVERIFY(p_model->rowCount() > 100);
+    const int curve = window.caseEditor()->currentCurve();
+    QVERIFY(curve >= 0);
+    TypeIntoCell(pressure, p_model->index(3, 1), "0.5");
+    QCOMPARE(window.document()->engineCase().pressure_curves[size_t(curve)].pressure[3], 0.5e6);
+  }
+
+  void pressureCsvExportImportRoundTrips() {
+    MainWindow window;
+    QTemporaryDir dir;
+    filmdyn::ui::CaseEditor* editor = window.caseEditor();
+    const int curve = editor->currentCurve();
+    const auto original = window.document()->engineCase().pressure_curves[size_t(curve)];
+    const QString path = dir.filePath(QString("curve_%1rpm.csv").arg(original.rpm));
+    editor->exportPressureCsv(path);
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    QVERIFY(file.readAll().contains("crank_angle[deg],pressure[Pa]"));
+    // Change the curve, then import the file back: the original values return.
+    auto changed = window.document()->engineCase();
+    changed.pressure_curves[size_t(curve)].pressure[10] *= 2;
+    window.document()->edit(changed, "change");
+    editor->importPressureCsv(path);
+    const auto& back = window.document()->engineCase().pressure_curves[size_t(curve)];
+    QCOMPARE(back.pressure.size(), original.pressure.size());
+    for (size_t i = 0; i < back.pressure.size(); ++i) {
+      QVERIFY(std::abs(back.pressure[i] - original.pressure[i]) <= 1e-9 * original.pressure[i]);
+      QVERIFY(std::abs(back.crank_angle_deg[i] - original.crank_angle_deg[i]) < 1e-9);
+    }
+    // A broken CSV is reported (file and line), the case is unchanged.
+    const QString bad = dir.filePath("bad.csv");
+    QFile out(bad);
+    QVERIFY(out.open(QIODevice::WriteOnly));
+    out.write("crank_angle[deg],pressure[Pa]\n0,1e5\n10,oops\n");
+    out.close();
+    QSignalSpy status(editor, &filmdyn::ui::CaseEditor::statusMessage);
+    const auto before = window.document()->engineCase().pressure_curves;
+    editor->importPressureCsv(bad);
+    QCOMPARE(status.count(), 1);
+    QVERIFY2(status.first().first().toString().contains("bad.csv"),
+             qPrintable(status.first().first().toString()));
+    QCOMPARE(window.document()->engineCase().pressure_curves.size(), before.size());
+  }
+
+  void projectRoundTripsThroughSaveAndLoad() {
+    QTemporaryDir dir;
+    const QString path = dir.filePath("my_engine.json");
+    std::string saved_text;
+    {
+      MainWindow window;
+      auto c = window.document()->engineCase();
+      c.geometry.rod_length = 0.1321;
+      c.skirt.profile_h[1] = 7e-6;
+      c.lubricant.viscosity = 0.011;
+      c.operating.rpm = 4000;
+      c.solver.max_cycles = 12;
+      c.big_end.model = filmdyn::engine::JointModel::kLubricated;
+      window.document()->edit(c, "several edits");
+      QVERIFY(window.document()->isModified());
+      QString error;
+      QVERIFY2(window.saveProjectAs(path, &error), qPrintable(error));
+      QVERIFY(!window.document()->isModified());
+      QVERIFY(window.windowTitle().contains("my_engine.json"));
+      QCOMPARE(window.recentFiles().first(), QFileInfo(path).absoluteFilePath());
+      saved_text = filmdyn::ui::CaseToJsonText(window.document()->engineCase());
+    }
+    // The file is a case core reads as is (what `filmdyn run my_engine.json` loads).
+    const auto loaded = filmdyn::io::LoadCase(path.toStdString());
+    QCOMPARE(loaded.value.geometry.rod_length, 0.1321);
+    QCOMPARE(loaded.value.solver.max_cycles, 12);
+
+    MainWindow again;
+    QString error;
+    QVERIFY2(again.openProject(path, &error), qPrintable(error));
+    QCOMPARE(filmdyn::ui::CaseToJsonText(again.document()->engineCase()), saved_text);
+    QCOMPARE(again.caseEditor()->modelSelector()->currentData().toString(), QString("only-lbrbe"));
+    QVERIFY(!again.document()->isModified());
+    QCOMPARE(again.document()->filePath(), path);
+
+    // A broken file names the field and leaves the open case untouched.
+    QFile bad(dir.filePath("bad.json"));
+    QVERIFY(bad.open(QIODevice::WriteOnly));
+    bad.write(R"({"geometry": {"rod_length": "long"}})");
+    bad.close();
+    QVERIFY(!again.openProject(bad.fileName(), &error));
+    QVERIFY2(error.contains("geometry.rod_length"), qPrintable(error));
+    QCOMPARE(again.document()->filePath(), path);
+  }
+};
+
+QTEST_MAIN(TestCaseEditor)
+#include "test_case_editor.moc"
