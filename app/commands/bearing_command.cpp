@@ -1,0 +1,148 @@
+// `filmdyn bearing`: steady journal-bearing calculator (SPEC §4, issue 3 item 6). Mode 1:
+// --eps given (dimensionless results need only --ld). Mode 2: --load and --rpm given, the
+// equilibrium eccentricity is found (mixed lubrication when a roughness is given). The numbers
+// come from core/lubrication/bearing_calculator.hpp; this file only maps options and prints.
+#include <cmath>
+#include <iomanip>
+#include <nlohmann/json.hpp>
+#include <ostream>
+
+#include "app/commands/commands.hpp"
+#include "core/input_error.hpp"
+#include "core/lubrication/bearing_calculator.hpp"
+
+namespace filmdyn::cli {
+
+namespace {
+
+lubrication::BearingMeshSpec ParseMesh(const std::string& text) {
+  const auto x = text.find_first_of("xX");
+  const std::string allowed = "must be NthetaxNz with integers, e.g. 240x40 (Ntheta >= 8, Nz >= 2)";
+  if (x == std::string::npos) throw InputError("--mesh", text, allowed);
+  const double nt = ParseDouble("--mesh", text.substr(0, x));
+  const double nz = ParseDouble("--mesh", text.substr(x + 1));
+  if (nt != std::floor(nt) || nz != std::floor(nz) || nt < 8 || nz < 2 || nt > 20000 || nz > 5000) {
+    throw InputError("--mesh", text, allowed);
+  }
+  return {static_cast<int>(nt), static_cast<int>(nz), false};
+}
+
+}  // namespace
+
+Command MakeBearingCommand() {
+  Command command;
+  command.name = "bearing";
+  command.summary =
+      "steady journal-bearing calculator: Sommerfeld number, attitude, friction, side flow";
+  command.options = {
+      {"ld", "L/D", "length-to-diameter ratio (default 0.5; ignored when --length is given)"},
+      {"eps", "E", "mode 1: eccentricity ratio in [0, 1)"},
+      {"load", "N", "mode 2: radial load [N] (with --rpm): finds the equilibrium eccentricity"},
+      {"rpm", "R", "journal speed [rev/min] (default 3000; bearing at rest)"},
+      {"radius", "M", "journal radius [m] (default 0.025)"},
+      {"length", "M", "bearing width [m] (default 2 * radius * L/D)"},
+      {"clearance", "M", "radial clearance [m] (default 25e-6)"},
+      {"viscosity", "PAS", "dynamic viscosity [Pa s] (default 0.01)"},
+      {"cavitation", "MODEL", "reynolds (Swift-Stieber, default) or jfo (mass-conserving)"},
+      {"mesh", "NTxNZ", "elements around x across the full width (default 240x40)"},
+      {"sigma1", "M", "rms roughness of the journal [m] (enables mixed lubrication)"},
+      {"sigma2", "M", "rms roughness of the bearing [m]"},
+      {"peklenik", "G", "Peklenik number of the composite surface (default 1)"},
+      {"E1", "PA", "Young's modulus of the journal [Pa] (default 210e9)"},
+      {"E2", "PA", "Young's modulus of the bearing [Pa] (default 110e9)"},
+      {"nu1", "NU", "Poisson ratio of the journal (default 0.3)"},
+      {"nu2", "NU", "Poisson ratio of the bearing (default 0.33)"},
+      {"boundary-friction", "MU", "asperity friction coefficient (default 0.13)"},
+      {"json", "", "print one JSON object"}};
+  command.details =
+      "Outputs follow Raimondi & Boyd (1958): S = (mu N / P)(R/c)^2 with N in rev/s and "
+      "P = W/(2 R L); friction variable (R/c) f; side_flow_variable = Q_s/(R c N L), Q_s the "
+      "leakage through both edges [m^3/s]. The film starts at the maximum film thickness "
+      "(p = 0 there), as in the published tables.";
+  command.run = [](const Args& args, Streams& streams) {
+    lubrication::BearingCalcInput in;
+    if (auto v = args.Double("radius")) in.radius = *v;
+    RequirePositive("--radius", in.radius, "m");
+    const double ld = args.Double("ld").value_or(0.5);
+    RequirePositive("--ld", ld);
+    in.length = args.Double("length").value_or(2.0 * in.radius * ld);
+    if (auto v = args.Double("clearance")) in.radial_clearance = *v;
+    if (auto v = args.Double("viscosity")) in.viscosity = *v;
+    if (auto v = args.Double("rpm")) in.speed_rpm = *v;
+    in.eps = args.Double("eps");
+    in.load = args.Double("load");
+    const std::string cav = args.Value("cavitation").value_or("reynolds");
+    if (cav == "reynolds")
+      in.cavitation = lubrication::CavitationModel::kReynolds;
+    else if (cav == "jfo")
+      in.cavitation = lubrication::CavitationModel::kJfo;
+    else
+      throw InputError("--cavitation", cav, "must be reynolds or jfo");
+    in.mesh = ParseMesh(args.Value("mesh").value_or("240x40"));
+    if (args.Has("sigma1") || args.Has("sigma2")) {
+      lubrication::SurfacePair pair;
+      pair.sigma1 = args.Double("sigma1").value_or(0.0);
+      pair.sigma2 = args.Double("sigma2").value_or(0.0);
+      pair.peklenik = args.Double("peklenik").value_or(1.0);
+      pair.E1 = args.Double("E1").value_or(210e9);
+      pair.E2 = args.Double("E2").value_or(110e9);
+      pair.nu1 = args.Double("nu1").value_or(0.3);
+      pair.nu2 = args.Double("nu2").value_or(0.33);
+      pair.boundary_friction = args.Double("boundary-friction").value_or(0.13);
+      in.surfaces = pair;
+    }
+    const lubrication::BearingCalcResult r = lubrication::RunBearingCalculator(in);
+    if (args.Has("json")) {
+      nlohmann::json j;
+      j["mode"] = in.eps ? "eccentricity" : "load";
+      j["eps"] = r.eps;
+      j["attitude_deg"] = r.attitude_deg;
+      j["sommerfeld"] = r.sommerfeld;
+      j["friction_variable"] = r.friction_variable;
+      j["side_flow"] = r.side_flow;
+      j["side_flow_unit"] = "m^3/s, both edges";
+      j["side_flow_variable"] = r.side_flow_variable;
+      j["side_flow_variable_definition"] = "Q_s/(R c N L), N in rev/s";
+      j["moft"] = r.moft;
+      j["friction_torque"] = r.friction_torque;
+      j["friction_power_loss"] = r.friction_power_loss;
+      j["load"] = r.load;
+      j["contact_load"] = r.contact_load;
+      j["max_pressure"] = r.max_pressure;
+      j["cavitated_fraction"] = r.cavitated_fraction;
+      j["cavitation"] = lubrication::ToString(in.cavitation);
+      j["mesh"] = std::to_string(in.mesh.n_theta) + "x" + std::to_string(in.mesh.n_z);
+      j["l_over_d"] = in.length / (2.0 * in.radius);
+      j["reynolds_solves"] = r.reynolds_solves;
+      j["lcp_iterations"] = r.last_stats.iterations;
+      j["complementarity_residual"] = r.last_stats.complementarity_residual;
+      j["converged"] = r.converged;
+      j["status"] = r.status;
+      streams.out << j.dump(2) << "\n";
+    } else {
+      auto& o = streams.out;
+      o << std::setprecision(6);
+      o << "L/D                      " << in.length / (2.0 * in.radius) << "\n";
+      o << "eccentricity ratio       " << r.eps << "\n";
+      o << "attitude angle [deg]     " << r.attitude_deg << "\n";
+      o << "Sommerfeld number S      " << r.sommerfeld << "\n";
+      o << "friction variable (R/c)f " << r.friction_variable << "\n";
+      o << "side flow Qs/(R c N L)   " << r.side_flow_variable << "\n";
+      o << "side flow [m^3/s]        " << r.side_flow << "\n";
+      o << "load [N]                 " << r.load << "\n";
+      o << "MOFT [m]                 " << r.moft << "\n";
+      o << "friction torque [N m]    " << r.friction_torque << "\n";
+      o << "friction power [W]       " << r.friction_power_loss << "\n";
+      o << "max pressure [Pa]        " << r.max_pressure << "\n";
+      o << "status                   " << r.status << "\n";
+    }
+    if (!r.converged) {
+      streams.err << "filmdyn bearing: " << r.status << "\n";
+      return 3;
+    }
+    return 0;
+  };
+  return command;
+}
+
+}  // namespace filmdyn::cli
