@@ -1,0 +1,96 @@
+// Every export writes a valid file: each standard plot as PNG, SVG and PDF after a real run,
+// results.csv with the SPEC §4 header and one row per output step. (Field VTU/PVD export:
+// tests/ui/fields.)
+#include <QAction>
+#include <QFile>
+#include <QImage>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QSvgRenderer>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include "ui/case_editor/case_document.hpp"
+#include "ui/case_editor/case_parameters.hpp"
+#include "ui/main_window.hpp"
+#include "ui/plots/plot_panel.hpp"
+#include "ui/run/run_controller.hpp"
+#include "ui/runs/run_table.hpp"
+
+using filmdyn::ui::MainWindow;
+using filmdyn::ui::RunHandle;
+
+class TestExports : public QObject {
+  Q_OBJECT
+ private slots:
+  void initTestCase() {
+    QStandardPaths::setTestModeEnabled(true);
+    QCoreApplication::setOrganizationName("FilmDynTest");
+    QCoreApplication::setApplicationName("test_exports");
+    QSettings().clear();
+  }
+
+  void everyPlotAndResultsExportWriteValidFiles() {
+    MainWindow window;
+    auto c = window.document()->engineCase();
+    filmdyn::ui::ApplyRunModel(c, "ideal");
+    c.solver.output_interval = 2.0 * M_PI / 180.0;
+    window.document()->edit(c, "ideal");
+    QSignalSpy finished(window.runController(), &filmdyn::ui::RunController::runFinished);
+    window.runAction()->trigger();
+    QVERIFY(finished.wait(120000));
+    const RunHandle run = finished.first().first().value<RunHandle>();
+    QCOMPARE(run->status(), filmdyn::ui::RunStatus::kFinished);
+
+    QTemporaryDir dir;
+    QString error;
+    QVERIFY2(window.exportAllPlots(dir.path(), {"png", "svg", "pdf"}, &error), qPrintable(error));
+    const int charts = window.plotPanel()->chartCount();
+    QVERIFY(charts >= 10);
+    for (int i = 0; i < charts; ++i) {
+      const QString base = dir.filePath(window.plotPanel()->chartId(i));
+      const QImage png(base + ".png");
+      QVERIFY2(!png.isNull(), qPrintable(base + ".png"));
+      QCOMPARE(png.size(), QSize(1920, 1200));  // 960 x 600 at 2x
+      QSvgRenderer svg(base + ".svg");
+      QVERIFY2(svg.isValid(), qPrintable(base + ".svg"));
+      QFile pdf(base + ".pdf");
+      QVERIFY(pdf.open(QIODevice::ReadOnly));
+      const QByteArray bytes = pdf.readAll();
+      QVERIFY2(bytes.startsWith("%PDF-") && bytes.trimmed().endsWith("%%EOF"),
+               qPrintable(base + ".pdf"));
+      QVERIFY(bytes.size() > 2000);
+    }
+    // A plot with data is not blank: the big-end force plot's PNG has many colours.
+    {
+      const QImage png(dir.filePath("bigend_forces.png"));
+      QSet<QRgb> colours;
+      for (int y = 0; y < png.height(); y += 3) {
+        for (int x = 0; x < png.width(); x += 3) colours.insert(png.pixel(x, y));
+      }
+      QVERIFY(colours.size() > 20);
+    }
+
+    const QString csv = dir.filePath("results.csv");
+    QVERIFY2(window.exportResultsCsv(run, csv, &error), qPrintable(error));
+    QFile file(csv);
+    QVERIFY(file.open(QIODevice::ReadOnly | QIODevice::Text));
+    const QStringList lines = QString::fromUtf8(file.readAll()).split('\n', Qt::SkipEmptyParts);
+    QCOMPARE(lines.size(), 1 + 360);
+    const QStringList header = lines.first().split(',');
+    QCOMPARE(header.size(), filmdyn::ui::kColumnCount);
+    QCOMPARE(header.first(), QString("crank_angle[deg]"));
+    QVERIFY(header.contains("skirt_moft[m]"));
+    QVERIFY(header.contains("bigend_force_y[N]"));
+    const QStringList row = lines[10].split(',');
+    QCOMPARE(row.size(), filmdyn::ui::kColumnCount);
+    QCOMPARE(row[0].toDouble(), 18.0);  // 2 °CA steps
+    bool ok = false;
+    row[header.indexOf("gas_force[N]")].toDouble(&ok);
+    QVERIFY(ok);
+    QVERIFY(row[header.indexOf("skirt_moft[m]")].isEmpty());  // the ideal model has no film
+  }
+};
+
+QTEST_MAIN(TestExports)
+#include "test_exports.moc"
