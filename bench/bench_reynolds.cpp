@@ -72,10 +72,10 @@ double BareCholmod(const ReynoldsFem& fem, const std::vector<std::uint8_t>& fixe
 
 void Report(const char* name, const Split& s, double bare) {
   std::printf(
-      "  %-34s %8.1f us  (assembly %6.1f, factorisation %7.1f, complementarity %6.1f; "
-      "%4.1f iterations)  = %4.2f x bare\n",
+      "  %-32s median %8.1f us (assembly %6.1f, factorisation %7.1f, complementarity %6.1f; "
+      "%4.1f it.) = %5.2f x bare | mean %8.1f us, %5.2f it. = %5.2f x bare\n",
       name, 1e6 * s.total, 1e6 * s.assembly, 1e6 * s.factorization, 1e6 * s.complementarity,
-      s.iterations, s.total / bare);
+      s.iterations, s.total / bare, 1e6 * s.mean_total, s.mean_iterations, s.mean_total / bare);
 }
 
 BearingConfig Bearing(BearingMeshSpec mesh, LdltBackend backend) {
