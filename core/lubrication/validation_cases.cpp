@@ -22,7 +22,8 @@ const std::vector<RaimondiBoydPoint>& RaimondiBoydTable() {
   // Raimondi & Boyd (1958), "A solution for the finite journal bearing and its application to
   // analysis and design", ASLE Trans. 1, 159-209, Table for the full (360 deg) bearing, as
   // reproduced in Shigley's Mechanical Engineering Design (Budynas & Nisbett), Table 12-4.
-  // Columns: L/D, eps, S, phi [deg], (R/c) f, Q/(R c N L), Q_s/Q.
+  // The L/D = 1 S and (R/c) f columns match an independent transcription (MathWorks Answers
+  // 707318). Columns: L/D, eps, S, phi [deg], (R/c) f, Q/(R c N L), Q_s/Q.
   static const std::vector<RaimondiBoydPoint> table = {
       {1.0, 0.1, 1.33, 79.5, 26.4, 3.37, 0.150},    {1.0, 0.2, 0.631, 74.02, 12.8, 3.59, 0.280},
       {1.0, 0.4, 0.264, 63.10, 5.79, 3.99, 0.497},  {1.0, 0.6, 0.121, 50.58, 3.22, 4.33, 0.680},
