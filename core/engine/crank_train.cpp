@@ -131,8 +131,11 @@ CrankTrainSample SampleCrankTrain(CrankTrain& train, const EngineCase& c, double
                                   wp * wp * pin_arm;
   s.piston_acceleration = pin_acc.y();
   // Secondary motion (zero for the ideal liner): pin lateral position relative to C_p, tilt.
-  s.piston_lateral = piston.q[0] + pin_arm.x() - c.geometry.pin_offset;
-  s.piston_lateral_velocity = multibody::PointVelocity(piston, lay.piston_pin_point).x();
+  // e0 of the paper's eq. 2: the piston axis at pin height, i.e. the pin minus C_p along the
+  // tilted pin arm (= pin X − C_p to second order in the tilt).
+  s.piston_lateral = piston.q[0] + pin_arm.x() - c.geometry.pin_offset * std::cos(piston.Angle());
+  s.piston_lateral_velocity = multibody::PointVelocity(piston, lay.piston_pin_point).x() +
+                              c.geometry.pin_offset * std::sin(piston.Angle()) * wp;
   s.piston_tilt = piston.Angle();
   s.piston_tilt_rate = wp;
   const BodyState rod = state.Body(lay.rod);
@@ -154,6 +157,15 @@ CrankTrainSample SampleCrankTrain(CrankTrain& train, const EngineCase& c, double
   s.pin_force_on_piston = sys.Reaction(lay.piston_pin, t, state, lambda).on_j.head<2>();
   s.main_bearing_force_on_crank = sys.Reaction(lay.main_bearing, t, state, lambda).on_j.head<2>();
   s.crank_torque = sys.Reaction(lay.crank_drive, t, state, lambda).on_j[2];
+  // Film joints were just evaluated at this state by sys.Evaluate.
+  for (multibody::JointForceElement* element : {train.skirt_element, train.big_end_element}) {
+    if (const auto* reporter = dynamic_cast<const FilmReporter*>(element)) reporter->ReportFilm(&s);
+  }
+  if (s.bearing.present) s.big_end_force_on_rod = s.bearing.force_on_rod;
+  if (s.skirt.present) {
+    s.liner_force_on_piston = {s.skirt.normal_force, -s.skirt.friction_force};
+    s.liner_moment_about_pin = s.skirt.moment_about_pin;
+  }
   return s;
 }
 

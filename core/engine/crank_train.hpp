@@ -50,6 +50,49 @@ struct CrankTrain {
 CrankTrain BuildCrankTrain(const EngineCase& engine_case, double rpm, PressureCurve pressure,
                            const LubricatedJointFactories& factories = {});
 
+/// Film quantities of the lubricated skirt at one instant (present = false with an ideal liner).
+/// Forces on the piston: lateral along +X (thrust side), friction along the bore, + toward the
+/// crank (skirt solver convention), moment about the pin (generalised force on the tilt).
+struct SkirtFilmSample {
+  bool present = false;
+  double normal_force = 0.0;          ///< [N] hydrodynamic + asperity, along +X
+  double contact_normal_force = 0.0;  ///< asperity part [N]
+  double friction_force = 0.0;        ///< [N] along +y of the skirt (toward the crank)
+  double moment_about_pin = 0.0;      ///< [N·m]
+  double moft = 0.0;                  ///< [m]
+  double fpl = 0.0;                   ///< friction power loss [W]
+  double max_pressure = 0.0;          ///< [Pa]
+  double min_gap = 0.0;  ///< smallest geometric gap over the panels (< 0: piston in the liner) [m]
+  long clamped_nodes = 0;
+};
+
+/// Film quantities of the lubricated big end at one instant (present = false when ideal).
+struct BearingFilmSample {
+  bool present = false;
+  Eigen::Vector2d journal_ecc_rod = Eigen::Vector2d::Zero();  ///< journal − bearing centre, rod
+                                                              ///< frame [m]
+  Eigen::Vector2d journal_ecc_global = Eigen::Vector2d::Zero();  ///< same, global frame [m]
+  double eps = 0.0;                                              ///< ε [-]
+  double eps_dot = 0.0;                                          ///< [1/s]
+  double moft = 0.0;                                             ///< [m]
+  double fpl = 0.0;                                              ///< [W]
+  double max_pressure = 0.0;                                     ///< [Pa]
+  Eigen::Vector2d force_on_rod = Eigen::Vector2d::Zero();  ///< film (crank pin) → rod [N]
+  double friction_torque_journal = 0.0;                    ///< on the crank [N·m]
+  double friction_torque_bearing = 0.0;                    ///< on the rod [N·m]
+};
+
+struct CrankTrainSample;
+
+/// Implemented by lubricated joint elements (core/coupling) so that SampleCrankTrain can fill the
+/// film quantities without knowing their types. Called right after the element was evaluated at
+/// the sampled state.
+class FilmReporter {
+ public:
+  virtual ~FilmReporter() = default;
+  virtual void ReportFilm(CrankTrainSample* sample) const = 0;
+};
+
 /// Crank-train quantities at one instant (global frame; signs in docs/outputs.md).
 struct CrankTrainSample {
   double time = 0.0;                 ///< [s]
@@ -69,6 +112,8 @@ struct CrankTrainSample {
   Eigen::Vector2d main_bearing_force_on_crank = Eigen::Vector2d::Zero();  ///< [N]
   double crank_torque = 0.0;          ///< drive torque on the crank [N·m]
   double constraint_violation = 0.0;  ///< max |Φ| of the position rows [m or rad]
+  SkirtFilmSample skirt;              ///< lubricated skirt (issue 5)
+  BearingFilmSample bearing;          ///< lubricated big end (issue 5)
 };
 
 CrankTrainSample SampleCrankTrain(CrankTrain& train, const EngineCase& engine_case, double t,

@@ -47,6 +47,8 @@ struct SkirtCase {
   /// Barrel profile h_skirt(y): axial positions from the skirt top [m] and radial drop [m].
   std::vector<double> profile_y = {0.0, 7.0e-3, 14.0e-3, 21.0e-3, 28.0e-3};
   std::vector<double> profile_h = {20.0e-6, 5.0e-6, 0.0, 5.0e-6, 20.0e-6};
+  /// FEM mesh: elements over Ω1, Ω2, Ω3 (circumferential) and axially (paper Table II).
+  int mesh_thrust = 30, mesh_relief = 2, mesh_anti = 30, mesh_axial = 40;
 };
 
 /// The connecting-rod big-end bearing (Table I); used by the lubricated model (issue 5).
@@ -61,6 +63,8 @@ struct BigEndCase {
   double composite_modulus = 1.172e11;  ///< E' [Pa] (assumed: steel journal, Al-Sn lining)
   double boundary_friction = 0.13;      ///< μ_f [-]
   double oil_feed_pressure = 0.0;       ///< gauge [Pa]; 0 = no feed hole (assumed)
+  /// FEM mesh: elements around 360° and across the width (paper Table II).
+  int mesh_theta = 50, mesh_z = 10;
 };
 
 /// One cylinder-pressure curve: absolute pressure vs crank angle at one speed.

@@ -1,9 +1,13 @@
 #include "core/engine/run_job.hpp"
 
 #include <chrono>
+#include <cstdio>
 #include <cmath>
 #include <numbers>
 
+#include "core/coupling/lubricated_big_end_element.hpp"
+#include "core/coupling/lubricated_skirt_element.hpp"
+#include "core/coupling/steady_state.hpp"
 #include "core/input_error.hpp"
 
 namespace filmdyn::engine {
@@ -61,6 +65,7 @@ RunConfig MakeRunConfig(const EngineCase& engine_case, Model model, double rpm,
   config.model = model;
   config.rpm = rpm;
   config.pressure = std::move(pressure);
+  config.factories = coupling::FilmJointFactories();
   const SolverCase& s = engine_case.solver;
   config.integrator.relative_tolerance = s.relative_tolerance;
   config.integrator.position_tolerance = s.position_tolerance;
@@ -69,41 +74,85 @@ RunConfig MakeRunConfig(const EngineCase& engine_case, Model model, double rpm,
   config.integrator.angle_tolerance = s.position_tolerance * 10.0;
   config.integrator.velocity_tolerance = s.position_tolerance * 1e3;
   config.integrator.angular_velocity_tolerance = s.position_tolerance * 1e4;
+  // Bounded work per output step (never a hang): a stalled step size ends the run with a status.
+  config.integrator.max_steps_per_output = 20000;
   return config;
 }
 
 namespace {
 
-// Quantities whose cycle-to-cycle change decides the periodic steady state (issue 5 adds e0, γ,
-// ε and the MOFTs through the samples' secondary-motion fields).
-std::vector<double> Monitored(const CrankTrainSample& s) {
-  return {s.piston_lateral,
-          s.piston_tilt,
-          s.liner_force_on_piston.x(),
-          s.big_end_force_on_rod.x(),
-          s.big_end_force_on_rod.y(),
-          s.crank_torque};
+// The periodic-steady-state quantities of a model (issue 5 item 2): e0, γ and the skirt MOFT for
+// a lubricated skirt, ε and the bearing MOFT for a lubricated big end; the ideal model tracks
+// the forces it has. Floors: 1 % of the clearance scales, so a flat trace cannot block.
+struct Tracked {
+  std::vector<coupling::TrackedQuantity> quantities;
+  std::function<std::vector<double>(const CrankTrainSample&)> values;
+};
+
+Tracked TrackedFor(const EngineCase& c) {
+  const bool skirt = c.skirt.model == JointModel::kLubricated;
+  const bool big_end = c.big_end.model == JointModel::kLubricated;
+  Tracked t;
+  if (!skirt && !big_end) {
+    t.quantities = {{"liner_force_x[N]", 1.0},
+                    {"bigend_force_x[N]", 1.0},
+                    {"bigend_force_y[N]", 1.0},
+                    {"crank_torque[N*m]", 0.1}};
+    t.values = [](const CrankTrainSample& s) {
+      return std::vector<double>{s.liner_force_on_piston.x(), s.big_end_force_on_rod.x(),
+                                 s.big_end_force_on_rod.y(), s.crank_torque};
+    };
+    return t;
+  }
+  const double c_p = c.geometry.liner_radius - c.skirt.piston_radius;
+  const double c_b = c.big_end.bearing_radius - c.big_end.journal_radius;
+  if (skirt) {
+    t.quantities.push_back({"piston_lateral[m]", 0.01 * c_p});
+    t.quantities.push_back({"piston_tilt[rad]", 0.01 * c_p / c.skirt.length});
+    t.quantities.push_back({"skirt_moft[m]", 0.01 * c_p});
+  }
+  if (big_end) {
+    t.quantities.push_back({"bearing_eps[-]", 0.01});
+    t.quantities.push_back({"bearing_moft[m]", 0.01 * c_b});
+  }
+  t.values = [skirt, big_end](const CrankTrainSample& s) {
+    std::vector<double> v;
+    if (skirt) v.insert(v.end(), {s.piston_lateral, s.piston_tilt, s.skirt.moft});
+    if (big_end) v.insert(v.end(), {s.bearing.eps, s.bearing.moft});
+    return v;
+  };
+  return t;
 }
 
-double CycleChange(const std::vector<CrankTrainSample>& a, const std::vector<CrankTrainSample>& b) {
-  if (a.size() != b.size() || a.empty()) return INFINITY;
-  const std::size_t m = Monitored(a[0]).size();
-  double worst = 0.0;
-  for (std::size_t q = 0; q < m; ++q) {
-    double lo = INFINITY, hi = -INFINITY, change = 0.0;
-    for (std::size_t k = 0; k < a.size(); ++k) {
-      const double x = Monitored(a[k])[q], y = Monitored(b[k])[q];
-      lo = std::min(lo, y);
-      hi = std::max(hi, y);
-      change = std::max(change, std::abs(x - y));
-    }
-    const double range = hi - lo;
-    if (range > 1e-12)
-      worst = std::max(worst, change / range);  // constant quantities: skip
-    else
-      worst = std::max(worst, change > 1e-12 ? 1.0 : 0.0);
+// Physical failure of a film joint at a sample: the reason, or empty.
+std::string FilmTrouble(const CrankTrainSample& s) {
+  char text[200];
+  if (s.bearing.present &&
+      (!std::isfinite(s.bearing.eps) || s.bearing.eps >= coupling::LubricatedBigEndElement::kEpsMax)) {
+    std::snprintf(text, sizeof text,
+                  "big-end journal touches the bearing (eps = %.5f): the film cannot carry the "
+                  "load with this clearance/viscosity",
+                  s.bearing.eps);
+    return text;
   }
-  return worst;
+  if (s.skirt.present && (!std::isfinite(s.skirt.min_gap) || s.skirt.min_gap <= 0.0)) {
+    std::snprintf(text, sizeof text,
+                  "piston skirt touches the liner (smallest gap %.3g um): the skirt film cannot "
+                  "carry the side force with this clearance/profile",
+                  s.skirt.min_gap * 1e6);
+    return text;
+  }
+  if (!std::isfinite(s.piston_lateral) || !std::isfinite(s.crank_torque) ||
+      !std::isfinite(s.big_end_force_on_rod.norm())) {
+    return "the solution diverged (non-finite state)";
+  }
+  return {};
+}
+
+std::string AtAngle(int cycle, double crank_deg) {
+  char text[80];
+  std::snprintf(text, sizeof text, " (cycle %d, %.1f °CA)", cycle, crank_deg);
+  return text;
 }
 
 }  // namespace
@@ -116,18 +165,28 @@ RunResult RunJob(const RunConfig& config, const RunMonitor& monitor,
   RunResult result;
   const EngineCase& c = config.engine_case;
   CrankTrain train = BuildCrankTrain(c, config.rpm, config.pressure, config.factories);
+  auto* skirt = dynamic_cast<coupling::LubricatedSkirtElement*>(train.skirt_element);
+  auto* big_end = dynamic_cast<coupling::LubricatedBigEndElement*>(train.big_end_element);
   multibody::Integrator integrator(*train.system, config.integrator);
   integrator.Initialize(0.0, train.initial_state);
 
   const double omega = train.layout.omega;
   const double cycle_time = 4.0 * std::numbers::pi / omega;
   const int steps_per_cycle =
-      std::max(1, static_cast<int>(std::lround(4.0 * std::numbers::pi / c.solver.output_interval)));
+      std::max(2, static_cast<int>(std::lround(4.0 * std::numbers::pi / c.solver.output_interval)));
   const int max_cycles = c.solver.max_cycles;
+  const Tracked tracked = TrackedFor(c);
+  coupling::PeriodicSteadyState steady(tracked.quantities, steps_per_cycle,
+                                       c.solver.steady_state_tolerance);
+  const bool lubricated = skirt || big_end;
+  auto solves = [&] {
+    return (skirt ? skirt->reynolds_solves() : 0L) + (big_end ? big_end->reynolds_solves() : 0L);
+  };
   std::vector<CrankTrainSample> previous, current;
   double crank_deg = 0.0;
+  int cycle = 1;
   try {
-    for (int cycle = 1; cycle <= max_cycles; ++cycle) {
+    for (cycle = 1; cycle <= max_cycles; ++cycle) {
       current.clear();
       for (int k = 0; k < steps_per_cycle; ++k) {
         const double t = (cycle - 1) * cycle_time + k * cycle_time / steps_per_cycle;
@@ -135,15 +194,41 @@ RunResult RunJob(const RunConfig& config, const RunMonitor& monitor,
         const multibody::SystemState state =
             t > 0.0 ? integrator.AdvanceTo(t) : train.initial_state;
         current.push_back(SampleCrankTrain(train, c, t, state));
+        const CrankTrainSample& sample = current.back();
         result.max_constraint_violation =
-            std::max(result.max_constraint_violation, current.back().constraint_violation);
+            std::max(result.max_constraint_violation, sample.constraint_violation);
         result.stats = integrator.Stats();
+        result.reynolds_solves = solves();
+        if (const std::string trouble = FilmTrouble(sample); !trouble.empty()) {
+          result.status = RunStatus::kFailed;
+          result.message = trouble + AtAngle(cycle, crank_deg);
+          result.cycles = cycle;
+          result.samples = std::move(current);
+          result.wall_time = elapsed();
+          return result;
+        }
+        steady.Record(k, tracked.values(sample));
+        if (config.field_callback) {
+          if (skirt) skirt->RefreshFields();
+          if (big_end) big_end->RefreshFields();
+          FieldFrame frame;
+          frame.cycle = cycle;
+          frame.step = k;
+          frame.crank_angle_deg = crank_deg;
+          frame.time = t;
+          frame.sample = &sample;
+          frame.skirt = skirt ? &skirt->solver() : nullptr;
+          frame.bearing = big_end ? &big_end->solver() : nullptr;
+          config.field_callback(frame);
+          result.reynolds_solves = solves();
+        }
         RunProgress progress;
         progress.cycle = cycle;
         progress.max_cycles = max_cycles;
         progress.crank_angle_deg = crank_deg;
-        // Progress assumes a few cycles (ideal: 2); refined when issue 5 knows typical counts.
-        const double expected = std::max(2, std::min(max_cycles, cycle + 1));
+        // Typical cycle counts: ideal 2, film models 4-6 (refined by the last cycle change).
+        const int typical = lubricated ? 5 : 2;
+        const double expected = std::max(typical, std::min(max_cycles, cycle + 1));
         progress.fraction = ((cycle - 1) + (k + 1.0) / steps_per_cycle) / expected;
         progress.elapsed = elapsed();
         progress.remaining = progress.elapsed * (1.0 / std::max(progress.fraction, 1e-9) - 1.0);
@@ -152,12 +237,10 @@ RunResult RunJob(const RunConfig& config, const RunMonitor& monitor,
         const bool cancelled = cancel && cancel->load();
         if (!go_on || cancelled) {
           result.status = RunStatus::kCancelled;
-          result.message = "cancelled at cycle " + std::to_string(cycle) + ", " +
-                           std::to_string(crank_deg) + " °CA";
+          result.message = "cancelled" + AtAngle(cycle, crank_deg);
         } else if (config.wall_time_limit > 0 && progress.elapsed > config.wall_time_limit) {
           result.status = RunStatus::kTimeLimit;
-          result.message = "wall-time limit reached at cycle " + std::to_string(cycle) + ", " +
-                           std::to_string(crank_deg) + " °CA";
+          result.message = "wall-time limit reached" + AtAngle(cycle, crank_deg);
         }
         if (result.status == RunStatus::kCancelled || result.status == RunStatus::kTimeLimit) {
           result.cycles = cycle;
@@ -167,30 +250,43 @@ RunResult RunJob(const RunConfig& config, const RunMonitor& monitor,
         }
       }
       result.cycles = cycle;
-      if (!previous.empty()) {
-        result.cycle_change = CycleChange(previous, current);
-        if (result.cycle_change <= c.solver.steady_state_tolerance) {
-          result.cycles_to_steady_state = cycle;
-          result.status = RunStatus::kCompleted;
-          result.samples = std::move(current);
-          result.wall_time = elapsed();
-          return result;
-        }
+      const coupling::CycleVerdict verdict = steady.EndCycle();
+      if (verdict.compared) {
+        result.cycle_change = verdict.worst_relative_change;
+        result.worst_quantity = verdict.worst_quantity;
+      }
+      if (verdict.converged) {
+        result.cycles_to_steady_state = cycle;
+        result.status = RunStatus::kCompleted;
+        result.samples = std::move(current);
+        result.stats = integrator.Stats();
+        result.reynolds_solves = solves();
+        result.wall_time = elapsed();
+        return result;
       }
       previous = std::move(current);
     }
     result.status = RunStatus::kNotConverged;
     result.message = "no periodic steady state after " + std::to_string(max_cycles) +
-                     " cycles (last change " + std::to_string(result.cycle_change) + " of range)";
+                     " cycles (last change " + std::to_string(result.cycle_change) +
+                     " of range, in " + result.worst_quantity + ")";
     result.samples = std::move(previous);
   } catch (const InputError&) {
     throw;
   } catch (const std::exception& error) {
     result.status = RunStatus::kFailed;
-    result.message = std::string(error.what()) + " (at " + std::to_string(crank_deg) + " °CA)";
+    result.message = std::string("integration failed: ") + error.what() + AtAngle(cycle, crank_deg);
+    if (!current.empty()) {  // name the film state where it stopped
+      char text[160];
+      const CrankTrainSample& last = current.back();
+      std::snprintf(text, sizeof text, "; last output: eps = %.4f, skirt gap %.3g um",
+                    last.bearing.eps, last.skirt.min_gap * 1e6);
+      result.message += text;
+    }
     result.samples = current.empty() ? previous : current;
   }
   result.stats = integrator.Stats();
+  result.reynolds_solves = solves();
   result.wall_time = elapsed();
   return result;
 }

@@ -12,6 +12,11 @@
 #include "core/engine/pressure_curve.hpp"
 #include "core/multibody/integrator.hpp"
 
+namespace filmdyn::lubrication {
+class SkirtSolver;
+class BearingSolver;
+}  // namespace filmdyn::lubrication
+
 namespace filmdyn::engine {
 
 /// SPEC §3.2 models.
@@ -22,6 +27,25 @@ std::string ModelName(Model model);
 /// Sets skirt.model / big_end.model of a case for a model.
 void ApplyModel(Model model, EngineCase* engine_case);
 
+/// The nodal fields of both lubricated joints at one output step (for VTU output and the field
+/// view). The solvers' fields() (pressure, contact_pressure, fluid_fraction), film_thickness() and
+/// mesh() (node coordinates: skirt x = R α, y from the skirt top; bearing x = R θ from the maximum
+/// film, y = z across the width) belong to the sampled state. nullptr = joint not lubricated.
+/// Valid only during the callback.
+struct FieldFrame {
+  int cycle = 0;                 ///< 1-based cycle the step belongs to
+  int step = 0;                  ///< output step within the cycle, 0 … steps_per_cycle − 1
+  double crank_angle_deg = 0.0;  ///< within the cycle [0, 720)
+  double time = 0.0;             ///< [s] since the start of the run
+  const CrankTrainSample* sample = nullptr;
+  const lubrication::SkirtSolver* skirt = nullptr;
+  const lubrication::BearingSolver* bearing = nullptr;
+};
+/// Called at every output step of every cycle. The run reports the last cycle it computed
+/// (RunResult::cycles): keep the frames of the newest cycle only (e.g. write them into a fresh
+/// folder per cycle, or buffer one cycle). Costs nothing when empty.
+using FieldCallback = std::function<void(const FieldFrame&)>;
+
 struct RunConfig {
   EngineCase engine_case;  ///< joint models already set (ApplyModel)
   Model model = Model::kIdeal;
@@ -30,6 +54,7 @@ struct RunConfig {
   LubricatedJointFactories factories;      ///< empty until issue 5 provides the film elements
   multibody::IntegratorConfig integrator;  ///< tolerances (set from the case by MakeRunConfig)
   double wall_time_limit = 0.0;  ///< [s]; 0 = none. Reached: result incomplete, partial rows kept
+  FieldCallback field_callback;  ///< optional per-output-step fields of the film joints
 };
 
 /// Fills the integrator tolerances from the case's solver section.
@@ -60,6 +85,8 @@ struct RunResult {
   int cycles = 0;                         ///< cycles computed
   int cycles_to_steady_state = 0;         ///< 0 when not reached
   double cycle_change = 0.0;              ///< last cycle-to-cycle change / range (largest quantity)
+  std::string worst_quantity;             ///< the quantity furthest from periodicity (last cycle)
+  long reynolds_solves = 0;               ///< Reynolds (FEM + cavitation) solves, both joints
   multibody::SolverStats stats;
   double wall_time = 0.0;  ///< [s]
   double max_constraint_violation = 0.0;

@@ -1,0 +1,238 @@
+#include "core/coupling/lubricated_big_end_element.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/coupling/lubricated_skirt_element.hpp"
+#include "core/input_error.hpp"
+#include "core/lubrication/surface_film.hpp"
+
+namespace filmdyn::coupling {
+
+using multibody::BodyState;
+using multibody::Cross;
+using multibody::Perp;
+using multibody::Rotation;
+
+namespace {
+
+constexpr double kEpsFloor = 1e-3;  // line-of-centres regularisation (see header)
+
+bool SameInput(const multibody::JointForceInput& a, const multibody::JointForceInput& b) {
+  return a.body_i.q == b.body_i.q && a.body_i.v == b.body_i.v && a.body_j.q == b.body_j.q &&
+         a.body_j.v == b.body_j.v;
+}
+
+}  // namespace
+
+LubricatedBigEndElement::LubricatedBigEndElement(lubrication::BearingConfig config,
+                                                 multibody::BodyIndex crank,
+                                                 multibody::BodyIndex rod, BigEndMounting mounting)
+    : JointForceElement("lubricated big end", crank, rod),
+      solver_(std::make_unique<lubrication::BearingSolver>(std::move(config))),
+      mount_(mounting) {
+  // Contact penalty: a film 1e-3 c thinner than at ε_max carries ~the bearing's projected area
+  // times 1 GPa (far above any gas load: it only stops a run that is failing anyway).
+  const lubrication::BearingGeometry& g = solver_->config().geometry;
+  penalty_stiffness_ = 1e9 * 2.0 * g.radius * g.length / (1e-3 * g.radial_clearance);
+}
+
+namespace {
+
+// z = (e, ė, ω_journal, ω_bearing), global; bearing_angle = rod angle (feed hole position).
+using Cartesian = Eigen::Matrix<double, 6, 1>;
+
+Cartesian CartesianOf(const BodyState& crank, const BodyState& rod, const BigEndMounting& mount) {
+  const Eigen::Vector2d a_c = Rotation(crank.Angle()) * mount.journal_point;
+  const Eigen::Vector2d a_r = Rotation(rod.Angle()) * mount.bearing_point;
+  Cartesian z;
+  z.segment<2>(0) = crank.Position() + a_c - rod.Position() - a_r;
+  z.segment<2>(2) = crank.Velocity() + crank.AngularVelocity() * Perp(a_c) - rod.Velocity() -
+                    rod.AngularVelocity() * Perp(a_r);
+  z[4] = crank.AngularVelocity();
+  z[5] = rod.AngularVelocity();
+  return z;
+}
+
+BigEndKinematics FromCartesian(const Cartesian& z, double bearing_angle, double c) {
+  BigEndKinematics k;
+  k.ecc = z.segment<2>(0);
+  k.ecc_rate = z.segment<2>(2);
+  const double rho = k.ecc.norm();
+  k.eps_true = rho / c;
+  const double rho_reg = std::max(rho, kEpsFloor * c);
+  const Eigen::Vector2d n = rho > 0.0 ? Eigen::Vector2d(k.ecc / rho) : Eigen::Vector2d(1.0, 0.0);
+  k.state.eps = std::min(rho_reg / c, LubricatedBigEndElement::kEpsMax);
+  k.state.eps_dot = n.dot(k.ecc_rate) / c;
+  k.state.line_of_centres_angle = std::atan2(n.y(), n.x());
+  k.state.line_of_centres_rate = Cross(k.ecc, k.ecc_rate) / (rho_reg * rho_reg);
+  k.state.omega_journal = z[4];
+  k.state.omega_bearing = z[5];
+  k.state.bearing_angle = bearing_angle;
+  return k;
+}
+
+}  // namespace
+
+BigEndKinematics LubricatedBigEndElement::Kinematics(const BodyState& crank,
+                                                     const BodyState& rod) const {
+  return FromCartesian(CartesianOf(crank, rod, mount_), rod.Angle(),
+                       solver_->config().geometry.radial_clearance);
+}
+
+Eigen::Vector4d LubricatedBigEndElement::Loads(const Eigen::Matrix<double, 6, 1>& z,
+                                               double bearing_angle, BigEndKinematics* kin) {
+  const double c = solver_->config().geometry.radial_clearance;
+  *kin = FromCartesian(z, bearing_angle, c);
+  solver_->Solve(kin->state);
+  ++solves_;
+  const lubrication::BearingResult& r = solver_->result();
+  Eigen::Vector4d g(r.force_x, r.force_y, r.friction_torque_journal, r.friction_torque_bearing);
+  const double over = kin->eps_true - kEpsMax;
+  if (over > 0.0) {  // contact penalty along −n
+    const Eigen::Vector2d n = kin->ecc / kin->ecc.norm();
+    g.head<2>() -= penalty_stiffness_ * over * c * n;
+  }
+  return g;
+}
+
+void LubricatedBigEndElement::EvaluateJoint(const multibody::JointForceInput& in,
+                                            bool want_jacobian, multibody::JointForceOutput* out) {
+  if (cache_valid_ && SameInput(in, cached_in_) && (!want_jacobian || cache_has_jacobian_)) {
+    *out = cached_out_;
+    if (!want_jacobian) out->jacobian.setZero();
+    return;
+  }
+  const BodyState& crank = in.body_i;
+  const BodyState& rod = in.body_j;
+  const Eigen::Vector2d a_c = Rotation(crank.Angle()) * mount_.journal_point;
+  const Eigen::Vector2d a_r = Rotation(rod.Angle()) * mount_.bearing_point;
+  const Cartesian z = CartesianOf(crank, rod, mount_);
+  rod_angle_ = rod.Angle();
+  loads_ = Loads(z, rod_angle_, &kin_);
+  result_ = solver_->result();
+  const Eigen::Vector4d& g = loads_;
+  const Eigen::Vector2d f = g.head<2>();
+  out->wrench_i << f, Cross(a_c, f) + g[2];
+  out->wrench_j << -f, -Cross(a_r, f) + g[3];
+  out->jacobian.setZero();
+  cached_in_ = in;
+  cache_valid_ = true;
+  cache_has_jacobian_ = false;
+  solver_at_cache_ = true;
+  if (!want_jacobian) {
+    cached_out_ = *out;
+    return;
+  }
+  // ∂g/∂z by forward differences of the solver in the Cartesian unknowns.
+  const double c = solver_->config().geometry.radial_clearance;
+  const double de = 1e-4 * c;
+  const double dv = 1e-5 + 1e-4 * z.segment<2>(2).norm();
+  const double steps[6] = {de, de, dv, dv, 1e-2 + 1e-6 * std::abs(z[4]),
+                           1e-2 + 1e-6 * std::abs(z[5])};
+  Eigen::Matrix<double, 4, 6> dg;
+  BigEndKinematics scratch;
+  for (int k = 0; k < 6; ++k) {
+    Cartesian zp = z;
+    zp[k] += steps[k];
+    dg.col(k) = (Loads(zp, rod_angle_, &scratch) - g) / steps[k];
+  }
+  solver_at_cache_ = false;
+  // dz/dx for x = (q_crank, q_rod, v_crank, v_rod).
+  Eigen::Matrix<double, 6, 12> dz = Eigen::Matrix<double, 6, 12>::Zero();
+  dz.block<2, 2>(0, 0).setIdentity();
+  dz.block<2, 1>(0, 2) = Perp(a_c);
+  dz.block<2, 2>(0, 3) = -Eigen::Matrix2d::Identity();
+  dz.block<2, 1>(0, 5) = -Perp(a_r);
+  dz.block<2, 1>(2, 2) = -crank.AngularVelocity() * a_c;
+  dz.block<2, 1>(2, 5) = rod.AngularVelocity() * a_r;
+  dz.block<2, 2>(2, 6).setIdentity();
+  dz.block<2, 1>(2, 8) = Perp(a_c);
+  dz.block<2, 2>(2, 9) = -Eigen::Matrix2d::Identity();
+  dz.block<2, 1>(2, 11) = -Perp(a_r);
+  dz(4, 8) = 1.0;
+  dz(5, 11) = 1.0;
+  // ∂W/∂g.
+  Eigen::Matrix<double, 6, 4> dw = Eigen::Matrix<double, 6, 4>::Zero();
+  dw(0, 0) = dw(1, 1) = 1.0;
+  dw.row(2) << -a_c.y(), a_c.x(), 1.0, 0.0;
+  dw(3, 0) = dw(4, 1) = -1.0;
+  dw.row(5) << a_r.y(), -a_r.x(), 0.0, 1.0;
+  out->jacobian = dw * dg * dz;
+  out->jacobian(2, 2) += Cross(Perp(a_c), f);   // moment arms turn with the bodies
+  out->jacobian(5, 5) += -Cross(Perp(a_r), f);
+  cached_out_ = *out;
+  cache_has_jacobian_ = true;
+}
+
+void LubricatedBigEndElement::RefreshFields() {
+  if (solver_at_cache_ || !cache_valid_) return;
+  solver_->Solve(kin_.state);
+  ++solves_;
+  solver_at_cache_ = true;
+}
+
+void LubricatedBigEndElement::ReportFilm(engine::CrankTrainSample* sample) const {
+  engine::BearingFilmSample& b = sample->bearing;
+  b.present = true;
+  b.journal_ecc_global = kin_.ecc;
+  b.journal_ecc_rod = Rotation(rod_angle_).transpose() * kin_.ecc;
+  b.eps = kin_.eps_true;
+  b.eps_dot = kin_.state.eps_dot;
+  b.moft = result_.moft;
+  b.fpl = result_.friction_power_loss;
+  b.max_pressure = result_.max_pressure;
+  b.force_on_rod = -loads_.head<2>();
+  b.friction_torque_journal = loads_[2];
+  b.friction_torque_bearing = loads_[3];
+}
+
+lubrication::BearingConfig BearingConfigFromCase(const engine::EngineCase& c) {
+  const engine::BigEndCase& be = c.big_end;
+  lubrication::BearingConfig config;
+  config.geometry.radius = be.journal_radius;
+  config.geometry.length = be.width;
+  config.geometry.radial_clearance = be.bearing_radius - be.journal_radius;
+  if (!(config.geometry.radial_clearance > 0.0)) {
+    throw InputError("big_end.journal_radius", FormatValue(be.journal_radius),
+                     "must be smaller than big_end.bearing_radius = " +
+                         FormatValue(be.bearing_radius) + " [m] (no clearance)");
+  }
+  config.viscosity = c.lubricant.viscosity;
+  config.mesh.n_theta = be.mesh_theta;
+  config.mesh.n_z = be.mesh_z;
+  if (be.oil_feed_pressure > 0.0) {  // a hole in the rod's bore, on the rod axis toward the pin
+    config.feed.kind = lubrication::OilFeed::Kind::kHole;
+    config.feed.angle = 0.5 * 3.14159265358979323846;
+    config.feed.pressure = be.oil_feed_pressure;
+  }
+  lubrication::SurfacePair pair;
+  pair.sigma1 = be.roughness_journal;
+  pair.sigma2 = be.roughness_bearing;
+  pair.peklenik = be.peklenik;
+  pair.E1 = pair.E2 = be.composite_modulus;  // E' given: equal moduli with ν = 0 reproduce it
+  pair.nu1 = pair.nu2 = 0.0;
+  pair.gt_k = c.lubricant.greenwood_tripp_k;
+  pair.boundary_friction = be.boundary_friction;
+  pair.Validate("big_end");
+  config.film = lubrication::MakeSurfaceFilm(pair);
+  return config;
+}
+
+std::unique_ptr<multibody::JointForceElement> MakeLubricatedBigEnd(
+    const engine::EngineCase& c, const engine::CrankTrainLayout& layout) {
+  BigEndMounting mount;
+  mount.journal_point = layout.crank_pin;
+  mount.bearing_point = layout.rod_big_end;
+  return std::make_unique<LubricatedBigEndElement>(BearingConfigFromCase(c), layout.crank,
+                                                   layout.rod, mount);
+}
+
+engine::LubricatedJointFactories FilmJointFactories() {
+  engine::LubricatedJointFactories f;
+  f.skirt = &MakeLubricatedSkirt;
+  f.big_end = &MakeLubricatedBigEnd;
+  return f;
+}
+
+}  // namespace filmdyn::coupling

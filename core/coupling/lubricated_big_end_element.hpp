@@ -1,0 +1,84 @@
+#pragma once
+/// @file The lubricated big-end bearing as a multibody force element (issue 5; paper §2.2, eqs.
+/// 7–14, §3): a revolute clearance joint between the crank pin (journal, body i) and the rod's
+/// big-end bore (bearing, body j); the film forces of lubrication::BearingSolver act at both
+/// centres (on the journal F through its centre, on the bearing −F through its centre, plus the
+/// friction torque on each — the solver's torque pair already balances the e × F couple).
+///
+/// Kinematics: e = r_journal − r_bearing (eq. 7), ε = |e|/c (eq. 10), ε̇ = n·ė/c (eq. 11),
+/// φ = atan2(e_y, e_x), φ̇ = (e × ė)/|e|². φ̇ is singular at e → 0 while ε φ̇ stays bounded, so
+/// below |e| = 1e-3 c the line-of-centres frame keeps the direction of e and |e| is floored at
+/// 1e-3 c (a 1e-3 c shift of a centred film whose force is ~0 anyway). Everything is smooth in
+/// the Cartesian e, ė, in which the Jacobian is differentiated. Beyond ε_max = 1 − 5e-4 (a film
+/// of ~0.05 σ) the solver sees ε_max and a stiff contact penalty acts along −n; the run reports a
+/// journal–bearing contact failure when an output step lands there.
+#include <memory>
+
+#include "core/engine/crank_train.hpp"
+#include "core/lubrication/bearing_solver.hpp"
+#include "core/multibody/force_element.hpp"
+
+namespace filmdyn::coupling {
+
+/// Where the centres are: body-frame points relative to each centre of mass.
+struct BigEndMounting {
+  Eigen::Vector2d journal_point = Eigen::Vector2d::Zero();  ///< crank pin centre on the crank
+  Eigen::Vector2d bearing_point = Eigen::Vector2d::Zero();  ///< bore centre on the rod
+};
+
+struct BigEndKinematics {
+  lubrication::BearingState state;  ///< what the solver sees (regularised, clamped)
+  Eigen::Vector2d ecc = Eigen::Vector2d::Zero(), ecc_rate = Eigen::Vector2d::Zero();  ///< global
+  double eps_true = 0.0;  ///< |e|/c, unclamped
+};
+
+class LubricatedBigEndElement final : public multibody::JointForceElement,
+                                      public engine::FilmReporter {
+ public:
+  static constexpr double kEpsMax = 1.0 - 5e-4;
+
+  LubricatedBigEndElement(lubrication::BearingConfig config, multibody::BodyIndex crank,
+                          multibody::BodyIndex rod, BigEndMounting mounting);
+
+  void EvaluateJoint(const multibody::JointForceInput& in, bool want_jacobian,
+                     multibody::JointForceOutput* out) override;
+  bool ProvidesJacobian() const override { return true; }
+  void ReportFilm(engine::CrankTrainSample* sample) const override;
+
+  BigEndKinematics Kinematics(const multibody::BodyState& crank,
+                              const multibody::BodyState& rod) const;
+  const lubrication::BearingSolver& solver() const { return *solver_; }
+  /// Re-solves at the last state evaluated without a Jacobian if a Jacobian evaluation has left
+  /// other fields in the solver since (so fields() belong to the sampled state).
+  void RefreshFields();
+  const lubrication::BearingResult& last_result() const { return result_; }
+  long reynolds_solves() const { return solves_; }
+
+ private:
+  /// (F_x, F_y, T_journal, T_bearing) at Cartesian (e, ė, ω_j, ω_b) + bearing angle.
+  Eigen::Vector4d Loads(const Eigen::Matrix<double, 6, 1>& z, double bearing_angle,
+                        BigEndKinematics* kin);
+
+  std::unique_ptr<lubrication::BearingSolver> solver_;
+  BigEndMounting mount_;
+  double penalty_stiffness_ = 0.0;  ///< [N/m]
+  multibody::JointForceInput cached_in_;
+  multibody::JointForceOutput cached_out_;
+  bool cache_valid_ = false, cache_has_jacobian_ = false, solver_at_cache_ = false;
+  lubrication::BearingResult result_;
+  BigEndKinematics kin_;
+  Eigen::Vector4d loads_ = Eigen::Vector4d::Zero();
+  double rod_angle_ = 0.0;
+  long solves_ = 0;
+};
+
+/// The bearing solver configuration of a case (SurfaceModel from roughness, E', μ_f, K).
+lubrication::BearingConfig BearingConfigFromCase(const engine::EngineCase& engine_case);
+/// Factory for LubricatedJointFactories::big_end.
+std::unique_ptr<multibody::JointForceElement> MakeLubricatedBigEnd(
+    const engine::EngineCase& engine_case, const engine::CrankTrainLayout& layout);
+
+/// Both factories (skirt and big end): what RunConfig uses for the lubricated models.
+engine::LubricatedJointFactories FilmJointFactories();
+
+}  // namespace filmdyn::coupling

@@ -1,0 +1,195 @@
+#include "core/coupling/lubricated_skirt_element.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "core/input_error.hpp"
+#include "core/lubrication/surface_film.hpp"
+
+namespace filmdyn::coupling {
+
+using multibody::BodyState;
+
+namespace {
+
+bool SameInput(const multibody::JointForceInput& a, const multibody::JointForceInput& b) {
+  return a.body_j.q == b.body_j.q && a.body_j.v == b.body_j.v;
+}
+
+}  // namespace
+
+LubricatedSkirtElement::LubricatedSkirtElement(lubrication::SkirtConfig config,
+                                               multibody::BodyIndex piston, SkirtMounting mounting)
+    : JointForceElement("lubricated skirt", multibody::kGround, piston),
+      solver_(std::make_unique<lubrication::SkirtSolver>(std::move(config))),
+      mount_(mounting) {
+  const lubrication::SkirtGeometry& g = solver_->config().geometry;
+  const lubrication::TriMesh& m = solver_->mesh();
+  for (double y : m.y_lines) {
+    edge_y_.push_back(y);
+    edge_gap_thrust_.push_back(g.radial_clearance + g.profile(y) + g.ovality(0.0));
+    edge_gap_anti_.push_back(g.radial_clearance + g.profile(y) + g.ovality(std::numbers::pi));
+  }
+}
+
+SkirtKinematics LubricatedSkirtElement::Kinematics(const BodyState& piston) const {
+  SkirtKinematics k;
+  const double th = piston.Angle(), c = std::cos(th), s = std::sin(th);
+  const double cg = mount_.com_lateral_offset, arm = mount_.skirt_top_to_pin - mount_.skirt_top_to_com;
+  k.jac << 1.0, 0.0, cg * s + arm * c,  // e0
+      0.0, 0.0, c,                      // γ = sin θ
+      0.0, -1.0, cg * c - arm * s;      // s = −Y of the axis at pin height
+  const Eigen::Vector3d rates = k.jac * piston.v;
+  k.state.e0 = piston.q[0] - cg * c + arm * s;
+  k.state.gamma = s;
+  k.state.e0_dot = rates[0];
+  k.state.gamma_dot = rates[1];
+  k.state.piston_velocity = rates[2];
+  const double a_p = solver_->config().geometry.pin_position;
+  k.min_gap = 1e300;
+  for (std::size_t j = 0; j < edge_y_.size(); ++j) {
+    const double d = k.state.e0 + (edge_y_[j] - a_p) * k.state.gamma;
+    k.min_gap = std::min({k.min_gap, edge_gap_thrust_[j] - d, edge_gap_anti_[j] + d});
+  }
+  return k;
+}
+
+void LubricatedSkirtElement::SolveAt(const lubrication::SkirtState& state) {
+  solver_->Solve(state);
+  ++solves_;
+}
+
+Eigen::Vector3d LubricatedSkirtElement::Generalised(const lubrication::SkirtResult& r) const {
+  return {r.lateral_force, r.moment_about_pin, r.friction_force};
+}
+
+void LubricatedSkirtElement::EvaluateJoint(const multibody::JointForceInput& in, bool want_jacobian,
+                                           multibody::JointForceOutput* out) {
+  if (cache_valid_ && SameInput(in, cached_in_) && (!want_jacobian || cache_has_jacobian_)) {
+    *out = cached_out_;
+    if (!want_jacobian) out->jacobian.setZero();
+    return;
+  }
+  kin_ = Kinematics(in.body_j);
+  SolveAt(kin_.state);
+  result_ = solver_->result();
+  const Eigen::Vector3d g = Generalised(result_);
+  out->wrench_j = kin_.jac.transpose() * g;
+  out->wrench_i << -out->wrench_j[0], -out->wrench_j[1], 0.0;  // ground: force only
+  out->jacobian.setZero();
+  cached_in_ = in;
+  cache_valid_ = true;
+  cache_has_jacobian_ = false;
+  solver_at_cache_ = true;
+  if (!want_jacobian) {
+    cached_out_ = *out;
+    return;
+  }
+  // ∂G/∂z by forward differences of the solver, z = (e0, γ, ė0, γ̇, u_p).
+  const lubrication::SkirtGeometry& geo = solver_->config().geometry;
+  const double c_p = geo.radial_clearance, L = geo.skirt_length;
+  const lubrication::SkirtState& z0 = kin_.state;
+  const double dv = 1e-4 + 1e-4 * std::abs(z0.e0_dot);
+  const double steps[5] = {1e-4 * c_p, 1e-4 * c_p / L, dv, dv / L,
+                           1e-3 + 1e-4 * std::abs(z0.piston_velocity)};
+  Eigen::Matrix<double, 3, 5> dg;
+  for (int k = 0; k < 5; ++k) {
+    lubrication::SkirtState z = z0;
+    double* entry[5] = {&z.e0, &z.gamma, &z.e0_dot, &z.gamma_dot, &z.piston_velocity};
+    *entry[k] += steps[k];
+    SolveAt(z);
+    dg.col(k) = (Generalised(solver_->result()) - g) / steps[k];
+  }
+  solver_at_cache_ = false;
+  // Chain rule: z_pos = (e0, γ) = f(q), z_vel = (ė0, γ̇, u_p) = J(q) v.
+  const double th = in.body_j.Angle(), c = std::cos(th), s = std::sin(th);
+  const double cg = mount_.com_lateral_offset, arm = mount_.skirt_top_to_pin - mount_.skirt_top_to_com;
+  Eigen::Matrix3d djac = Eigen::Matrix3d::Zero();  // ∂J/∂θ
+  djac(0, 2) = cg * c - arm * s;
+  djac(1, 2) = -s;
+  djac(2, 2) = -cg * s - arm * c;
+  Eigen::Matrix<double, 5, 3> dz_dq = Eigen::Matrix<double, 5, 3>::Zero();
+  dz_dq.row(0) = kin_.jac.row(0);
+  dz_dq.row(1) = kin_.jac.row(1);
+  dz_dq.block<3, 1>(2, 2) = djac * in.body_j.v;
+  Eigen::Matrix<double, 5, 3> dz_dv = Eigen::Matrix<double, 5, 3>::Zero();
+  dz_dv.block<3, 3>(2, 0) = kin_.jac;
+  Eigen::Matrix3d dq_force = kin_.jac.transpose() * dg * dz_dq;
+  dq_force.col(2) += djac.transpose() * g;
+  const Eigen::Matrix3d dv_force = kin_.jac.transpose() * dg * dz_dv;
+  out->jacobian.block<3, 3>(3, 3) = dq_force;
+  out->jacobian.block<3, 3>(3, 9) = dv_force;
+  out->jacobian.block<2, 3>(0, 3) = -dq_force.topRows<2>();
+  out->jacobian.block<2, 3>(0, 9) = -dv_force.topRows<2>();
+  cached_out_ = *out;
+  cache_has_jacobian_ = true;
+}
+
+void LubricatedSkirtElement::RefreshFields() {
+  if (solver_at_cache_ || !cache_valid_) return;
+  SolveAt(kin_.state);
+  solver_at_cache_ = true;
+}
+
+void LubricatedSkirtElement::ReportFilm(engine::CrankTrainSample* sample) const {
+  engine::SkirtFilmSample& f = sample->skirt;
+  f.present = true;
+  f.normal_force = result_.lateral_force;
+  f.contact_normal_force = result_.contact_lateral_force;
+  f.friction_force = result_.friction_force;
+  f.moment_about_pin = result_.moment_about_pin;
+  f.moft = result_.moft;
+  f.fpl = result_.friction_power_loss;
+  f.max_pressure = result_.max_pressure;
+  f.min_gap = kin_.min_gap;
+  f.clamped_nodes = result_.clamped_nodes;
+}
+
+lubrication::SkirtConfig SkirtConfigFromCase(const engine::EngineCase& c) {
+  const engine::SkirtCase& sk = c.skirt;
+  lubrication::SkirtConfig config;
+  lubrication::SkirtGeometry& g = config.geometry;
+  g.radius = sk.piston_radius;
+  g.skirt_length = sk.length;
+  g.radial_clearance = c.geometry.liner_radius - sk.piston_radius;
+  if (!(g.radial_clearance > 0.0)) {
+    throw InputError("skirt.piston_radius", FormatValue(sk.piston_radius),
+                     "must be smaller than geometry.liner_radius = " +
+                         FormatValue(c.geometry.liner_radius) + " [m] (no skirt clearance)");
+  }
+  g.pin_position = c.geometry.skirt_top_to_pin;
+  g.alpha1 = sk.thrust_half_width;
+  g.alpha2 = sk.anti_thrust_half_width;
+  g.profile.x = sk.profile_y;
+  g.profile.y = sk.profile_h;
+  config.viscosity = c.lubricant.viscosity;
+  config.mesh.n_thrust = sk.mesh_thrust;
+  config.mesh.n_relief = sk.mesh_relief;
+  config.mesh.n_anti = sk.mesh_anti;
+  config.mesh.n_axial = sk.mesh_axial;
+  lubrication::SurfacePair pair;
+  pair.sigma1 = sk.roughness_skirt;
+  pair.sigma2 = sk.roughness_liner;
+  pair.peklenik = sk.peklenik;
+  // The case gives E' itself: two equal moduli with ν = 0 reproduce it exactly.
+  pair.E1 = pair.E2 = sk.composite_modulus;
+  pair.nu1 = pair.nu2 = 0.0;
+  pair.gt_k = c.lubricant.greenwood_tripp_k;
+  pair.boundary_friction = sk.boundary_friction;
+  pair.Validate("skirt");
+  config.film = lubrication::MakeSurfaceFilm(pair);
+  return config;
+}
+
+std::unique_ptr<multibody::JointForceElement> MakeLubricatedSkirt(
+    const engine::EngineCase& c, const engine::CrankTrainLayout& layout) {
+  SkirtMounting mount;
+  mount.com_lateral_offset = c.geometry.piston_com_lateral_offset;
+  mount.skirt_top_to_com = c.geometry.skirt_top_to_com;
+  mount.skirt_top_to_pin = c.geometry.skirt_top_to_pin;
+  mount.pin_offset = c.geometry.pin_offset;
+  return std::make_unique<LubricatedSkirtElement>(SkirtConfigFromCase(c), layout.piston, mount);
+}
+
+}  // namespace filmdyn::coupling

@@ -1,0 +1,88 @@
+#pragma once
+/// @file The lubricated piston skirt–liner joint as a multibody force element (issue 5; paper
+/// §2.1 and §3): a translational clearance joint between the ground (liner) and the piston whose
+/// lateral position and tilt are free; the film forces of lubrication::SkirtSolver are applied
+/// to the piston's centre of mass.
+///
+/// Kinematics (exact for the rigid piston; layout in core/engine/crank_train.hpp). A point of the
+/// skirt axis at axial coordinate y (from the skirt top, + toward the crank) has the body-frame
+/// position s(y) = (−c_g, b_p − y) relative to the CoM, so its lateral (X) position is
+///   d(y) = x − c_g cos θ + (y − b_p) sin θ = e0 + (y − a_p) γ,
+///   e0 = x − c_g cos θ + (a_p − b_p) sin θ   (axis at pin height; = pin X − C_p cos θ),
+///   γ  = sin θ ≈ θ                            (the tilt of eq. 2, + CCW, skirt bottom to thrust),
+/// and the skirt slides along the bore with u_p = ṡ, s = −Y of the axis at pin height. The film
+/// generalised forces (F on e0, M on γ, F_f on s) map to the CoM wrench by virtual work:
+///   Q = J(q)ᵀ (F, M, F_f),  J = ∂(e0, γ, s)/∂(x, y, θ).
+/// Jacobian: ∂(F, M, F_f)/∂(e0, γ, ė0, γ̇, u_p) — the velocity columns exactly from the solver's
+/// linearity in the rates at a fixed cavitation set when available, else by forward differences
+/// of the solver — chained with J and its derivative.
+#include <memory>
+
+#include "core/engine/crank_train.hpp"
+#include "core/lubrication/skirt_solver.hpp"
+#include "core/multibody/force_element.hpp"
+
+namespace filmdyn::coupling {
+
+/// Body-frame data of the piston the element needs (from the case's geometry).
+struct SkirtMounting {
+  double com_lateral_offset = 0.0;  ///< c_g: CoM from the bore axis, + toward thrust [m]
+  double skirt_top_to_com = 0.0;    ///< b_p [m], + toward the crank
+  double skirt_top_to_pin = 0.0;    ///< a_p [m], + toward the crank
+  double pin_offset = 0.0;          ///< C_p [m] (reporting only)
+};
+
+/// Secondary-motion coordinates of the piston (the solver's state) and their Jacobians.
+struct SkirtKinematics {
+  lubrication::SkirtState state;
+  Eigen::Matrix3d jac = Eigen::Matrix3d::Zero();  ///< ∂(e0, γ, s)/∂(x, y, θ)
+  double min_gap = 0.0;                           ///< smallest geometric gap of the panels [m]
+};
+
+class LubricatedSkirtElement final : public multibody::JointForceElement,
+                                     public engine::FilmReporter {
+ public:
+  /// `piston`: body index; the liner is the ground.
+  LubricatedSkirtElement(lubrication::SkirtConfig config, multibody::BodyIndex piston,
+                         SkirtMounting mounting);
+
+  void EvaluateJoint(const multibody::JointForceInput& in, bool want_jacobian,
+                     multibody::JointForceOutput* out) override;
+  bool ProvidesJacobian() const override { return true; }
+  void ReportFilm(engine::CrankTrainSample* sample) const override;
+
+  /// e0, γ, rates and u_p of a piston state, with J.
+  SkirtKinematics Kinematics(const multibody::BodyState& piston) const;
+  /// The solver; its fields() are those of the last evaluation at the state last passed to
+  /// EvaluateJoint without a Jacobian (RefreshFields() guarantees it).
+  const lubrication::SkirtSolver& solver() const { return *solver_; }
+  void RefreshFields();
+  const lubrication::SkirtResult& last_result() const { return result_; }
+  long reynolds_solves() const { return solves_; }
+
+ private:
+  void SolveAt(const lubrication::SkirtState& state);
+  Eigen::Vector3d Generalised(const lubrication::SkirtResult& r) const;
+
+  std::unique_ptr<lubrication::SkirtSolver> solver_;
+  SkirtMounting mount_;
+  // Gap geometry on the two panel edges (α = 0 and π): static gap per axial node line.
+  std::vector<double> edge_y_, edge_gap_thrust_, edge_gap_anti_;
+  double penalty_gap_ = 0.0;  ///< below this geometric gap a contact penalty takes over [m]
+  // Cache of the last base evaluation (the integrator asks twice for the same state).
+  multibody::JointForceInput cached_in_;
+  multibody::JointForceOutput cached_out_;
+  bool cache_valid_ = false, cache_has_jacobian_ = false, solver_at_cache_ = false;
+  lubrication::SkirtResult result_;
+  SkirtKinematics kin_;
+  long solves_ = 0;
+};
+
+/// Builds the element from a case (SurfaceModel from its roughness, E', μ_f, K) for
+/// BuildCrankTrain's LubricatedJointFactories::skirt.
+std::unique_ptr<multibody::JointForceElement> MakeLubricatedSkirt(
+    const engine::EngineCase& engine_case, const engine::CrankTrainLayout& layout);
+/// The skirt solver configuration of a case (mesh: paper Table II unless overridden).
+lubrication::SkirtConfig SkirtConfigFromCase(const engine::EngineCase& engine_case);
+
+}  // namespace filmdyn::coupling
