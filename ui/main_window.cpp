@@ -143,8 +143,10 @@ void MainWindow::createMenus() {
 
   QMenu* edit_menu = menuBar()->addMenu(tr("&Edit"));
   QAction* undo = document_->undoStack()->createUndoAction(this, tr("&Undo"));
+  undo->setIcon(icon(QStyle::SP_ArrowBack));
   undo->setShortcut(QKeySequence::Undo);
   QAction* redo = document_->undoStack()->createRedoAction(this, tr("&Redo"));
+  redo->setIcon(icon(QStyle::SP_ArrowForward));
   redo->setShortcuts({QKeySequence::Redo, QKeySequence(tr("Ctrl+Y"))});
   edit_menu->addAction(undo);
   edit_menu->addAction(redo);
@@ -171,6 +173,7 @@ void MainWindow::createMenus() {
 
   QToolBar* toolbar = addToolBar(tr("Main"));
   toolbar->setObjectName("main_toolbar");
+  toolbar->setToolButtonStyle(Qt::ToolButtonIconOnly);
   toolbar->addAction(new_action);
   toolbar->addAction(open);
   toolbar->addAction(save);
@@ -255,7 +258,7 @@ void MainWindow::onRunFinished(const RunHandle& run) {
   updateRunActions();
   progress_bar_->setValue(run->status() == RunStatus::kFinished ? 1000 : progress_bar_->value());
   progress_bar_->setFormat(
-      tr("%1 (%2 s)").arg(RunStatusText(run->status())).arg(run->elapsedSeconds(), 0, 'f', 1));
+      tr("%1 (%2 s)").arg(RunStatusText(run->status())).arg(run->elapsedSeconds(), 0, 'f', 2));
   const QString reason = run->reason();
   if (run->status() == RunStatus::kFailed) {
     // Inputs stay as they are and the partial results stay in the plots and the table.

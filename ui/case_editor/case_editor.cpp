@@ -171,7 +171,9 @@ QWidget* CaseEditor::makeProfilePage() {
   buttons->addStretch();
   layout->addLayout(buttons);
   splitter->addWidget(right);
-  splitter->setStretchFactor(1, 1);
+  splitter->setStretchFactor(0, 2);
+  splitter->setStretchFactor(1, 3);
+  splitter->setSizes({560, 840});
   return splitter;
 }
 

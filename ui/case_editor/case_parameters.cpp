@@ -196,6 +196,19 @@ std::vector<CaseParameter> MakeParameters() {
                   sol, &SolverCase::steady_state_tolerance, Range(0, 1, true, false, "")));
   p.push_back(Row(G::kSolver, "solver.max_cycles", "Maximum cycles", "–", 1.0, sol,
                   &SolverCase::max_cycles, Range(1, 1000, false, false, "")));
+  // FEM meshes of the two Reynolds domains (paper Table II).
+  p.push_back(Row(G::kSolver, "skirt.mesh_thrust", "Skirt mesh: elements over Ω₁ (thrust)", "–",
+                  1.0, sk, &SkirtCase::mesh_thrust, Range(1, 1000, false, false, "")));
+  p.push_back(Row(G::kSolver, "skirt.mesh_relief", "Skirt mesh: elements over Ω₂ (relief)", "–",
+                  1.0, sk, &SkirtCase::mesh_relief, Range(1, 1000, false, false, "")));
+  p.push_back(Row(G::kSolver, "skirt.mesh_anti", "Skirt mesh: elements over Ω₃ (anti-thrust)", "–",
+                  1.0, sk, &SkirtCase::mesh_anti, Range(1, 1000, false, false, "")));
+  p.push_back(Row(G::kSolver, "skirt.mesh_axial", "Skirt mesh: elements axially", "–", 1.0, sk,
+                  &SkirtCase::mesh_axial, Range(1, 1000, false, false, "")));
+  p.push_back(Row(G::kSolver, "big_end.mesh_theta", "Big-end mesh: elements around 360°", "–", 1.0,
+                  be, &BigEndCase::mesh_theta, Range(3, 2000, false, false, "")));
+  p.push_back(Row(G::kSolver, "big_end.mesh_z", "Big-end mesh: elements across the width", "–", 1.0,
+                  be, &BigEndCase::mesh_z, Range(1, 1000, false, false, "")));
   p.push_back(Row(G::kOperating, "geometry.compression_ratio",
                   "Compression ratio (synthetic pressure model)", "–", 1.0, geo,
                   &CrankTrainGeometry::compression_ratio, Range(1, 30, true, false, "")));

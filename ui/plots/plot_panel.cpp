@@ -8,6 +8,7 @@
 #include <QLineSeries>
 #include <QMenu>
 #include <QScrollArea>
+#include <QTimer>
 #include <QVBoxLayout>
 #include <QValueAxis>
 #include <cmath>
@@ -77,6 +78,16 @@ PlotPanel::PlotPanel(QWidget* parent) : QWidget(parent) {
       entry.chart->addSeries(entry.clearance_circle);
       entry.clearance_circle->attachAxis(x);
       entry.clearance_circle->attachAxis(y);
+    }
+    if (specs[i].equal_axes) {
+      const size_t index = i;
+      connect(entry.chart, &QChart::plotAreaChanged, this, [this, index](const QRectF& area) {
+        // Re-fit after a resize; small changes (axis labels) are ignored so this cannot loop.
+        const double aspect = area.height() > 10 ? area.width() / area.height() : 1.0;
+        const double fitted = charts_[index].fitted_aspect;
+        if (fitted > 0 && std::abs(aspect - fitted) < 0.03 * fitted) return;
+        QTimer::singleShot(0, this, [this, index] { rescale(charts_[index]); });
+      });
     }
     entry.view = new QChartView(entry.chart, grid_host);
     entry.view->setObjectName("chart_" + specs[i].id);
@@ -174,10 +185,13 @@ int PlotPanel::pointCount(int run_id) const {
 void PlotPanel::rescale(ChartEntry& entry) {
   double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
   double clearance = 0;
+  int points = 0, runs = 0;
   for (auto it = entry.run_series.begin(); it != entry.run_series.end(); ++it) {
     if (!visible_.value(it.key(), true)) continue;
     clearance = std::max(clearance, clearance_um_.value(it.key(), 0.0));
+    ++runs;
     for (QLineSeries* s : it.value()) {
+      points += int(s->count());
       for (const QPointF& p : s->points()) {
         x0 = std::min(x0, p.x());
         x1 = std::max(x1, p.x());
@@ -186,6 +200,10 @@ void PlotPanel::rescale(ChartEntry& entry) {
       }
     }
   }
+  // Say so when the shown runs' model has no such quantity (e.g. MOFT of the Ideal model).
+  entry.chart->setTitle(runs > 0 && points == 0
+                            ? tr("%1 — no data for the model(s) shown").arg(entry.spec->title)
+                            : entry.spec->title);
   if (entry.clearance_circle) {
     QList<QPointF> circle;
     if (clearance > 0) {
@@ -203,9 +221,15 @@ void PlotPanel::rescale(ChartEntry& entry) {
   if (!(x1 >= x0)) x0 = 0, x1 = 1;
   if (!(y1 >= y0)) y0 = 0, y1 = 1;
   if (entry.spec->equal_axes) {
+    // Same µm per pixel on both axes, so the clearance circle is a circle.
     const double r = std::max({std::abs(x0), std::abs(x1), std::abs(y0), std::abs(y1)}) * 1.05;
-    x0 = y0 = -r;
-    x1 = y1 = r;
+    const QRectF area = entry.chart->plotArea();
+    const double aspect = area.height() > 10 ? area.width() / area.height() : 1.0;
+    entry.fitted_aspect = aspect;
+    x0 = -r * std::max(1.0, aspect);
+    x1 = -x0;
+    y0 = -r * std::max(1.0, 1.0 / aspect);
+    y1 = -y0;
   }
   if (y1 - y0 < 1e-12 * std::max(1.0, std::abs(y1))) {
     const double pad = std::max(1.0, std::abs(y1) * 0.1);

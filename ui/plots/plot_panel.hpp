@@ -53,6 +53,7 @@ class PlotPanel : public QWidget {
     QChartView* view;
     QLineSeries* cursor = nullptr;
     QLineSeries* clearance_circle = nullptr;
+    double fitted_aspect = 0;  ///< plot-area aspect the equal-axes ranges were fitted to
     QMap<int, std::vector<QLineSeries*>> run_series;
   };
   void rescale(ChartEntry& entry);

@@ -2,11 +2,11 @@
 // makes; only the monitor differs. The monitor streams every output step into the sink; the
 // reported cycle of the result replaces the streamed samples at the end.
 #include <cmath>
-#include <numbers>
 #include <stdexcept>
 
 #include "core/engine/run_job.hpp"
 #include "core/input_error.hpp"
+#include "core/io/case_file.hpp"
 #include "ui/run/run_backend.hpp"
 
 namespace filmdyn::ui {
@@ -32,18 +32,12 @@ RunSample ToRunSample(const engine::CrankTrainSample& cs, double crank_angle_deg
 }
 
 engine::PressureCurve CurveForSpeed(const engine::EngineCase& c, double rpm) {
-  // The editor keeps curves inline (file curves are resolved when a case is loaded).
-  for (size_t i = 0; i < c.pressure_curves.size(); ++i) {
-    const auto& source = c.pressure_curves[i];
-    if (source.rpm != rpm) continue;
-    const std::string field = "pressure_curves[" + std::to_string(i) + "]";
-    std::vector<double> angles;
-    for (double a : source.crank_angle_deg) angles.push_back(a * std::numbers::pi / 180.0);
-    return engine::PressureCurve(angles, source.pressure, field);
-  }
-  throw InputError("operating.rpm", FormatValue(rpm),
-                   "no cylinder-pressure curve for this speed (add one on the Cylinder pressure "
-                   "tab)");
+  // Core's rule: the curve at that speed or a blend of the two neighbouring speeds; the editor
+  // keeps curves inline (file curves are read into tables when a case is opened).
+  io::LoadedCase loaded;
+  loaded.value = c;
+  loaded.source = "GUI";
+  return io::PressureCurveForSpeed(loaded, rpm);
 }
 
 }  // namespace

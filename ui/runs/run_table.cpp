@@ -25,6 +25,8 @@ RunTable::RunTable(QWidget* parent) : QTableWidget(0, kColumns, parent) {
   setSelectionMode(QAbstractItemView::SingleSelection);
   setEditTriggers(QAbstractItemView::NoEditTriggers);
   horizontalHeader()->setStretchLastSection(true);
+  horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+  horizontalHeader()->setSectionResizeMode(kReason, QHeaderView::Stretch);
   verticalHeader()->hide();
   verticalHeader()->setDefaultSectionSize(22);
   connect(this, &QTableWidget::itemChanged, this, [this](QTableWidgetItem* item) {
@@ -61,7 +63,7 @@ void RunTable::updateRun(const RunHandle& run) {
   item(row, kStatus)->setText(RunStatusText(run->status()));
   item(row, kCycles)
       ->setText(QString::number(stats.count("cycles") ? int(stats.at("cycles")) : progress.cycle));
-  item(row, kWall)->setText(QString::number(run->elapsedSeconds(), 'f', 1));
+  item(row, kWall)->setText(QString::number(run->elapsedSeconds(), 'f', 2));
   item(row, kLateral)->setText(Number(f.max_abs_lateral, 1e6));
   item(row, kTilt)->setText(Number(f.max_abs_tilt, 1e3, 3));
   item(row, kSkirtMoft)->setText(Number(f.min_skirt_moft, 1e6));

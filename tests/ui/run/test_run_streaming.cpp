@@ -139,7 +139,8 @@ class TestRunStreaming : public QObject {
     // Coalescing: far fewer redraws than samples (one per ≥ 40 ms).
     QVERIFY(updates_while_running <= run_ms / filmdyn::ui::RunController::kRedrawIntervalMs + 5);
     QVERIFY2(heartbeat.maxGap() < 250, "the GUI thread was blocked");
-    QVERIFY(heartbeat.ticks() > run_ms / 10 / 3);
+    // Loose (2 shared cores): the timer must keep running, not hit every 10 ms.
+    QVERIFY(heartbeat.ticks() > run_ms / 10 / 10);
     // One reported cycle at 0.5 °CA, drawn in the plots and counted in the run table.
     QCOMPARE(int(run->samples().size()), 1440);
     QVERIFY(window.plotPanel()->pointCount(run->id()) >= 1440);
@@ -187,22 +188,22 @@ class TestRunStreaming : public QObject {
     const RunHandle good = finished.takeFirst().first().value<RunHandle>();
     QCOMPARE(good->status(), RunStatus::kFinished);
 
-    // Skirt-LBRBE needs the coupled lubrication model; until core provides it the run fails with
-    // core's reason. Either way the run must end cleanly.
+    // A speed above every tabulated pressure curve: the case is valid, core refuses the run
+    // (no curve to interpolate), and the reason reaches the user.
     auto c = window.document()->engineCase();
-    filmdyn::ui::ApplyRunModel(c, "skirt-lbrbe");
-    window.document()->edit(c, "lubricated");
+    c.operating.rpm = 9000;
+    window.document()->edit(c, "too fast");
+    QVERIFY(window.runAction()->isEnabled());
     const std::string before = filmdyn::ui::CaseToJsonText(window.document()->engineCase());
     window.runAction()->trigger();
     QVERIFY(finished.wait(120000));
     const RunHandle second = finished.takeFirst().first().value<RunHandle>();
-    if (second->status() == RunStatus::kFailed) {
-      QVERIFY(!second->reason().isEmpty());
-      auto* state = window.findChild<QLabel*>("run_state");
-      QVERIFY2(state->text().contains(second->reason()), qPrintable(state->text()));
-      QCOMPARE(window.runTable()->item(1, filmdyn::ui::RunTable::kReason)->text(),
-               second->reason());
-    }
+    QCOMPARE(second->status(), RunStatus::kFailed);
+    qInfo("reason: %s", qPrintable(second->reason()));
+    QVERIFY(second->reason().contains("9000"));
+    auto* state = window.findChild<QLabel*>("run_state");
+    QVERIFY2(state->text().contains(second->reason()), qPrintable(state->text()));
+    QCOMPARE(window.runTable()->item(1, filmdyn::ui::RunTable::kReason)->text(), second->reason());
     QCOMPARE(filmdyn::ui::CaseToJsonText(window.document()->engineCase()), before);
     QCOMPARE(window.runTable()->rowCount(), 2);
     QVERIFY(window.plotPanel()->pointCount(good->id()) > 0);

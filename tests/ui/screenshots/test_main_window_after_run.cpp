@@ -1,0 +1,117 @@
+// The whole main window on a real X server after two real runs (core's run job, Ideal model,
+// default case at 6000 and 4000 rpm, overlaid): every page draws, the plots hold both runs, the
+// run table compares them. With FILMDYN_SCREENSHOT_DIR set it also saves the pictures used in
+// docs/ (scripts/screenshots.sh).
+#include <QAction>
+#include <QDir>
+#include <QImage>
+#include <QLabel>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QStatusBar>
+#include <QTabWidget>
+#include <QTableView>
+#include <QtTest>
+
+#include "ui/case_editor/case_document.hpp"
+#include "ui/case_editor/case_editor.hpp"
+#include "ui/case_editor/case_parameters.hpp"
+#include "ui/case_editor/parameter_table_model.hpp"
+#include "ui/main_window.hpp"
+#include "ui/plots/plot_panel.hpp"
+#include "ui/run/run_controller.hpp"
+#include "ui/runs/run_table.hpp"
+#include "ui/vtk/vtk_view_widget.hpp"
+
+using filmdyn::ui::MainWindow;
+using filmdyn::ui::RunHandle;
+
+namespace {
+
+void Save(QWidget* widget, const QString& name) {
+  const QImage image = widget->grab().toImage();
+  QVERIFY(!image.isNull());
+  const QString dir = qEnvironmentVariable("FILMDYN_SCREENSHOT_DIR");
+  if (!dir.isEmpty()) {
+    QDir().mkpath(dir);
+    QVERIFY(image.save(QDir(dir).filePath(name)));
+    qInfo("wrote %s", qPrintable(QDir(dir).filePath(name)));
+  }
+}
+
+}  // namespace
+
+class TestMainWindowAfterRun : public QObject {
+  Q_OBJECT
+ private slots:
+  void initTestCase() {
+    QStandardPaths::setTestModeEnabled(true);
+    QCoreApplication::setOrganizationName("FilmDynTest");
+    QCoreApplication::setApplicationName("test_main_window_after_run");
+    QSettings().clear();
+  }
+
+  void pagesAfterTwoRealRuns() {
+    MainWindow window;
+    window.resize(1600, 1000);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    auto* tabs = window.caseEditor()->findChild<QTabWidget*>("case_tabs");
+    window.workspace()->setCurrentIndex(0);
+    tabs->setCurrentIndex(1);
+    QTest::qWait(100);
+    Save(&window, "case_geometry.png");
+    tabs->setCurrentIndex(3);
+    QTest::qWait(100);
+    Save(&window, "case_skirt_profile.png");
+    tabs->setCurrentIndex(7);
+    QTest::qWait(100);
+    Save(&window, "case_pressure_curves.png");
+
+    // Two real runs of the Ideal model (the only one core runs today), overlaid.
+    QSignalSpy finished(window.runController(), &filmdyn::ui::RunController::runFinished);
+    for (double rpm : {6000.0, 4000.0}) {
+      auto c = window.document()->engineCase();
+      filmdyn::ui::ApplyRunModel(c, "ideal");
+      c.operating.rpm = rpm;
+      window.document()->edit(c, "set-up");
+      QVERIFY(window.runAction()->isEnabled());
+      window.runAction()->trigger();
+      QVERIFY(finished.wait(120000));
+      const RunHandle run = finished.last().first().value<RunHandle>();
+      QCOMPARE(run->status(), filmdyn::ui::RunStatus::kFinished);
+      QVERIFY(window.plotPanel()->pointCount(run->id()) > 700);
+    }
+    QCOMPARE(window.runTable()->rowCount(), 2);
+    window.workspace()->setCurrentIndex(1);
+    window.runTable()->selectRow(1);
+    QTest::qWait(300);
+    Save(&window, "run_results.png");
+
+    // Toggling a run hides its series.
+    const int first = window.runTable()->runs().front()->id();
+    window.runTable()->item(0, filmdyn::ui::RunTable::kShow)->setCheckState(Qt::Unchecked);
+    QVERIFY(!window.plotPanel()->isRunVisible(first));
+    window.runTable()->item(0, filmdyn::ui::RunTable::kShow)->setCheckState(Qt::Checked);
+    QVERIFY(window.plotPanel()->isRunVisible(first));
+
+    // An invalid value: the cell is marked, Run is disabled with the reason in the status bar.
+    window.workspace()->setCurrentIndex(0);
+    tabs->setCurrentIndex(4);
+    auto* model = window.caseEditor()->parameterModel(filmdyn::ui::CaseGroup::kBigEnd);
+    model->setData(model->index(model->rowOf("big_end.journal_radius"),
+                                filmdyn::ui::ParameterTableModel::kValue),
+                   "15.2", Qt::EditRole);
+    QVERIFY(!window.runAction()->isEnabled());
+    QTest::qWait(100);
+    Save(&window, "case_validation.png");
+  }
+};
+
+int main(int argc, char** argv) {
+  filmdyn::ui::VtkViewWidget::SetDefaultSurfaceFormat();
+  QApplication app(argc, argv);
+  TestMainWindowAfterRun test;
+  return QTest::qExec(&test, argc, argv);
+}
+#include "test_main_window_after_run.moc"
