@@ -2,13 +2,14 @@
 // meshes, from the start through the periodic steady state and the reported cycle; wall time,
 // steps, Reynolds solves, time per solve; a tight-tolerance run for the accuracy check; the
 // price of the paper's explicit 1e-7 s scheme at our cost per step. Run on demand:
-//   build-cpl/bench/bench_coupled [model] [rpm] [--tight-only|--no-tight]
+//   build-cpl/bench/bench_coupled [model] [rpm] [--no-tight] [--set key=value ...]
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <string>
+#include <vector>
 
 #include "core/engine/run_job.hpp"
 #include "core/io/case_file.hpp"
@@ -44,12 +45,12 @@ engine::RunResult Run(const io::LoadedCase& loaded, engine::Model model, double 
   const Figures f = FiguresOf(r);
   std::printf(
       "%-6s rtol %.0e ptol %.0e: %s%s%s, %d cycles, wall %.2f s, steps %ld (rejected %ld, Newton "
-      "%ld, Newton failures %ld, Jacobians %ld), Reynolds solves %ld, %.3f ms per step, %.1f us "
-      "per solve (incl. element overhead)\n",
+      "%ld, Newton failures %ld, Jacobians %ld), Reynolds solves %ld (%ld factorisations), %.3f "
+      "ms per step, %.1f us per solve (incl. element overhead)\n",
       label, rtol, ptol, engine::StatusName(r.status).c_str(), r.message.empty() ? "" : ": ",
       r.message.c_str(), r.cycles, r.wall_time, r.stats.steps, r.stats.rejected_steps,
       r.stats.newton_iterations, r.stats.newton_failures, r.stats.jacobian_evaluations,
-      r.reynolds_solves, 1e3 * r.wall_time / std::max(1L, r.stats.steps),
+      r.reynolds_solves, r.reynolds_factorizations, 1e3 * r.wall_time / std::max(1L, r.stats.steps),
       1e6 * r.wall_time / std::max(1L, r.reynolds_solves));
   std::printf(
       "       max e0 %.4f um, max gamma %.4e rad, min skirt MOFT %.4f um, min bearing MOFT %.4f "
@@ -66,8 +67,13 @@ double RelDiff(double a, double b) { return std::abs(a - b) / std::max(std::abs(
 int main(int argc, char** argv) {
   const engine::Model model = engine::ParseModel(argc > 1 ? argv[1] : "skirt-lbrbe");
   const double rpm = argc > 2 ? std::atof(argv[2]) : 6000.0;
-  const bool tight = !(argc > 3 && std::strcmp(argv[3], "--no-tight") == 0);
-  const io::LoadedCase loaded = io::LoadCase("", {});
+  bool tight = true;
+  std::vector<std::string> sets;
+  for (int i = 3; i < argc; ++i) {
+    if (std::strcmp(argv[i], "--no-tight") == 0) tight = false;
+    if (std::strcmp(argv[i], "--set") == 0 && i + 1 < argc) sets.push_back(argv[++i]);
+  }
+  const io::LoadedCase loaded = io::LoadCase("", sets);
   const engine::SolverCase& s = loaded.value.solver;
   const engine::RunResult base =
       Run(loaded, model, rpm, s.relative_tolerance, s.position_tolerance, "case");
@@ -84,8 +90,8 @@ int main(int argc, char** argv) {
       per_cycle_steps, explicit_steps, base.cycles, per_eval * 1e6, explicit_steps * per_eval,
       explicit_steps * per_eval / base.wall_time, base.wall_time);
   if (!tight) return 0;
-  const engine::RunResult ref = Run(loaded, model, rpm, s.relative_tolerance * 1e-2,
-                                    s.position_tolerance * 1e-2, "tight");
+  const engine::RunResult ref =
+      Run(loaded, model, rpm, s.relative_tolerance * 1e-2, s.position_tolerance * 1e-2, "tight");
   const Figures a = FiguresOf(base), b = FiguresOf(ref);
   std::printf(
       "vs tight: max e0 %.2f %%, max gamma %.2f %%, min skirt MOFT %.2f %%, min bearing MOFT "

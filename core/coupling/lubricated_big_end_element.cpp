@@ -84,7 +84,7 @@ Eigen::Vector4d LubricatedBigEndElement::Loads(const Eigen::Matrix<double, 6, 1>
                                                double bearing_angle, BigEndKinematics* kin) {
   const double c = solver_->config().geometry.radial_clearance;
   *kin = FromCartesian(z, bearing_angle, c);
-  solver_->Solve(kin->state);
+  factorizations_ += solver_->Solve(kin->state).stats.iterations;
   ++solves_;
   const lubrication::BearingResult& r = solver_->result();
   Eigen::Vector4d g(r.force_x, r.force_y, r.friction_torque_journal, r.friction_torque_bearing);
@@ -128,8 +128,8 @@ void LubricatedBigEndElement::EvaluateJoint(const multibody::JointForceInput& in
   const double c = solver_->config().geometry.radial_clearance;
   const double de = 1e-4 * c;
   const double dv = 1e-5 + 1e-4 * z.segment<2>(2).norm();
-  const double steps[6] = {de, de, dv, dv, 1e-2 + 1e-6 * std::abs(z[4]),
-                           1e-2 + 1e-6 * std::abs(z[5])};
+  const double steps[6] = {
+      de, de, dv, dv, 1e-2 + 1e-6 * std::abs(z[4]), 1e-2 + 1e-6 * std::abs(z[5])};
   Eigen::Matrix<double, 4, 6> dg;
   BigEndKinematics scratch;
   for (int k = 0; k < 6; ++k) {
@@ -159,7 +159,7 @@ void LubricatedBigEndElement::EvaluateJoint(const multibody::JointForceInput& in
   dw(3, 0) = dw(4, 1) = -1.0;
   dw.row(5) << a_r.y(), -a_r.x(), 0.0, 1.0;
   out->jacobian = dw * dg * dz;
-  out->jacobian(2, 2) += Cross(Perp(a_c), f);   // moment arms turn with the bodies
+  out->jacobian(2, 2) += Cross(Perp(a_c), f);  // moment arms turn with the bodies
   out->jacobian(5, 5) += -Cross(Perp(a_r), f);
   cached_out_ = *out;
   cache_has_jacobian_ = true;
@@ -185,6 +185,8 @@ void LubricatedBigEndElement::ReportFilm(engine::CrankTrainSample* sample) const
   b.force_on_rod = -loads_.head<2>();
   b.friction_torque_journal = loads_[2];
   b.friction_torque_bearing = loads_[3];
+  b.power = loads_.head<2>().dot(kin_.ecc_rate) + loads_[2] * kin_.state.omega_journal +
+            loads_[3] * kin_.state.omega_bearing;
 }
 
 lubrication::BearingConfig BearingConfigFromCase(const engine::EngineCase& c) {

@@ -53,6 +53,8 @@ class LubricatedBigEndElement final : public multibody::JointForceElement,
   void RefreshFields();
   const lubrication::BearingResult& last_result() const { return result_; }
   long reynolds_solves() const { return solves_; }
+  /// Numeric LDLᵀ factorisations (= active-set iterations) over all solves.
+  long factorizations() const { return factorizations_; }
 
  private:
   /// (F_x, F_y, T_journal, T_bearing) at Cartesian (e, ė, ω_j, ω_b) + bearing angle.
@@ -69,7 +71,7 @@ class LubricatedBigEndElement final : public multibody::JointForceElement,
   BigEndKinematics kin_;
   Eigen::Vector4d loads_ = Eigen::Vector4d::Zero();
   double rod_angle_ = 0.0;
-  long solves_ = 0;
+  long solves_ = 0, factorizations_ = 0;
 };
 
 /// The bearing solver configuration of a case (SurfaceModel from roughness, E', μ_f, K).

@@ -36,7 +36,8 @@ LubricatedSkirtElement::LubricatedSkirtElement(lubrication::SkirtConfig config,
 SkirtKinematics LubricatedSkirtElement::Kinematics(const BodyState& piston) const {
   SkirtKinematics k;
   const double th = piston.Angle(), c = std::cos(th), s = std::sin(th);
-  const double cg = mount_.com_lateral_offset, arm = mount_.skirt_top_to_pin - mount_.skirt_top_to_com;
+  const double cg = mount_.com_lateral_offset,
+               arm = mount_.skirt_top_to_pin - mount_.skirt_top_to_com;
   k.jac << 1.0, 0.0, cg * s + arm * c,  // e0
       0.0, 0.0, c,                      // γ = sin θ
       0.0, -1.0, cg * c - arm * s;      // s = −Y of the axis at pin height
@@ -56,7 +57,7 @@ SkirtKinematics LubricatedSkirtElement::Kinematics(const BodyState& piston) cons
 }
 
 void LubricatedSkirtElement::SolveAt(const lubrication::SkirtState& state) {
-  solver_->Solve(state);
+  factorizations_ += solver_->Solve(state).stats.iterations;
   ++solves_;
 }
 
@@ -104,7 +105,8 @@ void LubricatedSkirtElement::EvaluateJoint(const multibody::JointForceInput& in,
   solver_at_cache_ = false;
   // Chain rule: z_pos = (e0, γ) = f(q), z_vel = (ė0, γ̇, u_p) = J(q) v.
   const double th = in.body_j.Angle(), c = std::cos(th), s = std::sin(th);
-  const double cg = mount_.com_lateral_offset, arm = mount_.skirt_top_to_pin - mount_.skirt_top_to_com;
+  const double cg = mount_.com_lateral_offset,
+               arm = mount_.skirt_top_to_pin - mount_.skirt_top_to_com;
   Eigen::Matrix3d djac = Eigen::Matrix3d::Zero();  // ∂J/∂θ
   djac(0, 2) = cg * c - arm * s;
   djac(1, 2) = -s;
@@ -144,6 +146,9 @@ void LubricatedSkirtElement::ReportFilm(engine::CrankTrainSample* sample) const 
   f.max_pressure = result_.max_pressure;
   f.min_gap = kin_.min_gap;
   f.clamped_nodes = result_.clamped_nodes;
+  f.power = result_.lateral_force * kin_.state.e0_dot +
+            result_.moment_about_pin * kin_.state.gamma_dot +
+            result_.friction_force * kin_.state.piston_velocity;
 }
 
 lubrication::SkirtConfig SkirtConfigFromCase(const engine::EngineCase& c) {

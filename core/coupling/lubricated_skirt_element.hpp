@@ -59,6 +59,8 @@ class LubricatedSkirtElement final : public multibody::JointForceElement,
   void RefreshFields();
   const lubrication::SkirtResult& last_result() const { return result_; }
   long reynolds_solves() const { return solves_; }
+  /// Numeric LDLᵀ factorisations (= active-set iterations) over all solves.
+  long factorizations() const { return factorizations_; }
 
  private:
   void SolveAt(const lubrication::SkirtState& state);
@@ -75,7 +77,7 @@ class LubricatedSkirtElement final : public multibody::JointForceElement,
   bool cache_valid_ = false, cache_has_jacobian_ = false, solver_at_cache_ = false;
   lubrication::SkirtResult result_;
   SkirtKinematics kin_;
-  long solves_ = 0;
+  long solves_ = 0, factorizations_ = 0;
 };
 
 /// Builds the element from a case (SurfaceModel from its roughness, E', μ_f, K) for

@@ -144,6 +144,7 @@ CrankTrainSample SampleCrankTrain(CrankTrain& train, const EngineCase& c, double
   s.rod_angular_acceleration = eval.acceleration[3 * lay.rod + 2];
   s.cylinder_pressure = train.gas_force->CylinderPressure(s.crank_angle);
   s.gas_force = train.gas_force->Force(s.crank_angle);
+  s.gas_power = -s.gas_force * multibody::PointVelocity(piston, lay.piston_axis_point).y();
   const Eigen::VectorXd& lambda = eval.multipliers;
   if (lay.liner >= 0) {
     const multibody::JointReaction r = sys.Reaction(lay.liner, t, state, lambda);

@@ -64,6 +64,7 @@ struct SkirtFilmSample {
   double max_pressure = 0.0;          ///< [Pa]
   double min_gap = 0.0;  ///< smallest geometric gap over the panels (< 0: piston in the liner) [m]
   long clamped_nodes = 0;
+  double power = 0.0;  ///< power of the film forces on the piston, F ė0 + M γ̇ + F_f u_p [W] (≤ 0)
 };
 
 /// Film quantities of the lubricated big end at one instant (present = false when ideal).
@@ -77,9 +78,10 @@ struct BearingFilmSample {
   double moft = 0.0;                                             ///< [m]
   double fpl = 0.0;                                              ///< [W]
   double max_pressure = 0.0;                                     ///< [Pa]
-  Eigen::Vector2d force_on_rod = Eigen::Vector2d::Zero();  ///< film (crank pin) → rod [N]
-  double friction_torque_journal = 0.0;                    ///< on the crank [N·m]
-  double friction_torque_bearing = 0.0;                    ///< on the rod [N·m]
+  Eigen::Vector2d force_on_rod = Eigen::Vector2d::Zero();        ///< film (crank pin) → rod [N]
+  double friction_torque_journal = 0.0;                          ///< on the crank [N·m]
+  double friction_torque_bearing = 0.0;                          ///< on the rod [N·m]
+  double power = 0.0;  ///< power of the film on crank + rod, F·ė + T_j ω_j + T_b ω_b [W] (≤ 0)
 };
 
 struct CrankTrainSample;
@@ -105,6 +107,7 @@ struct CrankTrainSample {
   double piston_lateral_velocity = 0.0, piston_tilt_rate = 0.0;
   double cylinder_pressure = 0.0;  ///< [Pa]
   double gas_force = 0.0;          ///< (p − p_cc)·π R_l², + toward the crank [N]
+  double gas_power = 0.0;          ///< power of the gas force on the piston [W]
   Eigen::Vector2d liner_force_on_piston = Eigen::Vector2d::Zero();  ///< ideal liner [N]
   double liner_moment_about_pin = 0.0;  ///< ideal liner on piston, about the pin [N·m]
   Eigen::Vector2d big_end_force_on_rod = Eigen::Vector2d::Zero();         ///< crank pin → rod [N]

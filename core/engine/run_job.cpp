@@ -1,8 +1,8 @@
 #include "core/engine/run_job.hpp"
 
 #include <chrono>
-#include <cstdio>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 #include "core/coupling/lubricated_big_end_element.hpp"
@@ -117,8 +117,16 @@ Tracked TrackedFor(const EngineCase& c) {
   }
   t.values = [skirt, big_end](const CrankTrainSample& s) {
     std::vector<double> v;
-    if (skirt) v.insert(v.end(), {s.piston_lateral, s.piston_tilt, s.skirt.moft});
-    if (big_end) v.insert(v.end(), {s.bearing.eps, s.bearing.moft});
+    v.reserve(5);
+    if (skirt) {
+      v.push_back(s.piston_lateral);
+      v.push_back(s.piston_tilt);
+      v.push_back(s.skirt.moft);
+    }
+    if (big_end) {
+      v.push_back(s.bearing.eps);
+      v.push_back(s.bearing.moft);
+    }
     return v;
   };
   return t;
@@ -127,8 +135,8 @@ Tracked TrackedFor(const EngineCase& c) {
 // Physical failure of a film joint at a sample: the reason, or empty.
 std::string FilmTrouble(const CrankTrainSample& s) {
   char text[200];
-  if (s.bearing.present &&
-      (!std::isfinite(s.bearing.eps) || s.bearing.eps >= coupling::LubricatedBigEndElement::kEpsMax)) {
+  if (s.bearing.present && (!std::isfinite(s.bearing.eps) ||
+                            s.bearing.eps >= coupling::LubricatedBigEndElement::kEpsMax)) {
     std::snprintf(text, sizeof text,
                   "big-end journal touches the bearing (eps = %.5f): the film cannot carry the "
                   "load with this clearance/viscosity",
@@ -180,6 +188,8 @@ RunResult RunJob(const RunConfig& config, const RunMonitor& monitor,
                                        c.solver.steady_state_tolerance);
   const bool lubricated = skirt || big_end;
   auto solves = [&] {
+    result.reynolds_factorizations =
+        (skirt ? skirt->factorizations() : 0L) + (big_end ? big_end->factorizations() : 0L);
     return (skirt ? skirt->reynolds_solves() : 0L) + (big_end ? big_end->reynolds_solves() : 0L);
   };
   std::vector<CrankTrainSample> previous, current;

@@ -87,6 +87,7 @@ struct RunResult {
   double cycle_change = 0.0;              ///< last cycle-to-cycle change / range (largest quantity)
   std::string worst_quantity;             ///< the quantity furthest from periodicity (last cycle)
   long reynolds_solves = 0;               ///< Reynolds (FEM + cavitation) solves, both joints
+  long reynolds_factorizations = 0;       ///< their LDLᵀ refactorisations (active-set iterations)
   multibody::SolverStats stats;
   double wall_time = 0.0;  ///< [s]
   double max_constraint_violation = 0.0;

@@ -90,6 +90,22 @@ OutputRow RowFromSample(const engine::CrankTrainSample& s, engine::Model model,
     r.skirt_moment = s.liner_moment_about_pin;
     r.skirt_fpl = 0.0;
   }
+  if (skirt_lubricated && s.skirt.present) {  // film of the lubricated skirt (on the piston)
+    r.skirt_normal_force = s.skirt.normal_force;
+    r.skirt_friction_force = s.skirt.friction_force;
+    r.skirt_moment = s.skirt.moment_about_pin;
+    r.skirt_moft = s.skirt.moft;
+    r.skirt_fpl = s.skirt.fpl;
+  }
+  if (big_end_lubricated && s.bearing.present) {  // journal orbit in the rod-fixed frame
+    r.journal_ecc_x = s.bearing.journal_ecc_rod.x();
+    r.journal_ecc_y = s.bearing.journal_ecc_rod.y();
+    r.bearing_eps = s.bearing.eps;
+    r.bearing_moft = s.bearing.moft;
+    r.bearing_fpl = s.bearing.fpl;
+    r.bigend_force_x = s.bearing.force_on_rod.x();
+    r.bigend_force_y = s.bearing.force_on_rod.y();
+  }
   if (!big_end_lubricated) {  // ideal pin joint: centred journal, frictionless
     r.journal_ecc_x = 0.0;
     r.journal_ecc_y = 0.0;
@@ -167,6 +183,7 @@ std::vector<OutputRow> WriteRunFolder(const std::filesystem::path& directory,
   summary["cycles"] = result.cycles;
   summary["cycles_to_steady_state"] = result.cycles_to_steady_state;
   summary["cycle_to_cycle_change"] = result.cycle_change;
+  summary["cycle_to_cycle_worst_quantity"] = result.worst_quantity;
   summary["wall_time_s"] = result.wall_time;
   summary["max_constraint_violation"] = result.max_constraint_violation;
   json extremes = json::object();
@@ -205,7 +222,7 @@ std::vector<OutputRow> WriteRunFolder(const std::filesystem::path& directory,
                        {"newton_failures", result.stats.newton_failures},
                        {"rhs_evaluations", result.stats.rhs_evaluations},
                        {"jacobian_evaluations", result.stats.jacobian_evaluations},
-                       {"reynolds_solves", 0},
+                       {"reynolds_solves", result.reynolds_solves},
                        {"baumgarte_alpha", config.engine_case.solver.baumgarte_alpha},
                        {"baumgarte_beta", config.engine_case.solver.baumgarte_beta},
                        {"relative_tolerance", config.integrator.relative_tolerance}};

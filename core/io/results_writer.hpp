@@ -27,7 +27,8 @@ struct OutputRow {
 /// Header names with units, in column order.
 std::vector<std::string> ResultsHeader();
 /// The row of a crank-train sample for a model (ideal joints fill zero secondary motion, zero
-/// friction and FPL; film quantities stay empty). crank_angle_deg within the reported cycle.
+/// friction and FPL; their film quantities stay empty). Lubricated joints fill every film column
+/// from the sample's skirt / bearing film quantities (journal_ecc in the rod-fixed frame). crank_angle_deg within the reported cycle.
 OutputRow RowFromSample(const engine::CrankTrainSample& sample, engine::Model model,
                         double cycle_start_time);
 

@@ -1,6 +1,6 @@
 // A whole ideal run as the CLI and the GUI worker make it: steady state, the reported cycle, the
 // output folder (every SPEC §4 column in order, empty where the model has none), monitor stop,
-// cancel flag, and a lubricated model without film elements rejected naming the field.
+// cancel flag, and a lubricated model without film factories rejected naming the field.
 #include <QtTest>
 
 #include <QTemporaryDir>
@@ -90,7 +90,9 @@ class TestRunJob : public QObject {
     QCOMPARE(calls, 10);
   }
   void lubricatedWithoutFilmModelIsAnInputError() {
-    const engine::RunConfig config = DefaultConfig(6000, engine::Model::kOnlySkirt);
+    engine::RunConfig config = DefaultConfig(6000, engine::Model::kOnlySkirt);
+    QVERIFY(config.factories.skirt && config.factories.big_end);  // MakeRunConfig provides them
+    config.factories = {};                                        // a build without film models
     try {
       engine::RunJob(config);
       QFAIL("no error");
