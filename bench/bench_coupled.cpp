@@ -2,7 +2,7 @@
 // meshes, from the start through the periodic steady state and the reported cycle; wall time,
 // steps, Reynolds solves, time per solve; a tight-tolerance run for the accuracy check; the
 // price of the paper's explicit 1e-7 s scheme at our cost per step. Run on demand:
-//   build-cpl/bench/bench_coupled [model] [rpm] [--no-tight] [--set key=value ...]
+//   build-cpl/bench/bench_coupled [model] [rpm] [--no-tight] [--coarse] [--set key=value ...]
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -18,8 +18,11 @@ using namespace filmdyn;
 
 namespace {
 
+bool g_coarse = false;
+
 struct Figures {
   double max_e0 = 0, max_gamma = 0, min_skirt_moft = 1e9, min_bearing_moft = 1e9, max_eps = 0;
+  double max_skirt_force = 0, mean_skirt_fpl = 0, mean_bearing_fpl = 0, max_bigend_force = 0;
 };
 
 Figures FiguresOf(const engine::RunResult& r) {
@@ -30,6 +33,10 @@ Figures FiguresOf(const engine::RunResult& r) {
     if (s.skirt.present) f.min_skirt_moft = std::min(f.min_skirt_moft, s.skirt.moft);
     if (s.bearing.present) f.min_bearing_moft = std::min(f.min_bearing_moft, s.bearing.moft);
     f.max_eps = std::max(f.max_eps, s.bearing.eps);
+    f.max_skirt_force = std::max(f.max_skirt_force, std::abs(s.liner_force_on_piston.x()));
+    f.max_bigend_force = std::max(f.max_bigend_force, s.big_end_force_on_rod.norm());
+    f.mean_skirt_fpl += s.skirt.fpl / r.samples.size();
+    f.mean_bearing_fpl += s.bearing.fpl / r.samples.size();
   }
   return f;
 }
@@ -37,6 +44,12 @@ Figures FiguresOf(const engine::RunResult& r) {
 engine::RunResult Run(const io::LoadedCase& loaded, engine::Model model, double rpm, double rtol,
                       double ptol, const char* label) {
   engine::EngineCase c = loaded.value;
+  if (g_coarse) {  // the test meshes (tests/core/coupling)
+    c.skirt.mesh_thrust = c.skirt.mesh_anti = 10;
+    c.skirt.mesh_axial = 12;
+    c.big_end.mesh_theta = 24;
+    c.big_end.mesh_z = 6;
+  }
   c.solver.relative_tolerance = rtol;
   c.solver.position_tolerance = ptol;
   engine::RunConfig config =
@@ -57,6 +70,10 @@ engine::RunResult Run(const io::LoadedCase& loaded, engine::Model model, double 
       "um, max eps %.5f, last change %.4f (%s)\n",
       f.max_e0 * 1e6, f.max_gamma, f.min_skirt_moft * 1e6, f.min_bearing_moft * 1e6, f.max_eps,
       r.cycle_change, r.worst_quantity.c_str());
+  std::printf(
+      "       max |skirt normal| %.1f N, mean skirt FPL %.1f W, max |big-end force| %.1f N, mean "
+      "bearing FPL %.1f W\n",
+      f.max_skirt_force, f.mean_skirt_fpl, f.max_bigend_force, f.mean_bearing_fpl);
   return r;
 }
 
@@ -71,6 +88,7 @@ int main(int argc, char** argv) {
   std::vector<std::string> sets;
   for (int i = 3; i < argc; ++i) {
     if (std::strcmp(argv[i], "--no-tight") == 0) tight = false;
+    if (std::strcmp(argv[i], "--coarse") == 0) g_coarse = true;
     if (std::strcmp(argv[i], "--set") == 0 && i + 1 < argc) sets.push_back(argv[++i]);
   }
   const io::LoadedCase loaded = io::LoadCase("", sets);
