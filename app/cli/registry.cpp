@@ -8,9 +8,10 @@ const std::vector<Command>& AllCommands() {
   static const std::vector<Command> commands = [] {
     std::vector<Command> list;
     // One line per subcommand; only commands that work are listed.
-    list.push_back(MakeVersionsCommand());
-    list.push_back(MakeBearingCommand());
     list.push_back(MakeRunCommand());
+    list.push_back(MakeSweepCommand());
+    list.push_back(MakeBearingCommand());
+    list.push_back(MakeVersionsCommand());
     return list;
   }();
   return commands;

@@ -8,5 +8,6 @@ namespace filmdyn::cli {
 Command MakeVersionsCommand();
 Command MakeBearingCommand();
 Command MakeRunCommand();
+Command MakeSweepCommand();
 
 }  // namespace filmdyn::cli

@@ -1,24 +1,16 @@
 // `filmdyn run`: one headless run (SPEC §4). All the work is in core (io::LoadCase,
 // engine::RunJob, io::WriteRunFolder); this file only parses options and prints progress on
 // stderr. Ctrl-C stops the run cleanly: the cycle computed so far is written, marked incomplete.
-#include <atomic>
 #include <chrono>
-#include <csignal>
 #include <cstdio>
 
 #include "app/commands/commands.hpp"
+#include "app/commands/run_common.hpp"
 #include "core/engine/run_job.hpp"
-#include "core/input_error.hpp"
 #include "core/io/case_file.hpp"
-#include "core/io/pressure_csv.hpp"
 #include "core/io/results_writer.hpp"
 
 namespace filmdyn::cli {
-
-namespace {
-std::atomic<bool> g_interrupted{false};
-extern "C" void OnInterrupt(int) { g_interrupted = true; }
-}  // namespace
 
 Command MakeRunCommand() {
   Command command;
@@ -26,6 +18,7 @@ Command MakeRunCommand() {
   command.summary = "headless run of a case; results.csv and summary.json in an output folder";
   command.positional_usage = "[CASE.json]";
   command.max_positional = 1;
+  command.needs_gui_application = true;  // plots/ are rendered with Qt Charts (offscreen)
   command.options = {
       {"model", "MODEL", "skirt-lbrbe | only-skirt | only-lbrbe | ideal (default: the case's)"},
       {"rpm", "N", "crank speed [rpm] (default: operating.rpm of the case)"},
@@ -42,27 +35,11 @@ Command MakeRunCommand() {
     const std::string case_path = args.positional().empty() ? "" : args.positional()[0];
     const io::LoadedCase loaded = io::LoadCase(case_path, args.Values("set"));
     const engine::EngineCase& c = loaded.value;
-    engine::Model model = engine::Model::kIdeal;
-    if (const auto name = args.Value("model")) {
-      model = engine::ParseModel(*name);
-    } else {
-      const bool skirt = c.skirt.model == engine::JointModel::kLubricated;
-      const bool big_end = c.big_end.model == engine::JointModel::kLubricated;
-      model = skirt && big_end ? engine::Model::kSkirtLbrbe
-              : skirt          ? engine::Model::kOnlySkirt
-              : big_end        ? engine::Model::kOnlyLbrbe
-                               : engine::Model::kIdeal;
-    }
+    const engine::Model model =
+        args.Value("model") ? engine::ParseModel(*args.Value("model")) : ModelFromCase(c);
     const double rpm = args.Double("rpm").value_or(c.operating.rpm);
-    RequireInRange("--rpm", rpm, 0.0, 30000.0, true, false, "rpm");
-    engine::PressureCurve pressure = args.Value("pressure-curve")
-                                         ? io::ReadPressureCsvFile(*args.Value("pressure-curve"))
-                                         : io::PressureCurveForSpeed(loaded, rpm);
-    engine::RunConfig config = engine::MakeRunConfig(c, model, rpm, std::move(pressure));
-    if (const auto limit = args.Double("time-limit")) {
-      RequirePositive("--time-limit", *limit, "s");
-      config.wall_time_limit = *limit;
-    }
+    const engine::RunConfig config = BuildRunConfig(
+        loaded, model, rpm, args.Value("pressure-curve"), args.Double("time-limit").value_or(0.0));
     const std::filesystem::path out = args.Value("out")
                                           ? std::filesystem::path(*args.Value("out"))
                                           : io::DefaultOutputFolder(c.name, model, rpm);
@@ -81,12 +58,17 @@ Command MakeRunCommand() {
       }
       return true;
     };
-    g_interrupted = false;
-    auto previous_handler = std::signal(SIGINT, OnInterrupt);
-    const engine::RunResult result = engine::RunJob(config, monitor, &g_interrupted);
-    std::signal(SIGINT, previous_handler);
-    io::WriteRunFolder(out, c.name, config, result);
+    engine::RunResult result;
+    {
+      const InterruptGuard interrupt;
+      result = engine::RunJob(config, monitor, interrupt.flag());
+    }
+    const std::vector<io::OutputRow> rows = io::WriteRunFolder(out, c.name, config, result);
     if (!quiet) streams.err << "\n";
+    // The same charts the GUI draws, also for an incomplete run (what was computed).
+    if (const std::string error = WriteRunPlots(out, config, rows); !error.empty()) {
+      streams.err << "filmdyn run: plots not written: " << error << "\n";
+    }
     streams.err << "filmdyn run: " << engine::StatusName(result.status) << ", " << result.cycles
                 << " cycles, " << result.stats.steps << " steps, " << result.wall_time
                 << " s; results in " << out.string() << "\n";

@@ -1,6 +1,11 @@
 // The real `filmdyn` executable, run as a user would: help, version, dispatching, and clear
 // one-line errors with exit code 2 for bad input.
+#include <QFileInfo>
+#include <QImage>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QProcess>
+#include <QTemporaryDir>
 #include <QtTest>
 
 #include "app/cli/command.hpp"
@@ -15,8 +20,8 @@ struct Result {
   QString err;
 };
 
-Result Run(const QStringList& arguments, const QProcessEnvironment& env =
-                                             QProcessEnvironment::systemEnvironment()) {
+Result Run(const QStringList& arguments,
+           const QProcessEnvironment& env = QProcessEnvironment::systemEnvironment()) {
   QProcess process;
   process.setProcessEnvironment(env);
   process.start(FILMDYN_EXECUTABLE, arguments);
@@ -86,6 +91,71 @@ class TestCli : public QObject {
     QCOMPARE(result.exit_code, 1);
     QVERIFY(result.err.contains("no display"));
     QVERIFY(result.err.contains("filmdyn run"));
+  }
+
+  void runWritesTheOutputFolder() {
+    QTemporaryDir dir;
+    const QString out = dir.filePath("r");
+    const Result result =
+        Run({"run", "--model", "ideal", "--rpm", "2000", "--out", out, "--quiet"});
+    QCOMPARE(result.exit_code, 0);
+    QFile csv(out + "/results.csv");
+    QVERIFY(csv.open(QIODevice::ReadOnly));
+    const QList<QByteArray> lines = csv.readAll().split('\n');
+    QVERIFY(lines.first().startsWith("crank_angle[deg],time[s],piston_lateral[m],"));
+    QVERIFY(lines.size() >= 720);
+    QFile summary_file(out + "/summary.json");
+    QVERIFY(summary_file.open(QIODevice::ReadOnly));
+    const QJsonObject summary = QJsonDocument::fromJson(summary_file.readAll()).object();
+    QCOMPARE(summary.value("model").toString(), QString("ideal"));
+    QCOMPARE(summary.value("rpm").toDouble(), 2000.0);
+    QVERIFY(summary.value("complete").toBool());
+    // Plots rendered offscreen (no display needed): PNG decodes, SVG present.
+    for (const char* plot : {"piston_lateral", "liner_forces", "bigend_forces"}) {
+      QImage png(out + "/plots/" + plot + ".png");
+      QVERIFY2(!png.isNull(), plot);
+      QVERIFY(QFileInfo(out + "/plots/" + plot + ".svg").size() > 1000);
+    }
+  }
+
+  void runRejectsBadInputNamingTheField() {
+    Result result = Run({"run", "--model", "wobbly"});
+    QCOMPARE(result.exit_code, 2);
+    QVERIFY(result.err.contains("wobbly"));
+    result = Run({"run", "--set", "geometry.rod_mass=-1", "--model", "ideal"});
+    QCOMPARE(result.exit_code, 2);
+    QVERIFY2(result.err.contains("rod_mass"), qPrintable(result.err));
+    result = Run({"run", "/nonexistent/case.json"});
+    QCOMPARE(result.exit_code, 2);
+    QVERIFY(result.err.contains("/nonexistent/case.json"));
+  }
+
+  void sweepRunsInParallelAndCompares() {
+    QTemporaryDir dir;
+    const QString out = dir.filePath("s");
+    const Result result = Run({"sweep", "--models", "ideal", "--rpm", "1000,6000", "--jobs", "2",
+                               "--out", out, "--quiet"});
+    QCOMPARE(result.exit_code, 0);
+    QFile csv(out + "/comparison.csv");
+    QVERIFY(csv.open(QIODevice::ReadOnly));
+    const QStringList lines = QString::fromUtf8(csv.readAll()).trimmed().split('\n');
+    QCOMPARE(lines.size(), 3);  // header + two runs
+    QVERIFY(lines[1].contains(",ideal,1000,completed,"));
+    QVERIFY(lines[2].contains(",ideal,6000,completed,"));
+    QVERIFY(result.out.contains("| ideal | 6000 | completed |"));
+    QVERIFY(QFileInfo::exists(out + "/comparison.md"));
+    QVERIFY(!QImage(out + "/plots/bigend_forces.png").isNull());
+    for (const char* rpm : {"1000", "6000"}) {
+      const QString folder = out + "/zhao-shen-gasoline-ideal-" + rpm;
+      QVERIFY2(QFileInfo::exists(folder + "/results.csv"), qPrintable(folder));
+      QVERIFY(QFileInfo::exists(folder + "/plots/moft.png"));
+    }
+  }
+
+  void sweepRejectsBadJobs() {
+    const Result result = Run({"sweep", "--jobs", "0"});
+    QCOMPARE(result.exit_code, 2);
+    QVERIFY(result.err.contains("--jobs"));
   }
 
   // The parser itself, in process.

@@ -1,0 +1,66 @@
+#pragma once
+/// @file Several runs in parallel (`filmdyn sweep`, SPEC §4): a fixed pool of worker threads takes
+/// jobs in order; each job is a complete `RunJob` plus its output folder. The caller's thread
+/// collects finished jobs one by one (e.g. to render plots, which Qt allows on the main thread
+/// only). One cancel flag stops every job cleanly with its partial results written.
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <deque>
+#include <filesystem>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "core/engine/run_job.hpp"
+#include "core/io/results_writer.hpp"
+
+namespace filmdyn::engine {
+
+struct SweepJob {
+  RunConfig config;
+  std::string case_name;
+  std::filesystem::path output_folder;
+};
+
+struct SweepOutcome {
+  RunResult result;
+  std::vector<io::OutputRow> rows;  ///< as written to results.csv
+  std::string error;                ///< non-empty when the job threw (bad input, I/O)
+  bool finished = false;
+};
+
+class SweepRunner {
+ public:
+  /// Starts min(threads, jobs) workers at once. `cancel` may be null.
+  SweepRunner(std::vector<SweepJob> jobs, int threads, const std::atomic<bool>* cancel);
+  ~SweepRunner();  ///< cancels nothing, waits for the workers
+  SweepRunner(const SweepRunner&) = delete;
+  SweepRunner& operator=(const SweepRunner&) = delete;
+
+  /// Waits up to `timeout` for another finished job and returns its index; -1 once every job
+  /// was returned, -2 on timeout (so the caller can print progress meanwhile).
+  int WaitNext(std::chrono::milliseconds timeout);
+  const SweepJob& job(int index) const { return jobs_[index]; }
+  const SweepOutcome& outcome(int index) const { return outcomes_[index]; }
+  int size() const { return static_cast<int>(jobs_.size()); }
+  /// Progress of every job in [0, 1] (1 when finished), for a status line.
+  std::vector<double> Fractions() const;
+
+ private:
+  void Work();
+
+  std::vector<SweepJob> jobs_;
+  std::vector<SweepOutcome> outcomes_;
+  const std::atomic<bool>* cancel_;
+  std::atomic<int> next_job_{0};
+  std::vector<std::atomic<double>> fractions_;
+  mutable std::mutex mutex_;
+  std::condition_variable finished_cv_;
+  std::deque<int> finished_;
+  int returned_ = 0;
+  std::vector<std::thread> workers_;
+};
+
+}  // namespace filmdyn::engine

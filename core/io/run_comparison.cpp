@@ -1,0 +1,149 @@
+#include "core/io/run_comparison.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <stdexcept>
+
+namespace filmdyn::io {
+
+namespace {
+
+enum class Reduce { kMaxAbs, kMin, kMax, kMeanFplSkirt, kMeanFplBearing };
+
+struct FigureRecipe {
+  ComparisonFigure figure;
+  const char* column;  ///< results.csv column in summary.json "extremes"
+  Reduce reduce;
+};
+
+const std::vector<FigureRecipe>& Recipes() {
+  static const std::vector<FigureRecipe> recipes = {
+      {{"max_abs_piston_lateral[m]", "max abs e0 [µm]", 1e6}, "piston_lateral[m]", Reduce::kMaxAbs},
+      {{"max_abs_piston_tilt[rad]", "max abs γ [mrad]", 1e3}, "piston_tilt[rad]", Reduce::kMaxAbs},
+      {{"min_skirt_moft[m]", "min skirt MOFT [µm]", 1e6}, "skirt_moft[m]", Reduce::kMin},
+      {{"max_abs_skirt_normal_force[N]", "max abs skirt F_n [N]", 1.0},
+       "skirt_normal_force[N]",
+       Reduce::kMaxAbs},
+      {{"mean_skirt_fpl[W]", "mean skirt FPL [W]", 1.0}, "", Reduce::kMeanFplSkirt},
+      {{"max_bearing_eps[-]", "max ε [-]", 1.0}, "bearing_eps[-]", Reduce::kMax},
+      {{"min_bearing_moft[m]", "min bearing MOFT [µm]", 1e6}, "bearing_moft[m]", Reduce::kMin},
+      {{"mean_bearing_fpl[W]", "mean bearing FPL [W]", 1.0}, "", Reduce::kMeanFplBearing},
+      {{"max_abs_bigend_force_x[N]", "max abs big-end F_x [N]", 1.0},
+       "bigend_force_x[N]",
+       Reduce::kMaxAbs},
+      {{"max_abs_bigend_force_y[N]", "max abs big-end F_y [N]", 1.0},
+       "bigend_force_y[N]",
+       Reduce::kMaxAbs},
+  };
+  return recipes;
+}
+
+std::optional<double> Number(const nlohmann::json& value) {
+  if (value.is_number()) return value.get<double>();
+  return std::nullopt;
+}
+
+std::string Cell(const std::optional<double>& value, double scale, int precision) {
+  if (!value) return "–";
+  std::ostringstream out;
+  out << std::setprecision(precision) << *value * scale;
+  return out.str();
+}
+
+}  // namespace
+
+const std::vector<ComparisonFigure>& ComparisonFigures() {
+  static const std::vector<ComparisonFigure> figures = [] {
+    std::vector<ComparisonFigure> list;
+    for (const auto& recipe : Recipes()) list.push_back(recipe.figure);
+    return list;
+  }();
+  return figures;
+}
+
+ComparisonRow ReadComparisonRow(const std::filesystem::path& folder) {
+  const auto path = folder / "summary.json";
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot read " + path.string());
+  nlohmann::json summary;
+  try {
+    in >> summary;
+  } catch (const nlohmann::json::exception& error) {
+    throw std::runtime_error(path.string() + ": not valid JSON (" + error.what() + ")");
+  }
+  ComparisonRow row;
+  row.folder = folder.filename().string();
+  row.model = summary.value("model", "");
+  row.rpm = summary.value("rpm", 0.0);
+  row.status = summary.value("status", "");
+  row.cycles = summary.value("cycles", 0);
+  row.wall_time_s = summary.value("wall_time_s", 0.0);
+  const nlohmann::json extremes = summary.value("extremes", nlohmann::json::object());
+  const nlohmann::json fpl = summary.value("mean_fpl_w", nlohmann::json::object());
+  for (const auto& recipe : Recipes()) {
+    std::optional<double> value;
+    if (recipe.reduce == Reduce::kMeanFplSkirt) {
+      value = fpl.contains("skirt") ? Number(fpl["skirt"]) : std::nullopt;
+    } else if (recipe.reduce == Reduce::kMeanFplBearing) {
+      value = fpl.contains("bearing") ? Number(fpl["bearing"]) : std::nullopt;
+    } else if (extremes.contains(recipe.column)) {
+      const auto lo = Number(extremes[recipe.column].value("min", nlohmann::json()));
+      const auto hi = Number(extremes[recipe.column].value("max", nlohmann::json()));
+      if (lo && hi) {
+        switch (recipe.reduce) {
+          case Reduce::kMaxAbs:
+            value = std::max(std::abs(*lo), std::abs(*hi));
+            break;
+          case Reduce::kMin:
+            value = *lo;
+            break;
+          case Reduce::kMax:
+            value = *hi;
+            break;
+          default:
+            break;
+        }
+      }
+    }
+    row.figures.push_back(value);
+  }
+  return row;
+}
+
+void WriteComparisonCsv(std::ostream& out, const std::vector<ComparisonRow>& rows) {
+  out << "run,model,rpm[rpm],status,cycles[-],wall_time[s]";
+  for (const auto& figure : ComparisonFigures()) out << "," << figure.key;
+  out << "\n" << std::setprecision(10);
+  for (const auto& row : rows) {
+    out << row.folder << "," << row.model << "," << row.rpm << "," << row.status << ","
+        << row.cycles << "," << row.wall_time_s;
+    for (const auto& value : row.figures) {
+      out << ",";
+      if (value) out << *value;
+    }
+    out << "\n";
+  }
+}
+
+std::string ComparisonMarkdown(const std::vector<ComparisonRow>& rows) {
+  std::ostringstream out;
+  out << "| model | rpm | status | cycles | wall [s]";
+  for (const auto& figure : ComparisonFigures()) out << " | " << figure.display_name;
+  out << " |\n|---|---|---|---|---";
+  for (std::size_t i = 0; i < ComparisonFigures().size(); ++i) out << "|---";
+  out << "|\n";
+  for (const auto& row : rows) {
+    out << "| " << row.model << " | " << row.rpm << " | " << row.status << " | " << row.cycles
+        << " | " << Cell(row.wall_time_s, 1.0, 3);
+    for (std::size_t i = 0; i < row.figures.size(); ++i) {
+      out << " | " << Cell(row.figures[i], ComparisonFigures()[i].display_scale, 4);
+    }
+    out << " |\n";
+  }
+  return out.str();
+}
+
+}  // namespace filmdyn::io
