@@ -103,6 +103,8 @@ Command MakeBearingCommand() {
       j["side_flow_unit"] = "m^3/s, both edges";
       j["side_flow_variable"] = r.side_flow_variable;
       j["side_flow_variable_definition"] = "Q_s/(R c N L), N in rev/s";
+      j["inlet_flow"] = r.inlet_flow;
+      j["inlet_flow_variable"] = r.inlet_flow_variable;
       j["moft"] = r.moft;
       j["friction_torque"] = r.friction_torque;
       j["friction_power_loss"] = r.friction_power_loss;
@@ -129,6 +131,7 @@ Command MakeBearingCommand() {
       o << "friction variable (R/c)f " << r.friction_variable << "\n";
       o << "side flow Qs/(R c N L)   " << r.side_flow_variable << "\n";
       o << "side flow [m^3/s]        " << r.side_flow << "\n";
+      o << "inlet flow Q/(R c N L)   " << r.inlet_flow_variable << "\n";
       o << "load [N]                 " << r.load << "\n";
       o << "MOFT [m]                 " << r.moft << "\n";
       o << "friction torque [N m]    " << r.friction_torque << "\n";

@@ -99,6 +99,8 @@ BearingCalcResult RunBearingCalculator(const BearingCalcInput& in) {
   out.friction_variable = r.load > 0 ? rc * out.friction_torque / (in.radius * r.load) : INFINITY;
   out.side_flow = r.side_flow;
   out.side_flow_variable = r.side_flow / (in.radius * in.radial_clearance * N * in.length);
+  out.inlet_flow = r.inlet_flow;
+  out.inlet_flow_variable = r.inlet_flow / (in.radius * in.radial_clearance * N * in.length);
   out.moft = r.moft;
   out.friction_power_loss = r.friction_power_loss;
   out.max_pressure = r.max_pressure;

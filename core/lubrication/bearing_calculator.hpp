@@ -33,6 +33,8 @@ struct BearingCalcResult {
   double friction_variable = 0.0;    ///< (R/c) f, f = |T_journal| / (R W)
   double side_flow = 0.0;            ///< Q_s [m^3/s], both edges
   double side_flow_variable = 0.0;   ///< Q_s / (R c N L) (Raimondi-Boyd normalisation)
+  double inlet_flow = 0.0;           ///< Q, flow entering the pressure film [m^3/s]
+  double inlet_flow_variable = 0.0;  ///< Q / (R c N L)
   double moft = 0.0;                 ///< [m]
   double friction_torque = 0.0;      ///< |T| on the journal [N m]
   double friction_power_loss = 0.0;  ///< [W]

@@ -213,16 +213,30 @@ const BearingResult& BearingSolver::Solve(const BearingState& s) {
     film_area += area[k];
     if (sol.cavitated[k]) cav_area += area[k] * (jfo ? 1.0 - sol.fluid_fraction[k] : 1.0);
     // Outflow through prescribed-pressure nodes is -w (w = nodal residual of the interior rows).
+    // The corner nodes of the film-start line are supply nodes: counted as feed (with their
+    // upstream Couette inflow below) Q and Q_s become independent of the axial mesh.
     const int j = k / m.nx_nodes();
     const bool edge = j == 0 || (!config_.mesh.symmetric_half && j == ny - 1);
-    if (edge)
+    const bool line = config_.feed.kind == OilFeed::Kind::kLineOfCentres && k % m.nx_nodes() == 0;
+    if (edge && !line)
       r.side_flow -= sol.residual[k];
     else if (m.fixed[k] || fem_.extra_fixed()[k])
       r.feed_flow += sol.residual[k];
   }
   r.cavitated_fraction = film_area > 0 ? cav_area / film_area : 0.0;
+  r.inlet_flow = r.feed_flow;
+  if (config_.feed.kind == OilFeed::Kind::kLineOfCentres) {
+    // Couette flow carried onto the film-start line by the upstream film (dual-cell widths).
+    for (int j = 0; j < ny; ++j) {
+      double w = 0.0;
+      if (j > 0) w += 0.5 * (m.y_lines[j] - m.y_lines[j - 1]);
+      if (j + 1 < ny) w += 0.5 * (m.y_lines[j + 1] - m.y_lines[j]);
+      r.inlet_flow += 0.5 * std::abs(params.u_sum) * h[m.Node(0, j)] * w;
+    }
+  }
   r.side_flow *= sym;
   r.feed_flow *= sym;
+  r.inlet_flow *= sym;
   return r;
 }
 

@@ -82,7 +82,11 @@ struct BearingResult {
   double max_contact_pressure = 0.0;                    ///< [Pa]
   double cavitated_fraction = 0.0;                      ///< cavitated share of the film area [-]
   double side_flow = 0.0;                               ///< leakage through both edges [m^3/s]
-  double feed_flow = 0.0;  ///< net inflow at the film start / feed [m^3/s]
+  double feed_flow = 0.0;  ///< net supply of the prescribed-pressure nodes (not edges) [m^3/s]
+  /// Flow entering the pressure film [m^3/s] (Raimondi-Boyd's Q): feed hole/groove: feed_flow;
+  /// default film start: feed_flow + the Couette flow (U/2) h arriving at theta = 0 from the
+  /// (cavitated) upstream side.
+  double inlet_flow = 0.0;
 };
 
 /// Construct once per bearing (mesh + symbolic factorisation), then Solve() per time step.

@@ -50,7 +50,8 @@ SteadyBearingPoint SolveSteadyBearing(double l_over_d, double eps, const Bearing
   in.cavitation = cavitation;
   in.eps = eps;
   const BearingCalcResult r = RunBearingCalculator(in);
-  return {r.sommerfeld, r.attitude_deg, r.friction_variable, r.side_flow_variable, r.last_stats};
+  return {r.sommerfeld,         r.attitude_deg,        r.friction_variable,
+          r.side_flow_variable, r.inlet_flow_variable, r.last_stats};
 }
 
 // Short-bearing (Ocvirk & DuBois 1953) half-Sommerfeld load components, e.g. Hamrock, Schmid &
@@ -182,6 +183,8 @@ std::vector<verification::ValidationRow> LubricationValidationRows() {
         {"bearing", "Sommerfeld number " + tag, rb, r.sommerfeld, p.sommerfeld, 0.02, true});
     rows.push_back(
         {"bearing", "attitude angle [deg] " + tag, rb, r.attitude_deg, p.attitude_deg, 1.5, false});
+    rows.push_back(
+        {"bearing", "inlet flow Q/(RcNL) " + tag, rb, r.inlet_flow_var, p.flow_var, 0.02, true});
   }
   // Short-bearing limit: L/D = 1/16 against Ocvirk (the difference is O((L/D)^2)).
   const BearingMeshSpec short_mesh{240, 12, true};

@@ -24,7 +24,7 @@ const std::vector<RaimondiBoydPoint>& RaimondiBoydTable();
 /// Steady journal bearing at (L/D, eps), journal rotating, bearing at rest; returns the solver
 /// result and S, attitude etc. through `BearingCalcResult`-like fields.
 struct SteadyBearingPoint {
-  double sommerfeld, attitude_deg, friction_var, side_flow_var;
+  double sommerfeld, attitude_deg, friction_var, side_flow_var, inlet_flow_var;
   ReynoldsStats stats;
 };
 SteadyBearingPoint SolveSteadyBearing(double l_over_d, double eps, const BearingMeshSpec& mesh,

@@ -1,6 +1,7 @@
 // Every lubrication row of `filmdyn validate` passes: Raimondi-Boyd S and attitude at L/D =
-// 1/4, 1/2, 1 (eps 0.1..0.9, 240 x 20 half mesh), Ocvirk short bearing, pure squeeze, the JFO
-// pocketed slider (flow, pressure, reformation point, fluid fraction, mass balance) and the LCP.
+// 1/4, 1/2, 1 (eps 0.1..0.9, 240 x 20 half mesh) with the inlet flow Q, Ocvirk short bearing, pure
+// squeeze, the JFO pocketed slider (flow, pressure, reformation point, fluid fraction, mass
+// balance) and the LCP.
 #include <QtTest>
 
 #include "core/lubrication/validation_cases.hpp"
@@ -12,7 +13,7 @@ class TestValidationCases : public QObject {
  private slots:
   void allRowsPass() {
     const auto rows = LubricationValidationRows();
-    QVERIFY(rows.size() >= 36 + 4 + 2 + 5 + 1);
+    QVERIFY(rows.size() >= 54 + 4 + 2 + 5 + 1);
     for (const auto& row : rows) {
       QVERIFY2(row.Pass(), qPrintable(QString::fromStdString(row.name) +
                                       QString(": ours %1 reference %2 error %3 > %4")
