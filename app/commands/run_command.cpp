@@ -8,6 +8,7 @@
 #include "app/commands/run_common.hpp"
 #include "core/engine/run_job.hpp"
 #include "core/io/case_file.hpp"
+#include "core/io/field_output.hpp"
 #include "core/io/results_writer.hpp"
 
 namespace filmdyn::cli {
@@ -26,6 +27,7 @@ Command MakeRunCommand() {
       {"set", "KEY=VALUE", "override a case field by its dotted JSON path", true},
       {"pressure-curve", "FILE.csv", "cylinder pressure: crank_angle[deg],pressure[Pa] (absolute)"},
       {"time-limit", "S", "stop after S seconds of wall time, keeping what was computed"},
+      {"no-fields", "", "do not write fields/ (film fields as VTU/PVD per output step)"},
       {"quiet", "", "no progress on stderr"}};
   command.details =
       "Without CASE.json the built-in default case (Table I of the coupling-model paper) is used.\n"
@@ -38,8 +40,8 @@ Command MakeRunCommand() {
     const engine::Model model =
         args.Value("model") ? engine::ParseModel(*args.Value("model")) : ModelFromCase(c);
     const double rpm = args.Double("rpm").value_or(c.operating.rpm);
-    const engine::RunConfig config = BuildRunConfig(
-        loaded, model, rpm, args.Value("pressure-curve"), args.Double("time-limit").value_or(0.0));
+    engine::RunConfig config = BuildRunConfig(loaded, model, rpm, args.Value("pressure-curve"),
+                                              args.Double("time-limit").value_or(0.0));
     const std::filesystem::path out = args.Value("out")
                                           ? std::filesystem::path(*args.Value("out"))
                                           : io::DefaultOutputFolder(c.name, model, rpm);
@@ -58,12 +60,15 @@ Command MakeRunCommand() {
       }
       return true;
     };
+    io::FieldRecorder fields;
+    if (!args.Has("no-fields")) config.field_callback = fields.Callback();
     engine::RunResult result;
     {
       const InterruptGuard interrupt;
       result = engine::RunJob(config, monitor, interrupt.flag());
     }
     const std::vector<io::OutputRow> rows = io::WriteRunFolder(out, c.name, config, result);
+    fields.Write(out / "fields");
     if (!quiet) streams.err << "\n";
     // The same charts the GUI draws, also for an incomplete run (what was computed).
     if (const std::string error = WriteRunPlots(out, config, rows); !error.empty()) {

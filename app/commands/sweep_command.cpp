@@ -52,6 +52,7 @@ Command MakeSweepCommand() {
       {"out", "DIR", "folder of the sweep (default: ./results/sweep-<case>)"},
       {"set", "KEY=VALUE", "override a case field by its dotted JSON path", true},
       {"time-limit", "S", "wall-time limit of each run [s], keeping what was computed"},
+      {"no-fields", "", "do not write the runs' fields/ (VTU/PVD per output step)"},
       {"quiet", "", "no progress on stderr"}};
   command.details =
       "Each run writes <DIR>/<case>-<model>-<rpm>/ like `filmdyn run`; the sweep adds\n"
@@ -89,6 +90,7 @@ Command MakeSweepCommand() {
         engine::SweepJob job;
         job.config = BuildRunConfig(loaded, model, rpm, std::nullopt, time_limit);
         job.case_name = c.name;
+        job.write_fields = !args.Has("no-fields");
         job.output_folder = out / (c.name + "-" + engine::ModelName(model) + "-" + RpmText(rpm));
         sweep_jobs.push_back(std::move(job));
       }

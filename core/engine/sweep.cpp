@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <exception>
 
+#include "core/io/field_output.hpp"
+
 namespace filmdyn::engine {
 
 SweepRunner::SweepRunner(std::vector<SweepJob> jobs, int threads, const std::atomic<bool>* cancel)
@@ -25,9 +27,14 @@ void SweepRunner::Work() {
         fractions_[index] = std::min(p.fraction, 1.0);
         return true;
       };
-      outcome.result = RunJob(jobs_[index].config, monitor, cancel_);
-      outcome.rows = io::WriteRunFolder(jobs_[index].output_folder, jobs_[index].case_name,
-                                        jobs_[index].config, outcome.result);
+      const SweepJob& job = jobs_[index];
+      io::FieldRecorder fields;
+      RunConfig config = job.config;
+      if (job.write_fields) config.field_callback = fields.Callback();
+      outcome.result = RunJob(config, monitor, cancel_);
+      outcome.rows =
+          io::WriteRunFolder(job.output_folder, job.case_name, job.config, outcome.result);
+      fields.Write(job.output_folder / "fields");
     } catch (const std::exception& error) {
       outcome.error = error.what();
     }

@@ -22,6 +22,7 @@ struct SweepJob {
   RunConfig config;
   std::string case_name;
   std::filesystem::path output_folder;
+  bool write_fields = true;  ///< fields/ (VTU/PVD of the reported cycle) in the output folder
 };
 
 struct SweepOutcome {

@@ -5,6 +5,7 @@
 
 #include "ui/charts/chart_export.hpp"
 #include "ui/plots/plot_panel.hpp"
+#include "ui/plots/plot_specs.hpp"
 
 namespace filmdyn::ui {
 
@@ -25,10 +26,15 @@ QStringList ExportStandardPlots(const std::vector<RunHandle>& runs, const QStrin
   PlotPanel panel;  // never shown: the same charts as on screen, laid out at export size
   for (const auto& run : runs) panel.updateRun(run);
   for (int i = 0; i < panel.chartCount(); ++i) {
+    // Equal-scale plots (the journal orbit in its clearance circle) are exported square.
+    QSize size(960, 600);
+    for (const PlotSpec& spec : StandardPlots()) {
+      if (spec.id == panel.chartId(i) && spec.equal_axes) size = QSize(720, 720);
+    }
     for (const auto& [suffix, format] : {std::pair{QString("png"), ImageFormat::kPng},
                                          std::pair{QString("svg"), ImageFormat::kSvg}}) {
       const QString path = QDir(directory).filePath(panel.chartId(i) + "." + suffix);
-      if (!ExportChart(panel.chart(i), path, format, QSize(960, 600), error)) return written;
+      if (!ExportChart(panel.chart(i), path, format, size, error)) return written;
       written << path;
     }
   }

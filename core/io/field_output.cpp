@@ -1,0 +1,176 @@
+#include "core/io/field_output.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#include "core/lubrication/bearing_solver.hpp"
+#include "core/lubrication/skirt_solver.hpp"
+
+namespace filmdyn::io {
+
+// Per frame only the nodal values are kept (as float, the precision the files store); the
+// geometry is rebuilt when writing. One cycle of the default skirt mesh is ~30 MB this way.
+struct FrameValues {
+  double crank_angle_deg = 0.0;
+  double eccentricity_angle = 0.0;  // bearing: direction of the journal eccentricity, rod frame
+  std::vector<std::vector<float>> arrays;
+};
+
+struct JointFrames {
+  SurfaceField geometry;  // points (skirt) and triangles, array names, no values
+  std::vector<FrameValues> frames;
+};
+
+struct FieldRecorder::Frames {
+  int cycle = 0;
+  JointFrames skirt, bearing;
+  // Bearing nodes in film coordinates (θ from the maximum film, z) and the radius: the points
+  // of each frame follow from them and the frame's eccentricity angle.
+  std::vector<double> bearing_theta, bearing_z;
+  double bearing_radius = 0.0;
+};
+
+FieldRecorder::FieldRecorder() : frames_(std::make_unique<Frames>()) {}
+FieldRecorder::~FieldRecorder() = default;
+
+engine::FieldCallback FieldRecorder::Callback() {
+  return [this](const engine::FieldFrame& frame) { Record(frame); };
+}
+
+std::size_t FieldRecorder::skirt_frames() const { return frames_->skirt.frames.size(); }
+std::size_t FieldRecorder::bearing_frames() const { return frames_->bearing.frames.size(); }
+
+namespace {
+
+// The three nodal fields every joint writes; the fluid fraction only when JFO computed one.
+void AddFilmArrays(const lubrication::ReynoldsSolution& solution, const Eigen::VectorXd& h,
+                   const std::vector<int>& source, SurfaceField* field) {
+  auto gather = [&source](const Eigen::VectorXd& values) {
+    std::vector<double> out(source.size());
+    for (std::size_t k = 0; k < source.size(); ++k) out[k] = values[source[k]];
+    return out;
+  };
+  field->point_data.emplace_back("pressure[Pa]", gather(solution.pressure));
+  field->point_data.emplace_back("contact_pressure[Pa]", gather(solution.contact_pressure));
+  field->point_data.emplace_back("film_thickness[m]", gather(h));
+  if (solution.fluid_fraction.size() == h.size()) {
+    field->point_data.emplace_back("fluid_fraction[-]", gather(solution.fluid_fraction));
+  }
+}
+
+}  // namespace
+
+SurfaceField FieldRecorder::SkirtSurface(const lubrication::SkirtSolver& skirt) {
+  const lubrication::TriMesh& mesh = skirt.mesh();
+  const double radius = skirt.config().geometry.radius;
+  SurfaceField field;
+  std::vector<int> source;
+  for (int k = 0; k < mesh.NodeCount(); ++k) {
+    const double alpha = skirt.alpha()[k];
+    field.points.push_back({radius * std::cos(alpha), radius * std::sin(alpha), -mesh.y[k]});
+    source.push_back(k);
+  }
+  field.triangles = mesh.triangles;
+  AddFilmArrays(skirt.fields(), skirt.film_thickness(), source, &field);
+  return field;
+}
+
+namespace {
+
+std::vector<std::array<double, 3>> BearingPoints(const std::vector<double>& theta,
+                                                 const std::vector<double>& z, double radius,
+                                                 double eccentricity_angle_rod) {
+  std::vector<std::array<double, 3>> points;
+  points.reserve(theta.size());
+  for (std::size_t k = 0; k < theta.size(); ++k) {
+    const double psi = eccentricity_angle_rod + std::numbers::pi + theta[k];
+    points.push_back({radius * std::cos(psi), radius * std::sin(psi), z[k]});
+  }
+  return points;
+}
+
+std::vector<double> NodeAngles(const lubrication::BearingSolver& bearing) {
+  std::vector<double> theta(bearing.mesh().x);
+  for (double& t : theta) t /= bearing.config().geometry.radius;
+  return theta;
+}
+
+// Keeps the values of a surface and, the first time, its geometry without values.
+void Keep(const SurfaceField& surface, double crank_angle_deg, double eccentricity_angle,
+          JointFrames* joint) {
+  if (joint->geometry.triangles.empty()) {
+    joint->geometry.points = surface.points;
+    joint->geometry.triangles = surface.triangles;
+    for (const auto& [name, values] : surface.point_data) {
+      joint->geometry.point_data.emplace_back(name, std::vector<double>());
+    }
+  }
+  FrameValues frame{crank_angle_deg, eccentricity_angle, {}};
+  for (const auto& [name, values] : surface.point_data) {
+    frame.arrays.emplace_back(values.begin(), values.end());
+  }
+  joint->frames.push_back(std::move(frame));
+}
+
+}  // namespace
+
+SurfaceField FieldRecorder::BearingSurface(const lubrication::BearingSolver& bearing,
+                                           double eccentricity_angle_rod) {
+  SurfaceField field;
+  field.points = BearingPoints(NodeAngles(bearing), bearing.mesh().y,
+                               bearing.config().geometry.radius, eccentricity_angle_rod);
+  field.triangles = bearing.mesh().triangles;
+  std::vector<int> source(field.points.size());
+  for (std::size_t k = 0; k < source.size(); ++k) source[k] = static_cast<int>(k);
+  AddFilmArrays(bearing.fields(), bearing.film_thickness(), source, &field);
+  return field;
+}
+
+void FieldRecorder::Record(const engine::FieldFrame& frame) {
+  if (frame.cycle != frames_->cycle) {  // a new cycle: the previous one is not the reported one
+    frames_->cycle = frame.cycle;
+    frames_->skirt.frames.clear();
+    frames_->bearing.frames.clear();
+  }
+  if (frame.skirt != nullptr) {
+    Keep(SkirtSurface(*frame.skirt), frame.crank_angle_deg, 0.0, &frames_->skirt);
+  }
+  if (frame.bearing != nullptr && frame.sample != nullptr) {
+    const Eigen::Vector2d e = frame.sample->bearing.journal_ecc_rod;
+    const double angle = std::atan2(e.y(), e.x());
+    if (frames_->bearing_theta.empty()) {
+      frames_->bearing_theta = NodeAngles(*frame.bearing);
+      frames_->bearing_z = frame.bearing->mesh().y;
+      frames_->bearing_radius = frame.bearing->config().geometry.radius;
+    }
+    Keep(BearingSurface(*frame.bearing, angle), frame.crank_angle_deg, angle, &frames_->bearing);
+  }
+}
+
+void FieldRecorder::Write(const std::filesystem::path& folder) const {
+  for (const auto& [name, joint] :
+       {std::pair{"skirt", &frames_->skirt}, std::pair{"bearing", &frames_->bearing}}) {
+    if (joint->frames.empty()) continue;
+    std::filesystem::create_directories(folder);
+    PvdCollection collection;
+    SurfaceField field = joint->geometry;
+    for (std::size_t i = 0; i < joint->frames.size(); ++i) {
+      const FrameValues& frame = joint->frames[i];
+      if (joint == &frames_->bearing) {
+        field.points = BearingPoints(frames_->bearing_theta, frames_->bearing_z,
+                                     frames_->bearing_radius, frame.eccentricity_angle);
+      }
+      for (std::size_t a = 0; a < field.point_data.size(); ++a) {
+        field.point_data[a].second.assign(frame.arrays[a].begin(), frame.arrays[a].end());
+      }
+      char file[64];
+      std::snprintf(file, sizeof file, "%s_%04zu.vtu", name, i);
+      WriteVtu((folder / file).string(), field);
+      collection.Add(frame.crank_angle_deg, file);
+    }
+    collection.Write((folder / (std::string(name) + ".pvd")).string());
+  }
+}
+
+}  // namespace filmdyn::io

@@ -1,0 +1,48 @@
+#pragma once
+/// @file The `fields/` folder of a run (SPEC §4): the film fields of both lubricated joints at
+/// every output step of the reported cycle, as VTU files plus one PVD time index per joint
+/// (`skirt.pvd`, `bearing.pvd`; open them in ParaView). Recorded through RunConfig's field
+/// callback; only the newest cycle is kept, which is the cycle the run reports.
+///
+/// 3D layout (metres): the bore axis is z, the skirt top at z = 0 and the skirt below it
+/// (z = −y); the skirt is written as solved, α ∈ [0, π] from the thrust side (+x) — the film is
+/// symmetric about the pin-axis plane (paper §2.1; ParaView's Reflect filter shows both halves).
+/// The bearing is drawn in the connecting-rod frame: x along the rod from the big end to the
+/// small end, the film angle θ (from the maximum film) placed at ψ = φ + π + θ, φ being the
+/// direction of the journal eccentricity in the rod frame; z across the width.
+#include <filesystem>
+#include <memory>
+#include <vector>
+
+#include "core/engine/run_job.hpp"
+#include "core/io/vtk_xml_writer.hpp"
+
+namespace filmdyn::io {
+
+class FieldRecorder {
+ public:
+  FieldRecorder();
+  ~FieldRecorder();
+  /// The callback to put in RunConfig::field_callback (keeps a reference to this recorder).
+  /// Everything needed later is copied: Write() works after the run's solvers are gone.
+  engine::FieldCallback Callback();
+  /// Number of frames of the newest cycle recorded so far, per joint.
+  std::size_t skirt_frames() const;
+  std::size_t bearing_frames() const;
+  /// Writes `<folder>/skirt_NNNN.vtu`, `bearing_NNNN.vtu`, `skirt.pvd`, `bearing.pvd` for the
+  /// joints that are lubricated; nothing for an ideal run. Times in the PVD are crank angles
+  /// [°CA] within the cycle. Throws std::runtime_error naming the file on I/O failure.
+  void Write(const std::filesystem::path& folder) const;
+
+  /// The surface of one solve (exposed for tests and the GUI's field view).
+  static SurfaceField SkirtSurface(const lubrication::SkirtSolver& skirt);
+  static SurfaceField BearingSurface(const lubrication::BearingSolver& bearing,
+                                     double eccentricity_angle_rod);
+
+ private:
+  void Record(const engine::FieldFrame& frame);
+  struct Frames;
+  std::unique_ptr<Frames> frames_;
+};
+
+}  // namespace filmdyn::io
