@@ -102,7 +102,11 @@ void MainWindow::createRunPage() {
   layout->addWidget(run_splitter_);
   connect(run_table_, &RunTable::visibilityToggled, plot_panel_, &PlotPanel::setRunVisible);
   connect(run_table_, &QTableWidget::currentCellChanged, this, [this] {
-    if (RunHandle run = run_table_->currentRun()) field_view_->setFrames(nullptr, run->label());
+    RunHandle run = run_table_->currentRun();
+    if (run && run != shown_fields_run_.lock()) {
+      shown_fields_run_ = run;
+      field_view_->setFrames(run->fields(), run->label());
+    }
   });
   workspace_->addTab(page, tr("Run and results"));
 }
@@ -272,7 +276,8 @@ void MainWindow::onRunFinished(const RunHandle& run) {
     statusBar()->showMessage(run_state_label_->text(), 10000);
   }
   run_state_label_->setToolTip(reason);
-  field_view_->setFrames(nullptr, run->label());
+  shown_fields_run_ = run;
+  field_view_->setFrames(run->fields(), run->label());
 }
 
 void MainWindow::removeSelectedRun() {

@@ -94,6 +94,7 @@ class MainWindow : public QMainWindow {
   QProgressBar* progress_bar_ = nullptr;
   QLabel* run_state_label_ = nullptr;
   QLabel* blocker_label_ = nullptr;
+  std::weak_ptr<RunRecord> shown_fields_run_;  ///< the run whose fields the field page shows
 };
 
 }  // namespace filmdyn::ui

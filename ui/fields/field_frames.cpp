@@ -15,6 +15,12 @@ const std::vector<FieldArrayInfo>& FieldArrays() {
   return arrays;
 }
 
+io::SurfaceField JointFieldFrames::Frame(size_t k) const {
+  io::SurfaceField f = mesh;
+  f.point_data = frames[k];
+  return f;
+}
+
 bool ExportFieldFrames(const FieldFrames& frames, const QString& directory, QString* error) {
   if (!QDir().mkpath(directory)) {
     if (error) *error = QObject::tr("Cannot create %1").arg(directory);
@@ -26,7 +32,7 @@ bool ExportFieldFrames(const FieldFrames& frames, const QString& directory, QStr
       for (size_t k = 0; k < joint.frames.size(); ++k) {
         char name[64];
         std::snprintf(name, sizeof name, "%s_%04zu.vtu", joint.name.c_str(), k);
-        io::WriteVtu(QDir(directory).filePath(name).toStdString(), joint.frames[k]);
+        io::WriteVtu(QDir(directory).filePath(name).toStdString(), joint.Frame(k));
         pvd.Add(k < frames.time.size() ? frames.time[k] : double(k), name);
       }
       pvd.Write(

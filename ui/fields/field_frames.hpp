@@ -12,9 +12,14 @@
 
 namespace filmdyn::ui {
 
+/// One joint: the surface (points [m], triangles; fixed over the run) and per frame the nodal
+/// arrays (name, values) in SI.
 struct JointFieldFrames {
-  std::string name;                      ///< "skirt", "big_end"
-  std::vector<io::SurfaceField> frames;  ///< one per crank angle
+  std::string name;       ///< "skirt", "big_end"
+  io::SurfaceField mesh;  ///< point_data unused
+  std::vector<std::vector<std::pair<std::string, std::vector<double>>>> frames;
+  /// Frame k as a complete surface with its arrays (for the VTU writer).
+  io::SurfaceField Frame(size_t k) const;
 };
 
 struct FieldFrames {

@@ -25,14 +25,17 @@ namespace filmdyn::ui {
 
 namespace {
 
-const std::vector<double>* FindArray(const io::SurfaceField& field, const std::string& name) {
-  for (const auto& [array_name, values] : field.point_data) {
+using FrameData = std::vector<std::pair<std::string, std::vector<double>>>;
+
+const std::vector<double>* FindArray(const FrameData& data, const std::string& name) {
+  for (const auto& [array_name, values] : data) {
     if (array_name == name) return &values;
   }
   return nullptr;
 }
 
-vtkSmartPointer<vtkPolyData> ToPolyData(const io::SurfaceField& field, const FieldArrayInfo& info) {
+vtkSmartPointer<vtkPolyData> ToPolyData(const io::SurfaceField& field, const FrameData& data,
+                                        const FieldArrayInfo& info) {
   auto poly = vtkSmartPointer<vtkPolyData>::New();
   vtkNew<vtkPoints> points;
   points->SetNumberOfPoints(vtkIdType(field.points.size()));
@@ -51,7 +54,7 @@ vtkSmartPointer<vtkPolyData> ToPolyData(const io::SurfaceField& field, const Fie
   vtkNew<vtkDoubleArray> array;
   array->SetName(info.name);
   array->SetNumberOfValues(vtkIdType(field.points.size()));
-  const std::vector<double>* values = FindArray(field, info.name);
+  const std::vector<double>* values = FindArray(data, info.name);
   for (size_t i = 0; i < field.points.size(); ++i) {
     array->SetValue(vtkIdType(i), values && i < values->size() ? (*values)[i] * info.scale : 0.0);
   }
@@ -170,7 +173,7 @@ void FieldView::updateRanges() {
   const FieldArrayInfo& info = FieldArrays()[size_t(std::max(0, array_combo_->currentIndex()))];
   for (size_t j = 0; j < views_.size() && j < frames_->joints.size(); ++j) {
     double lo = INFINITY, hi = -INFINITY;
-    for (const io::SurfaceField& f : frames_->joints[j].frames) {
+    for (const FrameData& f : frames_->joints[j].frames) {
       if (const auto* values = FindArray(f, info.name)) {
         for (double v : *values) {
           if (std::isfinite(v))
@@ -207,7 +210,7 @@ void FieldView::showFrame() {
     if (size_t(k) >= joint.frames.size()) continue;
     const QString title = QString::fromStdString(joint.name == "big_end" ? "big end" : joint.name) +
                           "\n" + QString::fromUtf8(info.title);
-    views_[j]->showField(ToPolyData(joint.frames[size_t(k)], info), info.name, title);
+    views_[j]->showField(ToPolyData(joint.mesh, joint.frames[size_t(k)], info), info.name, title);
   }
   emit crankAngleChanged(angle);
 }

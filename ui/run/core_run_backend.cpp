@@ -7,14 +7,16 @@
 #include "core/engine/run_job.hpp"
 #include "core/input_error.hpp"
 #include "core/io/case_file.hpp"
+#include "core/lubrication/bearing_solver.hpp"
+#include "core/lubrication/skirt_solver.hpp"
 #include "ui/run/run_backend.hpp"
 
 namespace filmdyn::ui {
 
 namespace {
 
-// results.csv columns from a crank-train sample (SPEC §4). The quantities of the lubricated
-// joints (MOFT, FPL, friction, journal eccentricity) are not in CrankTrainSample yet: NaN.
+// results.csv columns from a crank-train sample (SPEC §4): film quantities where a joint is
+// lubricated, the ideal joint's reactions otherwise; what a model lacks stays NaN (empty).
 RunSample ToRunSample(const engine::CrankTrainSample& cs, double crank_angle_deg) {
   RunSample out;
   out[Column::kCrankAngle] = crank_angle_deg;
@@ -28,8 +30,90 @@ RunSample ToRunSample(const engine::CrankTrainSample& cs, double crank_angle_deg
   out[Column::kBigEndForceX] = cs.big_end_force_on_rod.x();
   out[Column::kBigEndForceY] = cs.big_end_force_on_rod.y();
   out[Column::kGasForce] = cs.gas_force;
+  if (cs.skirt.present) {
+    out[Column::kSkirtNormalForce] = cs.skirt.normal_force;
+    out[Column::kSkirtFrictionForce] = cs.skirt.friction_force;
+    out[Column::kSkirtMoment] = cs.skirt.moment_about_pin;
+    out[Column::kSkirtMoft] = cs.skirt.moft;
+    out[Column::kSkirtFpl] = cs.skirt.fpl;
+  }
+  if (cs.bearing.present) {
+    out[Column::kJournalEccX] = cs.bearing.journal_ecc_rod.x();
+    out[Column::kJournalEccY] = cs.bearing.journal_ecc_rod.y();
+    out[Column::kBearingEps] = cs.bearing.eps;
+    out[Column::kBearingMoft] = cs.bearing.moft;
+    out[Column::kBearingFpl] = cs.bearing.fpl;
+    out[Column::kBigEndForceX] = cs.bearing.force_on_rod.x();
+    out[Column::kBigEndForceY] = cs.bearing.force_on_rod.y();
+  }
   return out;
 }
+
+// Collects the film fields of the cycle being computed (a new cycle starts afresh), keeping at
+// most kMaxFrames per cycle so a 1 °CA run does not hold 720 copies in memory.
+class FieldCollector {
+ public:
+  static constexpr int kMaxFrames = 240;
+
+  FieldCollector(const engine::EngineCase& c, int steps_per_cycle)
+      : skirt_radius_(c.skirt.piston_radius),
+        bearing_radius_(c.big_end.bearing_radius),
+        stride_(std::max(1, (steps_per_cycle + kMaxFrames - 1) / kMaxFrames)) {}
+
+  void Add(const engine::FieldFrame& frame) {
+    if (frame.cycle != cycle_) {
+      cycle_ = frame.cycle;
+      frames_ = std::make_shared<FieldFrames>();
+    }
+    if (frame.step % stride_ != 0) return;
+    if (frames_->joints.empty()) {
+      if (frame.skirt)
+        frames_->joints.push_back(MakeJoint("skirt", frame.skirt->mesh(), skirt_radius_, M_PI));
+      if (frame.bearing)
+        frames_->joints.push_back(
+            MakeJoint("big_end", frame.bearing->mesh(), bearing_radius_, 2 * M_PI));
+    }
+    frames_->crank_angle_deg.push_back(frame.crank_angle_deg);
+    frames_->time.push_back(frame.time);
+    size_t j = 0;
+    if (frame.skirt)
+      Append(frames_->joints[j++], frame.skirt->fields(), frame.skirt->film_thickness());
+    if (frame.bearing)
+      Append(frames_->joints[j++], frame.bearing->fields(), frame.bearing->film_thickness());
+  }
+
+  std::shared_ptr<const FieldFrames> Result() const { return frames_; }
+
+ private:
+  // Unrolls the film plane (x = R·angle, y axial) onto the cylinder of radius R.
+  static JointFieldFrames MakeJoint(const std::string& name, const lubrication::TriMesh& mesh,
+                                    double radius, double max_angle) {
+    JointFieldFrames joint;
+    joint.name = name;
+    for (int n = 0; n < mesh.NodeCount(); ++n) {
+      const double angle = std::min(mesh.x[size_t(n)] / radius, max_angle);
+      joint.mesh.points.push_back(
+          {radius * std::cos(angle), radius * std::sin(angle), mesh.y[size_t(n)]});
+    }
+    joint.mesh.triangles = mesh.triangles;
+    return joint;
+  }
+
+  static void Append(JointFieldFrames& joint, const lubrication::ReynoldsSolution& fields,
+                     const Eigen::VectorXd& film) {
+    auto vec = [](const Eigen::VectorXd& v) {
+      return std::vector<double>(v.data(), v.data() + v.size());
+    };
+    joint.frames.push_back({{"pressure", vec(fields.pressure)},
+                            {"contact_pressure", vec(fields.contact_pressure)},
+                            {"film_thickness", vec(film)}});
+  }
+
+  double skirt_radius_, bearing_radius_;
+  int stride_;
+  int cycle_ = 0;
+  std::shared_ptr<FieldFrames> frames_;
+};
 
 engine::PressureCurve CurveForSpeed(const engine::EngineCase& c, double rpm) {
   // Core's rule: the curve at that speed or a blend of the two neighbouring speeds; the editor
@@ -49,6 +133,11 @@ RunBackend CoreRunBackend() {
     engine::ApplyModel(model, &c);
     engine::RunConfig config =
         engine::MakeRunConfig(c, model, request.rpm, CurveForSpeed(c, request.rpm));
+    const int steps_per_cycle = std::max(1, int(std::lround(4 * M_PI / c.solver.output_interval)));
+    FieldCollector collector(c, steps_per_cycle);
+    if (model != engine::Model::kIdeal) {
+      config.field_callback = [&collector](const engine::FieldFrame& f) { collector.Add(f); };
+    }
     int cycle = 0;
     const engine::RunMonitor monitor = [&](const engine::RunProgress& p) {
       if (p.cycle != cycle) {
@@ -74,20 +163,22 @@ RunBackend CoreRunBackend() {
       reported.push_back(ToRunSample(result.samples[k], deg > 719.999999 ? 0.0 : deg));
     }
     sink.Report(std::move(reported));
+    if (auto fields = collector.Result(); fields && !fields->empty()) sink.ReportFields(fields);
     sink.Statistic("cycles", result.cycles);
     sink.Statistic("cycles to steady state", result.cycles_to_steady_state);
     sink.Statistic("cycle change", result.cycle_change);
     sink.Statistic("steps", double(result.stats.steps));
     sink.Statistic("rejected steps", double(result.stats.rejected_steps));
     sink.Statistic("max constraint violation", result.max_constraint_violation);
+    sink.Statistic("Reynolds solves", double(result.reynolds_solves));
     switch (result.status) {
       case engine::RunStatus::kCompleted:
       case engine::RunStatus::kCancelled:
         return;
       case engine::RunStatus::kNotConverged:
         // Results are usable but not periodic: a finished run whose reason says so.
-        sink.Statistic("not converged", 1.0);
-        throw std::runtime_error(result.message);
+        sink.Warn(result.message);
+        return;
       case engine::RunStatus::kTimeLimit:
       case engine::RunStatus::kFailed:
         throw std::runtime_error(result.message);

@@ -6,10 +6,12 @@
 /// their own.
 #include <atomic>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "core/engine/engine_case.hpp"
+#include "ui/fields/field_frames.hpp"
 #include "ui/run/result_columns.hpp"
 
 namespace filmdyn::ui {
@@ -42,6 +44,10 @@ class RunSink {
   virtual void Statistic(const std::string& name, double value) = 0;
   /// The run's reported cycle (what results.csv holds), replacing the streamed samples.
   virtual void Report(std::vector<RunSample> reported_cycle) = 0;
+  /// A caveat on usable results (e.g. no periodic steady state within max_cycles).
+  virtual void Warn(const std::string& message) { (void)message; }
+  /// The film fields of the reported cycle (lubricated joints only).
+  virtual void ReportFields(std::shared_ptr<const FieldFrames> fields) { (void)fields; }
 };
 
 using RunBackend =

@@ -30,6 +30,10 @@ class NotifyingSink : public RunSink {
   void Statistic(const std::string& name, double value) override {
     record_->Statistic(name, value);
   }
+  void Warn(const std::string& message) override { record_->Warn(message); }
+  void ReportFields(std::shared_ptr<const FieldFrames> fields) override {
+    record_->ReportFields(std::move(fields));
+  }
   void Report(std::vector<RunSample> reported_cycle) override {
     record_->Report(std::move(reported_cycle));
     Notify();
@@ -83,7 +87,7 @@ RunHandle RunController::start(RunRequest request) {
       if (!backend) throw std::runtime_error("no solver backend is configured");
       backend(raw->request(), cancel_, sink);
       raw->finish(cancel_ ? RunStatus::kCancelled : RunStatus::kFinished,
-                  cancel_ ? tr("cancelled by the user") : QString());
+                  cancel_ ? tr("cancelled by the user") : raw->warning());
     } catch (const InputError& e) {
       raw->finish(RunStatus::kFailed, tr("invalid input: %1").arg(e.what()));
     } catch (const std::exception& e) {

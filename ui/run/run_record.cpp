@@ -66,6 +66,26 @@ void RunRecord::Report(std::vector<RunSample> reported_cycle) {
   ++version_;
 }
 
+void RunRecord::ReportFields(std::shared_ptr<const FieldFrames> fields) {
+  std::lock_guard lock(mutex_);
+  fields_ = std::move(fields);
+}
+
+void RunRecord::Warn(const std::string& message) {
+  std::lock_guard lock(mutex_);
+  warning_ = QString::fromStdString(message);
+}
+
+QString RunRecord::warning() const {
+  std::lock_guard lock(mutex_);
+  return warning_;
+}
+
+std::shared_ptr<const FieldFrames> RunRecord::fields() const {
+  std::lock_guard lock(mutex_);
+  return fields_;
+}
+
 std::vector<RunSample> RunRecord::samples() const {
   std::lock_guard lock(mutex_);
   if (has_report_ && !reported_.empty()) return reported_;

@@ -32,6 +32,11 @@ class RunRecord : public RunSink {
   void Progress(const RunProgress& progress) override;
   void Statistic(const std::string& name, double value) override;
   void Report(std::vector<RunSample> reported_cycle) override;
+  void ReportFields(std::shared_ptr<const FieldFrames> fields) override;
+  void Warn(const std::string& message) override;
+  QString warning() const;
+  /// The reported cycle's film fields, or nullptr (ideal joints, or not finished).
+  std::shared_ptr<const FieldFrames> fields() const;
 
   /// The samples to show: the reported cycle once the backend reported it, otherwise the cycle
   /// in progress (or the last complete one at a cycle start). Copy, safe on any thread.
@@ -57,6 +62,8 @@ class RunRecord : public RunSink {
   std::vector<RunSample> last_complete_cycle_;
   std::vector<RunSample> reported_;
   bool has_report_ = false;
+  std::shared_ptr<const FieldFrames> fields_;
+  QString warning_;
   RunProgress progress_;
   std::map<std::string, double> statistics_;
   RunStatus status_ = RunStatus::kRunning;

@@ -24,21 +24,14 @@
 
 namespace {
 
-// A cylindrical surface (angle span × width) triangulated on a grid, with a pressure bump that
-// moves with the frame index, a contact pressure and a film thickness.
-filmdyn::io::SurfaceField Surface(double radius, double span, double width, double bump,
-                                  int n_angle, int n_axial) {
+// A cylindrical surface (angle span × width) triangulated on a grid.
+filmdyn::io::SurfaceField Surface(double radius, double span, double width, int n_angle,
+                                  int n_axial) {
   filmdyn::io::SurfaceField f;
-  std::vector<double> p, pc, h;
   for (int j = 0; j < n_axial; ++j) {
     for (int i = 0; i < n_angle; ++i) {
       const double a = span * i / (n_angle - 1), z = width * j / (n_axial - 1);
       f.points.push_back({radius * std::cos(a), radius * std::sin(a), z});
-      const double s = a / span - bump;
-      const double axial = std::sin(M_PI * z / width);
-      p.push_back(20e6 * std::exp(-30 * s * s) * axial);
-      pc.push_back(1e6 * std::exp(-200 * s * s) * axial);
-      h.push_back(5e-6 + 20e-6 * s * s);
     }
   }
   for (int j = 0; j + 1 < n_axial; ++j) {
@@ -48,19 +41,40 @@ filmdyn::io::SurfaceField Surface(double radius, double span, double width, doub
       f.triangles.push_back({a, a + n_angle + 1, a + n_angle});
     }
   }
-  f.point_data = {{"pressure", p}, {"contact_pressure", pc}, {"film_thickness", h}};
   return f;
+}
+
+// A pressure bump at `bump` (fraction of the span), a contact pressure and a film thickness.
+std::vector<std::pair<std::string, std::vector<double>>> Arrays(double span, double width,
+                                                                int n_angle, int n_axial,
+                                                                double bump) {
+  std::vector<double> p, pc, h;
+  for (int j = 0; j < n_axial; ++j) {
+    for (int i = 0; i < n_angle; ++i) {
+      const double a = span * i / (n_angle - 1), z = width * j / (n_axial - 1);
+      const double s = a / span - bump;
+      const double axial = std::sin(M_PI * z / width);
+      p.push_back(20e6 * std::exp(-30 * s * s) * axial);
+      pc.push_back(1e6 * std::exp(-200 * s * s) * axial);
+      h.push_back(5e-6 + 20e-6 * s * s);
+    }
+  }
+  return {{"pressure", p}, {"contact_pressure", pc}, {"film_thickness", h}};
 }
 
 std::shared_ptr<filmdyn::ui::FieldFrames> SyntheticFrames(int count) {
   auto frames = std::make_shared<filmdyn::ui::FieldFrames>();
-  filmdyn::ui::JointFieldFrames skirt{"skirt", {}}, bearing{"big_end", {}};
+  filmdyn::ui::JointFieldFrames skirt, bearing;
+  skirt.name = "skirt";
+  bearing.name = "big_end";
+  skirt.mesh = Surface(36.5e-3, M_PI, 28e-3, 40, 16);
+  bearing.mesh = Surface(15e-3, 2 * M_PI, 22e-3, 60, 12);
   for (int k = 0; k < count; ++k) {
     frames->crank_angle_deg.push_back(720.0 * k / count);
     frames->time.push_back(1e-4 * k);
     const double bump = 0.2 + 0.6 * k / std::max(1, count - 1);
-    skirt.frames.push_back(Surface(36.5e-3, M_PI, 28e-3, bump, 40, 16));
-    bearing.frames.push_back(Surface(15e-3, 2 * M_PI, 22e-3, bump, 60, 12));
+    skirt.frames.push_back(Arrays(M_PI, 28e-3, 40, 16, bump));
+    bearing.frames.push_back(Arrays(2 * M_PI, 22e-3, 60, 12, bump));
   }
   frames->joints = {skirt, bearing};
   return frames;

@@ -1,12 +1,13 @@
-// The whole main window on a real X server after two real runs (core's run job, Ideal model,
-// default case at 6000 and 4000 rpm, overlaid): every page draws, the plots hold both runs, the
-// run table compares them. With FILMDYN_SCREENSHOT_DIR set it also saves the pictures used in
-// docs/ (scripts/screenshots.sh).
+// The whole main window on a real X server after real runs (core's run job: Ideal model at 6000
+// and 4000 rpm overlaid, then a coupled Skirt-LBRBE run with its pressure fields): every page
+// draws, the plots hold both runs, the run table compares them. With FILMDYN_SCREENSHOT_DIR set it
+// also saves the pictures used in docs/ (scripts/screenshots.sh).
 #include <QAction>
 #include <QDir>
 #include <QImage>
 #include <QLabel>
 #include <QSettings>
+#include <QSlider>
 #include <QStandardPaths>
 #include <QStatusBar>
 #include <QTabWidget>
@@ -17,6 +18,7 @@
 #include "ui/case_editor/case_editor.hpp"
 #include "ui/case_editor/case_parameters.hpp"
 #include "ui/case_editor/parameter_table_model.hpp"
+#include "ui/fields/field_view.hpp"
 #include "ui/main_window.hpp"
 #include "ui/plots/plot_panel.hpp"
 #include "ui/run/run_controller.hpp"
@@ -94,6 +96,39 @@ class TestMainWindowAfterRun : public QObject {
     QVERIFY(!window.plotPanel()->isRunVisible(first));
     window.runTable()->item(0, filmdyn::ui::RunTable::kShow)->setCheckState(Qt::Checked);
     QVERIFY(window.plotPanel()->isRunVisible(first));
+
+    // A real coupled run (Skirt-LBRBE, coarse output, two cycles): film quantities stream into
+    // the plots and the reported cycle's pressure fields reach the 3D view.
+    {
+      auto c = window.document()->engineCase();
+      filmdyn::ui::ApplyRunModel(c, "skirt-lbrbe");
+      c.operating.rpm = 6000;
+      c.solver.output_interval = 4.0 * M_PI / 180.0;
+      c.solver.max_cycles = 2;
+      window.document()->edit(c, "coupled");
+      QVERIFY(window.runAction()->isEnabled());
+      window.runAction()->trigger();
+      QVERIFY(finished.wait(400000));
+      const RunHandle run = finished.last().first().value<RunHandle>();
+      qInfo("coupled run: %s %s", qPrintable(filmdyn::ui::RunStatusText(run->status())),
+            qPrintable(run->reason()));
+      QCOMPARE(run->status(), filmdyn::ui::RunStatus::kFinished);
+      const auto samples = run->samples();
+      QCOMPARE(int(samples.size()), 180);
+      QVERIFY(std::isfinite(samples[90][filmdyn::ui::Column::kSkirtMoft]));
+      QVERIFY(std::isfinite(samples[90][filmdyn::ui::Column::kBearingMoft]));
+      QVERIFY(run->fields() != nullptr);
+      QCOMPARE(int(run->fields()->joints.size()), 2);
+      window.runTable()->selectRow(2);
+      window.workspace()->setCurrentIndex(1);
+      QTest::qWait(300);
+      Save(&window, "run_results_coupled.png");
+      window.workspace()->setCurrentIndex(2);
+      auto* field_view = window.fieldView();
+      field_view->slider()->setValue(95);  // 380 °CA, just after firing TDC
+      QTest::qWait(500);
+      Save(&window, "pressure_fields.png");
+    }
 
     // An invalid value: the cell is marked, Run is disabled with the reason in the status bar.
     window.workspace()->setCurrentIndex(0);
