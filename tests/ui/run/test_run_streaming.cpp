@@ -11,6 +11,7 @@
 #include <QThread>
 #include <QTimer>
 #include <QtTest>
+#include <cmath>
 
 #include "ui/case_editor/case_document.hpp"
 #include "ui/case_editor/case_json.hpp"
@@ -148,6 +149,46 @@ class TestRunStreaming : public QObject {
     QVERIFY(window.runAction()->isEnabled());
     QVERIFY(!window.cancelAction()->isEnabled());
     QCOMPARE(window.progressBar()->value(), 1000);
+  }
+
+  void coupledRunOnCoarseMeshStreamsFilmQuantities() {
+    MainWindow window;
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    auto c = window.document()->engineCase();
+    filmdyn::ui::ApplyRunModel(c, "skirt-lbrbe");
+    c.skirt.mesh_thrust = c.skirt.mesh_anti = 8;
+    c.skirt.mesh_relief = 1;
+    c.skirt.mesh_axial = 8;
+    c.big_end.mesh_theta = 24;
+    c.big_end.mesh_z = 4;
+    c.solver.output_interval = 8.0 * M_PI / 180.0;
+    c.solver.max_cycles = 1;
+    window.document()->edit(c, "coarse coupled");
+    QVERIFY2(window.runAction()->isEnabled(), qPrintable(window.document()->runBlocker()));
+    QSignalSpy finished(window.runController(), &filmdyn::ui::RunController::runFinished);
+    Heartbeat heartbeat;
+    int moft_points_while_running = 0;
+    connect(window.runController(), &filmdyn::ui::RunController::runUpdated, this,
+            [&](const RunHandle& run) {
+              if (run->status() != RunStatus::kRunning) return;
+              int n = 0;
+              for (const auto& s : run->samples())
+                n += std::isfinite(s[filmdyn::ui::Column::kSkirtMoft]);
+              moft_points_while_running = std::max(moft_points_while_running, n);
+            });
+    window.runAction()->trigger();
+    QVERIFY(finished.wait(300000));
+    const RunHandle run = finished.first().first().value<RunHandle>();
+    qInfo("coupled coarse run: %s '%s' in %.1f s, max GUI gap %lld ms, %d film points streamed",
+          qPrintable(filmdyn::ui::RunStatusText(run->status())), qPrintable(run->reason()),
+          run->elapsedSeconds(), heartbeat.maxGap(), moft_points_while_running);
+    QCOMPARE(run->status(), RunStatus::kFinished);
+    QVERIFY(moft_points_while_running > 0);
+    QVERIFY2(heartbeat.maxGap() < 250, "the GUI thread was blocked");
+    QCOMPARE(int(run->samples().size()), 90);
+    QVERIFY(run->fields() != nullptr);
+    QCOMPARE(int(run->fields()->crank_angle_deg.size()), 90);
   }
 
   void cancelStopsTheRun() {
