@@ -11,6 +11,7 @@ const std::vector<Command>& AllCommands() {
     list.push_back(MakeRunCommand());
     list.push_back(MakeSweepCommand());
     list.push_back(MakeBearingCommand());
+    list.push_back(MakeValidateCommand());
     list.push_back(MakeVersionsCommand());
     return list;
   }();

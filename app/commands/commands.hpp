@@ -9,5 +9,6 @@ Command MakeVersionsCommand();
 Command MakeBearingCommand();
 Command MakeRunCommand();
 Command MakeSweepCommand();
+Command MakeValidateCommand();
 
 }  // namespace filmdyn::cli

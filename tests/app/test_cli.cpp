@@ -2,9 +2,11 @@
 // one-line errors with exit code 2 for bad input.
 #include <QFileInfo>
 #include <QImage>
+#include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
+#include <QSet>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -156,6 +158,32 @@ class TestCli : public QObject {
     const Result result = Run({"sweep", "--jobs", "0"});
     QCOMPARE(result.exit_code, 2);
     QVERIFY(result.err.contains("--jobs"));
+  }
+
+  void validateRunsEverySuiteAndPasses() {
+    const Result result = Run({"validate", "--json"});
+    QCOMPARE(result.exit_code, 0);
+    const QJsonArray rows = QJsonDocument::fromJson(result.out.toUtf8()).array();
+    QVERIFY(rows.size() >= 50);
+    QSet<QString> suites;
+    for (const QJsonValue& row : rows) {
+      suites.insert(row["suite"].toString());
+      QVERIFY2(row["pass"].toBool(), qPrintable(row["case"].toString()));
+      QVERIFY(row["error"].toDouble() <= row["tolerance"].toDouble());
+    }
+    QVERIFY(suites.contains("multibody"));
+    QVERIFY(suites.contains("bearing"));
+    const Result table = Run({"validate", "--suite", "multibody"});
+    QCOMPARE(table.exit_code, 0);
+    QVERIFY(table.out.contains("cases pass"));
+    QVERIFY(!table.out.contains("Raimondi"));
+  }
+
+  void validateRejectsUnknownSuite() {
+    const Result result = Run({"validate", "--suite", "nope"});
+    QCOMPARE(result.exit_code, 2);
+    QVERIFY(result.err.contains("--suite = nope"));
+    QVERIFY(result.err.contains("lubrication, multibody"));
   }
 
   // The parser itself, in process.

@@ -1,0 +1,57 @@
+// `filmdyn validate`: runs the built-in verification cases (published tables and closed forms)
+// and prints one row each: suite, case, ours, reference, error, tolerance, pass.
+#include <cstdio>
+#include <nlohmann/json.hpp>
+
+#include "app/commands/commands.hpp"
+#include "core/verification/all_suites.hpp"
+
+namespace filmdyn::cli {
+
+Command MakeValidateCommand() {
+  Command command;
+  command.name = "validate";
+  command.summary = "run the built-in verification cases against published solutions";
+  command.options = {{"suite", "NAME", "only this suite (lubrication, multibody)", true},
+                     {"json", "", "print the rows as one JSON array"}};
+  command.details =
+      "Exit status 0 when every row is within its tolerance, 1 otherwise.\n"
+      "Error is relative (|ours - reference| / |reference|) unless the row says 'abs'.";
+  command.run = [](const Args& args, Streams& streams) {
+    const auto rows = verification::RunSuites(args.Values("suite"));
+    int failed = 0;
+    for (const auto& row : rows) failed += row.Pass() ? 0 : 1;
+    if (args.Has("json")) {
+      nlohmann::json array = nlohmann::json::array();
+      for (const auto& row : rows) {
+        array.push_back({{"suite", row.suite},
+                         {"case", row.name},
+                         {"reference_source", row.reference_source},
+                         {"ours", row.ours},
+                         {"reference", row.reference},
+                         {"error", row.Error()},
+                         {"relative", row.relative},
+                         {"tolerance", row.tolerance},
+                         {"pass", row.Pass()}});
+      }
+      streams.out << array.dump(2) << "\n";
+    } else {
+      char line[512];
+      std::snprintf(line, sizeof line, "%-12s %-66s %14s %14s %11s %11s  %s\n", "suite", "case",
+                    "ours", "reference", "error", "tolerance", "pass");
+      streams.out << line;
+      for (const auto& row : rows) {
+        const std::string kind = row.relative ? "" : " abs";
+        std::snprintf(line, sizeof line, "%-12s %-66s %14.6g %14.6g %11.3g %11.3g%s  %s\n",
+                      row.suite.c_str(), row.name.c_str(), row.ours, row.reference, row.Error(),
+                      row.tolerance, kind.c_str(), row.Pass() ? "pass" : "FAIL");
+        streams.out << line;
+      }
+      streams.out << rows.size() - failed << " of " << rows.size() << " cases pass\n";
+    }
+    return failed == 0 ? 0 : 1;
+  };
+  return command;
+}
+
+}  // namespace filmdyn::cli

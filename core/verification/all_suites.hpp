@@ -1,0 +1,18 @@
+#pragma once
+/// @file Every built-in verification suite, as run by `filmdyn validate`: each domain contributes
+/// its rows (lubrication: finite-bearing tables, Ocvirk, squeeze, pocketed slider; multibody:
+/// exact slider-crank kinematics and Newton–Euler reactions).
+#include <string>
+#include <vector>
+
+#include "core/verification/validation_row.hpp"
+
+namespace filmdyn::verification {
+
+/// Names of the suites, in the order they run.
+std::vector<std::string> SuiteNames();
+
+/// Runs the named suites (all when `suites` is empty). Throws InputError naming an unknown suite.
+std::vector<ValidationRow> RunSuites(const std::vector<std::string>& suites);
+
+}  // namespace filmdyn::verification
