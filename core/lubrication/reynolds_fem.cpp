@@ -300,7 +300,8 @@ bool ReynoldsFem::SolveReynoldsLcp(bool unconstrained) {
     active_ = prev_active_;
   } else {
     // Cold start: nodes with a net sink (f_k < 0, e.g. a diverging wedge) start cavitated.
-    for (int k = 0; k < n; ++k) active_[k] = f_[k] < 0.0;
+    const bool sinks = options_.cold_start == ReynoldsOptions::ColdStart::kSinkNodes;
+    for (int k = 0; k < n; ++k) active_[k] = sinks && f_[k] < 0.0;
   }
   for (int k = 0; k < n; ++k)
     if (fixed_[k]) active_[k] = 0;

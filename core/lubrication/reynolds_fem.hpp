@@ -51,6 +51,11 @@ struct ReynoldsOptions {
   LdltBackend backend = LdltBackend::kEigenSimplicial;
   int max_iterations = 200;  ///< active-set iterations before giving up (status kNotConverged)
   bool warm_start = true;    ///< start the active set from the previous solve's
+  /// Active set of a cold start (no previous solve): kSinkNodes = nodes with f_k < 0 (a
+  /// diverging wedge; fewer iterations on journal bearings), kUnconstrained = none, i.e. the
+  /// first iteration is the unconstrained solve (fewer iterations on skirts, measured).
+  enum class ColdStart { kSinkNodes, kUnconstrained };
+  ColdStart cold_start = ColdStart::kSinkNodes;
 };
 
 /// Scalars of one solve. Nodal inputs are set through ReynoldsFem's mutable accessors.

@@ -40,7 +40,7 @@ struct SkirtConfig {
   SkirtGeometry geometry;
   double viscosity = 0.0;  ///< [Pa s]
   SkirtMeshSpec mesh;
-  ReynoldsOptions solver;
+  ReynoldsOptions solver{.cold_start = ReynoldsOptions::ColdStart::kUnconstrained};
   /// Roughness factors; nullptr = smooth. Surface 1 = skirt, surface 2 = liner.
   std::shared_ptr<const FilmFactorModel> film;
   /// Films thinner than this are clamped (reported in the result) so the solve never fails on
