@@ -11,6 +11,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QProgressBar>
+#include <QSaveFile>
 #include <QSettings>
 #include <QSplitter>
 #include <QStatusBar>
@@ -135,7 +136,9 @@ void MainWindow::createMenus() {
   export_plots->setShortcut(QKeySequence(tr("Ctrl+E")));
   export_menu->addAction(tr("&Results of the selected run (CSV)…"), this,
                          &MainWindow::exportResultsInteractive);
-  export_menu->addAction(tr("Pressure &fields (VTU/PVD)…"), this,
+  export_menu->addAction(tr("Run &folder of the selected run (as filmdyn run)…"), this,
+                         &MainWindow::exportRunFolderInteractive);
+  export_menu->addAction(tr("Pressure &fields shown (VTU/PVD)…"), this,
                          &MainWindow::exportFieldsInteractive);
   export_menu->addAction(tr("Cylinder pressure curve (CSV)…"), case_editor_,
                          [this] { case_editor_->exportPressureCsv(); });
@@ -407,7 +410,43 @@ bool MainWindow::exportResultsCsv(const RunHandle& run, const QString& path, QSt
     if (error) *error = tr("no run to export");
     return false;
   }
-  return WriteResultsCsv(run->samples(), path, error);
+  const QByteArray core_csv = run->resultsCsv();
+  if (core_csv.isEmpty()) return WriteResultsCsv(run->samples(), path, error);
+  QSaveFile file(path);
+  if (!file.open(QIODevice::WriteOnly) || file.write(core_csv) != core_csv.size() ||
+      !file.commit()) {
+    if (error) *error = tr("Cannot write %1: %2").arg(path, file.errorString());
+    return false;
+  }
+  return true;
+}
+
+bool MainWindow::exportRunFolder(const RunHandle& run, const QString& directory, QString* error) {
+  if (!run) {
+    if (error) *error = tr("no run to export");
+    return false;
+  }
+  return run->writeRunFolder(directory, error);
+}
+
+void MainWindow::exportRunFolderInteractive() {
+  RunHandle run = run_table_->currentRun();
+  if (!run) {
+    statusBar()->showMessage(tr("No run to export yet"), 5000);
+    return;
+  }
+  QSettings settings;
+  const QString dir = QFileDialog::getExistingDirectory(
+      this, tr("Write the run folder into"), settings.value("paths/export_dir").toString());
+  if (dir.isEmpty()) return;
+  settings.setValue("paths/export_dir", dir);
+  QString error;
+  if (exportRunFolder(run, dir, &error)) {
+    statusBar()->showMessage(tr("Wrote results.csv, summary.json and fields/ to %1").arg(dir),
+                             8000);
+  } else {
+    QMessageBox::warning(this, tr("Export failed"), error);
+  }
 }
 
 bool MainWindow::exportAllPlots(const QString& directory, const QStringList& suffixes,

@@ -47,7 +47,11 @@ class MainWindow : public QMainWindow {
   /// Non-interactive operations (menus call them after asking; tests and scripts call directly).
   bool openProject(const QString& path, QString* error = nullptr);
   bool saveProjectAs(const QString& path, QString* error = nullptr);
+  /// results.csv in core's format (as `filmdyn run` writes it; SPEC columns first).
   bool exportResultsCsv(const RunHandle& run, const QString& path, QString* error = nullptr);
+  /// The run's output folder exactly as `filmdyn run --out DIR` writes it (results.csv,
+  /// summary.json, fields/).
+  bool exportRunFolder(const RunHandle& run, const QString& directory, QString* error = nullptr);
   /// Writes every plot as <dir>/<plot id>.<suffix> for each suffix in {png, svg, pdf}.
   bool exportAllPlots(const QString& directory, const QStringList& suffixes,
                       QString* error = nullptr);
@@ -62,6 +66,7 @@ class MainWindow : public QMainWindow {
   void exportPlotsInteractive();
   void exportResultsInteractive();
   void exportFieldsInteractive();
+  void exportRunFolderInteractive();
   void removeSelectedRun();
 
  protected:

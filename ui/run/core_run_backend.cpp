@@ -2,11 +2,16 @@
 // makes; only the monitor differs. The monitor streams every output step into the sink; the
 // reported cycle of the result replaces the streamed samples at the end.
 #include <cmath>
+#include <filesystem>
+#include <optional>
+#include <sstream>
 #include <stdexcept>
 
 #include "core/engine/run_job.hpp"
 #include "core/input_error.hpp"
 #include "core/io/case_file.hpp"
+#include "core/io/field_output.hpp"
+#include "core/io/results_writer.hpp"
 #include "core/lubrication/bearing_solver.hpp"
 #include "core/lubrication/skirt_solver.hpp"
 #include "ui/run/run_backend.hpp"
@@ -15,36 +20,35 @@ namespace filmdyn::ui {
 
 namespace {
 
-// results.csv columns from a crank-train sample (SPEC §4): film quantities where a joint is
-// lubricated, the ideal joint's reactions otherwise; what a model lacks stays NaN (empty).
-RunSample ToRunSample(const engine::CrankTrainSample& cs, double crank_angle_deg) {
+// results.csv columns from a crank-train sample: core's row (io::RowFromSample, what
+// `filmdyn run` writes), so the GUI and the headless files agree; empty cells stay NaN.
+RunSample ToRunSample(const engine::CrankTrainSample& cs, engine::Model model,
+                      double cycle_start_time) {
+  const io::OutputRow row = io::RowFromSample(cs, model, cycle_start_time);
+  const std::optional<double> io::OutputRow::*columns[kColumnCount] = {
+      &io::OutputRow::crank_angle_deg,
+      &io::OutputRow::time,
+      &io::OutputRow::piston_lateral,
+      &io::OutputRow::piston_tilt,
+      &io::OutputRow::piston_lateral_velocity,
+      &io::OutputRow::piston_tilt_rate,
+      &io::OutputRow::skirt_normal_force,
+      &io::OutputRow::skirt_friction_force,
+      &io::OutputRow::skirt_moment,
+      &io::OutputRow::skirt_moft,
+      &io::OutputRow::skirt_fpl,
+      &io::OutputRow::journal_ecc_x,
+      &io::OutputRow::journal_ecc_y,
+      &io::OutputRow::bearing_eps,
+      &io::OutputRow::bearing_moft,
+      &io::OutputRow::bearing_fpl,
+      &io::OutputRow::bigend_force_x,
+      &io::OutputRow::bigend_force_y,
+      &io::OutputRow::gas_force};
   RunSample out;
-  out[Column::kCrankAngle] = crank_angle_deg;
-  out[Column::kTime] = cs.time;
-  out[Column::kPistonLateral] = cs.piston_lateral;
-  out[Column::kPistonTilt] = cs.piston_tilt;
-  out[Column::kPistonLateralVelocity] = cs.piston_lateral_velocity;
-  out[Column::kPistonTiltRate] = cs.piston_tilt_rate;
-  out[Column::kSkirtNormalForce] = cs.liner_force_on_piston.x();
-  out[Column::kSkirtMoment] = cs.liner_moment_about_pin;
-  out[Column::kBigEndForceX] = cs.big_end_force_on_rod.x();
-  out[Column::kBigEndForceY] = cs.big_end_force_on_rod.y();
-  out[Column::kGasForce] = cs.gas_force;
-  if (cs.skirt.present) {
-    out[Column::kSkirtNormalForce] = cs.skirt.normal_force;
-    out[Column::kSkirtFrictionForce] = cs.skirt.friction_force;
-    out[Column::kSkirtMoment] = cs.skirt.moment_about_pin;
-    out[Column::kSkirtMoft] = cs.skirt.moft;
-    out[Column::kSkirtFpl] = cs.skirt.fpl;
-  }
-  if (cs.bearing.present) {
-    out[Column::kJournalEccX] = cs.bearing.journal_ecc_rod.x();
-    out[Column::kJournalEccY] = cs.bearing.journal_ecc_rod.y();
-    out[Column::kBearingEps] = cs.bearing.eps;
-    out[Column::kBearingMoft] = cs.bearing.moft;
-    out[Column::kBearingFpl] = cs.bearing.fpl;
-    out[Column::kBigEndForceX] = cs.bearing.force_on_rod.x();
-    out[Column::kBigEndForceY] = cs.bearing.force_on_rod.y();
+  for (int i = 0; i < kColumnCount; ++i) {
+    const std::optional<double>& v = row.*columns[i];
+    if (v) out.values[size_t(i)] = *v;
   }
   return out;
 }
@@ -135,16 +139,23 @@ RunBackend CoreRunBackend() {
         engine::MakeRunConfig(c, model, request.rpm, CurveForSpeed(c, request.rpm));
     const int steps_per_cycle = std::max(1, int(std::lround(4 * M_PI / c.solver.output_interval)));
     FieldCollector collector(c, steps_per_cycle);
+    // The GUI's frames and core's recorder (for the run folder's fields/, as `filmdyn run`).
+    auto recorder = std::make_shared<io::FieldRecorder>();
     if (model != engine::Model::kIdeal) {
-      config.field_callback = [&collector](const engine::FieldFrame& f) { collector.Add(f); };
+      config.field_callback = [&collector,
+                               record = recorder->Callback()](const engine::FieldFrame& f) {
+        collector.Add(f);
+        record(f);
+      };
     }
+    const double cycle_time = 4 * M_PI / (request.rpm * M_PI / 30.0);
     int cycle = 0;
     const engine::RunMonitor monitor = [&](const engine::RunProgress& p) {
       if (p.cycle != cycle) {
         cycle = p.cycle;
         sink.BeginCycle(cycle);
       }
-      if (p.sample) sink.Append(ToRunSample(*p.sample, p.crank_angle_deg));
+      if (p.sample) sink.Append(ToRunSample(*p.sample, model, (p.cycle - 1) * cycle_time));
       RunProgress progress;
       progress.cycle = p.cycle;
       progress.max_cycles = p.max_cycles;
@@ -156,13 +167,29 @@ RunBackend CoreRunBackend() {
     };
     const engine::RunResult result = engine::RunJob(config, monitor, &cancel);
     std::vector<RunSample> reported;
-    const size_t n = result.samples.size();
-    for (size_t k = 0; k < n; ++k) {
-      // Crank angle within the cycle from the time (imposed speed, 6·rpm °/s, 0 °CA at t = 0).
-      const double deg = std::fmod(result.samples[k].time * 6.0 * request.rpm, 720.0);
-      reported.push_back(ToRunSample(result.samples[k], deg > 719.999999 ? 0.0 : deg));
+    const double report_start = result.samples.empty() ? 0.0 : result.samples.front().time;
+    for (const engine::CrankTrainSample& sample : result.samples) {
+      reported.push_back(ToRunSample(sample, model, report_start));
     }
     sink.Report(std::move(reported));
+    auto shared_config = std::make_shared<engine::RunConfig>(config);
+    shared_config->field_callback = nullptr;  // refers to this call's collector
+    auto shared_result = std::make_shared<engine::RunResult>(result);
+    const std::string case_name = c.name;
+    sink.SetWriters(
+        [shared_config, shared_result, recorder, case_name](const std::string& dir) {
+          io::WriteRunFolder(dir, case_name, *shared_config, *shared_result);
+          recorder->Write(std::filesystem::path(dir) / "fields");
+        },
+        [shared_config, shared_result, model, report_start]() {
+          std::vector<io::OutputRow> rows;
+          for (const auto& sample : shared_result->samples) {
+            rows.push_back(io::RowFromSample(sample, model, report_start));
+          }
+          std::ostringstream out;
+          io::WriteResultsCsv(out, rows);
+          return out.str();
+        });
     if (auto fields = collector.Result(); fields && !fields->empty()) sink.ReportFields(fields);
     sink.Statistic("cycles", result.cycles);
     sink.Statistic("cycles to steady state", result.cycles_to_steady_state);

@@ -46,6 +46,14 @@ class RunSink {
   virtual void Report(std::vector<RunSample> reported_cycle) = 0;
   /// A caveat on usable results (e.g. no periodic steady state within max_cycles).
   virtual void Warn(const std::string& message) { (void)message; }
+  /// Writers of the run's output in core's formats (the files `filmdyn run` writes):
+  /// `folder(dir)` writes results.csv, summary.json and fields/; `csv()` returns results.csv's
+  /// text. Each returns "" / the text, or throws std::runtime_error.
+  virtual void SetWriters(std::function<void(const std::string& dir)> folder,
+                          std::function<std::string()> csv) {
+    (void)folder;
+    (void)csv;
+  }
   /// The film fields of the reported cycle (lubricated joints only).
   virtual void ReportFields(std::shared_ptr<const FieldFrames> fields) { (void)fields; }
 };

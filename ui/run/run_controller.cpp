@@ -31,6 +31,10 @@ class NotifyingSink : public RunSink {
     record_->Statistic(name, value);
   }
   void Warn(const std::string& message) override { record_->Warn(message); }
+  void SetWriters(std::function<void(const std::string&)> folder,
+                  std::function<std::string()> csv) override {
+    record_->SetWriters(std::move(folder), std::move(csv));
+  }
   void ReportFields(std::shared_ptr<const FieldFrames> fields) override {
     record_->ReportFields(std::move(fields));
   }

@@ -76,6 +76,43 @@ void RunRecord::Warn(const std::string& message) {
   warning_ = QString::fromStdString(message);
 }
 
+void RunRecord::SetWriters(std::function<void(const std::string&)> folder,
+                           std::function<std::string()> csv) {
+  std::lock_guard lock(mutex_);
+  folder_writer_ = std::move(folder);
+  csv_writer_ = std::move(csv);
+}
+
+bool RunRecord::writeRunFolder(const QString& directory, QString* error) const {
+  std::function<void(const std::string&)> writer;
+  {
+    std::lock_guard lock(mutex_);
+    writer = folder_writer_;
+  }
+  if (!writer) {
+    if (error) *error = QObject::tr("this run has no output to write yet");
+    return false;
+  }
+  try {
+    writer(directory.toStdString());
+  } catch (const std::exception& e) {
+    if (error) *error = QString::fromUtf8(e.what());
+    return false;
+  }
+  return true;
+}
+
+QByteArray RunRecord::resultsCsv() const {
+  std::function<std::string()> writer;
+  {
+    std::lock_guard lock(mutex_);
+    writer = csv_writer_;
+  }
+  if (!writer) return {};
+  const std::string text = writer();
+  return QByteArray(text.data(), qsizetype(text.size()));
+}
+
 QString RunRecord::warning() const {
   std::lock_guard lock(mutex_);
   return warning_;

@@ -5,6 +5,7 @@
 #include <QElapsedTimer>
 #include <QString>
 #include <atomic>
+#include <functional>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -34,6 +35,13 @@ class RunRecord : public RunSink {
   void Report(std::vector<RunSample> reported_cycle) override;
   void ReportFields(std::shared_ptr<const FieldFrames> fields) override;
   void Warn(const std::string& message) override;
+  void SetWriters(std::function<void(const std::string& dir)> folder,
+                  std::function<std::string()> csv) override;
+  /// Writes the run folder as `filmdyn run` does; false with *error when it cannot (or when
+  /// the backend provided no writer).
+  bool writeRunFolder(const QString& directory, QString* error) const;
+  /// results.csv text in core's format, or empty when the backend provided no writer.
+  QByteArray resultsCsv() const;
   QString warning() const;
   /// The reported cycle's film fields, or nullptr (ideal joints, or not finished).
   std::shared_ptr<const FieldFrames> fields() const;
@@ -64,6 +72,8 @@ class RunRecord : public RunSink {
   bool has_report_ = false;
   std::shared_ptr<const FieldFrames> fields_;
   QString warning_;
+  std::function<void(const std::string&)> folder_writer_;
+  std::function<std::string()> csv_writer_;
   RunProgress progress_;
   std::map<std::string, double> statistics_;
   RunStatus status_ = RunStatus::kRunning;

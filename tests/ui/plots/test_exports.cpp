@@ -78,17 +78,26 @@ class TestExports : public QObject {
     const QStringList lines = QString::fromUtf8(file.readAll()).split('\n', Qt::SkipEmptyParts);
     QCOMPARE(lines.size(), 1 + 360);
     const QStringList header = lines.first().split(',');
-    QCOMPARE(header.size(), filmdyn::ui::kColumnCount);
-    QCOMPARE(header.first(), QString("crank_angle[deg]"));
-    QVERIFY(header.contains("skirt_moft[m]"));
-    QVERIFY(header.contains("bigend_force_y[N]"));
+    // Core's results.csv (what `filmdyn run` writes): the SPEC §4 columns first, in order.
+    QVERIFY(header.size() >= filmdyn::ui::kColumnCount);
+    for (int i = 0; i < filmdyn::ui::kColumnCount; ++i) {
+      QCOMPARE(header[i], QString(filmdyn::ui::kColumnHeaders[size_t(i)]));
+    }
     const QStringList row = lines[10].split(',');
-    QCOMPARE(row.size(), filmdyn::ui::kColumnCount);
+    QCOMPARE(row.size(), header.size());
     QCOMPARE(row[0].toDouble(), 18.0);  // 2 °CA steps
     bool ok = false;
     row[header.indexOf("gas_force[N]")].toDouble(&ok);
     QVERIFY(ok);
     QVERIFY(row[header.indexOf("skirt_moft[m]")].isEmpty());  // the ideal model has no film
+
+    // The whole run folder as `filmdyn run --out` writes it.
+    const QString folder = dir.filePath("run");
+    QVERIFY2(window.exportRunFolder(run, folder, &error), qPrintable(error));
+    QVERIFY(QFile::exists(folder + "/results.csv"));
+    QFile summary(folder + "/summary.json");
+    QVERIFY(summary.open(QIODevice::ReadOnly));
+    QVERIFY(summary.readAll().contains("\"model\""));
   }
 };
 
