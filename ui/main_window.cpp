@@ -64,6 +64,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   field_view_->setObjectName("field_view");
   workspace_->addTab(field_view_, tr("Pressure fields"));
   connect(field_view_, &FieldView::crankAngleChanged, plot_panel_, &PlotPanel::setCursorAngle);
+  connect(plot_panel_, &PlotPanel::crankAngleClicked, field_view_, &FieldView::setCrankAngle);
 
   createMenus();
   blocker_label_ = new QLabel(this);

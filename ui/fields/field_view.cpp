@@ -187,6 +187,16 @@ void FieldView::updateRanges() {
 
 void FieldView::setFrameIndex(int index) { slider_->setValue(index); }
 
+void FieldView::setCrankAngle(double crank_angle_deg) {
+  if (!frames_ || frames_->empty()) return;
+  const auto& angles = frames_->crank_angle_deg;
+  size_t best = 0;
+  for (size_t k = 1; k < angles.size(); ++k) {
+    if (std::abs(angles[k] - crank_angle_deg) < std::abs(angles[best] - crank_angle_deg)) best = k;
+  }
+  slider_->setValue(int(best));
+}
+
 void FieldView::setPlaying(bool playing) {
   if (playing && frames_ && !frames_->empty()) {
     timer_->start();

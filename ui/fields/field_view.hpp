@@ -41,6 +41,8 @@ class FieldView : public QWidget {
  public slots:
   void setFrameIndex(int index);
   void setPlaying(bool playing);
+  /// Shows the frame nearest to a crank angle [°CA] (from a click on a plot).
+  void setCrankAngle(double crank_angle_deg);
 
  signals:
   void crankAngleChanged(double crank_angle_deg);

@@ -7,6 +7,7 @@
 #include <QLegendMarker>
 #include <QLineSeries>
 #include <QMenu>
+#include <QMouseEvent>
 #include <QScrollArea>
 #include <QTimer>
 #include <QVBoxLayout>
@@ -101,12 +102,28 @@ PlotPanel::PlotPanel(QWidget* parent) : QWidget(parent) {
                      [this, index] { exportChartInteractive(index); });
       menu.exec(charts_[size_t(index)].view->mapToGlobal(pos));
     });
+    if (specs[i].crank_angle_axis) entry.view->viewport()->installEventFilter(this);
     grid->addWidget(entry.view, int(i) / 3, int(i) % 3);
     charts_.push_back(entry);
     rescale(charts_.back());
   }
   scroll->setWidget(grid_host);
   outer->addWidget(scroll);
+}
+
+bool PlotPanel::eventFilter(QObject* watched, QEvent* event) {
+  if (event->type() == QEvent::MouseButtonPress &&
+      static_cast<QMouseEvent*>(event)->button() == Qt::LeftButton) {
+    for (ChartEntry& entry : charts_) {
+      if (entry.view->viewport() != watched) continue;
+      const QPointF scene = entry.view->mapToScene(static_cast<QMouseEvent*>(event)->pos());
+      const QPointF chart_pos = entry.chart->mapFromScene(scene);
+      if (entry.chart->plotArea().contains(chart_pos)) {
+        emit crankAngleClicked(entry.chart->mapToValue(chart_pos).x());
+      }
+    }
+  }
+  return QWidget::eventFilter(watched, event);
 }
 
 QChart* PlotPanel::chart(int index) const { return charts_[size_t(index)].chart; }

@@ -45,6 +45,8 @@ class PlotPanel : public QWidget {
 
  signals:
   void statusMessage(const QString& message);
+  /// The user clicked a crank-angle plot at this angle [°CA] (moves the field view).
+  void crankAngleClicked(double crank_angle_deg);
 
  private:
   struct ChartEntry {
@@ -59,6 +61,7 @@ class PlotPanel : public QWidget {
   void rescale(ChartEntry& entry);
   void updateCursor(ChartEntry& entry);
   QColor runColour(int run_id);
+  bool eventFilter(QObject* watched, QEvent* event) override;
 
   std::vector<ChartEntry> charts_;
   QMap<int, bool> visible_;

@@ -123,6 +123,11 @@ class TestFieldView : public QObject {
     QTRY_VERIFY_WITH_TIMEOUT(skirt->renderedFrames() > frames_before, 10000);
     QVERIFY(skirt->grabFramebuffer() != first);
 
+    // A crank angle from a click on a plot selects the nearest frame.
+    view.setCrankAngle(181.0);
+    QCOMPARE(view.frameIndex(), 3);  // 12 frames, 60 °CA apart
+    QCOMPARE(plots.cursorAngle(), 180.0);
+
     // Another array (film thickness) also renders.
     view.arraySelector()->setCurrentIndex(2);
     QTRY_VERIFY_WITH_TIMEOUT(DistinctColours(skirt->grabFramebuffer()) > 100, 10000);
