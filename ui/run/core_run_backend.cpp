@@ -3,7 +3,6 @@
 // reported cycle of the result replaces the streamed samples at the end.
 #include <cmath>
 #include <filesystem>
-#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -15,42 +14,17 @@
 #include "core/lubrication/bearing_solver.hpp"
 #include "core/lubrication/skirt_solver.hpp"
 #include "ui/run/run_backend.hpp"
+#include "ui/run/sample_conversion.hpp"
 
 namespace filmdyn::ui {
 
 namespace {
 
 // results.csv columns from a crank-train sample: core's row (io::RowFromSample, what
-// `filmdyn run` writes), so the GUI and the headless files agree; empty cells stay NaN.
+// `filmdyn run` writes) through the one row-to-sample mapping, so GUI and files agree.
 RunSample ToRunSample(const engine::CrankTrainSample& cs, engine::Model model,
                       double cycle_start_time) {
-  const io::OutputRow row = io::RowFromSample(cs, model, cycle_start_time);
-  const std::optional<double> io::OutputRow::*columns[kColumnCount] = {
-      &io::OutputRow::crank_angle_deg,
-      &io::OutputRow::time,
-      &io::OutputRow::piston_lateral,
-      &io::OutputRow::piston_tilt,
-      &io::OutputRow::piston_lateral_velocity,
-      &io::OutputRow::piston_tilt_rate,
-      &io::OutputRow::skirt_normal_force,
-      &io::OutputRow::skirt_friction_force,
-      &io::OutputRow::skirt_moment,
-      &io::OutputRow::skirt_moft,
-      &io::OutputRow::skirt_fpl,
-      &io::OutputRow::journal_ecc_x,
-      &io::OutputRow::journal_ecc_y,
-      &io::OutputRow::bearing_eps,
-      &io::OutputRow::bearing_moft,
-      &io::OutputRow::bearing_fpl,
-      &io::OutputRow::bigend_force_x,
-      &io::OutputRow::bigend_force_y,
-      &io::OutputRow::gas_force};
-  RunSample out;
-  for (int i = 0; i < kColumnCount; ++i) {
-    const std::optional<double>& v = row.*columns[i];
-    if (v) out.values[size_t(i)] = *v;
-  }
-  return out;
+  return RunSampleFromRow(io::RowFromSample(cs, model, cycle_start_time));
 }
 
 // Collects the film fields of the cycle being computed (a new cycle starts afresh), keeping at
