@@ -80,6 +80,11 @@ void VisitCase(V& v, EngineCase& c) {
   v.Number("skirt.peklenik", s.peklenik, Between(1.0 / 9.0, 9.0, "-"));
   v.Number("skirt.composite_modulus", s.composite_modulus, Positive("Pa"));
   v.Number("skirt.boundary_friction", s.boundary_friction, Between(0.0, 1.0, "-"));
+  // FEM mesh (paper Table II defaults 30, 2, 30 circumferential x 40 axial).
+  v.Integer("skirt.mesh_thrust", s.mesh_thrust, 2, 2000);
+  v.Integer("skirt.mesh_relief", s.mesh_relief, 1, 2000);
+  v.Integer("skirt.mesh_anti", s.mesh_anti, 2, 2000);
+  v.Integer("skirt.mesh_axial", s.mesh_axial, 2, 2000);
   v.Vector("skirt.profile_y", s.profile_y, NonNegative("m"));
   v.Vector("skirt.profile_h", s.profile_h, NonNegative("m"));
   auto& b = c.big_end;
@@ -92,6 +97,9 @@ void VisitCase(V& v, EngineCase& c) {
   v.Number("big_end.peklenik", b.peklenik, Between(1.0 / 9.0, 9.0, "-"));
   v.Number("big_end.composite_modulus", b.composite_modulus, Positive("Pa"));
   v.Number("big_end.boundary_friction", b.boundary_friction, Between(0.0, 1.0, "-"));
+  // FEM mesh (paper Table II defaults 50 around x 10 across).
+  v.Integer("big_end.mesh_theta", b.mesh_theta, 8, 5000);
+  v.Integer("big_end.mesh_z", b.mesh_z, 2, 2000);
   v.Number("big_end.oil_feed_pressure", b.oil_feed_pressure, NonNegative("Pa"));
   v.Number("lubricant.viscosity", c.lubricant.viscosity, Positive("Pa*s"));
   v.Number("lubricant.greenwood_tripp_k", c.lubricant.greenwood_tripp_k, Positive("-"));

@@ -31,6 +31,26 @@ std::string ErrorField(const json& j) {
 class TestCaseFile : public QObject {
   Q_OBJECT
  private slots:
+  void meshSizesAreCaseFields() {
+    // Paper Table II defaults; reachable by --set and rejected when not a sensible integer.
+    const engine::EngineCase d = io::CaseFromJson(DefaultJson());
+    QCOMPARE(d.skirt.mesh_thrust, 30);
+    QCOMPARE(d.skirt.mesh_axial, 40);
+    QCOMPARE(d.big_end.mesh_theta, 50);
+    const io::LoadedCase c = io::LoadCase("", {"skirt.mesh_axial=12", "big_end.mesh_theta=24"});
+    QCOMPARE(c.value.skirt.mesh_axial, 12);
+    QCOMPARE(c.value.big_end.mesh_theta, 24);
+    for (const char* bad : {"skirt.mesh_axial=1.5", "big_end.mesh_z=0", "skirt.mesh_thrust=-3"}) {
+      try {
+        io::LoadCase("", {bad});
+        QFAIL(bad);
+      } catch (const InputError& error) {
+        QVERIFY2(QString(error.what()).contains("must be an integer"), error.what());
+        QVERIFY(QString(error.what()).contains(QString(bad).section('=', 0, 0)));
+      }
+    }
+  }
+
   void defaultCaseIsTableOne() {
     const engine::EngineCase c = io::CaseFromJson(DefaultJson());
     QCOMPARE(c.geometry.crank_radius, 39.93e-3);
