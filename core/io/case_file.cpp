@@ -470,7 +470,7 @@ engine::PressureCurve PressureCurveForSpeed(const LoadedCase& loaded, double rpm
   if (curves.empty()) {
     throw InputError("pressure_curves", "[]",
                      "the case has no cylinder-pressure curve; "
-                     "add one or pass --pressure-curve FILE.csv");
+                     "add one (command line: --pressure-curve FILE.csv)");
   }
   std::vector<std::size_t> order(curves.size());
   for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
@@ -490,11 +490,11 @@ engine::PressureCurve PressureCurveForSpeed(const LoadedCase& loaded, double rpm
                                           (rpm - lo.rpm) / (hi.rpm - lo.rpm));
     }
   }
-  throw InputError("operating.rpm", FormatValue(rpm),
-                   "must lie within the speeds of pressure_curves [" +
-                       FormatValue(curves[order.front()].rpm) + ", " +
-                       FormatValue(curves[order.back()].rpm) +
-                       "] rpm, or pass --pressure-curve FILE.csv");
+  throw InputError(
+      "operating.rpm", FormatValue(rpm),
+      "must lie within the speeds of pressure_curves [" + FormatValue(curves[order.front()].rpm) +
+          ", " + FormatValue(curves[order.back()].rpm) +
+          "] rpm; add a curve for this speed (command line: --pressure-curve FILE.csv)");
 }
 
 }  // namespace filmdyn::io
