@@ -104,7 +104,8 @@ SkirtConfig Skirt(LdltBackend backend) {
 void BenchBearing(const char* title, BearingMeshSpec mesh, int repeats) {
   std::printf("\nbig-end bearing, %s: %d x %d%s (%d nodes)\n", title, mesh.n_theta, mesh.n_z,
               mesh.symmetric_half ? " half width" : "", mesh.n_theta * (mesh.n_z + 1));
-  for (LdltBackend backend : {LdltBackend::kEigenSimplicial, LdltBackend::kCholmodSimplicial}) {
+  for (LdltBackend backend : {LdltBackend::kEigenSimplicial, LdltBackend::kCholmodSimplicial,
+                              LdltBackend::kCholmodModify}) {
     BearingSolver cold_solver(Bearing(mesh, backend));
     BearingState s;
     s.eps = 0.7;
@@ -133,7 +134,8 @@ void BenchBearing(const char* title, BearingMeshSpec mesh, int repeats) {
 
 void BenchSkirt(int repeats) {
   std::printf("\npiston skirt, paper mesh 30+2+30 x 40 (%d nodes)\n", 63 * 41);
-  for (LdltBackend backend : {LdltBackend::kEigenSimplicial, LdltBackend::kCholmodSimplicial}) {
+  for (LdltBackend backend : {LdltBackend::kEigenSimplicial, LdltBackend::kCholmodSimplicial,
+                              LdltBackend::kCholmodModify}) {
     SkirtConfig cfg = Skirt(backend);
     cfg.solver.warm_start = false;
     SkirtSolver cold(cfg);

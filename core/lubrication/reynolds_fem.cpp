@@ -209,7 +209,8 @@ void ReynoldsFem::Assemble(const ReynoldsParams& params) {
     sol_.contact_pressure[k] = fc.contact_pressure;
   }
   std::fill(k_lower_.valuePtr(), k_lower_.valuePtr() + k_lower_.nonZeros(), 0.0);
-  const bool full = options_.cavitation == CavitationModel::kJfo;
+  const bool jfo = options_.cavitation == CavitationModel::kJfo;
+  const bool full = jfo || ldlt_->SupportsRowModify();  // full matrix: JFO LU, row additions
   if (full) std::fill(k_full_.valuePtr(), k_full_.valuePtr() + k_full_.nonZeros(), 0.0);
   f_.setZero();
   double* kl = k_lower_.valuePtr();
@@ -246,17 +247,18 @@ void ReynoldsFem::Assemble(const ReynoldsParams& params) {
     const double g[3] = {phi_c_[n0] * dhdt_[n0], phi_c_[n1] * dhdt_[n1], phi_c_[n2] * dhdt_[n2]};
     const double sum_g = g[0] + g[1] + g[2];
     const double shear_flow = 0.5 * params.u_diff * sigma * dphis * a / 3.0;
-    const double wedge = full ? 0.0 : 0.5 * params.u_sum * dhds * a / 12.0;  // JFO: see below
+    const double wedge = jfo ? 0.0 : 0.5 * params.u_sum * dhds * a / 12.0;  // JFO: see below
     for (int r = 0; r < 3; ++r) {
       const int node = e.node[r];
       f_[node] -= wedge * (sum_c + phi_c_[node]) + shear_flow + a / 12.0 * (sum_g + g[r]);
     }
   }
-  if (full) {
-    // JFO: the Couette transport is written as finite-volume face fluxes on the dual cells so
-    // that the full-film part (central face content (h_k + h_d)/2) and the void part (upwind
-    // h_k r_k, matrix B) use the same faces; a cavitated node switches its face content to the
-    // upwind h_k (1 - r_k) (see SolveJfo), which keeps 0 <= theta <= 1 at film steps.
+  if (jfo) {
+    // JFO: the Couette transport is written as first-order upwind finite-volume face fluxes on
+    // the dual cells, (|U|/2) w_k h_k (1 - r_k) from node k to its downstream neighbour, for the
+    // full-film part (here) and the void part (matrix B in SolveJfo) alike. A central full-film
+    // flux with an upwind void flux was tried first: it let theta leave [0, 1] at film steps
+    // and made the active-set iteration cycle (pocketed slider).
     const bool plus = params.u_sum >= 0.0;
     for (int k = 0; k < n; ++k) {
       const int d = plus ? down_node_plus_[k] : down_node_minus_[k];
@@ -309,24 +311,33 @@ bool ReynoldsFem::SolveReynoldsLcp(bool unconstrained) {
   ReynoldsStats& st = sol_.stats;
   Eigen::VectorXd& p = sol_.pressure;
   bool converged = false;
+  bool refactorize = true;
+  // Few changes: modify the factor row by row (CHOLMOD rowdel/rowadd) instead of refactorising.
+  const bool modify = ldlt_->SupportsRowModify();
+  const int modify_limit = std::max(16, n / 25);
   while (st.iterations < options_.max_iterations) {
     auto t0 = Clock::now();
-    for (int q = 0; q < nnz; ++q) {
-      const int r = nz_row_[q], c = nz_col_[q];
-      const bool cut = fixed_[r] || fixed_[c] || active_[r] || active_[c];
-      wv[q] = (r == c || !cut) ? kv[q] : 0.0;
+    if (refactorize) {
+      for (int q = 0; q < nnz; ++q) {
+        const int r = nz_row_[q], c = nz_col_[q];
+        const bool cut = fixed_[r] || fixed_[c] || active_[r] || active_[c];
+        wv[q] = (r == c || !cut) ? kv[q] : 0.0;
+      }
     }
     for (int k = 0; k < n; ++k) rhs_[k] = active_[k] ? 0.0 : base[k];
     auto t1 = Clock::now();
     st.complementarity_s += Seconds(t0, t1);
-    const bool ok = ldlt_->Factorize(work_lower_);
+    if (refactorize) {
+      const bool ok = ldlt_->Factorize(work_lower_);
+      ++st.factorizations;
+      if (!ok) {
+        st.status = SolveStatus::kFactorizationFailed;
+        return false;
+      }
+    }
     auto t2 = Clock::now();
     st.factorization_s += Seconds(t1, t2);
     ++st.iterations;
-    if (!ok) {
-      st.status = SolveStatus::kFactorizationFailed;
-      return false;
-    }
     ldlt_->Solve(rhs_, p);
     for (int k = 0; k < n; ++k) {
       if (active_[k]) p[k] = 0.0;
@@ -344,21 +355,56 @@ bool ReynoldsFem::SolveReynoldsLcp(bool unconstrained) {
     work_ -= f_;
     const double p_tol = 1e-12 * std::max(p.cwiseAbs().maxCoeff(), 1e-300);
     const double w_tol = 1e-12 * flow_scale_;
-    bool changed = false;
+    int changes = 0;
     for (int k = 0; k < n; ++k) {
       if (fixed_[k]) {
         next_active_[k] = 0;
         continue;
       }
       next_active_[k] = active_[k] ? (work_[k] > -w_tol) : (p[k] < -p_tol);
-      changed |= next_active_[k] != active_[k];
+      changes += next_active_[k] != active_[k];
     }
-    std::swap(active_, next_active_);
-    st.complementarity_s += Seconds(t2, Clock::now());
-    if (!changed) {
+    auto t3 = Clock::now();
+    st.complementarity_s += Seconds(t2, t3);
+    if (changes == 0) {
       converged = true;
       break;
     }
+    refactorize = !(modify && changes <= modify_limit);
+    if (refactorize) {
+      std::swap(active_, next_active_);
+      continue;
+    }
+    // Deletions first (rows become identity), then additions against the current free set.
+    bool ok = true;
+    for (int k = 0; k < n && ok; ++k) {
+      if (next_active_[k] && !active_[k]) {
+        ok = ldlt_->DeleteRow(k);
+        active_[k] = 1;
+        ++st.row_updates;
+      }
+    }
+    const double* kf = k_full_.valuePtr();
+    const int* kin = k_full_.innerIndexPtr();
+    for (int k = 0; k < n && ok; ++k) {
+      if (!next_active_[k] && active_[k]) {
+        active_[k] = 0;
+        add_rows_.clear();
+        add_values_.clear();
+        for (int q = k_full_.outerIndexPtr()[k]; q < k_full_.outerIndexPtr()[k + 1]; ++q) {
+          const int r = kin[q];
+          if (r == k || (!fixed_[r] && !active_[r])) {
+            add_rows_.push_back(r);
+            add_values_.push_back(kf[q]);
+          }
+        }
+        ok = ldlt_->AddRow(k, add_rows_, add_values_);
+        ++st.row_updates;
+      }
+    }
+    st.factorization_s += Seconds(t3, Clock::now());
+    if (!ok) refactorize = true;  // fall back to a full refactorisation of the new set
+    for (int k = 0; k < n; ++k) active_[k] = next_active_[k];
   }
   if (!converged) st.status = SolveStatus::kNotConverged;
   prev_active_ = active_;
@@ -384,24 +430,19 @@ bool ReynoldsFem::SolveJfo() {
   }
   for (int k = 0; k < n; ++k)
     if (fixed_[k]) base[k] = kf[diag_pos_full_[k]] * p_fixed_[k];
-  // Void transport coefficients: B_kk = -(|U|/2) h_k w_k - A_k phi_c dh/dt, B_dk = +(|U|/2) h_k
-  // w_k, and the switch of the face content from central to upwind at cavitated nodes (delta_k).
-  Eigen::VectorXd bdiag(n), boff(n), delta(n);
+  // Void transport coefficients: B_kk = -(|U|/2) h_k w_k - A_k phi_c dh/dt,
+  // B_dk = +(|U|/2) h_k w_k (d = downstream neighbour of k).
+  Eigen::VectorXd bdiag(n), boff(n);
   std::vector<int> bpos(n), bnode(n);
   for (int k = 0; k < n; ++k) {
     const double a = 0.5 * std::abs(u_sum_) * h_[k] * face_width_[k];
-    delta[k] = 0.0;
     bdiag[k] = -a - lumped_area_[k] * phi_c_[k] * dhdt_[k];
     if (std::abs(bdiag[k]) < 1e-14 * flow_scale_) bdiag[k] = -kf[diag_pos_full_[k]];  // r idle
     boff[k] = a;
     const bool plus = u_sum_ >= 0.0;
     bnode[k] = plus ? down_node_plus_[k] : down_node_minus_[k];
     bpos[k] = plus ? down_pos_plus_[k] : down_pos_minus_[k];
-    if (bnode[k] >= 0) {
-      delta[k] = 0.0;
-    }
   }
-  Eigen::VectorXd rhs(n);
   if (!lu_) lu_ = std::make_unique<Eigen::SparseLU<Eigen::SparseMatrix<double>>>();
   if (!lu_analyzed_) {
     lu_->analyzePattern(k_full_);
@@ -442,13 +483,7 @@ bool ReynoldsFem::SolveJfo() {
       st.status = SolveStatus::kFactorizationFailed;
       return false;
     }
-    rhs = base;
-    for (int k = 0; k < n; ++k) {
-      if (!cav[k] || fixed_[k]) continue;
-      rhs[k] -= delta[k];
-      if (bnode[k] >= 0 && !fixed_[bnode[k]]) rhs[bnode[k]] += delta[k];
-    }
-    x_ = lu_->solve(rhs);
+    x_ = lu_->solve(base);
     const double p_tol = 1e-12 * std::max(x_.cwiseAbs().maxCoeff(), 1e-300);
     bool changed = false;
     for (int k = 0; k < n; ++k) {
@@ -481,8 +516,8 @@ bool ReynoldsFem::SolveJfo() {
   for (int k = 0; k < n; ++k) {
     if (!cav[k] || fixed_[k]) continue;
     const double a = 0.5 * std::abs(u_sum_) * h_[k] * face_width_[k];
-    work_[k] += (-a - lumped_area_[k] * phi_c_[k] * dhdt_[k]) * r[k] + delta[k];
-    if (bnode[k] >= 0) work_[bnode[k]] += a * r[k] - delta[k];
+    work_[k] += (-a - lumped_area_[k] * phi_c_[k] * dhdt_[k]) * r[k];
+    if (bnode[k] >= 0) work_[bnode[k]] += a * r[k];
   }
   double mass = 0.0;
   for (int k = 0; k < n; ++k)

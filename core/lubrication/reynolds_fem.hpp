@@ -15,8 +15,10 @@
 ///  - kReynolds (Swift-Stieber): the LCP  p >= 0, w = K p - f >= 0, p.w = 0, solved by the
 ///    primal-dual active-set method (Hintermueller, Ito & Kunisch 2003), i.e. a semismooth Newton
 ///    method; for the M-matrices of our meshes it terminates finitely with the exact solution of
-///    the discrete LCP. Each iteration is one numeric LDL^T refactorisation on the pattern analysed
-///    once in the constructor (rows/columns of active nodes are replaced by unit rows).
+///    the discrete LCP. Rows/columns of active nodes are replaced by unit rows; the first
+///    iteration is a numeric LDL^T factorisation on the pattern analysed once in the constructor,
+///    later iterations that change few nodes delete/add those rows of the factor (CHOLMOD
+///    rowdel/rowadd, backend kCholmodModify) instead of refactorising.
 ///  - kJfo: mass-conserving Jakobsson-Floberg-Olsson cavitation in the complementarity form of
 ///    Giacopini, Fowell, Dini & Strozzi (2010, J. Tribol. 132 041702): lubricant density ratio
 ///    1 - r, with p >= 0, r >= 0, p.r = 0 and one mass balance per node
@@ -48,7 +50,7 @@ const char* ToString(CavitationModel model);
 
 struct ReynoldsOptions {
   CavitationModel cavitation = CavitationModel::kReynolds;
-  LdltBackend backend = LdltBackend::kEigenSimplicial;
+  LdltBackend backend = LdltBackend::kCholmodModify;  // fastest measured (docs/performance.md)
   int max_iterations = 200;  ///< active-set iterations before giving up (status kNotConverged)
   bool warm_start = true;    ///< start the active set from the previous solve's
   /// Active set of a cold start (no previous solve): kSinkNodes = nodes with f_k < 0 (a
@@ -69,8 +71,10 @@ struct ReynoldsParams {
 /// Statistics of one solve.
 struct ReynoldsStats {
   SolveStatus status = SolveStatus::kConverged;
-  int iterations = 0;                   ///< active-set iterations (= numeric factorisations)
+  int iterations = 0;                   ///< active-set iterations (linear solves)
   int jfo_iterations = 0;               ///< of which in the JFO stage
+  int factorizations = 0;               ///< numeric LDL^T factorisations (Reynolds stage)
+  int row_updates = 0;                  ///< CHOLMOD row deletions/additions instead of those
   double complementarity_residual = 0;  ///< max_k |min(p_k/p_ref, w_k/w_ref)| over free nodes
   double min_pressure = 0;              ///< most negative nodal pressure [Pa] (0 when exact)
   double max_mass_residual = 0;         ///< JFO: max nodal mass-balance residual / flow scale
@@ -163,6 +167,8 @@ class ReynoldsFem {
   std::vector<std::uint8_t> extra_fixed_, fixed_, active_, prev_active_, next_active_;
   bool have_prev_ = false;
   std::vector<NodalFilmFactors> factors_;
+  std::vector<int> add_rows_;
+  std::vector<double> add_values_;
   Eigen::VectorXd phi_c_, source_scale_;
   double u_sum_ = 0, flow_scale_ = 1;
   ReynoldsSolution sol_;

@@ -1,7 +1,11 @@
 #include "core/lubrication/sparse_ldlt.hpp"
 
+#include <cholmod.h>
 #include <Eigen/CholmodSupport>
 #include <Eigen/SparseCholesky>
+#include <algorithm>
+#include <utility>
+#include <vector>
 
 namespace filmdyn::lubrication {
 
@@ -11,6 +15,8 @@ const char* ToString(LdltBackend backend) {
       return "eigen-simplicial-ldlt";
     case LdltBackend::kCholmodSimplicial:
       return "cholmod-simplicial-ldlt";
+    case LdltBackend::kCholmodModify:
+      return "cholmod-ldlt-rowmod";
   }
   return "?";
 }
@@ -31,6 +37,100 @@ class LdltImpl final : public SparseLdlt {
   Solver solver_;
 };
 
+// Direct CHOLMOD (int API) simplicial LDL^T. Row modifications work on the factor of P A P^T,
+// so indices are mapped through the fill-reducing permutation L->Perm.
+class CholmodModifyLdlt final : public SparseLdlt {
+ public:
+  CholmodModifyLdlt() {
+    cholmod_start(&common_);
+    common_.supernodal = CHOLMOD_SIMPLICIAL;
+    common_.final_ll = 0;  // keep LDL^T: required by rowadd/rowdel
+  }
+  ~CholmodModifyLdlt() override {
+    if (factor_) cholmod_free_factor(&factor_, &common_);
+    if (column_) cholmod_free_sparse(&column_, &common_);
+    cholmod_finish(&common_);
+  }
+  CholmodModifyLdlt(const CholmodModifyLdlt&) = delete;
+  CholmodModifyLdlt& operator=(const CholmodModifyLdlt&) = delete;
+
+  void Analyze(const Eigen::SparseMatrix<double>& lower) override {
+    cholmod_sparse a = View(lower);
+    if (factor_) cholmod_free_factor(&factor_, &common_);
+    factor_ = cholmod_analyze(&a, &common_);
+    const int n = static_cast<int>(lower.rows());
+    inverse_perm_.resize(n);
+    const int* perm = static_cast<const int*>(factor_->Perm);
+    for (int i = 0; i < n; ++i) inverse_perm_[perm[i]] = i;
+    if (column_) cholmod_free_sparse(&column_, &common_);
+    column_ = cholmod_allocate_sparse(n, 1, n, 1, 1, 0, CHOLMOD_REAL, &common_);
+  }
+  bool Factorize(const Eigen::SparseMatrix<double>& lower) override {
+    cholmod_sparse a = View(lower);
+    return cholmod_factorize(&a, factor_, &common_) && common_.status == CHOLMOD_OK;
+  }
+  void Solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) override {
+    cholmod_dense bd;
+    bd.nrow = b.size();
+    bd.ncol = 1;
+    bd.nzmax = b.size();
+    bd.d = b.size();
+    bd.x = const_cast<double*>(b.data());
+    bd.z = nullptr;
+    bd.xtype = CHOLMOD_REAL;
+    bd.dtype = CHOLMOD_DOUBLE;
+    cholmod_dense* xd = cholmod_solve(CHOLMOD_A, factor_, &bd, &common_);
+    x = Eigen::Map<Eigen::VectorXd>(static_cast<double*>(xd->x), b.size());
+    cholmod_free_dense(&xd, &common_);
+  }
+  bool SupportsRowModify() const override { return true; }
+  bool DeleteRow(int k) override {
+    return cholmod_rowdel(inverse_perm_[k], nullptr, factor_, &common_) != 0;
+  }
+  bool AddRow(int k, const std::vector<int>& rows, const std::vector<double>& values) override {
+    // Column k of P A P^T: rows mapped through the permutation, sorted.
+    entries_.clear();
+    for (size_t q = 0; q < rows.size(); ++q)
+      entries_.emplace_back(inverse_perm_[rows[q]], values[q]);
+    std::sort(entries_.begin(), entries_.end());
+    int* cp = static_cast<int*>(column_->p);
+    int* ci = static_cast<int*>(column_->i);
+    double* cx = static_cast<double*>(column_->x);
+    cp[0] = 0;
+    cp[1] = static_cast<int>(entries_.size());
+    for (size_t q = 0; q < entries_.size(); ++q) {
+      ci[q] = entries_[q].first;
+      cx[q] = entries_[q].second;
+    }
+    return cholmod_rowadd(inverse_perm_[k], column_, factor_, &common_) != 0;
+  }
+
+ private:
+  static cholmod_sparse View(const Eigen::SparseMatrix<double>& m) {
+    cholmod_sparse a;
+    a.nrow = m.rows();
+    a.ncol = m.cols();
+    a.nzmax = m.nonZeros();
+    a.p = const_cast<int*>(m.outerIndexPtr());
+    a.i = const_cast<int*>(m.innerIndexPtr());
+    a.x = const_cast<double*>(m.valuePtr());
+    a.z = nullptr;
+    a.nz = nullptr;
+    a.stype = -1;  // lower triangle stored
+    a.itype = CHOLMOD_INT;
+    a.xtype = CHOLMOD_REAL;
+    a.dtype = CHOLMOD_DOUBLE;
+    a.sorted = 1;
+    a.packed = 1;
+    return a;
+  }
+  cholmod_common common_;
+  cholmod_factor* factor_ = nullptr;
+  cholmod_sparse* column_ = nullptr;
+  std::vector<int> inverse_perm_;
+  std::vector<std::pair<int, double>> entries_;
+};
+
 }  // namespace
 
 std::unique_ptr<SparseLdlt> SparseLdlt::Create(LdltBackend backend) {
@@ -41,6 +141,8 @@ std::unique_ptr<SparseLdlt> SparseLdlt::Create(LdltBackend backend) {
           LdltImpl<Eigen::SimplicialLDLT<Mat, Eigen::Lower, Eigen::AMDOrdering<int>>>>();
     case LdltBackend::kCholmodSimplicial:
       return std::make_unique<LdltImpl<Eigen::CholmodSimplicialLDLT<Mat, Eigen::Lower>>>();
+    case LdltBackend::kCholmodModify:
+      return std::make_unique<CholmodModifyLdlt>();
   }
   return nullptr;
 }
