@@ -212,8 +212,10 @@ lubrication::BearingConfig BearingConfigFromCase(const engine::EngineCase& c) {
   pair.sigma1 = be.roughness_journal;
   pair.sigma2 = be.roughness_bearing;
   pair.peklenik = be.peklenik;
-  pair.E1 = pair.E2 = be.composite_modulus;  // E' given: equal moduli with ν = 0 reproduce it
-  pair.nu1 = pair.nu2 = 0.0;
+  pair.E1 = be.modulus_journal;  // surface 1 = journal, 2 = bearing; the pair forms E'
+  pair.nu1 = be.poisson_journal;
+  pair.E2 = be.modulus_bearing;
+  pair.nu2 = be.poisson_bearing;
   pair.gt_k = c.lubricant.greenwood_tripp_k;
   pair.boundary_friction = be.boundary_friction;
   pair.Validate("big_end");

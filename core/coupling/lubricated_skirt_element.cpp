@@ -168,6 +168,8 @@ lubrication::SkirtConfig SkirtConfigFromCase(const engine::EngineCase& c) {
   g.alpha2 = sk.anti_thrust_half_width;
   g.profile.x = sk.profile_y;
   g.profile.y = sk.profile_h;
+  g.ovality.x = sk.ovality_alpha;  // empty = round skirt
+  g.ovality.y = sk.ovality_h;
   config.viscosity = c.lubricant.viscosity;
   config.mesh.n_thrust = sk.mesh_thrust;
   config.mesh.n_relief = sk.mesh_relief;
@@ -177,9 +179,10 @@ lubrication::SkirtConfig SkirtConfigFromCase(const engine::EngineCase& c) {
   pair.sigma1 = sk.roughness_skirt;
   pair.sigma2 = sk.roughness_liner;
   pair.peklenik = sk.peklenik;
-  // The case gives E' itself: two equal moduli with ν = 0 reproduce it exactly.
-  pair.E1 = pair.E2 = sk.composite_modulus;
-  pair.nu1 = pair.nu2 = 0.0;
+  pair.E1 = sk.modulus_skirt;  // surface 1 = skirt, 2 = liner; the pair forms E' (Hu et al.)
+  pair.nu1 = sk.poisson_skirt;
+  pair.E2 = sk.modulus_liner;
+  pair.nu2 = sk.poisson_liner;
   pair.gt_k = c.lubricant.greenwood_tripp_k;
   pair.boundary_friction = sk.boundary_friction;
   pair.Validate("skirt");

@@ -80,8 +80,8 @@ class LubricatedSkirtElement final : public multibody::JointForceElement,
   long solves_ = 0, factorizations_ = 0;
 };
 
-/// Builds the element from a case (SurfaceModel from its roughness, E', μ_f, K) for
-/// BuildCrankTrain's LubricatedJointFactories::skirt.
+/// Builds the element from a case (SurfaceModel from its roughness, E and ν per surface, μ_f, K)
+/// for BuildCrankTrain's LubricatedJointFactories::skirt.
 std::unique_ptr<multibody::JointForceElement> MakeLubricatedSkirt(
     const engine::EngineCase& engine_case, const engine::CrankTrainLayout& layout);
 /// The skirt solver configuration of a case (mesh: paper Table II unless overridden).

@@ -42,11 +42,20 @@ struct SkirtCase {
   double roughness_skirt = 0.615e-6;               ///< σ_skirt [m]
   double roughness_liner = 0.815e-6;               ///< σ_liner [m]
   double peklenik = 1.0;                           ///< γ of the composite surface [-] (assumed)
-  double composite_modulus = 9.82e10;  ///< E' [Pa] (assumed: Al-Si piston, cast-iron liner)
-  double boundary_friction = 0.13;     ///< μ_f [-]
+  /// Elastic constants per surface; the contact model uses E' = 2/[(1−ν₁²)/E₁ + (1−ν₂²)/E₂]
+  /// (Hu et al. 1994; SPEC §3.1): 98.24 GPa for these defaults (assumed: Al-Si on cast iron).
+  double modulus_skirt = 75.0e9;    ///< E of the piston skirt [Pa] (assumed: Al-Si alloy)
+  double poisson_skirt = 0.33;      ///< ν of the piston skirt [-] (assumed)
+  double modulus_liner = 110.0e9;   ///< E of the liner [Pa] (assumed: grey cast iron)
+  double poisson_liner = 0.26;      ///< ν of the liner [-] (assumed)
+  double boundary_friction = 0.13;  ///< μ_f [-]
   /// Barrel profile h_skirt(y): axial positions from the skirt top [m] and radial drop [m].
   std::vector<double> profile_y = {0.0, 7.0e-3, 14.0e-3, 21.0e-3, 28.0e-3};
   std::vector<double> profile_h = {20.0e-6, 5.0e-6, 0.0, 5.0e-6, 20.0e-6};
+  /// Ovality h_ovality(α): angles from the thrust axis [rad] in [0, π] and extra radial gap [m];
+  /// both empty = a round skirt (the default; the paper gives no ovality).
+  std::vector<double> ovality_alpha;
+  std::vector<double> ovality_h;
   /// FEM mesh: elements over Ω1, Ω2, Ω3 (circumferential) and axially (paper Table II).
   int mesh_thrust = 30, mesh_relief = 2, mesh_anti = 30, mesh_axial = 40;
 };
@@ -60,9 +69,14 @@ struct BigEndCase {
   double roughness_journal = 0.308e-6;  ///< σ_journal [m]
   double roughness_bearing = 0.408e-6;  ///< σ_bearing [m]
   double peklenik = 1.0;                ///< [-] (assumed)
-  double composite_modulus = 1.172e11;  ///< E' [Pa] (assumed: steel journal, Al-Sn lining)
-  double boundary_friction = 0.13;      ///< μ_f [-]
-  double oil_feed_pressure = 0.0;       ///< gauge [Pa]; 0 = no feed hole (assumed)
+  /// Elastic constants per surface (E' as for the skirt): 117.21 GPa for these defaults
+  /// (assumed: steel journal in an Al-Sn lining).
+  double modulus_journal = 210.0e9;  ///< E of the crank-pin journal [Pa] (assumed: steel)
+  double poisson_journal = 0.30;     ///< ν of the journal [-] (assumed)
+  double modulus_bearing = 70.0e9;   ///< E of the bearing lining [Pa] (assumed: Al-Sn alloy)
+  double poisson_bearing = 0.33;     ///< ν of the bearing lining [-] (assumed)
+  double boundary_friction = 0.13;   ///< μ_f [-]
+  double oil_feed_pressure = 0.0;    ///< gauge [Pa]; 0 = no feed hole (assumed)
   /// FEM mesh: elements around 360° and across the width (paper Table II).
   int mesh_theta = 50, mesh_z = 10;
 };

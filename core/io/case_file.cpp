@@ -28,10 +28,14 @@ struct Range {
   double lo = -kInf, hi = kInf;
   bool lo_open = false;
   const char* unit = "";
+  bool hi_open = false;
 };
 Range Positive(const char* unit) { return {0.0, kInf, true, unit}; }
 Range NonNegative(const char* unit) { return {0.0, kInf, false, unit}; }
 Range Between(double lo, double hi, const char* unit) { return {lo, hi, false, unit}; }
+// Elastic constants of one surface (E' of SPEC §3.1 needs E > 0 and ν in (−1, 0.5)).
+Range YoungsModulus() { return {0.0, 1e13, true, "Pa"}; }
+Range PoissonRatio() { return {-1.0, 0.5, true, "-", true}; }
 
 void Check(const std::string& path, double value, const Range& r) {
   if (r.lo == -kInf && r.hi == kInf) {
@@ -39,7 +43,7 @@ void Check(const std::string& path, double value, const Range& r) {
   } else if (r.hi == kInf && r.lo == 0.0) {
     r.lo_open ? RequirePositive(path, value, r.unit) : RequireNonNegative(path, value, r.unit);
   } else {
-    RequireInRange(path, value, r.lo, r.hi, r.lo_open, false, r.unit);
+    RequireInRange(path, value, r.lo, r.hi, r.lo_open, r.hi_open, r.unit);
   }
 }
 
@@ -78,7 +82,10 @@ void VisitCase(V& v, EngineCase& c) {
   v.Number("skirt.roughness_skirt", s.roughness_skirt, Positive("m"));
   v.Number("skirt.roughness_liner", s.roughness_liner, Positive("m"));
   v.Number("skirt.peklenik", s.peklenik, Between(1.0 / 9.0, 9.0, "-"));
-  v.Number("skirt.composite_modulus", s.composite_modulus, Positive("Pa"));
+  v.Number("skirt.modulus_skirt", s.modulus_skirt, YoungsModulus());
+  v.Number("skirt.poisson_skirt", s.poisson_skirt, PoissonRatio());
+  v.Number("skirt.modulus_liner", s.modulus_liner, YoungsModulus());
+  v.Number("skirt.poisson_liner", s.poisson_liner, PoissonRatio());
   v.Number("skirt.boundary_friction", s.boundary_friction, Between(0.0, 1.0, "-"));
   // FEM mesh (paper Table II defaults 30, 2, 30 circumferential x 40 axial).
   v.Integer("skirt.mesh_thrust", s.mesh_thrust, 2, 2000);
@@ -87,6 +94,9 @@ void VisitCase(V& v, EngineCase& c) {
   v.Integer("skirt.mesh_axial", s.mesh_axial, 2, 2000);
   v.Vector("skirt.profile_y", s.profile_y, NonNegative("m"));
   v.Vector("skirt.profile_h", s.profile_h, NonNegative("m"));
+  // Ovality (empty = round skirt); order and sizes are checked in CheckConsistency.
+  v.Vector("skirt.ovality_alpha", s.ovality_alpha, Between(0.0, std::numbers::pi, "rad"));
+  v.Vector("skirt.ovality_h", s.ovality_h, NonNegative("m"));
   auto& b = c.big_end;
   v.Model("big_end.model", b.model);
   v.Number("big_end.bearing_radius", b.bearing_radius, Positive("m"));
@@ -95,7 +105,10 @@ void VisitCase(V& v, EngineCase& c) {
   v.Number("big_end.roughness_journal", b.roughness_journal, Positive("m"));
   v.Number("big_end.roughness_bearing", b.roughness_bearing, Positive("m"));
   v.Number("big_end.peklenik", b.peklenik, Between(1.0 / 9.0, 9.0, "-"));
-  v.Number("big_end.composite_modulus", b.composite_modulus, Positive("Pa"));
+  v.Number("big_end.modulus_journal", b.modulus_journal, YoungsModulus());
+  v.Number("big_end.poisson_journal", b.poisson_journal, PoissonRatio());
+  v.Number("big_end.modulus_bearing", b.modulus_bearing, YoungsModulus());
+  v.Number("big_end.poisson_bearing", b.poisson_bearing, PoissonRatio());
   v.Number("big_end.boundary_friction", b.boundary_friction, Between(0.0, 1.0, "-"));
   // FEM mesh (paper Table II defaults 50 around x 10 across).
   v.Integer("big_end.mesh_theta", b.mesh_theta, 8, 5000);
@@ -267,6 +280,18 @@ void CheckConsistency(const EngineCase& c) {
                        "must increase strictly [m]");
     }
   }
+  const auto& alpha = c.skirt.ovality_alpha;
+  if (alpha.size() != c.skirt.ovality_h.size()) {
+    throw InputError("skirt.ovality_h", std::to_string(c.skirt.ovality_h.size()) + " values",
+                     "needs as many values as skirt.ovality_alpha (" +
+                         std::to_string(alpha.size()) + "; both empty = no ovality)");
+  }
+  for (std::size_t k = 1; k < alpha.size(); ++k) {
+    if (alpha[k] <= alpha[k - 1]) {
+      throw InputError("skirt.ovality_alpha." + std::to_string(k), FormatValue(alpha[k]),
+                       "must increase strictly [rad]");
+    }
+  }
 }
 
 engine::PressureCurveSource CurveFromJson(const json& j, const std::string& path) {
@@ -314,6 +339,12 @@ EngineCase CaseFromJson(const json& root) {
   for (const std::string& path : leaves) {
     if (!reader.seen.count(path)) {
       const json* node = Find(root, path);
+      if (path == "skirt.composite_modulus" || path == "big_end.composite_modulus") {
+        throw InputError(path, node ? Dump(*node) : "?",
+                         "replaced by E and ν per surface (skirt.modulus_skirt, poisson_skirt, "
+                         "modulus_liner, poisson_liner; big_end.modulus_journal, "
+                         "poisson_journal, modulus_bearing, poisson_bearing; docs/case-file.md)");
+      }
       throw InputError(path, node ? Dump(*node).substr(0, 60) : "?",
                        "unknown field (see docs/case-file.md)");
     }

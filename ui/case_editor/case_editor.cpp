@@ -19,6 +19,7 @@
 #include <QVBoxLayout>
 #include <QValueAxis>
 #include <cmath>
+#include <numbers>
 
 #include "ui/case_editor/array_table_model.hpp"
 #include "ui/case_editor/case_document.hpp"
@@ -129,47 +130,66 @@ QWidget* CaseEditor::makeParameterPage(CaseGroup group) {
   return page;
 }
 
-QWidget* CaseEditor::makeProfilePage() {
-  auto* splitter = new QSplitter(Qt::Horizontal, this);
-  splitter->addWidget(makeParameterPage(CaseGroup::kSkirt));
-
-  auto* right = new QWidget(splitter);
-  auto* layout = new QVBoxLayout(right);
-  layout->addWidget(new QLabel(tr("<b>Skirt profile</b> (barrel drop h_skirt vs. distance from "
-                                  "the skirt top)"),
-                               right));
-  auto* tables = new QSplitter(Qt::Horizontal, right);
-  profile_model_ = new ArrayTableModel(
-      document_,
-      {{tr("y [mm]"), 1e-3, [](engine::EngineCase& c) { return &c.skirt.profile_y; }},
-       {tr("h [µm]"), 1e-6, [](engine::EngineCase& c) { return &c.skirt.profile_h; }}},
-      [] { return std::string("skirt.profile"); }, tr("skirt profile"), this);
-  profile_table_ = MakeTable(profile_model_, tables);
-  profile_table_->setObjectName("profile_table");
-  profile_chart_ = MakeChart(tr("y from skirt top [mm]"), tr("profile drop h [µm]"));
-  auto* view = new QChartView(profile_chart_, tables);
+QWidget* CaseEditor::makeArrayBlock(const QString& title, ArrayTableModel* model,
+                                    const QString& table_name, QChart* chart, QWidget* parent) {
+  auto* block = new QWidget(parent);
+  auto* layout = new QVBoxLayout(block);
+  layout->setContentsMargins(0, 0, 0, 0);
+  layout->addWidget(new QLabel(title, block));
+  auto* tables = new QSplitter(Qt::Horizontal, block);
+  QTableView* table = MakeTable(model, tables);
+  table->setObjectName(table_name);
+  auto* view = new QChartView(chart, tables);
   view->setRenderHint(QPainter::Antialiasing);
-  tables->addWidget(profile_table_);
+  tables->addWidget(table);
   tables->addWidget(view);
   tables->setStretchFactor(1, 2);
   layout->addWidget(tables, 1);
   auto* buttons = new QHBoxLayout;
-  auto* add = new QPushButton(tr("Insert row"), right);
-  auto* remove = new QPushButton(tr("Remove row"), right);
-  connect(add, &QPushButton::clicked, this, [this] {
-    const int row = profile_table_->currentIndex().isValid() ? profile_table_->currentIndex().row()
-                                                             : profile_model_->rowCount() - 1;
-    profile_model_->insertRowAfter(row);
+  auto* add = new QPushButton(tr("Insert row"), block);
+  auto* remove = new QPushButton(tr("Remove row"), block);
+  connect(add, &QPushButton::clicked, this, [table, model] {
+    const int row =
+        table->currentIndex().isValid() ? table->currentIndex().row() : model->rowCount() - 1;
+    model->insertRowAfter(row);
   });
-  connect(remove, &QPushButton::clicked, this, [this] {
-    if (profile_table_->currentIndex().isValid()) {
-      profile_model_->removeRowAt(profile_table_->currentIndex().row());
-    }
+  connect(remove, &QPushButton::clicked, this, [table, model] {
+    if (table->currentIndex().isValid()) model->removeRowAt(table->currentIndex().row());
   });
   buttons->addWidget(add);
   buttons->addWidget(remove);
   buttons->addStretch();
   layout->addLayout(buttons);
+  return block;
+}
+
+QWidget* CaseEditor::makeProfilePage() {
+  auto* splitter = new QSplitter(Qt::Horizontal, this);
+  splitter->addWidget(makeParameterPage(CaseGroup::kSkirt));
+
+  // Right: the axial profile above the ovality, each as table + chart side by side.
+  auto* right = new QSplitter(Qt::Vertical, splitter);
+  profile_model_ = new ArrayTableModel(
+      document_,
+      {{tr("y [mm]"), 1e-3, [](engine::EngineCase& c) { return &c.skirt.profile_y; }},
+       {tr("h [µm]"), 1e-6, [](engine::EngineCase& c) { return &c.skirt.profile_h; }}},
+      [] { return std::string("skirt.profile"); }, tr("skirt profile"), this);
+  profile_chart_ = MakeChart(tr("y from skirt top [mm]"), tr("profile drop h [µm]"));
+  right->addWidget(makeArrayBlock(tr("<b>Skirt profile</b> (barrel drop h_skirt vs. distance "
+                                     "from the skirt top)"),
+                                  profile_model_, "profile_table", profile_chart_, right));
+  profile_table_ = right->findChild<QTableView*>("profile_table");
+  ovality_model_ = new ArrayTableModel(
+      document_,
+      {{tr("α [°]"), std::numbers::pi / 180.0,
+        [](engine::EngineCase& c) { return &c.skirt.ovality_alpha; }},
+       {tr("h [µm]"), 1e-6, [](engine::EngineCase& c) { return &c.skirt.ovality_h; }}},
+      [] { return std::string("skirt.ovality"); }, tr("skirt ovality"), this);
+  ovality_chart_ = MakeChart(tr("α from the thrust axis [°]"), tr("ovality gap h [µm]"));
+  right->addWidget(makeArrayBlock(tr("<b>Skirt ovality</b> (extra radial gap vs. angle from the "
+                                     "thrust axis; no rows = round skirt)"),
+                                  ovality_model_, "ovality_table", ovality_chart_, right));
+  ovality_table_ = right->findChild<QTableView*>("ovality_table");
   splitter->addWidget(right);
   splitter->setStretchFactor(0, 2);
   splitter->setStretchFactor(1, 3);
@@ -275,6 +295,30 @@ void CaseEditor::updateCharts() {
     }
     s->replace(points);
     FitAxes(profile_chart_, 0.0, c.skirt.length * 1e3, std::min(0.0, y0), y1);
+  }
+  // Ovality over the half skirt α ∈ [0°, 180°].
+  {
+    if (ovality_chart_->series().isEmpty()) {
+      auto* s = new QLineSeries;
+      s->setPointsVisible(true);
+      ovality_chart_->addSeries(s);
+      for (auto* axis : ovality_chart_->axes()) s->attachAxis(axis);
+    }
+    auto* s = static_cast<QLineSeries*>(ovality_chart_->series().first());
+    QList<QPointF> points;
+    double y1 = 0;
+    const auto& alpha = c.skirt.ovality_alpha;
+    const auto& gap = c.skirt.ovality_h;
+    for (size_t i = 0; i < alpha.size() && i < gap.size(); ++i) {
+      const double h = gap[i] * 1e6;
+      const double deg = alpha[i] * 180.0 / std::numbers::pi;
+      if (std::isfinite(h) && std::isfinite(deg)) {
+        points << QPointF(deg, h);
+        y1 = std::max(y1, h);
+      }
+    }
+    s->replace(points);
+    FitAxes(ovality_chart_, 0.0, 180.0, 0.0, y1);
   }
   // Pressure curves: one series per speed, the edited one thicker.
   {

@@ -1,7 +1,7 @@
 #pragma once
 /// @file The case editor: one tab per group of scalar inputs (tables with units), the skirt
-/// profile (table + chart) and the cylinder-pressure curves per speed (table + chart, CSV import
-/// and export). All edits go through the CaseDocument (undo, validation).
+/// profile and ovality (each table + chart) and the cylinder-pressure curves per speed (table +
+/// chart, CSV import and export). All edits go through the CaseDocument (undo, validation).
 #include <QWidget>
 #include <map>
 
@@ -30,10 +30,12 @@ class CaseEditor : public QWidget {
   QTableView* parameterTable(CaseGroup group) const { return tables_.at(group); }
   ParameterTableModel* parameterModel(CaseGroup group) const { return models_.at(group); }
   ArrayTableModel* profileModel() const { return profile_model_; }
+  ArrayTableModel* ovalityModel() const { return ovality_model_; }
   ArrayTableModel* pressureModel() const { return pressure_model_; }
   QComboBox* modelSelector() const { return model_combo_; }
   QComboBox* curveSelector() const { return curve_combo_; }
   QChart* profileChart() const { return profile_chart_; }
+  QChart* ovalityChart() const { return ovality_chart_; }
   QChart* pressureChart() const { return pressure_chart_; }
 
   /// Index into engineCase().pressure_curves of the curve in the table (-1: none).
@@ -51,6 +53,9 @@ class CaseEditor : public QWidget {
  private:
   QWidget* makeParameterPage(CaseGroup group);
   QWidget* makeProfilePage();
+  /// A titled table + chart side by side with Insert/Remove row buttons (profile, ovality).
+  QWidget* makeArrayBlock(const QString& title, ArrayTableModel* model, const QString& table_name,
+                          QChart* chart, QWidget* parent);
   QWidget* makePressurePage();
   void updateCharts();
   void updateCurveSelector();
@@ -63,6 +68,9 @@ class CaseEditor : public QWidget {
   ArrayTableModel* profile_model_ = nullptr;
   QTableView* profile_table_ = nullptr;
   QChart* profile_chart_ = nullptr;
+  ArrayTableModel* ovality_model_ = nullptr;
+  QTableView* ovality_table_ = nullptr;
+  QChart* ovality_chart_ = nullptr;
   QComboBox* curve_combo_ = nullptr;
   ArrayTableModel* pressure_model_ = nullptr;
   QTableView* pressure_table_ = nullptr;

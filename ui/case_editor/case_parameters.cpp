@@ -55,6 +55,10 @@ Check Range(double lo, double hi, bool lo_open, bool hi_open, const char* unit) 
       [=](const std::string& f, double v) { RequireInRange(f, v, lo, hi, lo_open, hi_open, unit); };
 }
 
+// Elastic constants per surface: the ranges of core's case file (E' needs E > 0, ν in (−1, 0.5)).
+Check YoungsModulus() { return Range(0.0, 1e13, true, false, "Pa"); }
+Check PoissonRatio() { return Range(-1.0, 0.5, true, true, ""); }
+
 // Member-pointer accessors keep each row one line long.
 template <typename Section, typename Field>
 CaseParameter Row(CaseGroup group, std::string path, QString label, QString unit, double to_si,
@@ -145,8 +149,14 @@ std::vector<CaseParameter> MakeParameters() {
                   &SkirtCase::roughness_liner, Positive("m")));
   p.push_back(Row(G::kSkirt, "skirt.peklenik", "Peklenik number γ", "–", 1.0, sk,
                   &SkirtCase::peklenik, Range(1.0 / 9.0, 9.0, false, false, "")));
-  p.push_back(Row(G::kSkirt, "skirt.composite_modulus", "Composite modulus E′", "GPa", kGPa, sk,
-                  &SkirtCase::composite_modulus, Positive("Pa")));
+  p.push_back(Row(G::kSkirt, "skirt.modulus_skirt", "Skirt Young's modulus E_skirt", "GPa", kGPa,
+                  sk, &SkirtCase::modulus_skirt, YoungsModulus()));
+  p.push_back(Row(G::kSkirt, "skirt.poisson_skirt", "Skirt Poisson ratio ν_skirt", "–", 1.0, sk,
+                  &SkirtCase::poisson_skirt, PoissonRatio()));
+  p.push_back(Row(G::kSkirt, "skirt.modulus_liner", "Liner Young's modulus E_liner", "GPa", kGPa,
+                  sk, &SkirtCase::modulus_liner, YoungsModulus()));
+  p.push_back(Row(G::kSkirt, "skirt.poisson_liner", "Liner Poisson ratio ν_liner", "–", 1.0, sk,
+                  &SkirtCase::poisson_liner, PoissonRatio()));
   p.push_back(Row(G::kSkirt, "skirt.boundary_friction", "Boundary friction μ_f", "–", 1.0, sk,
                   &SkirtCase::boundary_friction, Range(0, 1, false, false, "")));
   // Big-end bearing.
@@ -162,8 +172,14 @@ std::vector<CaseParameter> MakeParameters() {
                   &BigEndCase::roughness_bearing, Positive("m")));
   p.push_back(Row(G::kBigEnd, "big_end.peklenik", "Peklenik number γ", "–", 1.0, be,
                   &BigEndCase::peklenik, Range(1.0 / 9.0, 9.0, false, false, "")));
-  p.push_back(Row(G::kBigEnd, "big_end.composite_modulus", "Composite modulus E′", "GPa", kGPa, be,
-                  &BigEndCase::composite_modulus, Positive("Pa")));
+  p.push_back(Row(G::kBigEnd, "big_end.modulus_journal", "Journal Young's modulus E_j", "GPa", kGPa,
+                  be, &BigEndCase::modulus_journal, YoungsModulus()));
+  p.push_back(Row(G::kBigEnd, "big_end.poisson_journal", "Journal Poisson ratio ν_j", "–", 1.0, be,
+                  &BigEndCase::poisson_journal, PoissonRatio()));
+  p.push_back(Row(G::kBigEnd, "big_end.modulus_bearing", "Bearing Young's modulus E_b", "GPa", kGPa,
+                  be, &BigEndCase::modulus_bearing, YoungsModulus()));
+  p.push_back(Row(G::kBigEnd, "big_end.poisson_bearing", "Bearing Poisson ratio ν_b", "–", 1.0, be,
+                  &BigEndCase::poisson_bearing, PoissonRatio()));
   p.push_back(Row(G::kBigEnd, "big_end.boundary_friction", "Boundary friction μ_f", "–", 1.0, be,
                   &BigEndCase::boundary_friction, Range(0, 1, false, false, "")));
   p.push_back(Row(G::kBigEnd, "big_end.oil_feed_pressure", "Oil-feed pressure (gauge, 0 = none)",

@@ -77,6 +77,26 @@ CaseIssues ValidateCase(const engine::EngineCase& c) {
   } catch (const InputError& e) {
     issues["skirt.profile"] = e.what();
   }
+  // Skirt ovality: none, or angles strictly increasing within [0, π], gaps finite and ≥ 0.
+  const auto& alpha = c.skirt.ovality_alpha;
+  const auto& gap = c.skirt.ovality_h;
+  try {
+    if (alpha.size() != gap.size()) {
+      throw InputError("skirt.ovality", std::to_string(alpha.size()) + " angles",
+                       "needs one gap per angle (" + std::to_string(gap.size()) + " gaps)");
+    }
+    for (size_t i = 0; i < alpha.size(); ++i) {
+      const std::string row = "skirt.ovality[" + std::to_string(i) + "]";
+      RequireInRange(row + ".alpha", alpha[i], 0.0, std::numbers::pi, false, false, "rad");
+      RequireNonNegative(row + ".h", gap[i], "m");
+      if (i > 0 && !(alpha[i] > alpha[i - 1])) {
+        throw InputError(row + ".alpha", FormatValue(alpha[i]),
+                         "must be > the previous row's alpha [rad]");
+      }
+    }
+  } catch (const InputError& e) {
+    issues["skirt.ovality"] = e.what();
+  }
   // Pressure curves: core's own checks (PressureCurve constructor), one speed once.
   for (size_t i = 0; i < c.pressure_curves.size(); ++i) {
     const auto& curve = c.pressure_curves[i];
@@ -112,6 +132,8 @@ CaseIssues ValidateCase(const engine::EngineCase& c) {
           key = "pressure_curves[" + key.substr(digit, end - digit) + "]";
       } else if (key.rfind("skirt.profile", 0) == 0) {
         key = "skirt.profile";
+      } else if (key.rfind("skirt.ovality", 0) == 0) {
+        key = "skirt.ovality";
       }
       issues[key] = e.what();
     } catch (const std::exception& e) {

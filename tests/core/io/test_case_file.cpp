@@ -4,6 +4,7 @@
 #include <QtTest>
 
 #include <fstream>
+#include <numbers>
 
 #include "core/input_error.hpp"
 #include "core/io/case_file.hpp"
@@ -67,8 +68,10 @@ class TestCaseFile : public QObject {
     defaults.assumed = c.assumed;
     QCOMPARE(io::CaseToJson(c), io::CaseToJson(defaults));
     // Values the paper lacks are marked with a reason.
-    for (const char* field : {"geometry.crank_mass", "skirt.peklenik", "big_end.composite_modulus",
-                              "skirt.profile_h", "big_end.oil_feed_pressure"}) {
+    for (const char* field :
+         {"geometry.crank_mass", "skirt.peklenik", "skirt.modulus_skirt", "skirt.poisson_liner",
+          "big_end.modulus_journal", "big_end.poisson_bearing", "skirt.profile_h",
+          "skirt.ovality_alpha", "big_end.oil_feed_pressure"}) {
       QVERIFY2(c.assumed.count(field) && !c.assumed.at(field).empty(), field);
     }
   }
@@ -87,6 +90,92 @@ class TestCaseFile : public QObject {
     QCOMPARE(once, twice);
     QCOMPARE(io::CaseFromJson(once).skirt.model, engine::JointModel::kLubricated);
   }
+  void perSurfaceElasticityAndOvality() {
+    // Defaults: E and ν per surface, no ovality.
+    const engine::EngineCase d = io::CaseFromJson(DefaultJson());
+    QCOMPARE(d.skirt.modulus_skirt, 75e9);
+    QCOMPARE(d.skirt.poisson_liner, 0.26);
+    QCOMPARE(d.big_end.modulus_bearing, 70e9);
+    QVERIFY(d.skirt.ovality_alpha.empty() && d.skirt.ovality_h.empty());
+    // Round trip of edited values.
+    engine::EngineCase c = d;
+    c.skirt.modulus_liner = 1.3e11;
+    c.skirt.poisson_skirt = -0.2;
+    c.big_end.modulus_journal = 2.05e11;
+    c.big_end.poisson_bearing = 0.49;
+    c.skirt.ovality_alpha = {0.0, 0.8, std::numbers::pi};
+    c.skirt.ovality_h = {0.0, 10e-6, 25e-6};
+    const engine::EngineCase back = io::CaseFromJson(io::CaseToJson(c));
+    QCOMPARE(back.skirt.modulus_liner, 1.3e11);
+    QCOMPARE(back.skirt.poisson_skirt, -0.2);
+    QCOMPARE(back.big_end.modulus_journal, 2.05e11);
+    QCOMPARE(back.big_end.poisson_bearing, 0.49);
+    QCOMPARE(back.skirt.ovality_alpha, c.skirt.ovality_alpha);
+    QCOMPARE(back.skirt.ovality_h, c.skirt.ovality_h);
+    QCOMPARE(io::CaseToJson(back), io::CaseToJson(c));
+    // Reachable by --set (scalars present in the embedded default).
+    const io::LoadedCase set =
+        io::LoadCase("", {"skirt.modulus_liner=1.2e11", "big_end.poisson_journal=0.29"});
+    QCOMPARE(set.value.skirt.modulus_liner, 1.2e11);
+    QCOMPARE(set.value.big_end.poisson_journal, 0.29);
+
+    // Bad values name the field: E in (0, 1e13] Pa, ν in (−1, 0.5).
+    auto with = [](const std::string& section, const std::string& key, json value) {
+      json j = DefaultJson();
+      j[section][key] = value;
+      return j;
+    };
+    QCOMPARE(ErrorField(with("skirt", "modulus_liner", 0.0)), std::string("skirt.modulus_liner"));
+    QCOMPARE(ErrorField(with("skirt", "modulus_skirt", 2e13)), std::string("skirt.modulus_skirt"));
+    QCOMPARE(ErrorField(with("skirt", "modulus_skirt", 1e13)), std::string());  // closed bound
+    QCOMPARE(ErrorField(with("big_end", "modulus_bearing", "nan")),
+             std::string("big_end.modulus_bearing"));
+    QCOMPARE(ErrorField(with("big_end", "poisson_bearing", 0.5)),
+             std::string("big_end.poisson_bearing"));
+    QCOMPARE(ErrorField(with("big_end", "poisson_journal", -1.0)),
+             std::string("big_end.poisson_journal"));
+    QCOMPARE(ErrorField(with("skirt", "poisson_liner", "stiff")),
+             std::string("skirt.poisson_liner"));
+    try {
+      io::CaseFromJson(with("skirt", "poisson_liner", 0.6));
+      QFAIL("no error");
+    } catch (const InputError& e) {
+      QVERIFY2(std::string(e.what()).find("0.6") != std::string::npos, e.what());
+      QVERIFY2(std::string(e.what()).find("0.5") != std::string::npos, e.what());
+    }
+    // An old file with one composite E' is told what replaced it.
+    json legacy = DefaultJson();
+    legacy["big_end"]["composite_modulus"] = 1.172e11;
+    try {
+      io::CaseFromJson(legacy);
+      QFAIL("no error");
+    } catch (const InputError& e) {
+      QCOMPARE(e.field(), std::string("big_end.composite_modulus"));
+      QVERIFY2(std::string(e.what()).find("modulus_journal") != std::string::npos, e.what());
+    }
+
+    // Ovality: empty allowed; else angles strictly increasing in [0, π], gaps finite and ≥ 0.
+    auto oval = [](json alpha, json h) {
+      json j = DefaultJson();
+      j["skirt"]["ovality_alpha"] = alpha;
+      j["skirt"]["ovality_h"] = h;
+      return j;
+    };
+    QCOMPARE(ErrorField(oval(json::array(), json::array())), std::string());
+    QCOMPARE(ErrorField(oval({0.0, 1.5}, {0.0, 2e-5})), std::string());
+    QCOMPARE(ErrorField(oval({0.0, 1.0}, json::array({0.0}))), std::string("skirt.ovality_h"));
+    QCOMPARE(ErrorField(oval(json::array({0.0}), json::array())), std::string("skirt.ovality_h"));
+    QCOMPARE(ErrorField(oval({0.0, 3.5}, {0.0, 1e-5})), std::string("skirt.ovality_alpha.1"));
+    QCOMPARE(ErrorField(oval({-0.1, 1.0}, {0.0, 1e-5})), std::string("skirt.ovality_alpha.0"));
+    QCOMPARE(ErrorField(oval({0.0, 1.0, 1.0}, {0.0, 1e-5, 2e-5})),
+             std::string("skirt.ovality_alpha.2"));
+    QCOMPARE(ErrorField(oval({1.0, 0.5}, {0.0, 1e-5})), std::string("skirt.ovality_alpha.1"));
+    QCOMPARE(ErrorField(oval({0.0, 1.0}, {0.0, -1e-6})), std::string("skirt.ovality_h.1"));
+    QCOMPARE(ErrorField(oval({0.0, 1.0}, {0.0, "inf"})), std::string("skirt.ovality_h.1"));
+    QCOMPARE(ErrorField(oval({0.0, "nan"}, {0.0, 1e-5})), std::string("skirt.ovality_alpha.1"));
+    QCOMPARE(ErrorField(oval(1.0, json::array({0.0}))), std::string("skirt.ovality_alpha"));
+  }
+
   void badInputNamesTheField() {
     auto with = [](const std::string& section, const std::string& key, json value) {
       json j = DefaultJson();

@@ -1,13 +1,16 @@
 // The case editor driven through its real widgets: typing into a table cell changes the case (in
 // SI), undo/redo restore it, an invalid value is marked with core's reason and blocks Run, the
-// skirt profile and pressure tables edit the arrays, pressure CSV export/import round-trips, and
-// a project round-trips through save/load (core's case file, written atomically).
+// skirt profile, ovality and pressure tables edit the arrays, E and ν per surface are edited in
+// GPa, pressure CSV export/import round-trips, and a project round-trips through save/load (core's
+// case file, written atomically).
 #include <QAction>
 #include <QApplication>
+#include <QChart>
 #include <QComboBox>
 #include <QFile>
 #include <QLabel>
 #include <QLineEdit>
+#include <QLineSeries>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QTableView>
@@ -188,6 +191,69 @@ class TestCaseEditor : public QObject {
     QVERIFY(curve >= 0);
     TypeIntoCell(pressure, p_model->index(3, 1), "0.5");
     QCOMPARE(window.document()->engineCase().pressure_curves[size_t(curve)].pressure[3], 0.5e6);
+  }
+
+  void surfaceElasticityAndOvalityEditTheCaseInSi() {
+    MainWindow window;
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    auto* tabs = window.caseEditor()->findChild<QTabWidget*>("case_tabs");
+    tabs->setCurrentIndex(3);
+    QTableView* skirt = window.caseEditor()->parameterTable(CaseGroup::kSkirt);
+    // E of the liner, shown in GPa, stored in Pa.
+    const QModelIndex liner = ValueCell(window, CaseGroup::kSkirt, "skirt.modulus_liner");
+    QCOMPARE(liner.data().toString(), QString("110"));
+    TypeIntoCell(skirt, liner, "120");
+    QCOMPARE(window.document()->engineCase().skirt.modulus_liner, 120e9);
+    QCOMPARE(window.document()->engineCase().skirt.modulus_skirt, 75e9);  // the other surface
+    QVERIFY(window.runAction()->isEnabled());
+    // ν = 0.5 is outside (−1, 0.5): marked with core's reason, Run blocked.
+    const QModelIndex nu = ValueCell(window, CaseGroup::kSkirt, "skirt.poisson_liner");
+    TypeIntoCell(skirt, nu, "0.5");
+    QVERIFY(nu.data(Qt::BackgroundRole).isValid());
+    QVERIFY2(nu.data(Qt::ToolTipRole).toString().contains("skirt.poisson_liner"),
+             qPrintable(nu.data(Qt::ToolTipRole).toString()));
+    QVERIFY(!window.runAction()->isEnabled());
+    window.document()->undoStack()->undo();
+    QCOMPARE(window.document()->engineCase().skirt.poisson_liner, 0.26);
+    QVERIFY(window.runAction()->isEnabled());
+    // The big-end surfaces have their own rows.
+    QCOMPARE(ValueCell(window, CaseGroup::kBigEnd, "big_end.modulus_journal").data().toString(),
+             QString("210"));
+    QCOMPARE(ValueCell(window, CaseGroup::kBigEnd, "big_end.poisson_bearing").data().toString(),
+             QString("0.33"));
+
+    // Ovality: empty by default (round skirt); rows in ° and µm, stored in rad and m.
+    auto* table = window.caseEditor()->findChild<QTableView*>("ovality_table");
+    QVERIFY(table != nullptr);
+    ArrayTableModel* model = window.caseEditor()->ovalityModel();
+    QCOMPARE(model->rowCount(), 0);
+    model->insertRowAfter(-1);
+    QCOMPARE(model->rowCount(), 1);
+    TypeIntoCell(table, model->index(0, 1), "5");
+    QVERIFY(std::abs(window.document()->engineCase().skirt.ovality_h[0] - 5e-6) < 1e-18);
+    model->insertRowAfter(0);  // a copy of the last row: same angle, not yet valid
+    QVERIFY(model->index(1, 0).data(Qt::BackgroundRole).isValid());
+    QVERIFY(!window.runAction()->isEnabled());
+    TypeIntoCell(table, model->index(1, 0), "90");
+    TypeIntoCell(table, model->index(1, 1), "12");
+    const auto& c = window.document()->engineCase();
+    QCOMPARE(c.skirt.ovality_alpha.size(), size_t(2));
+    QVERIFY(std::abs(c.skirt.ovality_alpha[1] - M_PI / 2) < 1e-15);
+    QVERIFY(std::abs(c.skirt.ovality_h[1] - 12e-6) < 1e-18);
+    QVERIFY(!model->index(1, 0).data(Qt::BackgroundRole).isValid());
+    QVERIFY(window.runAction()->isEnabled());
+    // The chart beside the table shows the rows in display units.
+    auto* series = static_cast<QLineSeries*>(window.caseEditor()->ovalityChart()->series().first());
+    QCOMPARE(series->count(), 2);
+    QVERIFY(std::abs(series->at(1).x() - 90.0) < 1e-9 && std::abs(series->at(1).y() - 12.0) < 1e-9);
+    // Past 180°: marked with the reason, Run blocked.
+    TypeIntoCell(table, model->index(1, 0), "200");
+    QVERIFY2(model->index(1, 0).data(Qt::ToolTipRole).toString().contains("skirt.ovality"),
+             qPrintable(model->index(1, 0).data(Qt::ToolTipRole).toString()));
+    QVERIFY(!window.runAction()->isEnabled());
+    window.document()->undoStack()->undo();
+    QVERIFY(window.runAction()->isEnabled());
   }
 
   void pressureCsvExportImportRoundTrips() {
