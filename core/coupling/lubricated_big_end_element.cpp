@@ -84,7 +84,7 @@ Eigen::Vector4d LubricatedBigEndElement::Loads(const Eigen::Matrix<double, 6, 1>
                                                double bearing_angle, BigEndKinematics* kin) {
   const double c = solver_->config().geometry.radial_clearance;
   *kin = FromCartesian(z, bearing_angle, c);
-  factorizations_ += solver_->Solve(kin->state).stats.iterations;
+  factorizations_ += solver_->Solve(kin->state).stats.factorizations;
   ++solves_;
   const lubrication::BearingResult& r = solver_->result();
   Eigen::Vector4d g(r.force_x, r.force_y, r.friction_torque_journal, r.friction_torque_bearing);

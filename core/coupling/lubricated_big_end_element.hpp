@@ -53,7 +53,7 @@ class LubricatedBigEndElement final : public multibody::JointForceElement,
   void RefreshFields();
   const lubrication::BearingResult& last_result() const { return result_; }
   long reynolds_solves() const { return solves_; }
-  /// Numeric LDLᵀ factorisations (= active-set iterations) over all solves.
+  /// Numeric LDLᵀ factorisations over all solves (the other linear solves reuse a factor).
   long factorizations() const { return factorizations_; }
 
  private:

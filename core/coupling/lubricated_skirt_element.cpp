@@ -57,7 +57,7 @@ SkirtKinematics LubricatedSkirtElement::Kinematics(const BodyState& piston) cons
 }
 
 void LubricatedSkirtElement::SolveAt(const lubrication::SkirtState& state) {
-  factorizations_ += solver_->Solve(state).stats.iterations;
+  factorizations_ += solver_->Solve(state).stats.factorizations;
   ++solves_;
 }
 

@@ -182,6 +182,7 @@ ReynoldsFem::ReynoldsFem(TriMesh mesh, int sliding_axis, ReynoldsOptions options
   extra_fixed_.assign(n, 0);
   fixed_.assign(n, 0);
   active_.assign(n, 0);
+  cut_.assign(n, 0);
   prev_active_.assign(n, 0);
   next_active_.assign(n, 0);
   factors_.assign(n, NodalFilmFactors{});
@@ -212,6 +213,7 @@ void ReynoldsFem::Assemble(const ReynoldsParams& params) {
   const bool jfo = options_.cavitation == CavitationModel::kJfo;
   const bool full = jfo || ldlt_->SupportsRowModify();  // full matrix: JFO LU, row additions
   if (full) std::fill(k_full_.valuePtr(), k_full_.valuePtr() + k_full_.nonZeros(), 0.0);
+  full_assembled_ = full;
   f_.setZero();
   double* kl = k_lower_.valuePtr();
   double* kf = k_full_.valuePtr();
@@ -311,7 +313,17 @@ bool ReynoldsFem::SolveReynoldsLcp(bool unconstrained) {
   ReynoldsStats& st = sol_.stats;
   Eigen::VectorXd& p = sol_.pressure;
   bool converged = false;
-  bool refactorize = true;
+  auto update_cut = [&] {
+    for (int k = 0; k < n; ++k) cut_[k] = fixed_[k] ? 2 : (active_[k] ? 1 : 0);
+  };
+  update_cut();
+  // The previous factor preconditions CG while its masked set is the current one; `exact` =
+  // the factor is that of the current matrix (after a factorisation in this solve).
+  bool refactorize = !(options_.reuse_factorization && factor_ready_ && factor_cut_ == cut_);
+  bool exact = false;
+  // CG starts from the previous solve's pressure (the state moved little), later iterations
+  // from the last iterate.
+  bool have_guess = have_prev_ && p.size() == n;
   // Few changes: modify the factor row by row (CHOLMOD rowdel/rowadd) instead of refactorising.
   const bool modify = ldlt_->SupportsRowModify();
   const int modify_limit = std::max(16, n / 25);
@@ -330,15 +342,26 @@ bool ReynoldsFem::SolveReynoldsLcp(bool unconstrained) {
     if (refactorize) {
       const bool ok = ldlt_->Factorize(work_lower_);
       ++st.factorizations;
+      factor_ready_ = ok;
       if (!ok) {
         st.status = SolveStatus::kFactorizationFailed;
         return false;
       }
+      update_cut();
+      factor_cut_ = cut_;
+      exact = true;
     }
     auto t2 = Clock::now();
     st.factorization_s += Seconds(t1, t2);
+    if (exact) {
+      ldlt_->Solve(rhs_, p);
+    } else if (!SolvePcg(p, have_guess)) {
+      ++st.pcg_fallbacks;
+      st.complementarity_s += Seconds(t2, Clock::now());
+      refactorize = true;
+      continue;
+    }
     ++st.iterations;
-    ldlt_->Solve(rhs_, p);
     for (int k = 0; k < n; ++k) {
       if (active_[k]) p[k] = 0.0;
       if (fixed_[k]) p[k] = p_fixed_[k];
@@ -353,8 +376,10 @@ bool ReynoldsFem::SolveReynoldsLcp(bool unconstrained) {
     // when p_k < 0. Relative round-off tolerances keep the update from cycling at p ~ 0.
     work_.noalias() = k_lower_.selfadjointView<Eigen::Lower>() * p;
     work_ -= f_;
-    const double p_tol = 1e-12 * std::max(p.cwiseAbs().maxCoeff(), 1e-300);
-    const double w_tol = 1e-12 * flow_scale_;
+    // Round-off of the solve: ~1e-14 relative when exact, the CG tolerance otherwise.
+    const double rel_tol = exact ? 1e-12 : std::max(1e-12, 10.0 * options_.pcg_tolerance);
+    const double p_tol = rel_tol * std::max(p.cwiseAbs().maxCoeff(), 1e-300);
+    const double w_tol = rel_tol * flow_scale_;
     int changes = 0;
     for (int k = 0; k < n; ++k) {
       if (fixed_[k]) {
@@ -403,13 +428,91 @@ bool ReynoldsFem::SolveReynoldsLcp(bool unconstrained) {
       }
     }
     st.factorization_s += Seconds(t3, Clock::now());
-    if (!ok) refactorize = true;  // fall back to a full refactorisation of the new set
     for (int k = 0; k < n; ++k) active_[k] = next_active_[k];
+    update_cut();
+    factor_cut_ = cut_;  // the modified factor's set (exact stays as it was)
+    if (!ok) {           // fall back to a full refactorisation of the new set
+      refactorize = true;
+      factor_ready_ = false;
+    }
   }
   if (!converged) st.status = SolveStatus::kNotConverged;
   prev_active_ = active_;
   have_prev_ = true;
   return converged;
+}
+
+void ReynoldsFem::ApplyMasked(const Eigen::VectorXd& in, Eigen::VectorXd& out) {
+  const int n = NodeCount();
+  if (full_assembled_) {  // row k of the symmetric K = its column k: one gather pass
+    const double* kf = k_full_.valuePtr();
+    const int* inner = k_full_.innerIndexPtr();
+    const int* outer = k_full_.outerIndexPtr();
+    for (int k = 0; k < n; ++k) {
+      if (cut_[k]) {
+        out[k] = kf[diag_pos_full_[k]] * in[k];
+        continue;
+      }
+      double sum = 0.0;
+      for (int q = outer[k]; q < outer[k + 1]; ++q)
+        if (!cut_[inner[q]]) sum += kf[q] * in[inner[q]];
+      out[k] = sum;
+    }
+    return;
+  }
+  pcg_t_ = in;
+  for (int k = 0; k < n; ++k)
+    if (cut_[k]) pcg_t_[k] = 0.0;
+  out.noalias() = k_lower_.selfadjointView<Eigen::Lower>() * pcg_t_;
+  const double* kv = k_lower_.valuePtr();
+  const int* outer = k_lower_.outerIndexPtr();
+  for (int k = 0; k < n; ++k)
+    if (cut_[k]) out[k] = kv[outer[k]] * in[k];  // diagonal first in each lower column
+}
+
+bool ReynoldsFem::SolvePcg(Eigen::VectorXd& x, bool x_is_guess) {
+  // Conjugate gradients on W x = rhs_ (W symmetric positive definite: a Dirichlet-masked
+  // stiffness matrix), preconditioned by the LDL^T factor M of a nearby matrix. Start: the
+  // given x (the previous iterate / solve, masked), else x0 = M^-1 rhs_.
+  ReynoldsStats& st = sol_.stats;
+  const int n = NodeCount();
+  pcg_q_.resize(n);
+  if (x_is_guess) {
+    for (int k = 0; k < n; ++k)
+      if (cut_[k]) x[k] = cut_[k] == 2 ? p_fixed_[k] : 0.0;
+  } else {
+    ldlt_->Solve(rhs_, x);
+  }
+  ApplyMasked(x, pcg_q_);
+  pcg_r_ = rhs_ - pcg_q_;
+  ldlt_->Solve(pcg_r_, pcg_z_);
+  const double tol = options_.pcg_tolerance * std::max(x.cwiseAbs().maxCoeff(), 1e-300);
+  if (pcg_z_.cwiseAbs().maxCoeff() <= tol) {
+    x += pcg_z_;
+    ++st.pcg_solves;
+    return true;
+  }
+  pcg_d_ = pcg_z_;
+  double rz = pcg_r_.dot(pcg_z_);
+  for (int it = 1; it <= options_.pcg_max_iterations; ++it) {
+    ApplyMasked(pcg_d_, pcg_q_);
+    const double dq = pcg_d_.dot(pcg_q_);
+    if (!(dq > 0.0)) return false;  // not SPD in floating point: refactorise
+    const double alpha = rz / dq;
+    x += alpha * pcg_d_;
+    pcg_r_ -= alpha * pcg_q_;
+    ldlt_->Solve(pcg_r_, pcg_z_);
+    ++st.pcg_iterations;
+    if (pcg_z_.cwiseAbs().maxCoeff() <= tol) {
+      x += pcg_z_;
+      ++st.pcg_solves;
+      return true;
+    }
+    const double rz_next = pcg_r_.dot(pcg_z_);
+    pcg_d_ = pcg_z_ + (rz_next / rz) * pcg_d_;
+    rz = rz_next;
+  }
+  return false;
 }
 
 bool ReynoldsFem::SolveJfo() {

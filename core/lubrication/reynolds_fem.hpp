@@ -58,6 +58,17 @@ struct ReynoldsOptions {
   /// first iteration is the unconstrained solve (fewer iterations on skirts, measured).
   enum class ColdStart { kSinkNodes, kUnconstrained };
   ColdStart cold_start = ColdStart::kSinkNodes;
+  /// Factor reuse: a solve whose active set starts where the last one ended (warm start, the
+  /// time-stepping case) first tries the conjugate-gradient method on the new matrix,
+  /// preconditioned by the previous LDL^T factor (exact for the previous matrix, which differs
+  /// from the new one by the small change of h between time steps / Newton iterates). Only when
+  /// it has not converged after pcg_max_iterations is the matrix refactorised. Off = every solve
+  /// refactorises (the reference; results agree to ~pcg_tolerance).
+  bool reuse_factorization = true;
+  int pcg_max_iterations = 6;
+  /// Convergence: max|M^-1 r| <= pcg_tolerance * max|p| (M^-1 r is the correction the
+  /// preconditioner would apply, i.e. ~ the error of p).
+  double pcg_tolerance = 1e-11;
 };
 
 /// Scalars of one solve. Nodal inputs are set through ReynoldsFem's mutable accessors.
@@ -71,10 +82,13 @@ struct ReynoldsParams {
 /// Statistics of one solve.
 struct ReynoldsStats {
   SolveStatus status = SolveStatus::kConverged;
-  int iterations = 0;                   ///< active-set iterations (linear solves)
-  int jfo_iterations = 0;               ///< of which in the JFO stage
-  int factorizations = 0;               ///< numeric LDL^T factorisations (Reynolds stage)
-  int row_updates = 0;                  ///< CHOLMOD row deletions/additions instead of those
+  int iterations = 0;      ///< active-set iterations (linear solves)
+  int jfo_iterations = 0;  ///< of which in the JFO stage
+  int factorizations = 0;  ///< numeric LDL^T factorisations (Reynolds stage)
+  int row_updates = 0;     ///< CHOLMOD row deletions/additions instead of those
+  int pcg_solves = 0;      ///< linear solves by CG preconditioned with an earlier factor
+  int pcg_iterations = 0;  ///< CG iterations of those (each: one product, one factor solve)
+  int pcg_fallbacks = 0;   ///< CG attempts that did not converge (then refactorised)
   double complementarity_residual = 0;  ///< max_k |min(p_k/p_ref, w_k/w_ref)| over free nodes
   double min_pressure = 0;              ///< most negative nodal pressure [Pa] (0 when exact)
   double max_mass_residual = 0;         ///< JFO: max nodal mass-balance residual / flow scale
@@ -143,6 +157,10 @@ class ReynoldsFem {
  private:
   void Assemble(const ReynoldsParams& params);
   bool SolveReynoldsLcp(bool unconstrained);
+  // x = W^-1 rhs_ by CG preconditioned with the current factor (W = K with the cut rows and
+  // columns of `cut_` replaced by their diagonal). False when not converged in the budget.
+  bool SolvePcg(Eigen::VectorXd& x, bool x_is_guess);
+  void ApplyMasked(const Eigen::VectorXd& in, Eigen::VectorXd& out);
   bool SolveJfo();
   void FinishStats();
 
@@ -166,6 +184,11 @@ class ReynoldsFem {
   Eigen::VectorXd h_, dhdt_, p_fixed_, f_, rhs_, x_, work_;
   std::vector<std::uint8_t> extra_fixed_, fixed_, active_, prev_active_, next_active_;
   bool have_prev_ = false;
+  // The matrix the LDL^T factor belongs to: per node 0 free, 1 active (cavitated), 2 fixed
+  // (unit or diagonal row); factor_ready_ once a factorisation succeeded.
+  std::vector<std::uint8_t> cut_, factor_cut_;
+  bool factor_ready_ = false, full_assembled_ = false;
+  Eigen::VectorXd pcg_r_, pcg_z_, pcg_d_, pcg_q_, pcg_t_;
   std::vector<NodalFilmFactors> factors_;
   std::vector<int> add_rows_;
   std::vector<double> add_values_;

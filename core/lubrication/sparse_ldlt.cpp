@@ -49,6 +49,9 @@ class CholmodModifyLdlt final : public SparseLdlt {
   ~CholmodModifyLdlt() override {
     if (factor_) cholmod_free_factor(&factor_, &common_);
     if (column_) cholmod_free_sparse(&column_, &common_);
+    if (x_) cholmod_free_dense(&x_, &common_);
+    if (y_) cholmod_free_dense(&y_, &common_);
+    if (e_) cholmod_free_dense(&e_, &common_);
     cholmod_finish(&common_);
   }
   CholmodModifyLdlt(const CholmodModifyLdlt&) = delete;
@@ -79,9 +82,10 @@ class CholmodModifyLdlt final : public SparseLdlt {
     bd.z = nullptr;
     bd.xtype = CHOLMOD_REAL;
     bd.dtype = CHOLMOD_DOUBLE;
-    cholmod_dense* xd = cholmod_solve(CHOLMOD_A, factor_, &bd, &common_);
-    x = Eigen::Map<Eigen::VectorXd>(static_cast<double*>(xd->x), b.size());
-    cholmod_free_dense(&xd, &common_);
+    // cholmod_solve2 keeps its result and workspace between calls (no allocation per solve;
+    // the CG path of ReynoldsFem calls this several times per Reynolds solve).
+    cholmod_solve2(CHOLMOD_A, factor_, &bd, nullptr, &x_, nullptr, &y_, &e_, &common_);
+    x = Eigen::Map<Eigen::VectorXd>(static_cast<double*>(x_->x), b.size());
   }
   bool SupportsRowModify() const override { return true; }
   bool DeleteRow(int k) override {
@@ -127,6 +131,7 @@ class CholmodModifyLdlt final : public SparseLdlt {
   cholmod_common common_;
   cholmod_factor* factor_ = nullptr;
   cholmod_sparse* column_ = nullptr;
+  cholmod_dense *x_ = nullptr, *y_ = nullptr, *e_ = nullptr;  // cholmod_solve2 workspace
   std::vector<int> inverse_perm_;
   std::vector<std::pair<int, double>> entries_;
 };

@@ -1,6 +1,7 @@
 #include "core/lubrication/surface/patir_cheng.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cassert>
 #include <cmath>
 
@@ -170,11 +171,18 @@ double ShearFlowTabulated(int index, double H) {
     return fit.a1_amp * std::pow(h, fit.alpha1) * std::exp(-fit.alpha2 * h + fit.alpha3 * h * h);
   }
   // Same expression as ShearFlowTailAmplitude, folded so that the two branches agree at H = 5
-  // to rounding: A2 exp(-0.25 H) = Phi_s,low(5) exp(-0.25 (H - 5)).
-  const double h5 = kShearFlowBranch;
-  const double low_branch_at_5 =
-      fit.a1_amp * std::pow(h5, fit.alpha1) * std::exp(-fit.alpha2 * h5 + fit.alpha3 * h5 * h5);
-  return low_branch_at_5 * std::exp(-kShearFlowTailDecay * (h - h5));
+  // to rounding: A2 exp(-0.25 H) = Phi_s,low(5) exp(-0.25 (H - 5)). Phi_s,low(5) is a constant
+  // of the fit, evaluated once (this branch runs at every node of a thick film).
+  static const std::array<double, kNumGammas> low_branch_at_5 = [] {
+    std::array<double, kNumGammas> values{};
+    const double h5 = kShearFlowBranch;
+    for (int i = 0; i < kNumGammas; ++i) {
+      const ShearFlowFit& f = kShearFlow[i];
+      values[i] = f.a1_amp * std::pow(h5, f.alpha1) * std::exp(-f.alpha2 * h5 + f.alpha3 * h5 * h5);
+    }
+    return values;
+  }();
+  return low_branch_at_5[index] * std::exp(-kShearFlowTailDecay * (h - kShearFlowBranch));
 }
 
 double ShearStressFsRawFit(int index, double H) {
