@@ -253,11 +253,16 @@ void MainWindow::onRunUpdated(const RunHandle& run) {
   progress_bar_->setValue(int(1000 * std::clamp(fraction, 0.0, 1.0)));
   const QString eta =
       p.remaining >= 0 ? tr(", about %1 s left").arg(p.remaining, 0, 'f', 0) : QString();
-  progress_bar_->setFormat(tr("cycle %1 of ≤ %2 · %3 °CA%4")
-                               .arg(p.cycle)
-                               .arg(p.max_cycles)
-                               .arg(720.0 * p.cycle_fraction, 0, 'f', 0)
-                               .arg(eta));
+  if (p.run_in) {
+    progress_bar_->setFormat(
+        tr("run-in · %1 °CA before cycle 1%2").arg(-720.0 * p.cycle_fraction, 0, 'f', 0).arg(eta));
+  } else {
+    progress_bar_->setFormat(tr("cycle %1 of ≤ %2 · %3 °CA%4")
+                                 .arg(p.cycle)
+                                 .arg(p.max_cycles)
+                                 .arg(720.0 * p.cycle_fraction, 0, 'f', 0)
+                                 .arg(eta));
+  }
   updateRunActions();
 }
 

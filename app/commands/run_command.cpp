@@ -51,11 +51,15 @@ Command MakeRunCommand() {
       const auto now = std::chrono::steady_clock::now();
       if (!quiet && now - last_print > std::chrono::milliseconds(200)) {
         last_print = now;
-        char line[160];
-        std::snprintf(line, sizeof line,
-                      "\rcycle %d/%d  %5.1f °CA  %3.0f %%  elapsed %.1f s  ETA %.1f s ", p.cycle,
-                      p.max_cycles, p.crank_angle_deg, 100.0 * std::min(p.fraction, 1.0), p.elapsed,
-                      p.remaining);
+        char where[48], line[160];
+        if (p.run_in) {
+          std::snprintf(where, sizeof where, "run-in %5.1f °CA", p.crank_angle_deg);
+        } else {
+          std::snprintf(where, sizeof where, "cycle %d/%d  %5.1f °CA", p.cycle, p.max_cycles,
+                        p.crank_angle_deg);
+        }
+        std::snprintf(line, sizeof line, "\r%s  %3.0f %%  elapsed %.1f s  ETA %.1f s ", where,
+                      100.0 * std::min(p.fraction, 1.0), p.elapsed, p.remaining);
         streams.err << line << std::flush;
       }
       return true;

@@ -103,6 +103,10 @@ struct SolverCase {
   double output_interval = 0.017453292519943295;  ///< [rad of crank] (1 °CA)
   double steady_state_tolerance = 0.01;           ///< cycle-to-cycle change / range [-]
   int max_cycles = 30;                            ///< [-]
+  /// Integrated before the first monitored cycle so that the start-up transient of the films
+  /// (journal and piston start centred and at rest) has decayed [rad of crank]; default 360 °CA.
+  /// Film models only (the Ideal model has no start-up transient).
+  double run_in_angle = 6.283185307179586;
 };
 
 struct LubricantCase {

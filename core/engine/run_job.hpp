@@ -63,12 +63,16 @@ RunConfig MakeRunConfig(const EngineCase& engine_case, Model model, double rpm,
 
 /// What the monitor sees after each output step.
 struct RunProgress {
-  int cycle = 0;  ///< 1-based cycle being computed
+  int cycle = 0;  ///< 1-based cycle being computed; 0 during the run-in
   int max_cycles = 0;
-  double crank_angle_deg = 0.0;              ///< within the cycle, [0, 720)
-  double fraction = 0.0;                     ///< rough overall progress [0, 1]
-  double elapsed = 0.0;                      ///< wall time so far [s]
-  double remaining = 0.0;                    ///< estimate [s]
+  bool run_in = false;            ///< the run-in before the first cycle (SolverCase::run_in_angle)
+  double crank_angle_deg = 0.0;   ///< within the cycle, [0, 720); run-in: to the first cycle, < 0
+  double cycle_start_time = 0.0;  ///< time of the cycle's first sample [s] (run time, not crank)
+  double fraction = 0.0;          ///< rough overall progress [0, 1]
+  double elapsed = 0.0;           ///< wall time so far [s]
+  double remaining = 0.0;         ///< estimate [s]
+  long steps = 0;                 ///< integrator steps so far
+  long reynolds_solves = 0;       ///< film solves so far (both joints)
   const CrankTrainSample* sample = nullptr;  ///< the step just computed
 };
 
@@ -87,7 +91,7 @@ struct RunResult {
   double cycle_change = 0.0;              ///< last cycle-to-cycle change / range (largest quantity)
   std::string worst_quantity;             ///< the quantity furthest from periodicity (last cycle)
   long reynolds_solves = 0;               ///< Reynolds (FEM + cavitation) solves, both joints
-  long reynolds_factorizations = 0;       ///< their LDLᵀ refactorisations (active-set iterations)
+  long reynolds_factorizations = 0;       ///< their numeric LDLᵀ factorisations
   multibody::SolverStats stats;
   double wall_time = 0.0;  ///< [s]
   double max_constraint_violation = 0.0;

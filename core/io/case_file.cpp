@@ -128,6 +128,7 @@ void VisitCase(V& v, EngineCase& c) {
   v.Number("solver.output_interval", o.output_interval, Range{1e-4, 0.2, false, "rad"});
   v.Number("solver.steady_state_tolerance", o.steady_state_tolerance, Positive("-"));
   v.Integer("solver.max_cycles", o.max_cycles, 1, 10000);
+  v.Number("solver.run_in_angle", o.run_in_angle, Between(0.0, 8 * std::numbers::pi, "rad"));
 }
 
 const char* ModelName(JointModel m) { return m == JointModel::kIdeal ? "ideal" : "lubricated"; }

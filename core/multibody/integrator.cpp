@@ -159,6 +159,15 @@ SystemState Integrator::AdvanceTo(double t_out) {
   return state;
 }
 
+void Integrator::SetTolerances(const IntegratorConfig& config) {
+  IntegratorConfig& c = impl_->config;  // ErrorWeights reads these at every step
+  c.relative_tolerance = config.relative_tolerance;
+  c.position_tolerance = config.position_tolerance;
+  c.angle_tolerance = config.angle_tolerance;
+  c.velocity_tolerance = config.velocity_tolerance;
+  c.angular_velocity_tolerance = config.angular_velocity_tolerance;
+}
+
 SolverStats Integrator::Stats() const {
   SolverStats s;
   const Impl& m = *impl_;

@@ -45,6 +45,9 @@ class Integrator {
   /// Advances to t_out (interpolating inside the last step) and returns the state there.
   /// Throws std::runtime_error with CVODE's reason when the integration cannot continue.
   SystemState AdvanceTo(double t_out);
+  /// Changes the error tolerances (relative and absolute) from the next step on; the other
+  /// fields of `config` are ignored.
+  void SetTolerances(const IntegratorConfig& config);
   double Time() const { return t_; }
   SolverStats Stats() const;
 

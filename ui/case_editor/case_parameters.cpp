@@ -212,6 +212,8 @@ std::vector<CaseParameter> MakeParameters() {
                   sol, &SolverCase::steady_state_tolerance, Range(0, 1, true, false, "")));
   p.push_back(Row(G::kSolver, "solver.max_cycles", "Maximum cycles", "–", 1.0, sol,
                   &SolverCase::max_cycles, Range(1, 1000, false, false, "")));
+  p.push_back(Row(G::kSolver, "solver.run_in_angle", "Run-in before the first cycle", "°CA", kDeg,
+                  sol, &SolverCase::run_in_angle, Range(0, 1440 * kDeg, false, false, "rad")));
   // FEM meshes of the two Reynolds domains (paper Table II).
   p.push_back(Row(G::kSolver, "skirt.mesh_thrust", "Skirt mesh: elements over Ω₁ (thrust)", "–",
                   1.0, sk, &SkirtCase::mesh_thrust, Range(1, 1000, false, false, "")));

@@ -122,18 +122,19 @@ RunBackend CoreRunBackend() {
         record(f);
       };
     }
-    const double cycle_time = 4 * M_PI / (request.rpm * M_PI / 30.0);
     int cycle = 0;
     const engine::RunMonitor monitor = [&](const engine::RunProgress& p) {
-      if (p.cycle != cycle) {
+      // The run-in only reports progress; the plots start with the first cycle.
+      if (!p.run_in && p.cycle != cycle) {
         cycle = p.cycle;
         sink.BeginCycle(cycle);
       }
-      if (p.sample) sink.Append(ToRunSample(*p.sample, model, (p.cycle - 1) * cycle_time));
+      if (p.sample && !p.run_in) sink.Append(ToRunSample(*p.sample, model, p.cycle_start_time));
       RunProgress progress;
+      progress.run_in = p.run_in;
       progress.cycle = p.cycle;
       progress.max_cycles = p.max_cycles;
-      progress.cycle_fraction = p.crank_angle_deg / 720.0;
+      progress.cycle_fraction = p.crank_angle_deg / 720.0;  // < 0 in the run-in
       progress.fraction = p.fraction;
       progress.remaining = p.remaining;
       sink.Progress(progress);

@@ -23,9 +23,10 @@ struct RunRequest {
 };
 
 struct RunProgress {
-  int cycle = 0;  ///< current cycle, 1-based
+  int cycle = 0;  ///< current cycle, 1-based (0 in the run-in)
   int max_cycles = 0;
-  double cycle_fraction = 0;  ///< 0..1 within the current cycle
+  bool run_in = false;        ///< integrating the run-in before the first cycle
+  double cycle_fraction = 0;  ///< 0..1 within the current cycle (run-in: < 0, to cycle 1)
   double cycle_change = -1;   ///< last cycle-to-cycle change (relative), < 0 when unknown
   double fraction = -1;       ///< overall progress 0..1 (< 0: unknown)
   double remaining = -1;      ///< estimated wall time left [s] (< 0: unknown)

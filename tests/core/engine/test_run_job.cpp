@@ -1,11 +1,13 @@
 // A whole ideal run as the CLI and the GUI worker make it: steady state, the reported cycle, the
 // output folder (every SPEC §4 column in order, empty where the model has none), monitor stop,
-// cancel flag, and a lubricated model without film factories rejected naming the field.
+// cancel flag, the film models' run-in (progress, cancel, where the first cycle starts), and a
+// lubricated model without film factories rejected naming the field.
 #include <QtTest>
 
 #include <QTemporaryDir>
 #include <atomic>
 #include <fstream>
+#include <optional>
 #include <sstream>
 
 #include "core/engine/run_job.hpp"
@@ -88,6 +90,50 @@ class TestRunJob : public QObject {
         &cancel);
     QCOMPARE(engine::StatusName(result.status), std::string("cancelled"));
     QCOMPARE(calls, 10);
+  }
+  void filmModelsRunInBeforeTheFirstCycle() {
+    // Only-LBRBE on a coarse bearing mesh: the run-in (default 360 °CA) reports progress with
+    // negative crank angles rising towards the first cycle, and a cancel inside it ends the run
+    // with the run-in named and its samples kept.
+    engine::RunConfig config = DefaultConfig(6000, engine::Model::kOnlyLbrbe);
+    config.engine_case.big_end.mesh_theta = 24;
+    config.engine_case.big_end.mesh_z = 6;
+    QCOMPARE(config.engine_case.solver.run_in_angle, 2.0 * M_PI);
+    std::vector<double> angles;
+    bool all_run_in = true;
+    const auto result = engine::RunJob(config, [&](const engine::RunProgress& p) {
+      all_run_in = all_run_in && p.run_in && p.cycle == 0 && p.sample;
+      angles.push_back(p.crank_angle_deg);
+      return angles.size() < 90;  // 90 of the 359 run-in samples at 1 °CA
+    });
+    QVERIFY(all_run_in);
+    QCOMPARE(engine::StatusName(result.status), std::string("cancelled"));
+    QCOMPARE(angles.size(), std::size_t(90));
+    QVERIFY(std::abs(angles.front() + 359.0) < 1e-9);
+    QVERIFY(std::abs(angles.back() + 270.0) < 1e-9);
+    QVERIFY2(result.message.find("run-in, 270.0 °CA before the first cycle") != std::string::npos,
+             result.message.c_str());
+    QCOMPARE(result.samples.size(), std::size_t(90));
+    QVERIFY(result.samples.back().bearing.present && result.samples.back().bearing.eps > 0.0);
+
+    // The first cycle starts where the run-in ends: its first sample is the case's start angle.
+    config.engine_case.solver.run_in_angle = M_PI / 18.0;  // 10 °CA: the cycle comes quickly
+    std::optional<engine::RunProgress> first;
+    engine::CrankTrainSample first_sample;
+    engine::RunJob(config, [&](const engine::RunProgress& p) {
+      if (p.run_in) return true;
+      first = p;
+      first_sample = *p.sample;
+      return false;
+    });
+    QVERIFY(first.has_value());
+    QCOMPARE(first->cycle, 1);
+    QCOMPARE(first->crank_angle_deg, 0.0);
+    const double t_start = (M_PI / 18.0) / (6000.0 * M_PI / 30.0);
+    QVERIFY(std::abs(first->cycle_start_time - t_start) < 1e-15);
+    QVERIFY(std::abs(first_sample.time - t_start) < 1e-15);
+    QVERIFY(std::abs(first_sample.crank_angle - config.engine_case.operating.start_crank_angle) <
+            1e-9);
   }
   void lubricatedWithoutFilmModelIsAnInputError() {
     engine::RunConfig config = DefaultConfig(6000, engine::Model::kOnlySkirt);
