@@ -2,13 +2,13 @@
 // meshes, from the start through the periodic steady state and the reported cycle; wall time,
 // steps, Reynolds solves, time per solve; a tight-tolerance run for the accuracy check; the
 // price of the paper's explicit 1e-7 s scheme at our cost per step. Run on demand:
-//   build-cpl/bench/bench_coupled [model] [rpm] [--no-tight] [--coarse] [--profile] [--set
-//   key=value ...]
+//   build/bench/bench_coupled [model] [rpm] [--no-tight] [--coarse] [--profile]
+//   [--vtol m/s] [--atol rad] [--wtol rad/s] [--set key=value ...]
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -21,9 +21,8 @@ namespace {
 
 bool g_coarse = false;
 bool g_profile = false;
-double g_velocity_tolerance = 0.0, g_angle_tolerance = 0.0,
-       g_angular_velocity_tolerance =
-           0.0;  // 0: the case's  // steps, solves and wall time per 30 °CA of every cycle
+// Tolerance overrides (--vtol, --atol, --wtol); 0 = the case's.
+double g_velocity_tolerance = 0.0, g_angle_tolerance = 0.0, g_angular_velocity_tolerance = 0.0;
 
 // Where the work goes within the cycle: integrator steps, Reynolds solves and wall time per
 // 30 °CA bin, printed per cycle.
@@ -132,23 +131,39 @@ double RelDiff(double a, double b) { return std::abs(a - b) / std::max(std::abs(
 
 }  // namespace
 
-int main(int argc, char** argv) {
-  const engine::Model model = engine::ParseModel(argc > 1 ? argv[1] : "skirt-lbrbe");
-  const double rpm = argc > 2 ? std::atof(argv[2]) : 6000.0;
+int main(int argc, char** argv) try {
+  // Positional [model] [rpm], options anywhere.
+  std::vector<std::string> positional, sets;
   bool tight = true;
-  std::vector<std::string> sets;
-  for (int i = 3; i < argc; ++i) {
-    if (std::strcmp(argv[i], "--no-tight") == 0) tight = false;
-    if (std::strcmp(argv[i], "--coarse") == 0) g_coarse = true;
-    if (std::strcmp(argv[i], "--profile") == 0) g_profile = true;
-    if (std::strcmp(argv[i], "--vtol") == 0 && i + 1 < argc)
-      g_velocity_tolerance = std::atof(argv[++i]);
-    if (std::strcmp(argv[i], "--atol") == 0 && i + 1 < argc)
-      g_angle_tolerance = std::atof(argv[++i]);
-    if (std::strcmp(argv[i], "--wtol") == 0 && i + 1 < argc)
-      g_angular_velocity_tolerance = std::atof(argv[++i]);
-    if (std::strcmp(argv[i], "--set") == 0 && i + 1 < argc) sets.push_back(argv[++i]);
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    auto value = [&]() -> const char* {
+      if (i + 1 >= argc) throw std::invalid_argument(arg + " needs a value");
+      return argv[++i];
+    };
+    if (arg == "--no-tight") {
+      tight = false;
+    } else if (arg == "--coarse") {
+      g_coarse = true;
+    } else if (arg == "--profile") {
+      g_profile = true;
+    } else if (arg == "--vtol") {
+      g_velocity_tolerance = std::atof(value());
+    } else if (arg == "--atol") {
+      g_angle_tolerance = std::atof(value());
+    } else if (arg == "--wtol") {
+      g_angular_velocity_tolerance = std::atof(value());
+    } else if (arg == "--set") {
+      sets.push_back(value());
+    } else if (arg.rfind("--", 0) == 0) {
+      throw std::invalid_argument("unknown option " + arg);
+    } else {
+      positional.push_back(arg);
+    }
   }
+  const engine::Model model =
+      engine::ParseModel(positional.size() > 0 ? positional[0] : "skirt-lbrbe");
+  const double rpm = positional.size() > 1 ? std::atof(positional[1].c_str()) : 6000.0;
   const io::LoadedCase loaded = io::LoadCase("", sets);
   const engine::SolverCase& s = loaded.value.solver;
   const engine::RunResult base =
@@ -178,4 +193,7 @@ int main(int argc, char** argv) {
       100 * RelDiff(a.min_skirt_moft, b.min_skirt_moft),
       100 * RelDiff(a.min_bearing_moft, b.min_bearing_moft), 100 * RelDiff(a.max_eps, b.max_eps));
   return 0;
+} catch (const std::exception& error) {
+  std::fprintf(stderr, "bench_coupled: %s\n", error.what());
+  return 2;
 }

@@ -7,6 +7,7 @@
 #include "app/commands/commands.hpp"
 #include "app/commands/run_common.hpp"
 #include "core/engine/run_job.hpp"
+#include "core/input_error.hpp"
 #include "core/io/case_file.hpp"
 #include "core/io/field_output.hpp"
 #include "core/io/results_writer.hpp"
@@ -27,6 +28,7 @@ Command MakeRunCommand() {
       {"set", "KEY=VALUE", "override a case field by its dotted JSON path", true},
       {"pressure-curve", "FILE.csv", "cylinder pressure: crank_angle[deg],pressure[Pa] (absolute)"},
       {"time-limit", "S", "stop after S seconds of wall time, keeping what was computed"},
+      {"threads", "N", "1 or 2: the two film joints side by side (default: 2 on >= 2 cores)"},
       {"no-fields", "", "do not write fields/ (film fields as VTU/PVD per output step)"},
       {"quiet", "", "no progress on stderr"}};
   command.details =
@@ -42,6 +44,13 @@ Command MakeRunCommand() {
     const double rpm = args.Double("rpm").value_or(c.operating.rpm);
     engine::RunConfig config = BuildRunConfig(loaded, model, rpm, args.Value("pressure-curve"),
                                               args.Double("time-limit").value_or(0.0));
+    if (const auto threads = args.Integer("threads")) {
+      if (*threads < 1 || *threads > 2) {
+        throw InputError("--threads", std::to_string(*threads),
+                         "must be 1 or 2 (one thread per film joint)");
+      }
+      config.threads = static_cast<int>(*threads);
+    }
     const std::filesystem::path out = args.Value("out")
                                           ? std::filesystem::path(*args.Value("out"))
                                           : io::DefaultOutputFolder(c.name, model, rpm);

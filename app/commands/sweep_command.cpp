@@ -83,12 +83,16 @@ Command MakeSweepCommand() {
                                           ? std::filesystem::path(*args.Value("out"))
                                           : std::filesystem::path("results") / ("sweep-" + c.name);
 
-    // Every configuration is built (and checked) before anything starts.
+    // Every configuration is built (and checked) before anything starts. Each run evaluates its
+    // two film joints side by side only when the cores allow it beside the other runs.
+    const long at_once = std::min<long>(jobs, static_cast<long>(models.size() * speeds.size()));
+    const long cores = std::max(1u, std::thread::hardware_concurrency());
     std::vector<engine::SweepJob> sweep_jobs;
     for (engine::Model model : models) {
       for (double rpm : speeds) {
         engine::SweepJob job;
         job.config = BuildRunConfig(loaded, model, rpm, std::nullopt, time_limit);
+        job.config.threads = cores >= 2 * at_once ? 2 : 1;
         job.case_name = c.name;
         job.write_fields = !args.Has("no-fields");
         job.output_folder = out / (c.name + "-" + engine::ModelName(model) + "-" + RpmText(rpm));

@@ -43,6 +43,8 @@ class LubricatedBigEndElement final : public multibody::JointForceElement,
   void EvaluateJoint(const multibody::JointForceInput& in, bool want_jacobian,
                      multibody::JointForceOutput* out) override;
   bool ProvidesJacobian() const override { return true; }
+  /// Own solver and caches only (the surface model is immutable): may run beside the other joint.
+  bool Concurrent() const override { return true; }
   void ReportFilm(engine::CrankTrainSample* sample) const override;
 
   BigEndKinematics Kinematics(const multibody::BodyState& crank,

@@ -49,6 +49,8 @@ class LubricatedSkirtElement final : public multibody::JointForceElement,
   void EvaluateJoint(const multibody::JointForceInput& in, bool want_jacobian,
                      multibody::JointForceOutput* out) override;
   bool ProvidesJacobian() const override { return true; }
+  /// Own solver and caches only (the surface model is immutable): may run beside the other joint.
+  bool Concurrent() const override { return true; }
   void ReportFilm(engine::CrankTrainSample* sample) const override;
 
   /// e0, γ, rates and u_p of a piston state, with J.

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <thread>
 
 #include "core/coupling/lubricated_big_end_element.hpp"
 #include "core/coupling/lubricated_skirt_element.hpp"
@@ -195,6 +196,9 @@ RunResult RunJob(const RunConfig& config, const RunMonitor& monitor,
   CrankTrain train = BuildCrankTrain(start_case, config.rpm, config.pressure, config.factories);
   auto* skirt = dynamic_cast<coupling::LubricatedSkirtElement*>(train.skirt_element);
   auto* big_end = dynamic_cast<coupling::LubricatedBigEndElement*>(train.big_end_element);
+  train.system->SetThreads(
+      config.threads > 0 ? config.threads
+                         : std::min(2, static_cast<int>(std::thread::hardware_concurrency())));
   multibody::Integrator integrator(*train.system, config.integrator);
   integrator.Initialize(0.0, train.initial_state);
 

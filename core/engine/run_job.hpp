@@ -54,6 +54,9 @@ struct RunConfig {
   LubricatedJointFactories factories;      ///< empty until issue 5 provides the film elements
   multibody::IntegratorConfig integrator;  ///< tolerances (set from the case by MakeRunConfig)
   double wall_time_limit = 0.0;  ///< [s]; 0 = none. Reached: result incomplete, partial rows kept
+  /// Threads for the two film joints of each evaluation (side by side; results identical bit
+  /// for bit): 1 or 2; 0 = automatic (2 on a machine with at least 2 cores).
+  int threads = 0;
   FieldCallback field_callback;  ///< optional per-output-step fields of the film joints
 };
 

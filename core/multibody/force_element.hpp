@@ -34,6 +34,10 @@ class ForceElement {
   virtual void AddForces(double t, const SystemState& state, Eigen::Ref<Eigen::VectorXd> q_force,
                          ForceJacobian* jacobian) = 0;
   virtual bool ProvidesJacobian() const { return false; }
+  /// True when AddForces is expensive and reads and writes nothing but the element's own
+  /// members (and the arguments): the system may then evaluate it on a helper thread,
+  /// concurrently with other such elements (MultibodySystem::SetThreads). Default: false.
+  virtual bool Concurrent() const { return false; }
   /// Called once per accepted integrator step (history, caches, counters). Default: nothing.
   virtual void OnStepAccepted(double /*t*/, const SystemState& /*state*/) {}
 

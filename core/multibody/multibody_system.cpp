@@ -54,9 +54,51 @@ MultibodySystem::ConstraintSystem MultibodySystem::AssembleConstraints(
   return sys;
 }
 
+void MultibodySystem::SetThreads(int threads) {
+  if (threads <= 1) {
+    pool_.reset();
+  } else if (!pool_ || pool_->Threads() != threads) {
+    pool_ = std::make_unique<WorkerPool>(threads);
+  }
+}
+
+int MultibodySystem::Threads() const { return pool_ ? pool_->Threads() : 1; }
+
+namespace {
+// Indices of the elements to evaluate side by side: the Concurrent() ones, when there are at
+// least two of them and a pool to run them on.
+std::vector<int> ConcurrentElements(const std::vector<std::unique_ptr<ForceElement>>& elements,
+                                    const WorkerPool* pool) {
+  std::vector<int> indices;
+  if (!pool) return indices;
+  for (int e = 0; e < static_cast<int>(elements.size()); ++e) {
+    if (elements[e]->Concurrent()) indices.push_back(e);
+  }
+  if (indices.size() < 2) indices.clear();
+  return indices;
+}
+}  // namespace
+
 Eigen::VectorXd MultibodySystem::AppliedForces(double t, const SystemState& state) {
-  Eigen::VectorXd q_force = Eigen::VectorXd::Zero(NumCoordinates());
-  for (auto& element : elements_) element->AddForces(t, state, q_force, nullptr);
+  const int n = NumCoordinates();
+  Eigen::VectorXd q_force = Eigen::VectorXd::Zero(n);
+  const std::vector<int> concurrent = ConcurrentElements(elements_, pool_.get());
+  std::vector<Eigen::VectorXd> buffers(elements_.size());
+  if (!concurrent.empty()) {
+    pool_->Run(static_cast<int>(concurrent.size()), [&](int k) {
+      Eigen::VectorXd& b = buffers[concurrent[k]];
+      b.setZero(n);
+      elements_[concurrent[k]]->AddForces(t, state, b, nullptr);
+    });
+  }
+  // Summed in element order: the same sums as the sequential evaluation (0 + w = w exactly).
+  for (std::size_t e = 0; e < elements_.size(); ++e) {
+    if (buffers[e].size() > 0) {
+      q_force += buffers[e];
+    } else {
+      elements_[e]->AddForces(t, state, q_force, nullptr);
+    }
+  }
   return q_force;
 }
 
@@ -162,7 +204,27 @@ void MultibodySystem::AccelerationJacobian(double t, const SystemState& state,
   // (2) Force elements: dQ/dx, mapped by P = ∂q̈/∂Q = M⁻¹ − M⁻¹Φ_qᵀ S⁻¹ Φ_q M⁻¹.
   ForceJacobian dq_force;
   dq_force.Reset(n);
-  for (auto& element : elements_) {
+  // Concurrent elements with analytic Jacobians (the film joints: several film solves each)
+  // side by side, each into its own zeroed Jacobian, summed in element order below.
+  std::vector<int> concurrent;
+  for (int e : ConcurrentElements(elements_, pool_.get())) {
+    if (elements_[e]->ProvidesJacobian()) concurrent.push_back(e);
+  }
+  std::vector<ForceJacobian> own(elements_.size());
+  if (concurrent.size() >= 2) {
+    pool_->Run(static_cast<int>(concurrent.size()), [&](int k) {
+      own[concurrent[k]].Reset(n);
+      Eigen::VectorXd scratch = Eigen::VectorXd::Zero(n);
+      elements_[concurrent[k]]->AddForces(t, state, scratch, &own[concurrent[k]]);
+    });
+  }
+  for (std::size_t e = 0; e < elements_.size(); ++e) {
+    auto& element = elements_[e];
+    if (own[e].dq.size() > 0) {
+      dq_force.dq += own[e].dq;
+      dq_force.dv += own[e].dv;
+      continue;
+    }
     if (element->ProvidesJacobian()) {
       Eigen::VectorXd scratch = Eigen::VectorXd::Zero(n);
       element->AddForces(t, state, scratch, &dq_force);

@@ -15,6 +15,7 @@
 #include "core/multibody/constraint.hpp"
 #include "core/multibody/force_element.hpp"
 #include "core/multibody/system_state.hpp"
+#include "core/multibody/worker_pool.hpp"
 
 namespace filmdyn::multibody {
 
@@ -53,6 +54,12 @@ class MultibodySystem {
   int NumForceElements() const { return static_cast<int>(elements_.size()); }
   /// First row of constraint `index` in λ.
   int ConstraintRowOffset(int index) const { return row_offsets_.at(index); }
+
+  /// Threads for evaluating the Concurrent() force elements (the film joints) of one evaluation
+  /// side by side; 1 (the default) = sequential. The results do not depend on it, bit for bit:
+  /// each element adds into its own zeroed buffer and the buffers are summed in element order.
+  void SetThreads(int threads);
+  int Threads() const;
 
   /// Sum of all applied forces Q (3n) at the state.
   Eigen::VectorXd AppliedForces(double t, const SystemState& state);
@@ -96,6 +103,7 @@ class MultibodySystem {
   std::vector<std::unique_ptr<Constraint>> constraints_;
   std::vector<int> row_offsets_;
   std::vector<std::unique_ptr<ForceElement>> elements_;
+  std::unique_ptr<WorkerPool> pool_;  // null: sequential
   int num_rows_ = 0;
   BaumgarteParameters baumgarte_;
 };

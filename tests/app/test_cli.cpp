@@ -160,6 +160,12 @@ class TestCli : public QObject {
     QVERIFY(result.err.contains("--jobs"));
   }
 
+  void runRejectsBadThreads() {
+    const Result result = Run({"run", "--model", "ideal", "--threads", "3"});
+    QCOMPARE(result.exit_code, 2);
+    QVERIFY2(result.err.contains("--threads = 3: must be 1 or 2"), qPrintable(result.err));
+  }
+
   void validateRunsEverySuiteAndPasses() {
     const Result result = Run({"validate", "--json"});
     QCOMPARE(result.exit_code, 0);
