@@ -3,7 +3,7 @@
 // steps, Reynolds solves, time per solve; a tight-tolerance run for the accuracy check; the
 // price of the paper's explicit 1e-7 s scheme at our cost per step. Run on demand:
 //   build/bench/bench_coupled [model] [rpm] [--no-tight] [--coarse] [--profile]
-//   [--vtol m/s] [--atol rad] [--wtol rad/s] [--set key=value ...]
+//   [--threads 1|2] [--vtol m/s] [--atol rad] [--wtol rad/s] [--set key=value ...]
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -21,6 +21,7 @@ namespace {
 
 bool g_coarse = false;
 bool g_profile = false;
+int g_threads = 0;  // --threads; 0 = RunJob's automatic choice
 // Tolerance overrides (--vtol, --atol, --wtol); 0 = the case's.
 double g_velocity_tolerance = 0.0, g_angle_tolerance = 0.0, g_angular_velocity_tolerance = 0.0;
 
@@ -96,6 +97,7 @@ engine::RunResult Run(const io::LoadedCase& loaded, engine::Model model, double 
   // Overrides of the derived absolute tolerances, scaled like the position tolerance (so the
   // tight run stays 100 x tighter).
   const double scale = ptol / loaded.value.solver.position_tolerance;
+  config.threads = g_threads;
   if (g_velocity_tolerance > 0) config.integrator.velocity_tolerance = g_velocity_tolerance * scale;
   if (g_angle_tolerance > 0) config.integrator.angle_tolerance = g_angle_tolerance * scale;
   if (g_angular_velocity_tolerance > 0)
@@ -147,6 +149,8 @@ int main(int argc, char** argv) try {
       g_coarse = true;
     } else if (arg == "--profile") {
       g_profile = true;
+    } else if (arg == "--threads") {
+      g_threads = std::atoi(value());
     } else if (arg == "--vtol") {
       g_velocity_tolerance = std::atof(value());
     } else if (arg == "--atol") {
