@@ -9,6 +9,7 @@ Command MakeVersionsCommand();
 Command MakeBearingCommand();
 Command MakeRunCommand();
 Command MakeSweepCommand();
+Command MakeReproduceCommand();
 Command MakeValidateCommand();
 
 }  // namespace filmdyn::cli

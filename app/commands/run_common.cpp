@@ -1,9 +1,16 @@
 #include "app/commands/run_common.hpp"
 
+#include <algorithm>
+#include <chrono>
 #include <csignal>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <thread>
 
 #include "core/input_error.hpp"
 #include "core/io/pressure_csv.hpp"
+#include "core/io/run_comparison.hpp"
 #include "ui/plots/plot_export.hpp"
 #include "ui/run/sample_conversion.hpp"
 
@@ -45,6 +52,106 @@ std::string WriteRunPlots(const std::filesystem::path& folder, const engine::Run
                        ui::RunSamplesFromRows(rows))},
       QString::fromStdString((folder / "plots").string()), &error);
   return error.toStdString();
+}
+
+std::string RpmText(double rpm) {
+  std::ostringstream out;
+  out << rpm;
+  return out.str();
+}
+
+int JobsOption(const Args& args) {
+  const long jobs =
+      args.Integer("jobs").value_or(std::max(1u, std::thread::hardware_concurrency()));
+  if (jobs < 1 || jobs > 256) {
+    throw InputError("--jobs", std::to_string(jobs), "must be an integer in [1, 256]");
+  }
+  return static_cast<int>(jobs);
+}
+
+BatchOutcome RunBatch(std::vector<engine::SweepJob> jobs, int parallel, bool quiet,
+                      const std::string& prefix, Streams& streams) {
+  BatchOutcome batch;
+  const long at_once = std::min<long>(parallel, static_cast<long>(jobs.size()));
+  const long cores = std::max(1u, std::thread::hardware_concurrency());
+  for (engine::SweepJob& job : jobs) job.config.threads = cores >= 2 * at_once ? 2 : 1;
+  batch.jobs = jobs;
+  batch.runs.resize(jobs.size());
+  const InterruptGuard interrupt;
+  engine::SweepRunner runner(std::move(jobs), parallel, interrupt.flag());
+  int done = 0;
+  for (int index; (index = runner.WaitNext(std::chrono::milliseconds(250))) != -1;) {
+    if (index == -2) {
+      if (!quiet) {
+        const auto fractions = runner.Fractions();
+        double total = 0;
+        for (double f : fractions) total += f;
+        char line[120];
+        std::snprintf(line, sizeof line, "\r%s: %d/%d runs done, %3.0f %% overall ", prefix.c_str(),
+                      done, runner.size(),
+                      100.0 * total / std::max<std::size_t>(1, fractions.size()));
+        streams.err << line << std::flush;
+      }
+      continue;
+    }
+    ++done;
+    const engine::SweepJob& job = runner.job(index);
+    const engine::SweepOutcome& outcome = runner.outcome(index);
+    const std::string label =
+        engine::ModelName(job.config.model) + " " + RpmText(job.config.rpm) + " rpm";
+    if (!quiet) streams.err << "\n";
+    if (!outcome.error.empty()) {
+      ++batch.incomplete;
+      streams.err << prefix << ": " << label << ": failed: " << outcome.error << "\n";
+      continue;
+    }
+    if (const std::string error = WriteRunPlots(job.output_folder, job.config, outcome.rows);
+        !error.empty()) {
+      streams.err << prefix << ": " << label << ": plots not written: " << error << "\n";
+    }
+    batch.runs[index] = ui::FinishedRun(
+        index + 1, {job.config.engine_case, engine::ModelName(job.config.model), job.config.rpm},
+        ui::RunSamplesFromRows(outcome.rows));
+    const bool complete = outcome.result.status == engine::RunStatus::kCompleted;
+    if (!complete) ++batch.incomplete;
+    streams.err << prefix << ": " << label << ": " << engine::StatusName(outcome.result.status)
+                << ", " << outcome.result.cycles << " cycles, " << outcome.result.wall_time << " s"
+                << (complete ? "" : " — " + outcome.result.message) << "\n";
+  }
+  return batch;
+}
+
+std::string WriteComparison(const std::filesystem::path& out, const BatchOutcome& batch,
+                            const std::string& title, const std::string& prefix, Streams& streams,
+                            const std::vector<int>& indices) {
+  std::vector<int> chosen = indices;
+  if (chosen.empty()) {
+    for (int k = 0; k < static_cast<int>(batch.jobs.size()); ++k) chosen.push_back(k);
+  }
+  std::vector<io::ComparisonRow> rows;
+  std::vector<ui::RunHandle> runs;
+  for (int k : chosen) {
+    if (!batch.runs[k]) continue;  // did not run: reported already
+    rows.push_back(io::ReadComparisonRow(batch.jobs[k].output_folder));
+    runs.push_back(batch.runs[k]);
+  }
+  std::sort(rows.begin(), rows.end(), [](const auto& a, const auto& b) {
+    return a.model != b.model ? a.model < b.model : a.rpm < b.rpm;
+  });
+  std::filesystem::create_directories(out);
+  {
+    std::ofstream csv(out / "comparison.csv");
+    io::WriteComparisonCsv(csv, rows);
+    if (!csv) throw std::runtime_error("cannot write " + (out / "comparison.csv").string());
+  }
+  const std::string table = io::ComparisonMarkdown(rows);
+  std::ofstream(out / "comparison.md") << "# " << title << "\n\n" << table;
+  QString plot_error;
+  ui::ExportStandardPlots(runs, QString::fromStdString((out / "plots").string()), &plot_error);
+  if (!plot_error.isEmpty()) {
+    streams.err << prefix << ": comparison plots not written: " << plot_error.toStdString() << "\n";
+  }
+  return table;
 }
 
 InterruptGuard::InterruptGuard() {

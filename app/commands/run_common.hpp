@@ -1,6 +1,7 @@
 #pragma once
-/// @file What `filmdyn run` and `filmdyn sweep` share: building a run's configuration from the
-/// loaded case and options, the run's plots, and Ctrl-C handling.
+/// @file What `filmdyn run`, `sweep` and `reproduce` share: building a run's configuration from
+/// the loaded case and options, the run's plots, batches of runs with their comparison, and
+/// Ctrl-C handling.
 #include <QString>
 #include <atomic>
 #include <filesystem>
@@ -8,9 +9,12 @@
 #include <string>
 #include <vector>
 
+#include "app/cli/command.hpp"
 #include "core/engine/run_job.hpp"
+#include "core/engine/sweep.hpp"
 #include "core/io/case_file.hpp"
 #include "core/io/results_writer.hpp"
+#include "ui/run/run_record.hpp"
 
 namespace filmdyn::cli {
 
@@ -26,6 +30,31 @@ engine::RunConfig BuildRunConfig(const io::LoadedCase& loaded, engine::Model mod
 /// `<folder>/plots`. Returns an empty string or the reason it failed.
 std::string WriteRunPlots(const std::filesystem::path& folder, const engine::RunConfig& config,
                           const std::vector<io::OutputRow>& rows);
+
+/// "6000", "1500.5": a speed as it appears in folder names and messages.
+std::string RpmText(double rpm);
+
+/// --jobs: runs computed at the same time (default: the number of cores), checked to [1, 256].
+int JobsOption(const Args& args);
+
+/// The runs of a finished batch, in job order.
+struct BatchOutcome {
+  std::vector<engine::SweepJob> jobs;
+  std::vector<ui::RunHandle> runs;  ///< null where the run could not start (error reported)
+  int incomplete = 0;               ///< failed, cancelled, time limit or not converged
+};
+
+/// Runs `jobs`, `parallel` at a time (each with 2 film threads only when the cores allow it
+/// beside the others), Ctrl-C stopping them cleanly; a progress line on stderr unless `quiet`,
+/// one line per finished run prefixed `prefix: `, and each run's plots/ written.
+BatchOutcome RunBatch(std::vector<engine::SweepJob> jobs, int parallel, bool quiet,
+                      const std::string& prefix, Streams& streams);
+
+/// The comparison of the batch's runs `indices` (all when empty) into `out`: comparison.csv (SI),
+/// comparison.md (`title`, display units) and plots/ with the runs overlaid. Returns the table.
+std::string WriteComparison(const std::filesystem::path& out, const BatchOutcome& batch,
+                            const std::string& title, const std::string& prefix, Streams& streams,
+                            const std::vector<int>& indices = {});
 
 /// Installs a SIGINT handler for its lifetime: Ctrl-C sets flag() so runs stop cleanly with
 /// their partial results written.

@@ -2,19 +2,12 @@
 // summary.json, plots/), plus a comparison: comparison.csv, comparison.md and overlay plots.
 // The runs are computed by core (engine::SweepRunner); plots are drawn here on the main thread.
 #include <algorithm>
-#include <chrono>
-#include <cstdio>
-#include <fstream>
 #include <sstream>
 #include <thread>
 
 #include "app/commands/commands.hpp"
 #include "app/commands/run_common.hpp"
-#include "core/engine/sweep.hpp"
 #include "core/input_error.hpp"
-#include "core/io/run_comparison.hpp"
-#include "ui/plots/plot_export.hpp"
-#include "ui/run/sample_conversion.hpp"
 
 namespace filmdyn::cli {
 
@@ -28,12 +21,6 @@ std::vector<std::string> SplitList(const std::string& text) {
     if (!item.empty()) items.push_back(item);
   }
   return items;
-}
-
-std::string RpmText(double rpm) {
-  std::ostringstream out;
-  out << rpm;
-  return out.str();
 }
 
 }  // namespace
@@ -73,26 +60,18 @@ Command MakeSweepCommand() {
     } else {
       models.push_back(ModelFromCase(c));
     }
-    const long jobs =
-        args.Integer("jobs").value_or(std::max(1u, std::thread::hardware_concurrency()));
-    if (jobs < 1 || jobs > 256) {
-      throw InputError("--jobs", std::to_string(jobs), "must be an integer in [1, 256]");
-    }
+    const int jobs = JobsOption(args);
     const double time_limit = args.Double("time-limit").value_or(0.0);
     const std::filesystem::path out = args.Value("out")
                                           ? std::filesystem::path(*args.Value("out"))
                                           : std::filesystem::path("results") / ("sweep-" + c.name);
 
-    // Every configuration is built (and checked) before anything starts. Each run evaluates its
-    // two film joints side by side only when the cores allow it beside the other runs.
-    const long at_once = std::min<long>(jobs, static_cast<long>(models.size() * speeds.size()));
-    const long cores = std::max(1u, std::thread::hardware_concurrency());
+    // Every configuration is built (and checked) before anything starts.
     std::vector<engine::SweepJob> sweep_jobs;
     for (engine::Model model : models) {
       for (double rpm : speeds) {
         engine::SweepJob job;
         job.config = BuildRunConfig(loaded, model, rpm, std::nullopt, time_limit);
-        job.config.threads = cores >= 2 * at_once ? 2 : 1;
         job.case_name = c.name;
         job.write_fields = !args.Has("no-fields");
         job.output_folder = out / (c.name + "-" + engine::ModelName(model) + "-" + RpmText(rpm));
@@ -101,75 +80,13 @@ Command MakeSweepCommand() {
     }
     std::filesystem::create_directories(out);
 
-    const bool quiet = args.Has("quiet");
-    const InterruptGuard interrupt;
-    engine::SweepRunner runner(std::move(sweep_jobs), static_cast<int>(jobs), interrupt.flag());
-    std::vector<ui::RunHandle> finished_runs;
-    std::vector<std::filesystem::path> folders;
-    int incomplete = 0, done = 0;
-    for (int index; (index = runner.WaitNext(std::chrono::milliseconds(250))) != -1;) {
-      if (index == -2) {
-        if (!quiet) {
-          const auto fractions = runner.Fractions();
-          double total = 0;
-          for (double f : fractions) total += f;
-          char line[120];
-          std::snprintf(line, sizeof line, "\rsweep: %d/%d runs done, %3.0f %% overall ", done,
-                        runner.size(), 100.0 * total / std::max<std::size_t>(1, fractions.size()));
-          streams.err << line << std::flush;
-        }
-        continue;
-      }
-      ++done;
-      const engine::SweepJob& job = runner.job(index);
-      const engine::SweepOutcome& outcome = runner.outcome(index);
-      const std::string label =
-          engine::ModelName(job.config.model) + " " + RpmText(job.config.rpm) + " rpm";
-      if (!quiet) streams.err << "\n";
-      if (!outcome.error.empty()) {
-        ++incomplete;
-        streams.err << "sweep: " << label << ": failed: " << outcome.error << "\n";
-        continue;
-      }
-      folders.push_back(job.output_folder);
-      if (const std::string error = WriteRunPlots(job.output_folder, job.config, outcome.rows);
-          !error.empty()) {
-        streams.err << "sweep: " << label << ": plots not written: " << error << "\n";
-      }
-      finished_runs.push_back(ui::FinishedRun(
-          index + 1, {job.config.engine_case, engine::ModelName(job.config.model), job.config.rpm},
-          ui::RunSamplesFromRows(outcome.rows)));
-      const bool complete = outcome.result.status == engine::RunStatus::kCompleted;
-      if (!complete) ++incomplete;
-      streams.err << "sweep: " << label << ": " << engine::StatusName(outcome.result.status) << ", "
-                  << outcome.result.cycles << " cycles, " << outcome.result.wall_time << " s"
-                  << (complete ? "" : " — " + outcome.result.message) << "\n";
-    }
-
-    // The comparison, from the folders' summary.json files, in the order runs were requested.
-    std::sort(folders.begin(), folders.end());
-    std::vector<io::ComparisonRow> rows;
-    for (const auto& folder : folders) rows.push_back(io::ReadComparisonRow(folder));
-    std::sort(rows.begin(), rows.end(), [](const auto& a, const auto& b) {
-      return a.model != b.model ? a.model < b.model : a.rpm < b.rpm;
-    });
-    {
-      std::ofstream csv(out / "comparison.csv");
-      io::WriteComparisonCsv(csv, rows);
-      if (!csv) throw std::runtime_error("cannot write " + (out / "comparison.csv").string());
-    }
-    const std::string table = io::ComparisonMarkdown(rows);
-    std::ofstream(out / "comparison.md") << "# Sweep of " << c.name << "\n\n" << table;
-    QString plot_error;
-    ui::ExportStandardPlots(finished_runs, QString::fromStdString((out / "plots").string()),
-                            &plot_error);
-    if (!plot_error.isEmpty()) {
-      streams.err << "sweep: comparison plots not written: " << plot_error.toStdString() << "\n";
-    }
+    const BatchOutcome batch =
+        RunBatch(std::move(sweep_jobs), jobs, args.Has("quiet"), "sweep", streams);
+    const std::string table = WriteComparison(out, batch, "Sweep of " + c.name, "sweep", streams);
     streams.out << table;
-    streams.err << "sweep: " << done << " runs, " << incomplete << " incomplete; results in "
-                << out.string() << "\n";
-    return incomplete == 0 ? 0 : 1;
+    streams.err << "sweep: " << batch.runs.size() << " runs, " << batch.incomplete
+                << " incomplete; results in " << out.string() << "\n";
+    return batch.incomplete == 0 ? 0 : 1;
   };
   return command;
 }

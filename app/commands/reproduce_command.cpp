@@ -1,0 +1,182 @@
+// `filmdyn reproduce`: the paper's section 4 study from our solver — the three coupled models at
+// 6000 rpm and Skirt-LBRBE at 1000, 2000, 4000 and 6000 rpm — with its figures redrawn from our
+// results (PNG + SVG) and an index (figures.md) naming, for every figure of the section, the file
+// that shows it or why it is not drawn.
+#include <QChart>
+#include <QLineSeries>
+#include <QValueAxis>
+#include <fstream>
+#include <numbers>
+
+#include "app/commands/commands.hpp"
+#include "app/commands/run_common.hpp"
+#include "ui/charts/chart_export.hpp"
+
+namespace filmdyn::cli {
+
+namespace {
+
+constexpr double kModelsRpm = 6000.0;
+constexpr double kSpeeds[] = {1000.0, 2000.0, 4000.0, 6000.0};
+
+// Fig. 5: the cylinder pressure at the four speeds (our synthetic curves or the case's own).
+std::string WritePressureFigure(const io::LoadedCase& loaded, const std::filesystem::path& dir) {
+  QChart chart;
+  chart.setTitle(QObject::tr("Cylinder pressure (paper Fig. 5)"));
+  auto* x = new QValueAxis;
+  auto* y = new QValueAxis;
+  x->setTitleText(QObject::tr("crank angle [°CA]"));
+  x->setRange(0, 720);
+  x->setTickCount(9);
+  y->setTitleText(QObject::tr("pressure [MPa]"));
+  chart.addAxis(x, Qt::AlignBottom);
+  chart.addAxis(y, Qt::AlignLeft);
+  double peak = 0.0;
+  for (double rpm : kSpeeds) {
+    const engine::PressureCurve curve = io::PressureCurveForSpeed(loaded, rpm);
+    auto* series = new QLineSeries;
+    series->setName(QString::fromStdString(RpmText(rpm) + " rpm"));
+    for (int k = 0; k <= 1440; ++k) {
+      const double deg = 0.5 * k;
+      const double p = curve.Pressure(deg * std::numbers::pi / 180.0) * 1e-6;
+      series->append(deg, p);
+      peak = std::max(peak, p);
+    }
+    chart.addSeries(series);
+    series->attachAxis(x);
+    series->attachAxis(y);
+  }
+  y->setRange(0, 1.05 * peak);
+  y->applyNiceNumbers();
+  QString error;
+  for (const auto& [suffix, format] :
+       {std::pair{".png", ui::ImageFormat::kPng}, std::pair{".svg", ui::ImageFormat::kSvg}}) {
+    const std::filesystem::path path = dir / (std::string("cylinder_pressure") + suffix);
+    if (!ui::ExportChart(&chart, QString::fromStdString(path.string()), format, QSize(960, 600),
+                         &error)) {
+      return error.toStdString();
+    }
+  }
+  return {};
+}
+
+// Which of our files shows each figure of the paper's section 4.
+std::string FiguresIndex(const std::string& models_dir, const std::string& speeds_dir,
+                         const std::string& skirt_lbrbe_6000) {
+  const std::string m = models_dir + "/plots/", s = speeds_dir + "/plots/";
+  std::string t;
+  t += "# The paper's section 4, redrawn from FilmDyn's results\n\n";
+  t += "Runs: `runs/` (one folder each, as `filmdyn run` writes them). Models at 6000 rpm: `" +
+       models_dir + "/` (Only-Skirt, Only-LBRBE, Skirt-LBRBE overlaid); speeds: `" + speeds_dir +
+       "/` (Skirt-LBRBE at 1000, 2000, 4000, 6000 rpm overlaid). Every plot as PNG and SVG; the "
+       "comparison tables are `comparison.md` in each folder.\n\n";
+  t += "| paper figure | what | our file(s) |\n|---|---|---|\n";
+  t += "| Fig. 5 | cylinder pressure at the four speeds | `figures/cylinder_pressure.png` |\n";
+  t += "| Fig. 6 | piston and rod kinematics, models | `" + m + "piston_lateral.png`, `" + m +
+       "piston_tilt.png`, `" + m +
+       "secondary_rates.png` (displacements and rates; accelerations are not an output) |\n";
+  t += "| Fig. 7 | film forces on the skirt and at the LBRBE, models | `" + m +
+       "liner_forces.png`, `" + m + "bigend_forces.png` |\n";
+  t += "| Fig. 8 | MOFT and FPL of both joints, models | `" + m + "moft.png`, `" + m +
+       "fpl.png` |\n";
+  t += "| Fig. 9 | journal centre trajectory, models | `" + m + "journal_orbit.png` |\n";
+  t += "| Fig. 10 | asperity contact pressure and friction stresses of the LBRBE at 62 and 562 "
+       "°CA | contact pressure field: `runs/" +
+       skirt_lbrbe_6000 +
+       "/fields/` (VTU per °CA, open the PVD in ParaView at 62 and 562 °CA); the friction-stress "
+       "fields are not an output |\n";
+  t += "| Fig. 11 | piston secondary motion, speeds | `" + s + "piston_lateral.png`, `" + s +
+       "piston_tilt.png`, `" + s + "secondary_rates.png` |\n";
+  t += "| Fig. 12 | skirt thrust force, MOFT, friction force, FPL, speeds | `" + s +
+       "liner_forces.png`, `" + s + "moft.png`, `" + s + "fpl.png` |\n";
+  t += "| Fig. 13 | inertia forces of piston and rod, speeds | not drawn: inertia forces are not "
+       "an output (the big-end force `" +
+       s + "bigend_forces.png` carries them) |\n";
+  t += "| Fig. 14 | LBRBE phase portraits ε, ε̇, γ̇_b, speeds | `" + s +
+       "phase_eps.png` (ε / ε̇; the paper's 3D portrait is drawn as its ε–ε̇ projection) |\n";
+  t += "| Fig. 15 | LBRBE reaction forces, MOFT, FPL, speeds | `" + s + "bigend_forces.png`, `" +
+       s + "moft.png`, `" + s + "fpl.png` |\n";
+  return t;
+}
+
+}  // namespace
+
+Command MakeReproduceCommand() {
+  Command command;
+  command.name = "reproduce";
+  command.summary = "the paper's section 4 study (3 models at 6000 rpm, 4 speeds) with its figures";
+  command.positional_usage = "[CASE.json]";
+  command.max_positional = 1;
+  command.needs_gui_application = true;  // figures are rendered with Qt Charts (offscreen)
+  command.options = {
+      {"out", "DIR", "output folder (default: ./results/reproduce-<case>)"},
+      {"jobs", "N", "runs computed at the same time (default: number of cores)"},
+      {"set", "KEY=VALUE", "override a case field by its dotted JSON path", true},
+      {"time-limit", "S", "wall-time limit of each run [s], keeping what was computed"},
+      {"no-fields", "", "do not write the runs' fields/ (Fig. 10 then has no data)"},
+      {"quiet", "", "no progress on stderr"}};
+  command.details =
+      "Six runs: only-skirt, only-lbrbe and skirt-lbrbe at 6000 rpm; skirt-lbrbe at 1000, 2000\n"
+      "and 4000 rpm. Writes <DIR>/runs/<case>-<model>-<rpm>/ (as `filmdyn run`),\n"
+      "<DIR>/models-6000rpm/ and <DIR>/speeds-skirt-lbrbe/ (overlay plots, comparison tables),\n"
+      "<DIR>/figures/cylinder_pressure.{png,svg} and <DIR>/figures.md, the index from each of\n"
+      "the paper's figures 5-15 to our files. Without CASE.json the built-in default case\n"
+      "(the paper's Table I) is used. About 1 minute on 2 cores with the default meshes.\n"
+      "Example:\n  filmdyn reproduce --out /tmp/paper";
+  command.run = [](const Args& args, Streams& streams) {
+    const std::string case_path = args.positional().empty() ? "" : args.positional()[0];
+    const io::LoadedCase loaded = io::LoadCase(case_path, args.Values("set"));
+    const engine::EngineCase& c = loaded.value;
+    const int jobs = JobsOption(args);
+    const double time_limit = args.Double("time-limit").value_or(0.0);
+    const std::filesystem::path out =
+        args.Value("out") ? std::filesystem::path(*args.Value("out"))
+                          : std::filesystem::path("results") / ("reproduce-" + c.name);
+
+    // Job order: the three models at 6000 rpm (indices 0-2, Skirt-LBRBE last), then Skirt-LBRBE
+    // at the other speeds (3-5).
+    const std::vector<std::pair<engine::Model, double>> plan = {
+        {engine::Model::kOnlySkirt, kModelsRpm},  {engine::Model::kOnlyLbrbe, kModelsRpm},
+        {engine::Model::kSkirtLbrbe, kModelsRpm}, {engine::Model::kSkirtLbrbe, kSpeeds[0]},
+        {engine::Model::kSkirtLbrbe, kSpeeds[1]}, {engine::Model::kSkirtLbrbe, kSpeeds[2]}};
+    std::vector<engine::SweepJob> run_jobs;  // every configuration checked before any run
+    for (const auto& [model, rpm] : plan) {
+      engine::SweepJob job;
+      job.config = BuildRunConfig(loaded, model, rpm, std::nullopt, time_limit);
+      job.case_name = c.name;
+      job.write_fields = !args.Has("no-fields");
+      job.output_folder =
+          out / "runs" / (c.name + "-" + engine::ModelName(model) + "-" + RpmText(rpm));
+      run_jobs.push_back(std::move(job));
+    }
+    std::filesystem::create_directories(out / "figures");
+    if (const std::string error = WritePressureFigure(loaded, out / "figures"); !error.empty()) {
+      streams.err << "reproduce: Fig. 5 not written: " << error << "\n";
+    }
+
+    const BatchOutcome batch =
+        RunBatch(std::move(run_jobs), jobs, args.Has("quiet"), "reproduce", streams);
+    const std::string models_dir = "models-6000rpm", speeds_dir = "speeds-skirt-lbrbe";
+    const std::string models_table =
+        WriteComparison(out / models_dir, batch, "Paper §4: the three models at 6000 rpm",
+                        "reproduce", streams, {0, 1, 2});
+    const std::string speeds_table =
+        WriteComparison(out / speeds_dir, batch, "Paper §4: Skirt-LBRBE at four speeds",
+                        "reproduce", streams, {3, 4, 5, 2});
+    const std::string skirt_lbrbe_6000 = batch.jobs[2].output_folder.filename().string();
+    {
+      std::ofstream index(out / "figures.md");
+      index << FiguresIndex(models_dir, speeds_dir, skirt_lbrbe_6000);
+      if (!index) throw std::runtime_error("cannot write " + (out / "figures.md").string());
+    }
+    streams.out << "## The three models at 6000 rpm\n\n"
+                << models_table << "\n## Skirt-LBRBE at four speeds\n\n"
+                << speeds_table;
+    streams.err << "reproduce: " << batch.runs.size() << " runs, " << batch.incomplete
+                << " incomplete; figures indexed in " << (out / "figures.md").string() << "\n";
+    return batch.incomplete == 0 ? 0 : 1;
+  };
+  return command;
+}
+
+}  // namespace filmdyn::cli
