@@ -62,7 +62,7 @@ class TestCoupledRun : public QObject {
  private slots:
   void skirtLbrbeReachesSteadyStateInsideTheClearances() {
     engine::RunConfig config = CoarseConfig(engine::Model::kSkirtLbrbe);
-    config.engine_case.solver.output_interval = M_PI / 180.0;  // 1 °CA for the energy integrals
+    config.engine_case.solver.output_interval = M_PI / 360.0;  // 0.5 °CA for the energy integrals
     long frames = 0;
     bool fields_ok = true;
     config.field_callback = [&](const engine::FieldFrame& f) {
@@ -80,8 +80,8 @@ class TestCoupledRun : public QObject {
         r.worst_quantity.c_str(), r.stats.steps, r.stats.rejected_steps, r.stats.newton_iterations,
         r.reynolds_solves, r.wall_time);
     QCOMPARE(engine::StatusName(r.status), std::string("completed"));
-    QCOMPARE(r.samples.size(), std::size_t(720));
-    QCOMPARE(frames, long(r.cycles) * 720);
+    QCOMPARE(r.samples.size(), std::size_t(1440));  // 720 °CA at 0.5 °CA
+    QCOMPARE(frames, long(r.cycles) * 1440);
     QVERIFY(fields_ok);
     QVERIFY(r.reynolds_solves > r.stats.steps);
     // (d) inside the clearances at every output step of the reported cycle.
@@ -100,7 +100,7 @@ class TestCoupledRun : public QObject {
     QVERIFY(max_eps < 1.0);
     QVERIFY(max_e0 < cp);
     // Every film column filled.
-    const io::OutputRow row = io::RowFromSample(r.samples[100], config.model, 0.0);
+    const io::OutputRow row = io::RowFromSample(r.samples[200], config.model, 0.0);
     for (auto m :
          {&io::OutputRow::piston_lateral, &io::OutputRow::skirt_normal_force,
           &io::OutputRow::skirt_friction_force, &io::OutputRow::skirt_moment,
@@ -125,10 +125,12 @@ class TestCoupledRun : public QObject {
     qInfo("cycle energy: crank %.3f J + gas %.3f J = %.3f J; film dissipation %.3f J (FPL %.3f J)",
           w_crank, w_gas, w_crank + w_gas, dissipated, fpl);
     QVERIFY(dissipated > 0.0);
-    // The left side is the difference of two ~370 J works sampled at 1 °CA (6 % of the 20 J
-    // dissipation at 1 °CA, 20 % at 2 °CA: sampling error, not physics): bound it by 0.5 % of
-    // the gross gas work.
-    QVERIFY(std::abs(w_crank + w_gas - dissipated) < 0.005 * std::abs(w_gas));
+    // The left side is the difference of two ~370 J works: it closes to ~0.2 % of the 20 J
+    // dissipation at the case tolerances (outputs at the integrated state, 0.5 °CA trapezoid);
+    // bound: 1 % of the dissipation (= 0.05 % of the gas work). A missing loss term or outputs
+    // evaluated off the integrated state (a projection: 3.4 J) fail it.
+    QVERIFY2(std::abs(w_crank + w_gas - dissipated) < 0.01 * dissipated,
+             qPrintable(QString::number(w_crank + w_gas - dissipated)));
   }
 
   void filmForcesApproachTheIdealJointsAsTheClearancesShrink() {
