@@ -1,8 +1,8 @@
-#include "core/multibody/worker_pool.hpp"
+#include "core/worker_pool.hpp"
 
 #include <algorithm>
 
-namespace filmdyn::multibody {
+namespace filmdyn {
 
 WorkerPool::WorkerPool(int threads) {
   for (int k = 1; k < std::max(1, threads); ++k) helpers_.emplace_back([this] { HelperLoop(); });
@@ -80,4 +80,4 @@ void WorkerPool::Run(int count, const std::function<void(int)>& task) {
   }
 }
 
-}  // namespace filmdyn::multibody
+}  // namespace filmdyn

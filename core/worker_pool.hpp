@@ -1,7 +1,7 @@
 #pragma once
 /// @file A small fixed pool of helper threads for fork-join work inside one evaluation (the
-/// film joints of a right-hand side evaluated concurrently). The calling thread takes part, so a
-/// pool of size 1 has no helper and runs everything inline.
+/// film joints of a right-hand side, the two panels of the skirt). The calling thread takes part,
+/// so a pool of size 1 has no helper and runs everything inline.
 #include <condition_variable>
 #include <cstdint>
 #include <exception>
@@ -10,7 +10,7 @@
 #include <thread>
 #include <vector>
 
-namespace filmdyn::multibody {
+namespace filmdyn {
 
 class WorkerPool {
  public:
@@ -41,4 +41,4 @@ class WorkerPool {
   std::vector<std::exception_ptr> errors_;
 };
 
-}  // namespace filmdyn::multibody
+}  // namespace filmdyn

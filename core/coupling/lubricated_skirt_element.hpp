@@ -60,6 +60,8 @@ class LubricatedSkirtElement final : public multibody::JointForceElement,
   const lubrication::SkirtSolver& solver() const { return *solver_; }
   void RefreshFields();
   const lubrication::SkirtResult& last_result() const { return result_; }
+  /// 2: the skirt's thrust and anti-thrust panels solved side by side (SkirtSolver::SetThreads).
+  void SetPanelThreads(int threads) { solver_->SetThreads(threads); }
   long reynolds_solves() const { return solves_; }
   /// Numeric LDLᵀ factorisations over all solves (the other linear solves reuse a factor).
   long factorizations() const { return factorizations_; }

@@ -196,9 +196,12 @@ RunResult RunJob(const RunConfig& config, const RunMonitor& monitor,
   CrankTrain train = BuildCrankTrain(start_case, config.rpm, config.pressure, config.factories);
   auto* skirt = dynamic_cast<coupling::LubricatedSkirtElement*>(train.skirt_element);
   auto* big_end = dynamic_cast<coupling::LubricatedBigEndElement*>(train.big_end_element);
-  train.system->SetThreads(
-      config.threads > 0 ? config.threads
-                         : std::min(2, static_cast<int>(std::thread::hardware_concurrency())));
+  // Threads: the two film joints side by side, and the skirt's two panels side by side.
+  const int threads = config.threads > 0
+                          ? config.threads
+                          : std::min(2, static_cast<int>(std::thread::hardware_concurrency()));
+  train.system->SetThreads(threads);
+  if (skirt) skirt->SetPanelThreads(threads);
   multibody::Integrator integrator(*train.system, config.integrator);
   integrator.Initialize(0.0, train.initial_state);
 

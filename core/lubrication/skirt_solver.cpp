@@ -59,70 +59,128 @@ TriMesh SkirtSolver::MakeMesh(const SkirtGeometry& g, const SkirtMeshSpec& spec)
   return m;
 }
 
+// One lubricated panel: its own mesh and Reynolds solver, the per-node data it needs, and the
+// partial integrals of the last solve (summed over the panels in panel order).
+struct SkirtSolver::Panel {
+  std::unique_ptr<ReynoldsFem> fem;
+  std::vector<int> node;  // whole-skirt node of each panel node
+  Eigen::VectorXd cos, arm, weight, ptot;
+  std::vector<double> alpha;
+  ReynoldsStats stats;
+  double lateral = 0, contact_lateral = 0, normal_moment = 0, friction = 0, friction_moment = 0,
+         contact_friction = 0, moft = 0, moft_alpha = 0, moft_y = 0, max_pressure = 0,
+         max_contact_pressure = 0, cavitated_area = 0, area = 0;
+};
+
 SkirtSolver::SkirtSolver(SkirtConfig config)
     : config_((config.Validate(), std::move(config))),
-      fem_(MakeMesh(config_.geometry, config_.mesh), 1, config_.solver) {
-  const TriMesh& m = fem_.mesh();
+      mesh_(MakeMesh(config_.geometry, config_.mesh)) {
+  const TriMesh& m = mesh_;
   const int n = m.NodeCount();
   const SkirtGeometry& g = config_.geometry;
   alpha_.resize(n);
   cos_.resize(n);
   h_static_.resize(n);
   arm_.resize(n);
-  ptot_.resize(n);
-  weight_.resize(n);
+  h_.resize(n);
+  hdot_.resize(n);
   for (int k = 0; k < n; ++k) {
     alpha_[k] = m.x[k] / g.radius;
     cos_[k] = std::cos(alpha_[k]);
     h_static_[k] = g.radial_clearance + g.profile(m.y[k]) + g.ovality(alpha_[k]);
     arm_[k] = m.y[k] - g.pin_position;
   }
+  // Panel node columns: thrust [0, n_thrust], anti-thrust [n_thrust + n_relief, nx - 1]; the
+  // columns on the relief edges are p = 0 (eq. 6), as in the whole mesh.
+  const SkirtMeshSpec& spec = config_.mesh;
+  const int nx = m.nx_nodes(), ny = m.ny_nodes();
+  const int first[kPanels] = {0, spec.n_thrust + spec.n_relief};
+  const int last[kPanels] = {spec.n_thrust, nx - 1};
+  for (int p = 0; p < kPanels; ++p) {
+    auto panel = std::make_unique<Panel>();
+    std::vector<double> xs(m.x_lines.begin() + first[p], m.x_lines.begin() + last[p] + 1);
+    TriMesh sub = MakeTensorMesh(std::move(xs), m.y_lines, false, 0.0);
+    for (int j = 0; j < ny; ++j) {
+      for (int i = 0; i <= last[p] - first[p]; ++i) {
+        const int full = m.Node(first[p] + i, j);
+        panel->node.push_back(full);  // sub.Node(i, j) == panel->node.size() - 1
+        sub.fixed[sub.Node(i, j)] = m.fixed[full];
+      }
+    }
+    const int pn = sub.NodeCount();
+    panel->cos.resize(pn);
+    panel->arm.resize(pn);
+    panel->weight.resize(pn);
+    panel->ptot.resize(pn);
+    panel->alpha.resize(pn);
+    for (int k = 0; k < pn; ++k) {
+      const int full = panel->node[k];
+      panel->cos[k] = cos_[full];
+      panel->arm[k] = arm_[full];
+      panel->weight[k] = cos_[full] * arm_[full];
+      panel->alpha[k] = alpha_[full];
+    }
+    panel->fem = std::make_unique<ReynoldsFem>(std::move(sub), 1, config_.solver);
+    panels_.push_back(std::move(panel));
+  }
+  fields_.pressure = Eigen::VectorXd::Zero(n);
+  fields_.contact_pressure = Eigen::VectorXd::Zero(n);
+  fields_.fluid_fraction = Eigen::VectorXd::Ones(n);
+  fields_.residual = Eigen::VectorXd::Zero(n);
+  fields_.cavitated.assign(n, 0);
 }
 
-const SkirtResult& SkirtSolver::Solve(const SkirtState& s) {
-  s.Validate();
-  const SkirtGeometry& g = config_.geometry;
-  const TriMesh& m = fem_.mesh();
-  const int n = m.NodeCount();
-  Eigen::VectorXd& h = fem_.film_thickness();
-  Eigen::VectorXd& hdot = fem_.film_rate();
-  SkirtResult& r = result_;
-  r = SkirtResult{};
+SkirtSolver::~SkirtSolver() = default;
+
+void SkirtSolver::SetThreads(int threads) {
+  if (threads <= 1) {
+    pool_.reset();
+  } else if (!pool_) {
+    pool_ = std::make_unique<WorkerPool>(2);  // two panels: one helper is all they can use
+  }
+}
+
+const ReynoldsFem& SkirtSolver::panel(int k) const { return *panels_.at(k)->fem; }
+
+const std::vector<int>& SkirtSolver::panel_nodes(int k) const { return panels_.at(k)->node; }
+
+void SkirtSolver::SolvePanel(Panel& pa, const SkirtState& s) {
+  ReynoldsFem& fem = *pa.fem;
+  const int n = fem.NodeCount();
+  Eigen::VectorXd& h = fem.film_thickness();
+  Eigen::VectorXd& hdot = fem.film_rate();
   for (int k = 0; k < n; ++k) {
-    h[k] = h_static_[k] - (s.e0 + arm_[k] * s.gamma) * cos_[k];  // paper eq. 2, our sign
-    hdot[k] = -(s.e0_dot + arm_[k] * s.gamma_dot) * cos_[k];     // paper eq. 3
-    if (h[k] < config_.min_film) {
-      h[k] = config_.min_film;
-      ++r.clamped_nodes;
-    }
+    h[k] = h_[pa.node[k]];
+    hdot[k] = hdot_[pa.node[k]];
   }
   ReynoldsParams params;
   params.viscosity = config_.viscosity;
   params.u_sum = -s.piston_velocity;  // liner moves at -u_p in the piston frame
   params.u_diff = s.piston_velocity;  // U1 - U2, surface 1 = skirt (at rest)
   params.film = config_.film.get();
-  const ReynoldsSolution& sol = fem_.Solve(params);
-  r.stats = sol.stats;
+  const ReynoldsSolution& sol = fem.Solve(params);
+  pa.stats = sol.stats;
 
   // Normal load: film pushes the piston surface inwards, -p n with n = (cos a) along +e0; x2 for
   // the mirrored half. Generalised force on gamma: arm (y - a_p) times the lateral force density.
-  ptot_ = sol.pressure + sol.contact_pressure;
-  r.lateral_force = -2.0 * fem_.IntegrateProduct(ptot_, cos_);
-  r.contact_lateral_force = -2.0 * fem_.IntegrateProduct(sol.contact_pressure, cos_);
-  weight_ = cos_.cwiseProduct(arm_);
-  const double normal_moment = -2.0 * fem_.IntegrateProduct(ptot_, weight_);
+  pa.ptot = sol.pressure + sol.contact_pressure;
+  pa.lateral = -2.0 * fem.IntegrateProduct(pa.ptot, pa.cos);
+  pa.contact_lateral = -2.0 * fem.IntegrateProduct(sol.contact_pressure, pa.cos);
+  pa.normal_moment = -2.0 * fem.IntegrateProduct(pa.ptot, pa.weight);
 
   // Friction on the skirt (surface 1, at rest; liner slides at -u_p): Patir & Cheng 1979 /
   // paper eq. 31  tau = -mu u_p/h (Phi_f + Phi_fs) - Phi_fp h/2 dp/dy, plus -mu_f p_c sign(u_p).
   // A rigid rotation d(gamma) moves a skirt point axially by -R cos(alpha) d(gamma), so the
-  // friction moment (generalised force on gamma) is -int tau R cos(alpha) dA.
-  const auto& fac = fem_.factors();
+  // friction moment (generalised force on gamma) is -int tau R cos(alpha) dA. Every element of
+  // a panel carries film (the relief's elements belong to no panel).
+  const auto& fac = fem.factors();
   const double mu = config_.viscosity, up = s.piston_velocity;
   const double mu_f = config_.film ? config_.film->boundary_friction() : 0.0;
   const double sgn = (up > 0) - (up < 0);
   const bool jfo = config_.solver.cavitation == CavitationModel::kJfo;
+  const double radius = config_.geometry.radius;
   double force = 0.0, moment = 0.0, contact = 0.0;
-  for (const auto& e : fem_.elements()) {
+  for (const auto& e : fem.elements()) {
     double cpl = 0.0, hfp = 0.0, dpdy = 0.0, pc = 0.0, cs = 0.0;
     for (int a = 0; a < 3; ++a) {
       const int k = e.node[a];
@@ -131,44 +189,106 @@ const SkirtResult& SkirtSolver::Solve(const SkirtState& s) {
       hfp += fac[k].shear_fp * h[k];
       dpdy += e.dndy[a] * sol.pressure[k];
       pc += sol.contact_pressure[k];
-      cs += cos_[k];
+      cs += pa.cos[k];
     }
-    // Elements inside the pin-boss relief (all three nodes in Omega2) carry no film.
-    const bool relief =
-        m.fixed[e.node[0]] && m.fixed[e.node[1]] && m.fixed[e.node[2]] &&
-        alpha_[e.node[0]] > g.alpha1 - 1e-12 && alpha_[e.node[0]] < kPi - g.alpha2 + 1e-12 &&
-        alpha_[e.node[1]] > g.alpha1 - 1e-12 && alpha_[e.node[1]] < kPi - g.alpha2 + 1e-12 &&
-        alpha_[e.node[2]] > g.alpha1 - 1e-12 && alpha_[e.node[2]] < kPi - g.alpha2 + 1e-12;
-    if (relief) continue;
     const double tau_area = -mu * up * e.area * cpl / 3.0 - e.area * 0.5 * (hfp / 3.0) * dpdy -
                             sgn * mu_f * e.area * pc / 3.0;
     force += tau_area;
-    moment += -tau_area * g.radius * cs / 3.0;
+    moment += -tau_area * radius * cs / 3.0;
     contact += -sgn * mu_f * e.area * pc / 3.0;
   }
-  r.friction_force = 2.0 * force;
-  r.contact_friction_force = 2.0 * contact;
-  r.friction_moment_about_pin = 2.0 * moment;
-  r.moment_about_pin = normal_moment + r.friction_moment_about_pin;
-  r.friction_power_loss = std::abs(r.friction_force * up);
+  pa.friction = 2.0 * force;
+  pa.contact_friction = 2.0 * contact;
+  pa.friction_moment = 2.0 * moment;
 
-  r.moft = 1e300;
-  const auto& area = fem_.lumped_area();
-  double cav_area = 0.0, panel_area = 0.0;
+  pa.moft = 1e300;
+  pa.max_pressure = pa.max_contact_pressure = pa.cavitated_area = pa.area = 0.0;
+  const auto& area = fem.lumped_area();
+  const TriMesh& pm = fem.mesh();
   for (int k = 0; k < n; ++k) {
-    const bool relief = alpha_[k] > g.alpha1 + 1e-12 && alpha_[k] < kPi - g.alpha2 - 1e-12;
-    if (relief) continue;
-    if (h[k] < r.moft) {
-      r.moft = h[k];
-      r.moft_alpha = alpha_[k];
-      r.moft_y = m.y[k];
+    if (h[k] < pa.moft) {
+      pa.moft = h[k];
+      pa.moft_alpha = pa.alpha[k];
+      pa.moft_y = pm.y[k];
     }
-    r.max_pressure = std::max(r.max_pressure, sol.pressure[k]);
-    r.max_contact_pressure = std::max(r.max_contact_pressure, sol.contact_pressure[k]);
-    panel_area += area[k];
-    if (sol.cavitated[k]) cav_area += area[k] * (jfo ? 1.0 - sol.fluid_fraction[k] : 1.0);
+    pa.max_pressure = std::max(pa.max_pressure, sol.pressure[k]);
+    pa.max_contact_pressure = std::max(pa.max_contact_pressure, sol.contact_pressure[k]);
+    pa.area += area[k];
+    if (sol.cavitated[k]) pa.cavitated_area += area[k] * (jfo ? 1.0 - sol.fluid_fraction[k] : 1.0);
   }
-  r.cavitated_fraction = panel_area > 0 ? cav_area / panel_area : 0.0;
+}
+
+const SkirtResult& SkirtSolver::Solve(const SkirtState& s) {
+  s.Validate();
+  const int n = mesh_.NodeCount();
+  SkirtResult& r = result_;
+  r = SkirtResult{};
+  for (int k = 0; k < n; ++k) {
+    h_[k] = h_static_[k] - (s.e0 + arm_[k] * s.gamma) * cos_[k];  // paper eq. 2, our sign
+    hdot_[k] = -(s.e0_dot + arm_[k] * s.gamma_dot) * cos_[k];     // paper eq. 3
+    if (h_[k] < config_.min_film) {
+      h_[k] = config_.min_film;
+      ++r.clamped_nodes;
+    }
+  }
+  if (pool_) {
+    pool_->Run(kPanels, [&](int p) { SolvePanel(*panels_[p], s); });
+  } else {
+    for (auto& panel : panels_) SolvePanel(*panel, s);
+  }
+
+  // Whole-skirt results: the panels' sums in panel order, fields scattered (relief: 0).
+  ReynoldsStats& st = r.stats;
+  double cavitated_area = 0.0, panel_area = 0.0;
+  r.moft = 1e300;
+  for (const auto& pa : panels_) {
+    const ReynoldsStats& ps = pa->stats;
+    if (ps.status != SolveStatus::kConverged && st.status == SolveStatus::kConverged) {
+      st.status = ps.status;
+    }
+    st.iterations += ps.iterations;
+    st.jfo_iterations += ps.jfo_iterations;
+    st.factorizations += ps.factorizations;
+    st.row_updates += ps.row_updates;
+    st.pcg_solves += ps.pcg_solves;
+    st.pcg_iterations += ps.pcg_iterations;
+    st.pcg_fallbacks += ps.pcg_fallbacks;
+    st.complementarity_residual =
+        std::max(st.complementarity_residual, ps.complementarity_residual);
+    st.min_pressure = std::min(st.min_pressure, ps.min_pressure);
+    st.max_mass_residual = std::max(st.max_mass_residual, ps.max_mass_residual);
+    st.assembly_s += ps.assembly_s;
+    st.factorization_s += ps.factorization_s;
+    st.complementarity_s += ps.complementarity_s;
+    r.lateral_force += pa->lateral;
+    r.contact_lateral_force += pa->contact_lateral;
+    r.friction_force += pa->friction;
+    r.contact_friction_force += pa->contact_friction;
+    r.friction_moment_about_pin += pa->friction_moment;
+    r.moment_about_pin += pa->normal_moment;
+    if (pa->moft < r.moft) {
+      r.moft = pa->moft;
+      r.moft_alpha = pa->moft_alpha;
+      r.moft_y = pa->moft_y;
+    }
+    r.max_pressure = std::max(r.max_pressure, pa->max_pressure);
+    r.max_contact_pressure = std::max(r.max_contact_pressure, pa->max_contact_pressure);
+    cavitated_area += pa->cavitated_area;
+    panel_area += pa->area;
+    const ReynoldsSolution& sol = pa->fem->solution();
+    for (int k = 0; k < pa->fem->NodeCount(); ++k) {
+      const int full = pa->node[k];
+      fields_.pressure[full] = sol.pressure[k];
+      fields_.contact_pressure[full] = sol.contact_pressure[k];
+      fields_.fluid_fraction[full] = sol.fluid_fraction.size() ? sol.fluid_fraction[k] : 1.0;
+      fields_.residual[full] = sol.residual.size() ? sol.residual[k] : 0.0;
+      fields_.cavitated[full] = sol.cavitated[k];
+    }
+  }
+  r.moment_about_pin += r.friction_moment_about_pin;
+  r.friction_power_loss = std::abs(r.friction_force * s.piston_velocity);
+  r.cavitated_fraction = panel_area > 0 ? cavitated_area / panel_area : 0.0;
+  fields_.stats = st;
   return r;
 }
 

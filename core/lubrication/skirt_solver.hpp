@@ -15,6 +15,7 @@
 
 #include "core/lubrication/profile_table.hpp"
 #include "core/lubrication/reynolds_fem.hpp"
+#include "core/worker_pool.hpp"
 
 namespace filmdyn::lubrication {
 
@@ -77,26 +78,48 @@ struct SkirtResult {
 };
 
 /// Construct once per skirt (mesh + symbolic factorisation), then Solve() per time step.
+///
+/// The pin-boss relief Omega2 (p = 0, no film) separates the thrust panel Omega1 and the
+/// anti-thrust panel Omega3 completely: their Reynolds problems share no unknown. Each panel is
+/// therefore its own ReynoldsFem (two half-size factorisations instead of one, each with its own
+/// active set and factor reuse), and with SetThreads(2) the two are solved side by side. The
+/// results do not depend on the thread count (each panel's partial integrals are summed in panel
+/// order). fields(), film_thickness() and mesh() describe the whole skirt (relief included, with
+/// p = p_c = 0 there).
 class SkirtSolver {
  public:
   explicit SkirtSolver(SkirtConfig config);
+  ~SkirtSolver();
   const SkirtResult& Solve(const SkirtState& state);
   const SkirtResult& result() const { return result_; }
-  const ReynoldsSolution& fields() const { return fem_.solution(); }
-  const Eigen::VectorXd& film_thickness() const { return fem_.film_thickness(); }
-  const TriMesh& mesh() const { return fem_.mesh(); }
-  const ReynoldsFem& fem() const { return fem_; }
+  const ReynoldsSolution& fields() const { return fields_; }
+  const Eigen::VectorXd& film_thickness() const { return h_; }
+  const TriMesh& mesh() const { return mesh_; }
   const SkirtConfig& config() const { return config_; }
   /// alpha [rad] of each node (x = R alpha).
   const std::vector<double>& alpha() const { return alpha_; }
+  /// 1 (default): the panels one after the other; 2: side by side.
+  void SetThreads(int threads);
+
+  /// The lubricated panels: 0 = thrust (Omega1), 1 = anti-thrust (Omega3).
+  static constexpr int kPanels = 2;
+  const ReynoldsFem& panel(int k) const;
+  /// Whole-skirt node of each node of panel k.
+  const std::vector<int>& panel_nodes(int k) const;
 
   static TriMesh MakeMesh(const SkirtGeometry& g, const SkirtMeshSpec& spec);
 
  private:
+  struct Panel;
+  void SolvePanel(Panel& panel, const SkirtState& s);
+
   SkirtConfig config_;
-  ReynoldsFem fem_;
+  TriMesh mesh_;
   std::vector<double> alpha_;
-  Eigen::VectorXd cos_, h_static_, arm_, ptot_, weight_;
+  Eigen::VectorXd h_, hdot_, cos_, h_static_, arm_;
+  std::vector<std::unique_ptr<Panel>> panels_;
+  std::unique_ptr<WorkerPool> pool_;
+  ReynoldsSolution fields_;
   SkirtResult result_;
 };
 

@@ -15,7 +15,7 @@
 #include "core/multibody/constraint.hpp"
 #include "core/multibody/force_element.hpp"
 #include "core/multibody/system_state.hpp"
-#include "core/multibody/worker_pool.hpp"
+#include "core/worker_pool.hpp"
 
 namespace filmdyn::multibody {
 

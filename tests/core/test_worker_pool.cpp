@@ -11,8 +11,9 @@
 #include <thread>
 
 #include "core/multibody/multibody_system.hpp"
-#include "core/multibody/worker_pool.hpp"
+#include "core/worker_pool.hpp"
 
+using namespace filmdyn;
 using namespace filmdyn::multibody;
 
 namespace {

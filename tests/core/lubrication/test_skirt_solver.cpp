@@ -1,5 +1,6 @@
 // Piston skirt solver: sign conventions, symmetry, closed-form squeeze on a parallel film,
-// friction direction, clamped penetrating states.
+// friction direction, clamped penetrating states, and the two-panel solve against one Reynolds
+// problem on the whole skirt mesh (serial and side by side).
 #include <QtTest>
 
 #include <cmath>
@@ -39,6 +40,57 @@ class TestSkirt : public QObject {
     QVERIFY(r.stats.complementarity_residual < 1e-12);
     QVERIFY(std::abs(r.moft_alpha) < 1e-12);  // thinnest film on the thrust axis
     QVERIFY(r.cavitated_fraction > 0.2);      // the anti-thrust panel separates
+  }
+
+  void panelsReproduceTheWholeSkirtSolve() {
+    // The skirt solves Omega1 and Omega3 as two problems because Omega2 (p = 0) decouples them.
+    // Reference: one ReynoldsFem on the whole mesh (relief nodes fixed) with the same film. The
+    // pressures and the lateral force and moment must agree to round-off, over a sequence (the
+    // panels keep their own active sets and factors), with one and with two threads.
+    const SkirtConfig cfg = Skirt();
+    SkirtSolver serial(cfg), threaded(cfg);
+    threaded.SetThreads(2);
+    ReynoldsFem whole(SkirtSolver::MakeMesh(cfg.geometry, cfg.mesh), 1, cfg.solver);
+    const TriMesh& m = serial.mesh();
+    QCOMPARE(m.NodeCount(), whole.NodeCount());
+    int panel_nodes = 0;
+    for (int k = 0; k < SkirtSolver::kPanels; ++k) panel_nodes += serial.panel(k).NodeCount();
+    QCOMPARE(panel_nodes, (31 + 31) * 41);  // the relief's interior column belongs to neither
+    Eigen::VectorXd cosa(m.NodeCount()), arm(m.NodeCount());
+    for (int k = 0; k < m.NodeCount(); ++k) {
+      cosa[k] = std::cos(serial.alpha()[k]);
+      arm[k] = m.y[k] - cfg.geometry.pin_position;
+    }
+    for (int step = 0; step < 12; ++step) {
+      SkirtState s;
+      s.e0 = 9e-6 * std::cos(0.4 * step);
+      s.gamma = 3e-4 * std::sin(0.3 * step);
+      s.e0_dot = 0.02 * std::sin(0.4 * step);
+      s.gamma_dot = 0.3 * std::cos(0.3 * step);
+      s.piston_velocity = 12.0 * std::cos(0.25 * step + 0.1);
+      const SkirtResult a = serial.Solve(s);
+      const SkirtResult& b = threaded.Solve(s);
+      whole.film_thickness() = serial.film_thickness();
+      for (int k = 0; k < m.NodeCount(); ++k) {
+        whole.film_rate()[k] = -(s.e0_dot + arm[k] * s.gamma_dot) * cosa[k];
+      }
+      ReynoldsParams params;
+      params.viscosity = cfg.viscosity;
+      params.u_sum = -s.piston_velocity;
+      params.u_diff = s.piston_velocity;
+      const ReynoldsSolution& w = whole.Solve(params);
+      QCOMPARE(w.stats.status, SolveStatus::kConverged);
+      const double pmax = w.pressure.maxCoeff();
+      QVERIFY(pmax > 0.0);
+      QVERIFY((serial.fields().pressure - w.pressure).cwiseAbs().maxCoeff() < 1e-8 * pmax);
+      const double lateral = -2.0 * whole.IntegrateProduct(w.pressure, cosa);
+      QVERIFY2(std::abs(a.lateral_force - lateral) < 1e-8 * std::abs(lateral),
+               qPrintable(QString("%1 vs %2").arg(a.lateral_force).arg(lateral)));
+      // Two threads: the same numbers bit for bit.
+      QVERIFY(b.lateral_force == a.lateral_force && b.moment_about_pin == a.moment_about_pin &&
+              b.friction_force == a.friction_force && b.moft == a.moft);
+      QVERIFY(threaded.fields().pressure == serial.fields().pressure);
+    }
   }
 
   void parallelFilmSqueezeMatchesClosedForm() {
