@@ -155,7 +155,11 @@ void MainWindow::createMenus() {
   undo->setShortcut(QKeySequence::Undo);
   QAction* redo = document_->undoStack()->createRedoAction(this, tr("&Redo"));
   redo->setIcon(icon(QStyle::SP_ArrowForward));
-  redo->setShortcuts({QKeySequence::Redo, QKeySequence(tr("Ctrl+Y"))});
+  // The platform's redo keys plus Ctrl+Y — once: some platforms' Redo already includes Ctrl+Y,
+  // and a key listed twice makes the shortcut ambiguous (it then does nothing).
+  QList<QKeySequence> redo_keys = QKeySequence::keyBindings(QKeySequence::Redo);
+  if (!redo_keys.contains(QKeySequence(tr("Ctrl+Y")))) redo_keys << QKeySequence(tr("Ctrl+Y"));
+  redo->setShortcuts(redo_keys);
   edit_menu->addAction(undo);
   edit_menu->addAction(redo);
 

@@ -1,12 +1,36 @@
-// The main window opens with its menus and remembers its geometry between sessions.
+// The main window opens with its menus, remembers its geometry between sessions, asks before
+// unsaved changes are lost (Cancel keeps the window, Discard closes, Save writes the file), and
+// its keyboard shortcuts act (undo/redo of an edit, switching the workspace pages).
+#include <QAbstractButton>
+#include <QFile>
 #include <QMenuBar>
+#include <QMessageBox>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QTabWidget>
+#include <QTemporaryDir>
+#include <QTimer>
 #include <QtTest>
 
 #include "ui/about_info.hpp"
+#include "ui/case_editor/case_document.hpp"
 #include "ui/main_window.hpp"
+
+namespace {
+// Answers the next modal message box with `button` (from the event loop, as a user would) and
+// records its title; the box must appear within a few seconds.
+void AnswerNextMessageBox(QMessageBox::StandardButton button, QString* title) {
+  QTimer::singleShot(50, [button, title] {
+    auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+    if (!box) {
+      AnswerNextMessageBox(button, title);  // not shown yet: look again
+      return;
+    }
+    *title = box->windowTitle();
+    box->button(button)->click();
+  });
+}
+}  // namespace
 
 class TestMainWindow : public QObject {
   Q_OBJECT
@@ -40,6 +64,69 @@ class TestMainWindow : public QObject {
     }
     filmdyn::ui::MainWindow again;
     QCOMPARE(again.size(), QSize(1011, 707));
+  }
+
+  void unsavedChangesAreNeverLostSilently() {
+    QTemporaryDir dir;
+    const QString path = dir.filePath("case.json");
+    filmdyn::ui::MainWindow window;
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QString error;
+    QVERIFY2(window.saveProjectAs(path, &error), qPrintable(error));
+    QVERIFY(!window.document()->isModified());
+    window.document()->setParameter("operating.rpm", 4321.5);
+    QVERIFY(window.document()->isModified());
+    QVERIFY(window.windowTitle().startsWith("case.json *"));
+
+    // Cancel: the window stays open with the edit.
+    QString title;
+    AnswerNextMessageBox(QMessageBox::Cancel, &title);
+    QVERIFY(!window.close());
+    QCOMPARE(title, QString("Unsaved changes"));
+    QVERIFY(window.isVisible());
+    QCOMPARE(window.document()->engineCase().operating.rpm, 4321.5);
+
+    // Save: written to the project file, then the window closes.
+    title.clear();
+    AnswerNextMessageBox(QMessageBox::Save, &title);
+    QVERIFY(window.close());
+    QCOMPARE(title, QString("Unsaved changes"));
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    QVERIFY(file.readAll().contains("4321.5"));
+
+    // Discard: closes without writing.
+    filmdyn::ui::MainWindow other;
+    other.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&other));
+    QVERIFY(other.openProject(path, &error));
+    other.document()->setParameter("operating.rpm", 1357.25);
+    AnswerNextMessageBox(QMessageBox::Discard, &title);
+    QVERIFY(other.close());
+    QFile again(path);
+    QVERIFY(again.open(QIODevice::ReadOnly));
+    const QByteArray text = again.readAll();
+    QVERIFY(text.contains("4321.5") && !text.contains("1357.25"));
+  }
+
+  void shortcutsAct() {
+    filmdyn::ui::MainWindow window;
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    window.activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(&window));
+    const double rpm = window.document()->engineCase().operating.rpm;
+    window.document()->setParameter("operating.rpm", rpm + 100.0);
+    QTest::keyClick(&window, Qt::Key_Z, Qt::ControlModifier);  // undo
+    QCOMPARE(window.document()->engineCase().operating.rpm, rpm);
+    QTest::keyClick(&window, Qt::Key_Y, Qt::ControlModifier);  // redo
+    QCOMPARE(window.document()->engineCase().operating.rpm, rpm + 100.0);
+    QTest::keyClick(&window, Qt::Key_3, Qt::ControlModifier);  // pressure fields page
+    QCOMPARE(window.workspace()->currentIndex(), 2);
+    QTest::keyClick(&window, Qt::Key_1, Qt::ControlModifier);  // case page
+    QCOMPARE(window.workspace()->currentIndex(), 0);
+    window.document()->reset(window.document()->engineCase());  // nothing to ask at close
   }
 
   void aboutListsLibraryVersions() {
