@@ -118,6 +118,16 @@ ReynoldsFem::ReynoldsFem(TriMesh mesh, int sliding_axis, ReynoldsOptions options
     for (int a = 0; a < 3; ++a)
       for (int b = 0; b < 3; ++b) elem_pos_full_[ie][3 * a + b] = FindPos(k_full_, nd[a], nd[b]);
   }
+  // Geometric parts of the element matrices: K_e = kx_e G_x + ky_e G_y per node pair.
+  elem_geometry_.resize(elements_.size());
+  for (size_t ie = 0; ie < elements_.size(); ++ie) {
+    const Element& e = elements_[ie];
+    for (int q = 0; q < 6; ++q) {
+      const int r = kPairs[q][0], c = kPairs[q][1];
+      elem_geometry_[ie][q] = e.area * e.dndx[r] * e.dndx[c];
+      elem_geometry_[ie][6 + q] = e.area * e.dndy[r] * e.dndy[c];
+    }
+  }
   nz_row_.resize(k_lower_.nonZeros());
   nz_col_.resize(k_lower_.nonZeros());
   for (int c = 0; c < n; ++c) {
@@ -217,27 +227,24 @@ void ReynoldsFem::Assemble(const ReynoldsParams& params) {
   f_.setZero();
   double* kl = k_lower_.valuePtr();
   double* kf = k_full_.valuePtr();
-  static constexpr int kPairs[6][2] = {{0, 0}, {1, 1}, {2, 2}, {1, 0}, {2, 0}, {2, 1}};
   for (size_t ie = 0; ie < elements_.size(); ++ie) {
     const Element& e = elements_[ie];
     const int n0 = e.node[0], n1 = e.node[1], n2 = e.node[2];
     const double a = e.area;
     const double kxe = (kx[n0] + kx[n1] + kx[n2]) / 3.0;  // exact integral of the P1 interpolant
     const double kye = (ky[n0] + ky[n1] + ky[n2]) / 3.0;
-    double ke[3][3];
-    for (int r = 0; r < 3; ++r)
-      for (int c = 0; c < 3; ++c)
-        ke[r][c] = a * (kxe * e.dndx[r] * e.dndx[c] + kye * e.dndy[r] * e.dndy[c]);
+    const std::array<double, 12>& geo = elem_geometry_[ie];
+    double ke[6];  // per node pair (00, 11, 22, 10, 20, 21)
+    for (int q = 0; q < 6; ++q) ke[q] = kxe * geo[q] + kye * geo[6 + q];
     for (int q = 0; q < 6; ++q) {
       const int pos = elem_pos_lower_[ie][q];
-      if (pos >= 0) kl[pos] += ke[kPairs[q][0]][kPairs[q][1]];
+      if (pos >= 0) kl[pos] += ke[q];
     }
     if (full) {
-      for (int r = 0; r < 3; ++r) {
-        for (int c = 0; c < 3; ++c) {
-          const int pos = elem_pos_full_[ie][3 * r + c];
-          if (pos >= 0) kf[pos] += ke[r][c];
-        }
+      static constexpr int kPairOf[9] = {0, 3, 4, 3, 1, 5, 4, 5, 2};  // (r, c) -> pair
+      for (int rc = 0; rc < 9; ++rc) {
+        const int pos = elem_pos_full_[ie][rc];
+        if (pos >= 0) kf[pos] += ke[kPairOf[rc]];
       }
     }
     // Right-hand side, integrated exactly for P1 nodal fields (int N_a N_b = A/12 (1 + d_ab)).

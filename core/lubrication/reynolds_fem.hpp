@@ -173,8 +173,9 @@ class ReynoldsFem {
   Eigen::SparseMatrix<double> k_lower_, work_lower_, k_full_, m_full_;
   std::vector<std::array<int, 6>> elem_pos_lower_;  // (00,11,22,10,20,21) -> value index
   std::vector<std::array<int, 9>> elem_pos_full_;
-  std::vector<int> nz_row_, nz_col_;  // lower pattern: row/col of each value
-  std::vector<int> full_col_of_;      // full pattern: col of each value
+  std::vector<std::array<double, 12>> elem_geometry_;  // A dN_r/dx dN_c/dx, then the y parts
+  std::vector<int> nz_row_, nz_col_;                   // lower pattern: row/col of each value
+  std::vector<int> full_col_of_;                       // full pattern: col of each value
   std::vector<int> diag_pos_full_, down_pos_plus_, down_pos_minus_;  // JFO transport slots
   std::vector<int> down_node_plus_, down_node_minus_;
   std::vector<double> face_width_;  // dual-cell width across the sliding direction [m]

@@ -64,7 +64,7 @@ TriMesh SkirtSolver::MakeMesh(const SkirtGeometry& g, const SkirtMeshSpec& spec)
 struct SkirtSolver::Panel {
   std::unique_ptr<ReynoldsFem> fem;
   std::vector<int> node;  // whole-skirt node of each panel node
-  Eigen::VectorXd cos, arm, weight, ptot;
+  Eigen::VectorXd cos, arm, weight;
   std::vector<double> alpha;
   ReynoldsStats stats;
   double lateral = 0, contact_lateral = 0, normal_moment = 0, friction = 0, friction_moment = 0,
@@ -111,7 +111,6 @@ SkirtSolver::SkirtSolver(SkirtConfig config)
     panel->cos.resize(pn);
     panel->arm.resize(pn);
     panel->weight.resize(pn);
-    panel->ptot.resize(pn);
     panel->alpha.resize(pn);
     for (int k = 0; k < pn; ++k) {
       const int full = panel->node[k];
@@ -161,13 +160,10 @@ void SkirtSolver::SolvePanel(Panel& pa, const SkirtState& s) {
   const ReynoldsSolution& sol = fem.Solve(params);
   pa.stats = sol.stats;
 
+  // One pass over the elements for the loads and the friction.
   // Normal load: film pushes the piston surface inwards, -p n with n = (cos a) along +e0; x2 for
   // the mirrored half. Generalised force on gamma: arm (y - a_p) times the lateral force density.
-  pa.ptot = sol.pressure + sol.contact_pressure;
-  pa.lateral = -2.0 * fem.IntegrateProduct(pa.ptot, pa.cos);
-  pa.contact_lateral = -2.0 * fem.IntegrateProduct(sol.contact_pressure, pa.cos);
-  pa.normal_moment = -2.0 * fem.IntegrateProduct(pa.ptot, pa.weight);
-
+  // Products of P1 fields integrate exactly: int a b = A/12 (sum a sum b + sum a_i b_i).
   // Friction on the skirt (surface 1, at rest; liner slides at -u_p): Patir & Cheng 1979 /
   // paper eq. 31  tau = -mu u_p/h (Phi_f + Phi_fs) - Phi_fp h/2 dp/dy, plus -mu_f p_c sign(u_p).
   // A rigid rotation d(gamma) moves a skirt point axially by -R cos(alpha) d(gamma), so the
@@ -179,24 +175,40 @@ void SkirtSolver::SolvePanel(Panel& pa, const SkirtState& s) {
   const double sgn = (up > 0) - (up < 0);
   const bool jfo = config_.solver.cavitation == CavitationModel::kJfo;
   const double radius = config_.geometry.radius;
+  const Eigen::VectorXd &p = sol.pressure, &pc_node = sol.contact_pressure;
+  double load = 0.0, contact_load = 0.0, load_moment = 0.0;
   double force = 0.0, moment = 0.0, contact = 0.0;
   for (const auto& e : fem.elements()) {
-    double cpl = 0.0, hfp = 0.0, dpdy = 0.0, pc = 0.0, cs = 0.0;
+    double cpl = 0.0, hfp = 0.0, dpdy = 0.0, pc = 0.0, cs = 0.0, sw = 0.0, pt = 0.0;
+    double pt_cs = 0.0, pc_cs = 0.0, pt_w = 0.0;
     for (int a = 0; a < 3; ++a) {
       const int k = e.node[a];
       const double theta_f = jfo ? sol.fluid_fraction[k] : 1.0;
+      const double ptot = p[k] + pc_node[k];
       cpl += theta_f * (fac[k].shear_f + fac[k].shear_fs) / h[k];
       hfp += fac[k].shear_fp * h[k];
-      dpdy += e.dndy[a] * sol.pressure[k];
-      pc += sol.contact_pressure[k];
+      dpdy += e.dndy[a] * p[k];
+      pc += pc_node[k];
       cs += pa.cos[k];
+      sw += pa.weight[k];
+      pt += ptot;
+      pt_cs += ptot * pa.cos[k];
+      pc_cs += pc_node[k] * pa.cos[k];
+      pt_w += ptot * pa.weight[k];
     }
+    const double a12 = e.area / 12.0;
+    load += a12 * (pt * cs + pt_cs);
+    contact_load += a12 * (pc * cs + pc_cs);
+    load_moment += a12 * (pt * sw + pt_w);
     const double tau_area = -mu * up * e.area * cpl / 3.0 - e.area * 0.5 * (hfp / 3.0) * dpdy -
                             sgn * mu_f * e.area * pc / 3.0;
     force += tau_area;
     moment += -tau_area * radius * cs / 3.0;
     contact += -sgn * mu_f * e.area * pc / 3.0;
   }
+  pa.lateral = -2.0 * load;
+  pa.contact_lateral = -2.0 * contact_load;
+  pa.normal_moment = -2.0 * load_moment;
   pa.friction = 2.0 * force;
   pa.contact_friction = 2.0 * contact;
   pa.friction_moment = 2.0 * moment;

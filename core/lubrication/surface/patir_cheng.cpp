@@ -239,12 +239,17 @@ double ShearStressF(double H) {
     // instead. With s_k = 1/(2k+1) (series of ln((z+1)/(z-1)) / 2) and c_k the third difference
     // s_k - 3 s_{k-1} + 3 s_{k-2} - s_{k-3}, Phi_f = 1 - 35/16 sum_{k>=4} c_k w^(2(k-3))
     // = 1 + 1/(9 z^2) + ... ; 14 terms leave < 1e-19 for z > 5.
+    // The c_k are constants: computed once (the same arithmetic, so the same values).
+    static const std::array<double, 14> coefficients = [] {
+      std::array<double, 14> c{};
+      const auto s = [](int j) { return 1.0 / (2.0 * j + 1.0); };
+      for (int k = 4; k < 18; ++k) c[k - 4] = s(k) - 3.0 * s(k - 1) + 3.0 * s(k - 2) - s(k - 3);
+      return c;
+    }();
     const double w2 = 1.0 / (z * z);
     double sum = 0.0;
     double w_power = w2;
-    for (int k = 4; k < 18; ++k) {
-      const auto s = [](int j) { return 1.0 / (2.0 * j + 1.0); };
-      const double c = s(k) - 3.0 * s(k - 1) + 3.0 * s(k - 2) - s(k - 3);
+    for (double c : coefficients) {
       sum += c * w_power;
       w_power *= w2;
     }
