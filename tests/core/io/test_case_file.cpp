@@ -62,7 +62,12 @@ class TestCaseFile : public QObject {
     QCOMPARE(c.lubricant.viscosity, 0.02);
     QCOMPARE(c.pressure_curves.size(), std::size_t(4));
     // The file and the struct defaults agree (one source of truth for the GUI's "reset").
+    // The embedded case runs the paper's coupled model; a case built in code keeps ideal joints
+    // unless asked (no film models without the coupling factories).
+    QCOMPARE(c.skirt.model, engine::JointModel::kLubricated);
+    QCOMPARE(c.big_end.model, engine::JointModel::kLubricated);
     engine::EngineCase defaults;
+    defaults.skirt.model = defaults.big_end.model = engine::JointModel::kLubricated;
     defaults.description = c.description;
     defaults.pressure_curves = c.pressure_curves;
     defaults.assumed = c.assumed;

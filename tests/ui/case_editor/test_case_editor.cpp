@@ -305,6 +305,7 @@ class TestCaseEditor : public QObject {
       c.lubricant.viscosity = 0.011;
       c.operating.rpm = 4000;
       c.solver.max_cycles = 12;
+      c.skirt.model = filmdyn::engine::JointModel::kIdeal;
       c.big_end.model = filmdyn::engine::JointModel::kLubricated;
       window.document()->edit(c, "several edits");
       QVERIFY(window.document()->isModified());
