@@ -134,14 +134,19 @@ class TestCoupledRun : public QObject {
   }
 
   void filmForcesApproachTheIdealJointsAsTheClearancesShrink() {
+    // Clearances shrink and viscosities rise together (stiffer films). The big-end force must
+    // approach the ideal revolute joint's. The liner side force must approach the ideal
+    // prismatic joint's once the skirt friction is accounted for: the ideal joint is frictionless,
+    // while the skirt's viscous friction grows as mu/h (800 N at a quarter clearance) and, acting
+    // along the bore, changes the rod force and with it the side force by -F_f tan(phi) (phi: rod
+    // angle from the cylinder axis, the piston-pin offset included). Uncorrected, the side-force
+    // difference grows: 1.5 %, 4.9 %, 19.9 % (docs/validation/coupling.md (a)).
     const engine::RunResult ideal = engine::RunJob(CoarseConfig(engine::Model::kIdeal));
     QCOMPARE(ideal.samples.size(), std::size_t(360));
+    const auto& geo = Loaded().value.geometry;
     auto big_end = [](const engine::CrankTrainSample& s) { return s.big_end_force_on_rod; };
-    auto liner = [](const engine::CrankTrainSample& s) {
-      return Eigen::Vector2d(s.liner_force_on_piston.x(), 0.0);
-    };
-    double previous_be = INFINITY;
-    for (double scale : {1.0, 0.5}) {
+    double previous_be = INFINITY, previous_sk = INFINITY;
+    for (double scale : {1.0, 0.5, 0.25}) {
       engine::RunConfig be = CoarseConfig(engine::Model::kOnlyLbrbe);
       engine::BigEndCase& b = be.engine_case.big_end;
       b.journal_radius = b.bearing_radius - scale * (b.bearing_radius - b.journal_radius);
@@ -158,25 +163,48 @@ class TestCoupledRun : public QObject {
           c.geometry.liner_radius - scale * (c.geometry.liner_radius - c.skirt.piston_radius);
       for (double& h : c.skirt.profile_h) h *= scale;
       c.lubricant.viscosity /= scale;
+      if (scale < 0.3) {
+        // At a quarter clearance e0 is ~0.06 um and, at the case tolerances, wobbles from cycle
+        // to cycle (a period-two pattern of 23 % of its tiny range): 100x tighter tolerances make
+        // the run periodic in 2 cycles (the forces are the same either way to ~0.1 %).
+        multibody::IntegratorConfig& t = sk.integrator;
+        for (double* tol : {&t.relative_tolerance, &t.position_tolerance, &t.angle_tolerance,
+                            &t.velocity_tolerance, &t.angular_velocity_tolerance}) {
+          *tol *= 0.01;
+        }
+      }
       const engine::RunResult rs = engine::RunJob(sk);
       qInfo("x%.2f Only-Skirt: %s %s", scale, engine::StatusName(rs.status).c_str(),
             rs.message.c_str());
-      // Stiffer skirt films settle more slowly: the last of 6 cycles is periodic within ~2 %.
-      QVERIFY(rs.status == engine::RunStatus::kCompleted ||
-              rs.status == engine::RunStatus::kNotConverged);
-      double ref_sk = 0.0;
-      const double d_sk = RmsDifference(rs.samples, ideal.samples, liner, &ref_sk);
+      QCOMPARE(engine::StatusName(rs.status), std::string("completed"));
+      QCOMPARE(rs.samples.size(), ideal.samples.size());
+      double d2 = 0.0, d2_raw = 0.0, ref2 = 0.0;
+      for (std::size_t k = 0; k < rs.samples.size(); ++k) {
+        const auto &f = rs.samples[k], &i = ideal.samples[k];
+        const double phi = std::asin((geo.crank_radius * std::sin(i.crank_angle) + geo.pin_offset) /
+                                     geo.rod_length);
+        const double expected =
+            i.liner_force_on_piston.x() - f.skirt.friction_force * std::tan(phi);
+        d2 += std::pow(f.skirt.normal_force - expected, 2);
+        d2_raw += std::pow(f.skirt.normal_force - i.liner_force_on_piston.x(), 2);
+        ref2 += std::pow(i.liner_force_on_piston.x(), 2);
+      }
+      const double d_sk = std::sqrt(d2 / ref2), d_raw = std::sqrt(d2_raw / ref2);
       qInfo(
-          "clearance x%.2f, viscosity x%.0f: big-end force rms diff %.1f N (%.2f %% of %.0f N), "
-          "liner side force %.1f N (%.2f %% of %.0f N)",
-          scale, 1.0 / scale, d_be, 100 * d_be / ref, ref, d_sk, 100 * d_sk / ref_sk, ref_sk);
-      QVERIFY(d_be < previous_be);
-      // The skirt does NOT approach monotonically here (x0.5: the stiffer film is still ringing
-      // after 6 cycles; docs/validation/coupling.md (a)) — only bounded.
-      QVERIFY(d_sk < 0.15 * ref_sk);
-      previous_be = d_be;
+          "clearance x%.2f, viscosity x%.0f: big-end force rms diff %.1f N (%.2f %% of %.0f N); "
+          "liner side force vs ideal %.2f %%, vs ideal with the skirt friction %.2f %%",
+          scale, 1.0 / scale, d_be, 100 * d_be / ref, ref, 100 * d_raw, 100 * d_sk);
+      if (scale < 0.3) {
+        QVERIFY(d_be < 0.01 * ref);  // at the noise floor from x0.5 on (0.2-0.25 %)
+      } else {
+        QVERIFY(d_be < previous_be);
+      }
+      QVERIFY(d_sk < previous_sk);
+      previous_be = std::min(previous_be, d_be);
+      previous_sk = d_sk;
     }
-    QVERIFY(previous_be < 0.05 * 3000.0);
+    QVERIFY(previous_be < 0.005 * 7516.0);
+    QVERIFY(previous_sk < 0.002);  // 0.2 % of the ideal side force at a quarter clearance
   }
 
   void twoThreadsGiveTheSameRunBitForBit() {
