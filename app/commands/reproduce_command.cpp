@@ -124,8 +124,7 @@ Command MakeReproduceCommand() {
       "(the paper's Table I) is used. About 1 minute on 2 cores with the default meshes.\n"
       "Example:\n  filmdyn reproduce --out /tmp/paper";
   command.run = [](const Args& args, Streams& streams) {
-    const std::string case_path = args.positional().empty() ? "" : args.positional()[0];
-    const io::LoadedCase loaded = io::LoadCase(case_path, args.Values("set"));
+    const io::LoadedCase loaded = LoadCaseArgument(args);
     const engine::EngineCase& c = loaded.value;
     const int jobs = JobsOption(args);
     const double time_limit = args.Double("time-limit").value_or(0.0);
@@ -141,13 +140,8 @@ Command MakeReproduceCommand() {
         {engine::Model::kSkirtLbrbe, kSpeeds[1]}, {engine::Model::kSkirtLbrbe, kSpeeds[2]}};
     std::vector<engine::SweepJob> run_jobs;  // every configuration checked before any run
     for (const auto& [model, rpm] : plan) {
-      engine::SweepJob job;
-      job.config = BuildRunConfig(loaded, model, rpm, std::nullopt, time_limit);
-      job.case_name = c.name;
-      job.write_fields = !args.Has("no-fields");
-      job.output_folder =
-          out / "runs" / (c.name + "-" + engine::ModelName(model) + "-" + RpmText(rpm));
-      run_jobs.push_back(std::move(job));
+      run_jobs.push_back(
+          SweepJobFor(loaded, model, rpm, time_limit, !args.Has("no-fields"), out / "runs"));
     }
     std::filesystem::create_directories(out / "figures");
     if (const std::string error = WritePressureFigure(loaded, out / "figures"); !error.empty()) {

@@ -36,8 +36,7 @@ Command MakeRunCommand() {
       "Examples:\n  filmdyn run --model ideal --rpm 4000\n"
       "  filmdyn run my.json --set geometry.pin_offset=0.001 --out /tmp/r1";
   command.run = [](const Args& args, Streams& streams) {
-    const std::string case_path = args.positional().empty() ? "" : args.positional()[0];
-    const io::LoadedCase loaded = io::LoadCase(case_path, args.Values("set"));
+    const io::LoadedCase loaded = LoadCaseArgument(args);
     const engine::EngineCase& c = loaded.value;
     const engine::Model model =
         args.Value("model") ? engine::ParseModel(*args.Value("model")) : ModelFromCase(c);

@@ -54,6 +54,22 @@ std::string WriteRunPlots(const std::filesystem::path& folder, const engine::Run
   return error.toStdString();
 }
 
+io::LoadedCase LoadCaseArgument(const Args& args) {
+  const std::string case_path = args.positional().empty() ? "" : args.positional()[0];
+  return io::LoadCase(case_path, args.Values("set"));
+}
+
+engine::SweepJob SweepJobFor(const io::LoadedCase& loaded, engine::Model model, double rpm,
+                             double time_limit, bool write_fields,
+                             const std::filesystem::path& parent) {
+  engine::SweepJob job;
+  job.config = BuildRunConfig(loaded, model, rpm, std::nullopt, time_limit);
+  job.case_name = loaded.value.name;
+  job.write_fields = write_fields;
+  job.output_folder = parent / io::DefaultOutputFolder(loaded.value.name, model, rpm).filename();
+  return job;
+}
+
 std::string RpmText(double rpm) {
   std::ostringstream out;
   out << rpm;

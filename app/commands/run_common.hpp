@@ -31,6 +31,16 @@ engine::RunConfig BuildRunConfig(const io::LoadedCase& loaded, engine::Model mod
 std::string WriteRunPlots(const std::filesystem::path& folder, const engine::RunConfig& config,
                           const std::vector<io::OutputRow>& rows);
 
+/// The case named by the command's optional CASE.json positional (the embedded default case
+/// without one), with the --set overrides applied. Throws InputError naming the file or field.
+io::LoadedCase LoadCaseArgument(const Args& args);
+
+/// One run of a sweep or of `reproduce`: its configuration (checked now), written to
+/// `parent / <case>-<model>-<rpm>` (the folder name `filmdyn run` uses).
+engine::SweepJob SweepJobFor(const io::LoadedCase& loaded, engine::Model model, double rpm,
+                             double time_limit, bool write_fields,
+                             const std::filesystem::path& parent);
+
 /// "6000", "1500.5": a speed as it appears in folder names and messages.
 std::string RpmText(double rpm);
 

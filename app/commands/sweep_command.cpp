@@ -1,9 +1,7 @@
 // `filmdyn sweep`: several runs (speeds × models) in parallel, one folder each (results.csv,
 // summary.json, plots/), plus a comparison: comparison.csv, comparison.md and overlay plots.
 // The runs are computed by core (engine::SweepRunner); plots are drawn here on the main thread.
-#include <algorithm>
 #include <sstream>
-#include <thread>
 
 #include "app/commands/commands.hpp"
 #include "app/commands/run_common.hpp"
@@ -47,8 +45,7 @@ Command MakeSweepCommand() {
       "runs overlaid. Ctrl-C stops every run cleanly with its partial results written.\n"
       "Example:\n  filmdyn sweep --rpm 1000,2000,4000,6000 --models skirt-lbrbe --jobs 2";
   command.run = [](const Args& args, Streams& streams) {
-    const std::string case_path = args.positional().empty() ? "" : args.positional()[0];
-    const io::LoadedCase loaded = io::LoadCase(case_path, args.Values("set"));
+    const io::LoadedCase loaded = LoadCaseArgument(args);
     const engine::EngineCase& c = loaded.value;
 
     const std::vector<double> speeds =
@@ -70,12 +67,8 @@ Command MakeSweepCommand() {
     std::vector<engine::SweepJob> sweep_jobs;
     for (engine::Model model : models) {
       for (double rpm : speeds) {
-        engine::SweepJob job;
-        job.config = BuildRunConfig(loaded, model, rpm, std::nullopt, time_limit);
-        job.case_name = c.name;
-        job.write_fields = !args.Has("no-fields");
-        job.output_folder = out / (c.name + "-" + engine::ModelName(model) + "-" + RpmText(rpm));
-        sweep_jobs.push_back(std::move(job));
+        sweep_jobs.push_back(
+            SweepJobFor(loaded, model, rpm, time_limit, !args.Has("no-fields"), out));
       }
     }
     std::filesystem::create_directories(out);

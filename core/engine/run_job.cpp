@@ -214,7 +214,6 @@ RunResult RunJob(const RunConfig& config, const RunMonitor& monitor,
   const Tracked tracked = TrackedFor(c);
   coupling::PeriodicSteadyState steady(tracked.quantities, steps_per_cycle,
                                        c.solver.steady_state_tolerance);
-  const bool lubricated = skirt || big_end;
   auto solves = [&] {
     result.reynolds_factorizations =
         (skirt ? skirt->factorizations() : 0L) + (big_end ? big_end->factorizations() : 0L);
@@ -226,7 +225,7 @@ RunResult RunJob(const RunConfig& config, const RunMonitor& monitor,
   // Typical cycle counts (for the progress estimate): 2 for the ideal model and for film models
   // after a run-in of at least 270 °CA (measured: cycle 2 then agrees with cycle 1 to < 1 %),
   // 4 for film models without one. The run-in counts as its share of a cycle.
-  const int typical = !lubricated || run_in >= 1.5 * std::numbers::pi - 1e-9 ? 2 : 4;
+  const int typical = !has_films || run_in >= 1.5 * std::numbers::pi - 1e-9 ? 2 : 4;
   const double run_in_cycles = run_in / (4.0 * std::numbers::pi);
   auto fraction_done = [&](double cycles_done) {
     const double expected = std::max(typical, std::min(max_cycles, cycle + 1)) + run_in_cycles;
@@ -256,14 +255,7 @@ RunResult RunJob(const RunConfig& config, const RunMonitor& monitor,
       // start-up transient from rest is the stiffest part of the run). Sampled at the output
       // interval, so a film failure or a cancel in the run-in is reported where it happened
       // and what was computed is kept.
-      constexpr double loose = 10.0;
-      multibody::IntegratorConfig run_in_tolerances = config.integrator;
-      run_in_tolerances.relative_tolerance *= loose;
-      run_in_tolerances.position_tolerance *= loose;
-      run_in_tolerances.angle_tolerance *= loose;
-      run_in_tolerances.velocity_tolerance *= loose;
-      run_in_tolerances.angular_velocity_tolerance *= loose;
-      integrator.SetTolerances(run_in_tolerances);
+      integrator.SetTolerances(config.integrator.ScaledTolerances(10.0));
       cycle = 0;
       const int chunks =
           std::max(1, static_cast<int>(std::ceil(run_in / c.solver.output_interval - 1e-9)));

@@ -48,6 +48,23 @@ int FindPos(const Eigen::SparseMatrix<double>& m, int row, int col) {
 
 }  // namespace
 
+void ReynoldsStats::Add(const ReynoldsStats& o) {
+  if (status == SolveStatus::kConverged) status = o.status;
+  iterations += o.iterations;
+  jfo_iterations += o.jfo_iterations;
+  factorizations += o.factorizations;
+  row_updates += o.row_updates;
+  pcg_solves += o.pcg_solves;
+  pcg_iterations += o.pcg_iterations;
+  pcg_fallbacks += o.pcg_fallbacks;
+  complementarity_residual = std::max(complementarity_residual, o.complementarity_residual);
+  min_pressure = std::min(min_pressure, o.min_pressure);
+  max_mass_residual = std::max(max_mass_residual, o.max_mass_residual);
+  assembly_s += o.assembly_s;
+  factorization_s += o.factorization_s;
+  complementarity_s += o.complementarity_s;
+}
+
 ReynoldsFem::ReynoldsFem(TriMesh mesh, int sliding_axis, ReynoldsOptions options)
     : mesh_(std::move(mesh)), axis_(sliding_axis), options_(options) {
   if (axis_ != 0 && axis_ != 1) throw std::logic_error("ReynoldsFem: sliding_axis must be 0 or 1");
@@ -328,9 +345,9 @@ bool ReynoldsFem::SolveReynoldsLcp(bool unconstrained) {
   // the factor is that of the current matrix (after a factorisation in this solve).
   bool refactorize = !(options_.reuse_factorization && factor_ready_ && factor_cut_ == cut_);
   bool exact = false;
-  // CG starts from the previous solve's pressure (the state moved little), later iterations
-  // from the last iterate.
-  bool have_guess = have_prev_ && p.size() == n;
+  // CG starts from the pressure in p: the previous solve's (the state moved little), in later
+  // iterations the last iterate.
+  const bool have_guess = have_prev_;
   // Few changes: modify the factor row by row (CHOLMOD rowdel/rowadd) instead of refactorising.
   const bool modify = ldlt_->SupportsRowModify();
   const int modify_limit = std::max(16, n / 25);
@@ -354,7 +371,7 @@ bool ReynoldsFem::SolveReynoldsLcp(bool unconstrained) {
         st.status = SolveStatus::kFactorizationFailed;
         return false;
       }
-      update_cut();
+      update_cut();  // the active set may have been swapped in without a row update
       factor_cut_ = cut_;
       exact = true;
     }

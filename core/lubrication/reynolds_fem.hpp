@@ -93,6 +93,10 @@ struct ReynoldsStats {
   double min_pressure = 0;              ///< most negative nodal pressure [Pa] (0 when exact)
   double max_mass_residual = 0;         ///< JFO: max nodal mass-balance residual / flow scale
   double assembly_s = 0, factorization_s = 0, complementarity_s = 0;  ///< wall times [s]
+
+  /// Merges the statistics of an independent solve of the same step (e.g. the other panel of
+  /// the skirt): counts and times add, residuals take the worst, a failure status is kept.
+  void Add(const ReynoldsStats& other);
 };
 
 /// Fields of one solve; all vectors have one entry per mesh node.

@@ -64,7 +64,7 @@ TriMesh SkirtSolver::MakeMesh(const SkirtGeometry& g, const SkirtMeshSpec& spec)
 struct SkirtSolver::Panel {
   std::unique_ptr<ReynoldsFem> fem;
   std::vector<int> node;  // whole-skirt node of each panel node
-  Eigen::VectorXd cos, arm, weight;
+  Eigen::VectorXd cos, weight;
   std::vector<double> alpha;
   ReynoldsStats stats;
   double lateral = 0, contact_lateral = 0, normal_moment = 0, friction = 0, friction_moment = 0,
@@ -109,13 +109,11 @@ SkirtSolver::SkirtSolver(SkirtConfig config)
     }
     const int pn = sub.NodeCount();
     panel->cos.resize(pn);
-    panel->arm.resize(pn);
     panel->weight.resize(pn);
     panel->alpha.resize(pn);
     for (int k = 0; k < pn; ++k) {
       const int full = panel->node[k];
       panel->cos[k] = cos_[full];
-      panel->arm[k] = arm_[full];
       panel->weight[k] = cos_[full] * arm_[full];
       panel->alpha[k] = alpha_[full];
     }
@@ -249,29 +247,13 @@ const SkirtResult& SkirtSolver::Solve(const SkirtState& s) {
     for (auto& panel : panels_) SolvePanel(*panel, s);
   }
 
-  // Whole-skirt results: the panels' sums in panel order, fields scattered (relief: 0).
+  // Whole-skirt results: the panels' sums in panel order. The whole-skirt fields are gathered
+  // only when asked for (fields(): output steps), not at every solve.
   ReynoldsStats& st = r.stats;
   double cavitated_area = 0.0, panel_area = 0.0;
   r.moft = 1e300;
   for (const auto& pa : panels_) {
-    const ReynoldsStats& ps = pa->stats;
-    if (ps.status != SolveStatus::kConverged && st.status == SolveStatus::kConverged) {
-      st.status = ps.status;
-    }
-    st.iterations += ps.iterations;
-    st.jfo_iterations += ps.jfo_iterations;
-    st.factorizations += ps.factorizations;
-    st.row_updates += ps.row_updates;
-    st.pcg_solves += ps.pcg_solves;
-    st.pcg_iterations += ps.pcg_iterations;
-    st.pcg_fallbacks += ps.pcg_fallbacks;
-    st.complementarity_residual =
-        std::max(st.complementarity_residual, ps.complementarity_residual);
-    st.min_pressure = std::min(st.min_pressure, ps.min_pressure);
-    st.max_mass_residual = std::max(st.max_mass_residual, ps.max_mass_residual);
-    st.assembly_s += ps.assembly_s;
-    st.factorization_s += ps.factorization_s;
-    st.complementarity_s += ps.complementarity_s;
+    st.Add(pa->stats);
     r.lateral_force += pa->lateral;
     r.contact_lateral_force += pa->contact_lateral;
     r.friction_force += pa->friction;
@@ -287,6 +269,17 @@ const SkirtResult& SkirtSolver::Solve(const SkirtState& s) {
     r.max_contact_pressure = std::max(r.max_contact_pressure, pa->max_contact_pressure);
     cavitated_area += pa->cavitated_area;
     panel_area += pa->area;
+  }
+  fields_stale_ = true;
+  r.moment_about_pin += r.friction_moment_about_pin;
+  r.friction_power_loss = std::abs(r.friction_force * s.piston_velocity);
+  r.cavitated_fraction = panel_area > 0 ? cavitated_area / panel_area : 0.0;
+  return r;
+}
+
+const ReynoldsSolution& SkirtSolver::fields() const {
+  if (!fields_stale_) return fields_;
+  for (const auto& pa : panels_) {  // relief nodes keep p = p_c = 0
     const ReynoldsSolution& sol = pa->fem->solution();
     for (int k = 0; k < pa->fem->NodeCount(); ++k) {
       const int full = pa->node[k];
@@ -297,11 +290,9 @@ const SkirtResult& SkirtSolver::Solve(const SkirtState& s) {
       fields_.cavitated[full] = sol.cavitated[k];
     }
   }
-  r.moment_about_pin += r.friction_moment_about_pin;
-  r.friction_power_loss = std::abs(r.friction_force * s.piston_velocity);
-  r.cavitated_fraction = panel_area > 0 ? cavitated_area / panel_area : 0.0;
-  fields_.stats = st;
-  return r;
+  fields_.stats = result_.stats;
+  fields_stale_ = false;
+  return fields_;
 }
 
 }  // namespace filmdyn::lubrication

@@ -92,7 +92,8 @@ class SkirtSolver {
   ~SkirtSolver();
   const SkirtResult& Solve(const SkirtState& state);
   const SkirtResult& result() const { return result_; }
-  const ReynoldsSolution& fields() const { return fields_; }
+  /// Whole-skirt fields of the last solve (gathered from the panels on the first call after it).
+  const ReynoldsSolution& fields() const;
   const Eigen::VectorXd& film_thickness() const { return h_; }
   const TriMesh& mesh() const { return mesh_; }
   const SkirtConfig& config() const { return config_; }
@@ -119,7 +120,8 @@ class SkirtSolver {
   Eigen::VectorXd h_, hdot_, cos_, h_static_, arm_;
   std::vector<std::unique_ptr<Panel>> panels_;
   std::unique_ptr<WorkerPool> pool_;
-  ReynoldsSolution fields_;
+  mutable ReynoldsSolution fields_;  // a cache of the panels' fields, see fields()
+  mutable bool fields_stale_ = false;
   SkirtResult result_;
 };
 

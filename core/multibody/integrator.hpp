@@ -2,6 +2,7 @@
 /// @file Implicit, error-controlled time integration of eq. 39: SUNDIALS CVODE, variable-order
 /// BDF (orders 1–5) with Newton iterations on a dense direct linear solver and our own Jacobian
 /// (MultibodySystem::AccelerationJacobian). Why this choice: docs/validation/multibody.md.
+#include <initializer_list>
 #include <memory>
 #include <string>
 
@@ -18,6 +19,16 @@ struct IntegratorConfig {
   double max_step = 0.0;                     ///< [s]; 0 = unlimited
   int max_order = 5;
   long max_steps_per_output = 200000;
+
+  /// A copy with every error tolerance (relative and absolute) multiplied by `factor`.
+  IntegratorConfig ScaledTolerances(double factor) const {
+    IntegratorConfig c = *this;
+    for (double* tol : {&c.relative_tolerance, &c.position_tolerance, &c.angle_tolerance,
+                        &c.velocity_tolerance, &c.angular_velocity_tolerance}) {
+      *tol *= factor;
+    }
+    return c;
+  }
 };
 
 /// Counters of the integration so far (Drake SimulatorStatus / MuJoCo warnings spirit).

@@ -167,11 +167,7 @@ class TestCoupledRun : public QObject {
         // At a quarter clearance e0 is ~0.06 um and, at the case tolerances, wobbles from cycle
         // to cycle (a period-two pattern of 23 % of its tiny range): 100x tighter tolerances make
         // the run periodic in 2 cycles (the forces are the same either way to ~0.1 %).
-        multibody::IntegratorConfig& t = sk.integrator;
-        for (double* tol : {&t.relative_tolerance, &t.position_tolerance, &t.angle_tolerance,
-                            &t.velocity_tolerance, &t.angular_velocity_tolerance}) {
-          *tol *= 0.01;
-        }
+        sk.integrator = sk.integrator.ScaledTolerances(0.01);
       }
       const engine::RunResult rs = engine::RunJob(sk);
       qInfo("x%.2f Only-Skirt: %s %s", scale, engine::StatusName(rs.status).c_str(),
