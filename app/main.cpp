@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "app/cli/dispatcher.hpp"
-#include "core/version.hpp"
+#include "core/base/version.hpp"
 #include "ui/main_window.hpp"
 #include "ui/vtk/vtk_view_widget.hpp"
 

@@ -1,7 +1,8 @@
-// Coupled run timing (issue 5 item 6): the default case, Skirt-LBRBE at 6000 rpm on the default
-// meshes, from the start through the periodic steady state and the reported cycle; wall time,
-// steps, Reynolds solves, time per solve; a tight-tolerance run for the accuracy check; the
-// price of the paper's explicit 1e-7 s scheme at our cost per step. Run on demand:
+// Coupled run timing (docs/performance.md, "Coupled run"): the default case, Skirt-LBRBE at
+// 6000 rpm on the default meshes, from the start through the periodic steady state and the
+// reported cycle; wall time, steps, Reynolds solves, time per solve; a tight-tolerance run for
+// the accuracy check; the price of the paper's explicit 1e-7 s scheme at our cost per step.
+// Run on demand:
 //   build/bench/bench_coupled [model] [rpm] [--no-tight] [--coarse] [--profile]
 //   [--threads 1|2] [--vtol m/s] [--atol rad] [--wtol rad/s] [--set key=value ...]
 #include <algorithm>

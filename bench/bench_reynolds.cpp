@@ -1,7 +1,7 @@
-// Reynolds solve timings (issue 3 item 8): time per solve on both default meshes, split into
-// assembly, numeric factorisation(s) and the complementarity logic, next to a bare CHOLMOD
-// simplicial LDL^T factorise + solve of the same matrix in the same run; plus Eigen vs CHOLMOD
-// backends on the default and a fine mesh. Run on demand (never a timed test):
+// Reynolds solve timings (docs/performance.md, "Reynolds solve"): time per solve on both default
+// meshes, split into assembly, numeric factorisation(s) and the complementarity logic, next to a
+// bare CHOLMOD simplicial LDL^T factorise + solve of the same matrix in the same run; plus Eigen
+// vs CHOLMOD backends on the default and a fine mesh. Run on demand (never a timed test):
 //   build-lub/bench/bench_reynolds [repeats]
 #include <Eigen/CholmodSupport>
 #include <algorithm>

@@ -1,4 +1,4 @@
-# SuiteSparse 5.12 on Debian 12 ships neither a CMake config nor a .pc file (stack-notes):
+# SuiteSparse 5.12 on Debian 12 ships neither a CMake config nor a .pc file (docs/design.md):
 # locate the headers and libraries and wrap them in one INTERFACE IMPORTED target.
 find_path(SUITESPARSE_INCLUDE_DIR cholmod.h PATH_SUFFIXES suitesparse REQUIRED)
 find_library(CHOLMOD_LIBRARY cholmod REQUIRED)

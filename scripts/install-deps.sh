@@ -7,7 +7,7 @@ packages=(
   build-essential cmake ninja-build pkg-config git
   qt6-base-dev qt6-charts-dev qt6-svg-dev libqt6opengl6-dev
   libeigen3-dev libsuitesparse-dev libvtk9-dev nlohmann-json3-dev
-  libsundials-dev libfmt-dev libtbb-dev
+  libsundials-dev libfmt-dev libtbb-dev libcli11-dev libboost-math-dev libhdf5-dev
   xvfb xauth libgl1-mesa-dri fonts-dejavu-core
 )
 # Deliberately NOT libvtk9-qt-dev: Debian builds VTK's Qt module against Qt 5, which cannot share

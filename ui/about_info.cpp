@@ -7,7 +7,7 @@
 
 #include <SuiteSparse_config.h>
 
-#include "core/version.hpp"
+#include "core/base/version.hpp"
 
 namespace filmdyn::ui {
 

@@ -47,7 +47,7 @@ class MainWindow : public QMainWindow {
   /// Non-interactive operations (menus call them after asking; tests and scripts call directly).
   bool openProject(const QString& path, QString* error = nullptr);
   bool saveProjectAs(const QString& path, QString* error = nullptr);
-  /// results.csv in core's format (as `filmdyn run` writes it; SPEC columns first).
+  /// results.csv in core's format (as `filmdyn run` writes it; columns as in docs/outputs.md).
   bool exportResultsCsv(const RunHandle& run, const QString& path, QString* error = nullptr);
   /// The run's output folder exactly as `filmdyn run --out DIR` writes it (results.csv,
   /// summary.json, fields/).

@@ -4,7 +4,7 @@
 #include <sstream>
 
 #include "app/cli/command.hpp"
-#include "core/input_error.hpp"
+#include "core/base/input_error.hpp"
 
 namespace filmdyn::cli {
 

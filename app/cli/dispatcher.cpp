@@ -5,8 +5,8 @@
 #include <sstream>
 
 #include "app/cli/registry.hpp"
-#include "core/input_error.hpp"
-#include "core/version.hpp"
+#include "core/base/input_error.hpp"
+#include "core/base/version.hpp"
 
 namespace filmdyn::cli {
 

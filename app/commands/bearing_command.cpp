@@ -1,4 +1,4 @@
-// `filmdyn bearing`: steady journal-bearing calculator (SPEC §4, issue 3 item 6). Mode 1:
+// `filmdyn bearing`: steady journal-bearing calculator. Mode 1:
 // --eps given (dimensionless results need only --ld). Mode 2: --load and --rpm given, the
 // equilibrium eccentricity is found (mixed lubrication when a roughness is given). The numbers
 // come from core/lubrication/bearing_calculator.hpp; this file only maps options and prints.
@@ -8,7 +8,7 @@
 #include <ostream>
 
 #include "app/commands/commands.hpp"
-#include "core/input_error.hpp"
+#include "core/base/input_error.hpp"
 #include "core/lubrication/bearing_calculator.hpp"
 
 namespace filmdyn::cli {

@@ -104,7 +104,8 @@ std::string FiguresIndex(const std::string& models_dir, const std::string& speed
 Command MakeReproduceCommand() {
   Command command;
   command.name = "reproduce";
-  command.summary = "the paper's section 4 study (3 models at 6000 rpm, 4 speeds) with its figures";
+  command.summary =
+      "section 4 of Zhao & Shen's coupling-model paper (3 models at 6000 rpm, 4 speeds), figures";
   command.positional_usage = "[CASE.json]";
   command.max_positional = 1;
   command.needs_gui_application = true;  // figures are rendered with Qt Charts (offscreen)
@@ -116,12 +117,14 @@ Command MakeReproduceCommand() {
       {"no-fields", "", "do not write the runs' fields/ (Fig. 10 then has no data)"},
       {"quiet", "", "no progress on stderr"}};
   command.details =
+      "The paper: Zhao & Shen, \"A numerical coupling model for a multibody system with multiple\n"
+      "lubricated clearance joints\" (docs/equations.md).\n"
       "Six runs: only-skirt, only-lbrbe and skirt-lbrbe at 6000 rpm; skirt-lbrbe at 1000, 2000\n"
       "and 4000 rpm. Writes <DIR>/runs/<case>-<model>-<rpm>/ (as `filmdyn run`),\n"
       "<DIR>/models-6000rpm/ and <DIR>/speeds-skirt-lbrbe/ (overlay plots, comparison tables),\n"
       "<DIR>/figures/cylinder_pressure.{png,svg} and <DIR>/figures.md, the index from each of\n"
-      "the paper's figures 5-15 to our files. Without CASE.json the built-in default case\n"
-      "(the paper's Table I) is used. About 1 minute on 2 cores with the default meshes.\n"
+      "the paper's figures 5-15 to the files written here. Without CASE.json the built-in default\n"
+      "case (the paper's Table I) is used. About 1 minute on 2 cores with the default meshes.\n"
       "Example:\n  filmdyn reproduce --out /tmp/paper";
   command.run = [](const Args& args, Streams& streams) {
     const io::LoadedCase loaded = LoadCaseArgument(args);
@@ -138,7 +141,7 @@ Command MakeReproduceCommand() {
         {engine::Model::kOnlySkirt, kModelsRpm},  {engine::Model::kOnlyLbrbe, kModelsRpm},
         {engine::Model::kSkirtLbrbe, kModelsRpm}, {engine::Model::kSkirtLbrbe, kSpeeds[0]},
         {engine::Model::kSkirtLbrbe, kSpeeds[1]}, {engine::Model::kSkirtLbrbe, kSpeeds[2]}};
-    std::vector<engine::SweepJob> run_jobs;  // every configuration checked before any run
+    std::vector<batch::SweepJob> run_jobs;  // every configuration checked before any run
     for (const auto& [model, rpm] : plan) {
       run_jobs.push_back(
           SweepJobFor(loaded, model, rpm, time_limit, !args.Has("no-fields"), out / "runs"));

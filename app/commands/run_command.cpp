@@ -1,4 +1,4 @@
-// `filmdyn run`: one headless run (SPEC §4). All the work is in core (io::LoadCase,
+// `filmdyn run`: one headless run (docs/outputs.md). All the work is in core (io::LoadCase,
 // engine::RunJob, io::WriteRunFolder); this file only parses options and prints progress on
 // stderr. Ctrl-C stops the run cleanly: the cycle computed so far is written, marked incomplete.
 #include <chrono>
@@ -7,7 +7,7 @@
 #include "app/commands/commands.hpp"
 #include "app/commands/run_common.hpp"
 #include "core/engine/run_job.hpp"
-#include "core/input_error.hpp"
+#include "core/base/input_error.hpp"
 #include "core/io/case_file.hpp"
 #include "core/io/field_output.hpp"
 #include "core/io/results_writer.hpp"
@@ -32,7 +32,8 @@ Command MakeRunCommand() {
       {"no-fields", "", "do not write fields/ (film fields as VTU/PVD per output step)"},
       {"quiet", "", "no progress on stderr"}};
   command.details =
-      "Without CASE.json the built-in default case (Table I of the coupling-model paper) is used.\n"
+      "Without CASE.json the built-in default case (Table I of Zhao & Shen's coupling-model paper;\n"
+      "docs/case-file.md) is used.\n"
       "Examples:\n  filmdyn run --model ideal --rpm 4000\n"
       "  filmdyn run my.json --set geometry.pin_offset=0.001 --out /tmp/r1";
   command.run = [](const Args& args, Streams& streams) {

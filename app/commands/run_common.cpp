@@ -8,7 +8,7 @@
 #include <sstream>
 #include <thread>
 
-#include "core/input_error.hpp"
+#include "core/base/input_error.hpp"
 #include "core/io/pressure_csv.hpp"
 #include "core/io/run_comparison.hpp"
 #include "ui/plots/plot_export.hpp"
@@ -59,10 +59,10 @@ io::LoadedCase LoadCaseArgument(const Args& args) {
   return io::LoadCase(case_path, args.Values("set"));
 }
 
-engine::SweepJob SweepJobFor(const io::LoadedCase& loaded, engine::Model model, double rpm,
+batch::SweepJob SweepJobFor(const io::LoadedCase& loaded, engine::Model model, double rpm,
                              double time_limit, bool write_fields,
                              const std::filesystem::path& parent) {
-  engine::SweepJob job;
+  batch::SweepJob job;
   job.config = BuildRunConfig(loaded, model, rpm, std::nullopt, time_limit);
   job.case_name = loaded.value.name;
   job.write_fields = write_fields;
@@ -85,16 +85,16 @@ int JobsOption(const Args& args) {
   return static_cast<int>(jobs);
 }
 
-BatchOutcome RunBatch(std::vector<engine::SweepJob> jobs, int parallel, bool quiet,
+BatchOutcome RunBatch(std::vector<batch::SweepJob> jobs, int parallel, bool quiet,
                       const std::string& prefix, Streams& streams) {
   BatchOutcome batch;
   const long at_once = std::min<long>(parallel, static_cast<long>(jobs.size()));
   const long cores = std::max(1u, std::thread::hardware_concurrency());
-  for (engine::SweepJob& job : jobs) job.config.threads = cores >= 2 * at_once ? 2 : 1;
+  for (batch::SweepJob& job : jobs) job.config.threads = cores >= 2 * at_once ? 2 : 1;
   batch.jobs = jobs;
   batch.runs.resize(jobs.size());
   const InterruptGuard interrupt;
-  engine::SweepRunner runner(std::move(jobs), parallel, interrupt.flag());
+  batch::SweepRunner runner(std::move(jobs), parallel, interrupt.flag());
   int done = 0;
   for (int index; (index = runner.WaitNext(std::chrono::milliseconds(250))) != -1;) {
     if (index == -2) {
@@ -111,8 +111,8 @@ BatchOutcome RunBatch(std::vector<engine::SweepJob> jobs, int parallel, bool qui
       continue;
     }
     ++done;
-    const engine::SweepJob& job = runner.job(index);
-    const engine::SweepOutcome& outcome = runner.outcome(index);
+    const batch::SweepJob& job = runner.job(index);
+    const batch::SweepOutcome& outcome = runner.outcome(index);
     const std::string label =
         engine::ModelName(job.config.model) + " " + RpmText(job.config.rpm) + " rpm";
     if (!quiet) streams.err << "\n";

@@ -11,7 +11,7 @@
 
 #include "app/cli/command.hpp"
 #include "core/engine/run_job.hpp"
-#include "core/engine/sweep.hpp"
+#include "core/batch/sweep.hpp"
 #include "core/io/case_file.hpp"
 #include "core/io/results_writer.hpp"
 #include "ui/run/run_record.hpp"
@@ -37,7 +37,7 @@ io::LoadedCase LoadCaseArgument(const Args& args);
 
 /// One run of a sweep or of `reproduce`: its configuration (checked now), written to
 /// `parent / <case>-<model>-<rpm>` (the folder name `filmdyn run` uses).
-engine::SweepJob SweepJobFor(const io::LoadedCase& loaded, engine::Model model, double rpm,
+batch::SweepJob SweepJobFor(const io::LoadedCase& loaded, engine::Model model, double rpm,
                              double time_limit, bool write_fields,
                              const std::filesystem::path& parent);
 
@@ -49,7 +49,7 @@ int JobsOption(const Args& args);
 
 /// The runs of a finished batch, in job order.
 struct BatchOutcome {
-  std::vector<engine::SweepJob> jobs;
+  std::vector<batch::SweepJob> jobs;
   std::vector<ui::RunHandle> runs;  ///< null where the run could not start (error reported)
   int incomplete = 0;               ///< failed, cancelled, time limit or not converged
 };
@@ -57,7 +57,7 @@ struct BatchOutcome {
 /// Runs `jobs`, `parallel` at a time (each with 2 film threads only when the cores allow it
 /// beside the others), Ctrl-C stopping them cleanly; a progress line on stderr unless `quiet`,
 /// one line per finished run prefixed `prefix: `, and each run's plots/ written.
-BatchOutcome RunBatch(std::vector<engine::SweepJob> jobs, int parallel, bool quiet,
+BatchOutcome RunBatch(std::vector<batch::SweepJob> jobs, int parallel, bool quiet,
                       const std::string& prefix, Streams& streams);
 
 /// The comparison of the batch's runs `indices` (all when empty) into `out`: comparison.csv (SI),

@@ -1,11 +1,11 @@
 // `filmdyn sweep`: several runs (speeds × models) in parallel, one folder each (results.csv,
 // summary.json, plots/), plus a comparison: comparison.csv, comparison.md and overlay plots.
-// The runs are computed by core (engine::SweepRunner); plots are drawn here on the main thread.
+// The runs are computed by core (batch::SweepRunner); plots are drawn here on the main thread.
 #include <sstream>
 
 #include "app/commands/commands.hpp"
 #include "app/commands/run_common.hpp"
-#include "core/input_error.hpp"
+#include "core/base/input_error.hpp"
 
 namespace filmdyn::cli {
 
@@ -64,7 +64,7 @@ Command MakeSweepCommand() {
                                           : std::filesystem::path("results") / ("sweep-" + c.name);
 
     // Every configuration is built (and checked) before anything starts.
-    std::vector<engine::SweepJob> sweep_jobs;
+    std::vector<batch::SweepJob> sweep_jobs;
     for (engine::Model model : models) {
       for (double rpm : speeds) {
         sweep_jobs.push_back(

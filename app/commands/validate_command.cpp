@@ -15,7 +15,8 @@ Command MakeValidateCommand() {
   command.options = {{"suite", "NAME", "only this suite (lubrication, multibody)", true},
                      {"json", "", "print the rows as one JSON array"}};
   command.details =
-      "Exit status 0 when every row is within its tolerance, 1 otherwise.\n"
+      "Exit status 0 when every row is within its tolerance, 1 otherwise. 'ours' is FilmDyn's\n"
+      "value, 'reference' the published value or closed form it is compared with.\n"
       "Error is relative (|ours - reference| / |reference|) unless the row says 'abs'.";
   command.run = [](const Args& args, Streams& streams) {
     const auto rows = verification::RunSuites(args.Values("suite"));

@@ -3,7 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/commands/commands.hpp"
-#include "core/version.hpp"
+#include "core/base/version.hpp"
 #include "ui/about_info.hpp"
 
 namespace filmdyn::cli {

@@ -3,8 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/coupling/lubricated_skirt_element.hpp"
-#include "core/input_error.hpp"
+#include "core/base/input_error.hpp"
 #include "core/lubrication/surface_film.hpp"
 
 namespace filmdyn::coupling {
@@ -172,8 +171,8 @@ void LubricatedBigEndElement::RefreshFields() {
   solver_at_cache_ = true;
 }
 
-void LubricatedBigEndElement::ReportFilm(engine::CrankTrainSample* sample) const {
-  engine::BearingFilmSample& b = sample->bearing;
+void LubricatedBigEndElement::ReportFilm(SkirtFilmSample*, BearingFilmSample* bearing) const {
+  BearingFilmSample& b = *bearing;
   b.present = true;
   b.journal_ecc_global = kin_.ecc;
   b.journal_ecc_rod = Rotation(rod_angle_).transpose() * kin_.ecc;
@@ -187,56 +186,6 @@ void LubricatedBigEndElement::ReportFilm(engine::CrankTrainSample* sample) const
   b.friction_torque_bearing = loads_[3];
   b.power = loads_.head<2>().dot(kin_.ecc_rate) + loads_[2] * kin_.state.omega_journal +
             loads_[3] * kin_.state.omega_bearing;
-}
-
-lubrication::BearingConfig BearingConfigFromCase(const engine::EngineCase& c) {
-  const engine::BigEndCase& be = c.big_end;
-  lubrication::BearingConfig config;
-  config.geometry.radius = be.journal_radius;
-  config.geometry.length = be.width;
-  config.geometry.radial_clearance = be.bearing_radius - be.journal_radius;
-  if (!(config.geometry.radial_clearance > 0.0)) {
-    throw InputError("big_end.journal_radius", FormatValue(be.journal_radius),
-                     "must be smaller than big_end.bearing_radius = " +
-                         FormatValue(be.bearing_radius) + " [m] (no clearance)");
-  }
-  config.viscosity = c.lubricant.viscosity;
-  config.mesh.n_theta = be.mesh_theta;
-  config.mesh.n_z = be.mesh_z;
-  if (be.oil_feed_pressure > 0.0) {  // a hole in the rod's bore, on the rod axis toward the pin
-    config.feed.kind = lubrication::OilFeed::Kind::kHole;
-    config.feed.angle = 0.5 * 3.14159265358979323846;
-    config.feed.pressure = be.oil_feed_pressure;
-  }
-  lubrication::SurfacePair pair;
-  pair.sigma1 = be.roughness_journal;
-  pair.sigma2 = be.roughness_bearing;
-  pair.peklenik = be.peklenik;
-  pair.E1 = be.modulus_journal;  // surface 1 = journal, 2 = bearing; the pair forms E'
-  pair.nu1 = be.poisson_journal;
-  pair.E2 = be.modulus_bearing;
-  pair.nu2 = be.poisson_bearing;
-  pair.gt_k = c.lubricant.greenwood_tripp_k;
-  pair.boundary_friction = be.boundary_friction;
-  pair.Validate("big_end");
-  config.film = lubrication::MakeSurfaceFilm(pair);
-  return config;
-}
-
-std::unique_ptr<multibody::JointForceElement> MakeLubricatedBigEnd(
-    const engine::EngineCase& c, const engine::CrankTrainLayout& layout) {
-  BigEndMounting mount;
-  mount.journal_point = layout.crank_pin;
-  mount.bearing_point = layout.rod_big_end;
-  return std::make_unique<LubricatedBigEndElement>(BearingConfigFromCase(c), layout.crank,
-                                                   layout.rod, mount);
-}
-
-engine::LubricatedJointFactories FilmJointFactories() {
-  engine::LubricatedJointFactories f;
-  f.skirt = &MakeLubricatedSkirt;
-  f.big_end = &MakeLubricatedBigEnd;
-  return f;
 }
 
 }  // namespace filmdyn::coupling

@@ -1,6 +1,6 @@
 #pragma once
-/// @file The lubricated big-end bearing as a multibody force element (issue 5; paper §2.2, eqs.
-/// 7–14, §3): a revolute clearance joint between the crank pin (journal, body i) and the rod's
+/// @file The lubricated big-end bearing as a multibody force element (paper §2.2, eqs. 7–14,
+/// §3): a revolute clearance joint between the crank pin (journal, body i) and the rod's
 /// big-end bore (bearing, body j); the film forces of lubrication::BearingSolver act at both
 /// centres (on the journal F through its centre, on the bearing −F through its centre, plus the
 /// friction torque on each — the solver's torque pair already balances the e × F couple).
@@ -14,7 +14,7 @@
 /// journal–bearing contact failure when an output step lands there.
 #include <memory>
 
-#include "core/engine/crank_train.hpp"
+#include "core/coupling/film_report.hpp"
 #include "core/lubrication/bearing_solver.hpp"
 #include "core/multibody/force_element.hpp"
 
@@ -33,7 +33,7 @@ struct BigEndKinematics {
 };
 
 class LubricatedBigEndElement final : public multibody::JointForceElement,
-                                      public engine::FilmReporter {
+                                      public FilmReporter {
  public:
   static constexpr double kEpsMax = 1.0 - 5e-4;
 
@@ -45,7 +45,7 @@ class LubricatedBigEndElement final : public multibody::JointForceElement,
   bool ProvidesJacobian() const override { return true; }
   /// Own solver and caches only (the surface model is immutable): may run beside the other joint.
   bool Concurrent() const override { return true; }
-  void ReportFilm(engine::CrankTrainSample* sample) const override;
+  void ReportFilm(SkirtFilmSample* skirt, BearingFilmSample* bearing) const override;
 
   BigEndKinematics Kinematics(const multibody::BodyState& crank,
                               const multibody::BodyState& rod) const;
@@ -75,14 +75,5 @@ class LubricatedBigEndElement final : public multibody::JointForceElement,
   double rod_angle_ = 0.0;
   long solves_ = 0, factorizations_ = 0;
 };
-
-/// The bearing solver configuration of a case (SurfaceModel from roughness, E', μ_f, K).
-lubrication::BearingConfig BearingConfigFromCase(const engine::EngineCase& engine_case);
-/// Factory for LubricatedJointFactories::big_end.
-std::unique_ptr<multibody::JointForceElement> MakeLubricatedBigEnd(
-    const engine::EngineCase& engine_case, const engine::CrankTrainLayout& layout);
-
-/// Both factories (skirt and big end): what RunConfig uses for the lubricated models.
-engine::LubricatedJointFactories FilmJointFactories();
 
 }  // namespace filmdyn::coupling

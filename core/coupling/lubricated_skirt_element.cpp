@@ -4,7 +4,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "core/input_error.hpp"
+#include "core/base/input_error.hpp"
 #include "core/lubrication/surface_film.hpp"
 
 namespace filmdyn::coupling {
@@ -134,8 +134,8 @@ void LubricatedSkirtElement::RefreshFields() {
   solver_at_cache_ = true;
 }
 
-void LubricatedSkirtElement::ReportFilm(engine::CrankTrainSample* sample) const {
-  engine::SkirtFilmSample& f = sample->skirt;
+void LubricatedSkirtElement::ReportFilm(SkirtFilmSample* skirt, BearingFilmSample*) const {
+  SkirtFilmSample& f = *skirt;
   f.present = true;
   f.normal_force = result_.lateral_force;
   f.contact_normal_force = result_.contact_lateral_force;
@@ -149,55 +149,6 @@ void LubricatedSkirtElement::ReportFilm(engine::CrankTrainSample* sample) const 
   f.power = result_.lateral_force * kin_.state.e0_dot +
             result_.moment_about_pin * kin_.state.gamma_dot +
             result_.friction_force * kin_.state.piston_velocity;
-}
-
-lubrication::SkirtConfig SkirtConfigFromCase(const engine::EngineCase& c) {
-  const engine::SkirtCase& sk = c.skirt;
-  lubrication::SkirtConfig config;
-  lubrication::SkirtGeometry& g = config.geometry;
-  g.radius = sk.piston_radius;
-  g.skirt_length = sk.length;
-  g.radial_clearance = c.geometry.liner_radius - sk.piston_radius;
-  if (!(g.radial_clearance > 0.0)) {
-    throw InputError("skirt.piston_radius", FormatValue(sk.piston_radius),
-                     "must be smaller than geometry.liner_radius = " +
-                         FormatValue(c.geometry.liner_radius) + " [m] (no skirt clearance)");
-  }
-  g.pin_position = c.geometry.skirt_top_to_pin;
-  g.alpha1 = sk.thrust_half_width;
-  g.alpha2 = sk.anti_thrust_half_width;
-  g.profile.x = sk.profile_y;
-  g.profile.y = sk.profile_h;
-  g.ovality.x = sk.ovality_alpha;  // empty = round skirt
-  g.ovality.y = sk.ovality_h;
-  config.viscosity = c.lubricant.viscosity;
-  config.mesh.n_thrust = sk.mesh_thrust;
-  config.mesh.n_relief = sk.mesh_relief;
-  config.mesh.n_anti = sk.mesh_anti;
-  config.mesh.n_axial = sk.mesh_axial;
-  lubrication::SurfacePair pair;
-  pair.sigma1 = sk.roughness_skirt;
-  pair.sigma2 = sk.roughness_liner;
-  pair.peklenik = sk.peklenik;
-  pair.E1 = sk.modulus_skirt;  // surface 1 = skirt, 2 = liner; the pair forms E' (Hu et al.)
-  pair.nu1 = sk.poisson_skirt;
-  pair.E2 = sk.modulus_liner;
-  pair.nu2 = sk.poisson_liner;
-  pair.gt_k = c.lubricant.greenwood_tripp_k;
-  pair.boundary_friction = sk.boundary_friction;
-  pair.Validate("skirt");
-  config.film = lubrication::MakeSurfaceFilm(pair);
-  return config;
-}
-
-std::unique_ptr<multibody::JointForceElement> MakeLubricatedSkirt(
-    const engine::EngineCase& c, const engine::CrankTrainLayout& layout) {
-  SkirtMounting mount;
-  mount.com_lateral_offset = c.geometry.piston_com_lateral_offset;
-  mount.skirt_top_to_com = c.geometry.skirt_top_to_com;
-  mount.skirt_top_to_pin = c.geometry.skirt_top_to_pin;
-  mount.pin_offset = c.geometry.pin_offset;
-  return std::make_unique<LubricatedSkirtElement>(SkirtConfigFromCase(c), layout.piston, mount);
 }
 
 }  // namespace filmdyn::coupling

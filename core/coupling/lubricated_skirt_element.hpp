@@ -1,6 +1,6 @@
 #pragma once
-/// @file The lubricated piston skirt–liner joint as a multibody force element (issue 5; paper
-/// §2.1 and §3): a translational clearance joint between the ground (liner) and the piston whose
+/// @file The lubricated piston skirt–liner joint as a multibody force element (paper §2.1 and
+/// §3): a translational clearance joint between the ground (liner) and the piston whose
 /// lateral position and tilt are free; the film forces of lubrication::SkirtSolver are applied
 /// to the piston's centre of mass.
 ///
@@ -18,7 +18,7 @@
 /// of the solver — chained with J and its derivative.
 #include <memory>
 
-#include "core/engine/crank_train.hpp"
+#include "core/coupling/film_report.hpp"
 #include "core/lubrication/skirt_solver.hpp"
 #include "core/multibody/force_element.hpp"
 
@@ -40,7 +40,7 @@ struct SkirtKinematics {
 };
 
 class LubricatedSkirtElement final : public multibody::JointForceElement,
-                                     public engine::FilmReporter {
+                                     public FilmReporter {
  public:
   /// `piston`: body index; the liner is the ground.
   LubricatedSkirtElement(lubrication::SkirtConfig config, multibody::BodyIndex piston,
@@ -51,7 +51,7 @@ class LubricatedSkirtElement final : public multibody::JointForceElement,
   bool ProvidesJacobian() const override { return true; }
   /// Own solver and caches only (the surface model is immutable): may run beside the other joint.
   bool Concurrent() const override { return true; }
-  void ReportFilm(engine::CrankTrainSample* sample) const override;
+  void ReportFilm(SkirtFilmSample* skirt, BearingFilmSample* bearing) const override;
 
   /// e0, γ, rates and u_p of a piston state, with J.
   SkirtKinematics Kinematics(const multibody::BodyState& piston) const;
@@ -83,12 +83,5 @@ class LubricatedSkirtElement final : public multibody::JointForceElement,
   SkirtKinematics kin_;
   long solves_ = 0, factorizations_ = 0;
 };
-
-/// Builds the element from a case (SurfaceModel from its roughness, E and ν per surface, μ_f, K)
-/// for BuildCrankTrain's LubricatedJointFactories::skirt.
-std::unique_ptr<multibody::JointForceElement> MakeLubricatedSkirt(
-    const engine::EngineCase& engine_case, const engine::CrankTrainLayout& layout);
-/// The skirt solver configuration of a case (mesh: paper Table II unless overridden).
-lubrication::SkirtConfig SkirtConfigFromCase(const engine::EngineCase& engine_case);
 
 }  // namespace filmdyn::coupling

@@ -1,5 +1,5 @@
 #pragma once
-/// @file Periodic steady state of the crank train (issue 5): quantities are sampled at the same
+/// @file Periodic steady state of the crank train: quantities are sampled at the same
 /// crank angles every 720 °CA cycle; the run is periodic when, for every quantity, the largest
 /// change between the last two cycles at any sample is below `tolerance` × the quantity's range
 /// over the last cycle (default 1 %, the paper's Table II "convergence criterion 1 %").

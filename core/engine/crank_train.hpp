@@ -10,6 +10,7 @@
 #include <functional>
 #include <memory>
 
+#include "core/coupling/film_report.hpp"
 #include "core/engine/engine_case.hpp"
 #include "core/engine/gas_force.hpp"
 #include "core/multibody/multibody_system.hpp"
@@ -27,7 +28,7 @@ struct CrankTrainLayout {
   double omega = 0.0;                                   ///< imposed crank speed [rad/s]
 };
 
-/// Makes a lubricated joint's force element (issue 5) for a case and layout.
+/// Makes a lubricated joint's force element for a case and layout.
 using JointForceFactory = std::function<std::unique_ptr<multibody::JointForceElement>(
     const EngineCase&, const CrankTrainLayout&)>;
 
@@ -50,50 +51,9 @@ struct CrankTrain {
 CrankTrain BuildCrankTrain(const EngineCase& engine_case, double rpm, PressureCurve pressure,
                            const LubricatedJointFactories& factories = {});
 
-/// Film quantities of the lubricated skirt at one instant (present = false with an ideal liner).
-/// Forces on the piston: lateral along +X (thrust side), friction along the bore, + toward the
-/// crank (skirt solver convention), moment about the pin (generalised force on the tilt).
-struct SkirtFilmSample {
-  bool present = false;
-  double normal_force = 0.0;          ///< [N] hydrodynamic + asperity, along +X
-  double contact_normal_force = 0.0;  ///< asperity part [N]
-  double friction_force = 0.0;        ///< [N] along +y of the skirt (toward the crank)
-  double moment_about_pin = 0.0;      ///< [N·m]
-  double moft = 0.0;                  ///< [m]
-  double fpl = 0.0;                   ///< friction power loss [W]
-  double max_pressure = 0.0;          ///< [Pa]
-  double min_gap = 0.0;  ///< smallest geometric gap over the panels (< 0: piston in the liner) [m]
-  long clamped_nodes = 0;
-  double power = 0.0;  ///< power of the film forces on the piston, F ė0 + M γ̇ + F_f u_p [W] (≤ 0)
-};
-
-/// Film quantities of the lubricated big end at one instant (present = false when ideal).
-struct BearingFilmSample {
-  bool present = false;
-  Eigen::Vector2d journal_ecc_rod = Eigen::Vector2d::Zero();  ///< journal − bearing centre, rod
-                                                              ///< frame [m]
-  Eigen::Vector2d journal_ecc_global = Eigen::Vector2d::Zero();  ///< same, global frame [m]
-  double eps = 0.0;                                              ///< ε [-]
-  double eps_dot = 0.0;                                          ///< [1/s]
-  double moft = 0.0;                                             ///< [m]
-  double fpl = 0.0;                                              ///< [W]
-  double max_pressure = 0.0;                                     ///< [Pa]
-  Eigen::Vector2d force_on_rod = Eigen::Vector2d::Zero();        ///< film (crank pin) → rod [N]
-  double friction_torque_journal = 0.0;                          ///< on the crank [N·m]
-  double friction_torque_bearing = 0.0;                          ///< on the rod [N·m]
-  double power = 0.0;  ///< power of the film on crank + rod, F·ė + T_j ω_j + T_b ω_b [W] (≤ 0)
-};
-
-struct CrankTrainSample;
-
-/// Implemented by lubricated joint elements (core/coupling) so that SampleCrankTrain can fill the
-/// film quantities without knowing their types. Called right after the element was evaluated at
-/// the sampled state.
-class FilmReporter {
- public:
-  virtual ~FilmReporter() = default;
-  virtual void ReportFilm(CrankTrainSample* sample) const = 0;
-};
+/// The film reports of the coupling elements, as the engine's samples carry them.
+using SkirtFilmSample = coupling::SkirtFilmSample;
+using BearingFilmSample = coupling::BearingFilmSample;
 
 /// Crank-train quantities at one instant (global frame; signs in docs/outputs.md).
 struct CrankTrainSample {

@@ -8,7 +8,7 @@
 
 namespace filmdyn::engine {
 
-/// How a joint is modelled (SPEC §3.2).
+/// How a joint is modelled: ideal (kinematic constraint) or lubricated (film force element).
 enum class JointModel { kIdeal, kLubricated };
 
 /// Crank, connecting rod and piston (Table I; layout in docs/outputs.md).
@@ -32,7 +32,7 @@ struct CrankTrainGeometry {
   double gravity = 9.81;            ///< [m/s²], along −Y (cylinder axis vertical, head up)
 };
 
-/// The piston skirt–liner joint (Table I); used by the lubricated model (issue 5).
+/// The piston skirt–liner joint (Table I); the film data are used when the skirt is lubricated.
 struct SkirtCase {
   JointModel model = JointModel::kIdeal;
   double piston_radius = 36.475e-3;                ///< R [m]
@@ -43,7 +43,7 @@ struct SkirtCase {
   double roughness_liner = 0.815e-6;               ///< σ_liner [m]
   double peklenik = 1.0;                           ///< γ of the composite surface [-] (assumed)
   /// Elastic constants per surface; the contact model uses E' = 2/[(1−ν₁²)/E₁ + (1−ν₂²)/E₂]
-  /// (Hu et al. 1994; SPEC §3.1): 98.24 GPa for these defaults (assumed: Al-Si on cast iron).
+  /// (Hu et al. 1994): 98.24 GPa for these defaults (assumed: Al-Si on cast iron).
   double modulus_skirt = 75.0e9;    ///< E of the piston skirt [Pa] (assumed: Al-Si alloy)
   double poisson_skirt = 0.33;      ///< ν of the piston skirt [-] (assumed)
   double modulus_liner = 110.0e9;   ///< E of the liner [Pa] (assumed: grey cast iron)
@@ -60,7 +60,8 @@ struct SkirtCase {
   int mesh_thrust = 30, mesh_relief = 2, mesh_anti = 30, mesh_axial = 40;
 };
 
-/// The connecting-rod big-end bearing (Table I); used by the lubricated model (issue 5).
+/// The connecting-rod big-end bearing (Table I); the film data are used when the big end is
+/// lubricated.
 struct BigEndCase {
   JointModel model = JointModel::kIdeal;
   double bearing_radius = 15.00e-3;     ///< R_b [m]
@@ -124,7 +125,7 @@ struct EngineCase {
   OperatingCase operating;
   std::vector<PressureCurveSource> pressure_curves;
   SolverCase solver;
-  /// Dotted path → reason, for every value the paper does not give (SPEC §3.3).
+  /// Dotted path → reason, for every value the paper does not give (docs/case-file.md).
   std::map<std::string, std::string> assumed;
 };
 

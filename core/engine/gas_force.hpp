@@ -1,5 +1,5 @@
 #pragma once
-/// @file The gas force on the piston crown (SPEC §3): F = (p_cyl(φ) − p_crankcase)·π R_l², along
+/// @file The gas force on the piston crown: F = (p_cyl(φ) − p_crankcase)·π R_l², along
 /// the cylinder axis toward the crank, its line of action the piston axis. φ is read from the
 /// crank body's angle, so the element works for imposed and free crank speeds alike.
 #include "core/engine/pressure_curve.hpp"

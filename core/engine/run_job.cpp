@@ -9,7 +9,8 @@
 #include "core/coupling/lubricated_big_end_element.hpp"
 #include "core/coupling/lubricated_skirt_element.hpp"
 #include "core/coupling/steady_state.hpp"
-#include "core/input_error.hpp"
+#include "core/engine/film_joints.hpp"
+#include "core/base/input_error.hpp"
 
 namespace filmdyn::engine {
 
@@ -66,7 +67,7 @@ RunConfig MakeRunConfig(const EngineCase& engine_case, Model model, double rpm,
   config.model = model;
   config.rpm = rpm;
   config.pressure = std::move(pressure);
-  config.factories = coupling::FilmJointFactories();
+  config.factories = FilmJointFactories();
   const SolverCase& s = engine_case.solver;
   config.integrator.relative_tolerance = s.relative_tolerance;
   config.integrator.position_tolerance = s.position_tolerance;

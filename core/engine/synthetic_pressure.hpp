@@ -1,6 +1,6 @@
 #pragma once
-/// @file A single-zone cylinder-pressure model for the synthetic default curves (SPEC §3.3; the
-/// paper's measured curves, its Fig. 5, are not published as data). Documented in
+/// @file A single-zone cylinder-pressure model for the synthetic default curves (the paper's
+/// measured curves, its Fig. 5, are not published as data). Documented in
 /// docs/pressure-model.md:
 ///  - closed cycle IVC → EVO: first law of a single zone with a constant polytropic exponent κ
 ///    (wall heat loss folded into κ and the heat-release efficiency), Heywood (1988) eq. 9.25:

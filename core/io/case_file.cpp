@@ -9,7 +9,7 @@
 #include <set>
 #include <sstream>
 
-#include "core/input_error.hpp"
+#include "core/base/input_error.hpp"
 #include "core/io/pressure_csv.hpp"
 #include "core/io/resources.hpp"
 
@@ -33,7 +33,8 @@ struct Range {
 Range Positive(const char* unit) { return {0.0, kInf, true, unit}; }
 Range NonNegative(const char* unit) { return {0.0, kInf, false, unit}; }
 Range Between(double lo, double hi, const char* unit) { return {lo, hi, false, unit}; }
-// Elastic constants of one surface (E' of SPEC §3.1 needs E > 0 and ν in (−1, 0.5)).
+// Elastic constants of one surface (E' = 2/[(1−ν₁²)/E₁ + (1−ν₂²)/E₂] needs E > 0 and ν in
+// (−1, 0.5)).
 Range YoungsModulus() { return {0.0, 1e13, true, "Pa"}; }
 Range PoissonRatio() { return {-1.0, 0.5, true, "-", true}; }
 

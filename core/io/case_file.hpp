@@ -1,5 +1,5 @@
 #pragma once
-/// @file The case file (JSON, SPEC §3.3; every field in docs/case-file.md). One visitor,
+/// @file The case file (JSON; every field in docs/case-file.md). One visitor,
 /// VisitCase, lists every field once with its unit and allowed range; reading, writing and
 /// checking are visitors over it (Drake's Serialize(Archive*) pattern).
 #include <filesystem>

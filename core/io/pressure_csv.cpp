@@ -8,7 +8,7 @@
 #include <numbers>
 #include <sstream>
 
-#include "core/input_error.hpp"
+#include "core/base/input_error.hpp"
 
 namespace filmdyn::io {
 

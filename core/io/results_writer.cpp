@@ -3,25 +3,17 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
-#include <nlohmann/json.hpp>
 #include <numbers>
+#include <stdexcept>
 
-#include "core/input_error.hpp"
-#include "core/version.hpp"
+#include "core/base/input_error.hpp"
+#include "core/io/run_summary.hpp"
 
 namespace filmdyn::io {
 
-namespace {
-
-using Member = std::optional<double> OutputRow::*;
-struct Column {
-  const char* header;
-  Member member;
-};
-
-// The one list of columns: SPEC §4 order first.
-const std::vector<Column>& Columns() {
-  static const std::vector<Column> columns = {
+// The one list of columns: the documented core columns first, then the crank-train extras.
+const std::vector<ResultColumn>& ResultColumns() {
+  static const std::vector<ResultColumn> columns = {
       {"crank_angle[deg]", &OutputRow::crank_angle_deg},
       {"time[s]", &OutputRow::time},
       {"piston_lateral[m]", &OutputRow::piston_lateral},
@@ -58,11 +50,9 @@ const std::vector<Column>& Columns() {
   return columns;
 }
 
-}  // namespace
-
 std::vector<std::string> ResultsHeader() {
   std::vector<std::string> header;
-  for (const Column& c : Columns()) header.push_back(c.header);
+  for (const ResultColumn& c : ResultColumns()) header.push_back(c.header);
   return header;
 }
 
@@ -132,7 +122,7 @@ OutputRow RowFromSample(const engine::CrankTrainSample& s, engine::Model model,
 }
 
 void WriteResultsCsv(std::ostream& out, const std::vector<OutputRow>& rows) {
-  const auto& columns = Columns();
+  const auto& columns = ResultColumns();
   for (std::size_t c = 0; c < columns.size(); ++c) out << (c ? "," : "") << columns[c].header;
   out << "\n";
   char buffer[40];
@@ -170,66 +160,10 @@ std::vector<OutputRow> WriteRunFolder(const std::filesystem::path& directory,
     std::ofstream csv(directory / "results.csv");
     if (!csv) throw InputError("--out", directory.string(), "cannot write results.csv");
     WriteResultsCsv(csv, rows);
+    csv.close();
+    if (!csv) throw std::runtime_error("cannot write " + (directory / "results.csv").string());
   }
-  using nlohmann::json;
-  json summary;
-  summary["filmdyn_version"] = std::string(Version());
-  summary["case"] = case_name;
-  summary["model"] = engine::ModelName(config.model);
-  summary["rpm"] = config.rpm;
-  summary["status"] = engine::StatusName(result.status);
-  summary["complete"] = result.status == engine::RunStatus::kCompleted;
-  summary["message"] = result.message;
-  summary["cycles"] = result.cycles;
-  summary["cycles_to_steady_state"] = result.cycles_to_steady_state;
-  summary["cycle_to_cycle_change"] = result.cycle_change;
-  summary["cycle_to_cycle_worst_quantity"] = result.worst_quantity;
-  summary["wall_time_s"] = result.wall_time;
-  summary["max_constraint_violation"] = result.max_constraint_violation;
-  json extremes = json::object();
-  const auto header = ResultsHeader();
-  const auto& columns = Columns();
-  for (std::size_t c = 2; c < columns.size(); ++c) {
-    double lo = INFINITY, hi = -INFINITY;
-    bool any = false;
-    for (const OutputRow& row : rows) {
-      if (const auto& v = row.*(columns[c].member)) {
-        lo = std::min(lo, *v);
-        hi = std::max(hi, *v);
-        any = true;
-      }
-    }
-    if (any) extremes[header[c]] = {{"min", lo}, {"max", hi}};
-  }
-  summary["extremes"] = extremes;
-  auto mean_of = [&](Member m) -> json {
-    double sum = 0;
-    int n = 0;
-    for (const OutputRow& row : rows) {
-      if (const auto& v = row.*m) {
-        sum += *v;
-        ++n;
-      }
-    }
-    return n ? json(sum / n) : json(nullptr);
-  };
-  summary["mean_fpl_w"] = {{"skirt", mean_of(&OutputRow::skirt_fpl)},
-                           {"bearing", mean_of(&OutputRow::bearing_fpl)}};
-  summary["solver"] = {{"integrator", "CVODE BDF (SUNDIALS), dense Newton"},
-                       {"steps", result.stats.steps},
-                       {"rejected_steps", result.stats.rejected_steps},
-                       {"newton_iterations", result.stats.newton_iterations},
-                       {"newton_failures", result.stats.newton_failures},
-                       {"rhs_evaluations", result.stats.rhs_evaluations},
-                       {"jacobian_evaluations", result.stats.jacobian_evaluations},
-                       {"reynolds_solves", result.reynolds_solves},
-                       {"baumgarte_alpha", config.engine_case.solver.baumgarte_alpha},
-                       {"baumgarte_beta", config.engine_case.solver.baumgarte_beta},
-                       {"relative_tolerance", config.integrator.relative_tolerance}};
-  const double peak_deg = config.pressure.PeakAngle() * 180.0 / std::numbers::pi;
-  summary["pressure_curve"] = {{"peak_pa", config.pressure.PeakPressure()},
-                               {"peak_crank_angle_deg", peak_deg}};
-  std::ofstream(directory / "summary.json") << summary.dump(2) << "\n";
+  WriteSummaryJson(directory / "summary.json", SummarizeRun(case_name, config, result, rows));
   return rows;
 }
 

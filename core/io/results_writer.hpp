@@ -24,6 +24,14 @@ struct OutputRow {
       main_bearing_force_y, crank_torque, cylinder_pressure, constraint_violation;
 };
 
+/// One results.csv column: its header (name[unit]) and the row member holding it.
+struct ResultColumn {
+  const char* header;
+  std::optional<double> OutputRow::*member;
+};
+/// Every column, in file order: the one definition of results.csv's columns.
+const std::vector<ResultColumn>& ResultColumns();
+
 /// Header names with units, in column order.
 std::vector<std::string> ResultsHeader();
 /// The row of a crank-train sample for a model (ideal joints fill zero secondary motion, zero

@@ -1,11 +1,11 @@
 #include "core/io/run_comparison.hpp"
 
+#include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <iomanip>
-#include <nlohmann/json.hpp>
 #include <sstream>
-#include <stdexcept>
+
+#include "core/io/run_summary.hpp"
 
 namespace filmdyn::io {
 
@@ -15,7 +15,7 @@ enum class Reduce { kMaxAbs, kMin, kMax, kMeanFplSkirt, kMeanFplBearing };
 
 struct FigureRecipe {
   ComparisonFigure figure;
-  const char* column;  ///< results.csv column in summary.json "extremes"
+  const char* column;  ///< results.csv column in the summary's extremes
   Reduce reduce;
 };
 
@@ -41,11 +41,6 @@ const std::vector<FigureRecipe>& Recipes() {
   return recipes;
 }
 
-std::optional<double> Number(const nlohmann::json& value) {
-  if (value.is_number()) return value.get<double>();
-  return std::nullopt;
-}
-
 std::string Cell(const std::optional<double>& value, double scale, int precision) {
   if (!value) return "–";
   std::ostringstream out;
@@ -65,47 +60,33 @@ const std::vector<ComparisonFigure>& ComparisonFigures() {
 }
 
 ComparisonRow ReadComparisonRow(const std::filesystem::path& folder) {
-  const auto path = folder / "summary.json";
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error("cannot read " + path.string());
-  nlohmann::json summary;
-  try {
-    in >> summary;
-  } catch (const nlohmann::json::exception& error) {
-    throw std::runtime_error(path.string() + ": not valid JSON (" + error.what() + ")");
-  }
+  const RunSummary summary = ReadSummaryJson(folder / "summary.json");
   ComparisonRow row;
   row.folder = folder.filename().string();
-  row.model = summary.value("model", "");
-  row.rpm = summary.value("rpm", 0.0);
-  row.status = summary.value("status", "");
-  row.cycles = summary.value("cycles", 0);
-  row.wall_time_s = summary.value("wall_time_s", 0.0);
-  const nlohmann::json extremes = summary.value("extremes", nlohmann::json::object());
-  const nlohmann::json fpl = summary.value("mean_fpl_w", nlohmann::json::object());
+  row.model = summary.model;
+  row.rpm = summary.rpm;
+  row.status = summary.status;
+  row.cycles = summary.cycles;
+  row.wall_time_s = summary.wall_time_s;
   for (const auto& recipe : Recipes()) {
     std::optional<double> value;
     if (recipe.reduce == Reduce::kMeanFplSkirt) {
-      value = fpl.contains("skirt") ? Number(fpl["skirt"]) : std::nullopt;
+      value = summary.mean_fpl_skirt_w;
     } else if (recipe.reduce == Reduce::kMeanFplBearing) {
-      value = fpl.contains("bearing") ? Number(fpl["bearing"]) : std::nullopt;
-    } else if (extremes.contains(recipe.column)) {
-      const auto lo = Number(extremes[recipe.column].value("min", nlohmann::json()));
-      const auto hi = Number(extremes[recipe.column].value("max", nlohmann::json()));
-      if (lo && hi) {
-        switch (recipe.reduce) {
-          case Reduce::kMaxAbs:
-            value = std::max(std::abs(*lo), std::abs(*hi));
-            break;
-          case Reduce::kMin:
-            value = *lo;
-            break;
-          case Reduce::kMax:
-            value = *hi;
-            break;
-          default:
-            break;
-        }
+      value = summary.mean_fpl_bearing_w;
+    } else if (const auto e = summary.extremes.find(recipe.column); e != summary.extremes.end()) {
+      switch (recipe.reduce) {
+        case Reduce::kMaxAbs:
+          value = std::max(std::abs(e->second.min), std::abs(e->second.max));
+          break;
+        case Reduce::kMin:
+          value = e->second.min;
+          break;
+        case Reduce::kMax:
+          value = e->second.max;
+          break;
+        default:
+          break;
       }
     }
     row.figures.push_back(value);

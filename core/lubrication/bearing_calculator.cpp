@@ -3,7 +3,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "core/input_error.hpp"
+#include "core/base/input_error.hpp"
 #include "core/lubrication/surface_film.hpp"
 
 namespace filmdyn::lubrication {

@@ -1,5 +1,5 @@
 #pragma once
-/// @file Steady journal-bearing calculator behind `filmdyn bearing` (SPEC §4): journal rotating,
+/// @file Steady journal-bearing calculator behind `filmdyn bearing`: journal rotating,
 /// bearing at rest, constant load. Mode 1: eccentricity given. Mode 2: load and speed given, the
 /// equilibrium eccentricity found by a bracketed root search (mixed lubrication included when a
 /// surface pair is given). Dimensionless outputs follow Raimondi & Boyd (1958).

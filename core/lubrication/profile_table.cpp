@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/input_error.hpp"
+#include "core/base/input_error.hpp"
 
 namespace filmdyn::lubrication {
 

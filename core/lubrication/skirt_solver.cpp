@@ -4,7 +4,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "core/input_error.hpp"
+#include "core/base/input_error.hpp"
 
 namespace filmdyn::lubrication {
 

@@ -15,7 +15,7 @@
 
 #include "core/lubrication/profile_table.hpp"
 #include "core/lubrication/reynolds_fem.hpp"
-#include "core/worker_pool.hpp"
+#include "core/base/worker_pool.hpp"
 
 namespace filmdyn::lubrication {
 

@@ -1,6 +1,7 @@
 #pragma once
 /// @file Sparse LDL^T with the pattern analysed once and numeric refactorisation per solve,
-/// behind one interface so the backends can be measured against each other (stack-notes.md).
+/// behind one interface so the backends can be measured against each other
+/// (docs/performance.md).
 #include <Eigen/Sparse>
 #include <memory>
 #include <vector>

@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "core/lubrication/bearing_solver.hpp"
-#include "core/verification/validation_row.hpp"
+#include "core/base/validation_row.hpp"
 
 namespace filmdyn::lubrication {
 

@@ -1,7 +1,7 @@
 #pragma once
 /// @file Ideal (holonomic, possibly rheonomic) joint constraints Φ(q_i, q_j, t) = 0 between two
-/// bodies, either of which may be the ground. Each constraint supplies the blocks of the paper's
-/// eqs. 33–39 (Zhao & Shen; Nikravesh 1988 ch. 6): Φ, Φ_q, Φ_t and γ of eq. 38.
+/// bodies, either of which may be the ground. Each constraint supplies the blocks of
+/// eqs. 33–39 (Nikravesh 1988 ch. 6): Φ, Φ_q, Φ_t and γ of eq. 38.
 #include <Eigen/Dense>
 #include <string>
 
@@ -27,7 +27,7 @@ struct ConstraintBlock {
 };
 
 /// Generalised reaction of one joint on both bodies: (F_x, F_y, M_z about the centre of mass),
-/// global frame, = −Φ_qk^T λ (paper eq. 35, de Jalón & Bayo 1994).
+/// global frame, = −Φ_qk^T λ (eq. 35; García de Jalón & Bayo 1994).
 struct JointReaction {
   Eigen::Vector3d on_i = Eigen::Vector3d::Zero();
   Eigen::Vector3d on_j = Eigen::Vector3d::Zero();

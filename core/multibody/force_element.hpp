@@ -1,5 +1,5 @@
 #pragma once
-/// @file Force elements: anything that adds generalised applied forces Q (paper eq. 36) —
+/// @file Force elements: anything that adds generalised applied forces Q (eq. 36) —
 /// gravity, the gas force, and the lubricated clearance joints (which the paper models as
 /// "force constraints" instead of kinematic ones, §3).
 #include <Eigen/Dense>

@@ -128,7 +128,7 @@ DynamicsEvaluation MultibodySystem::EvaluateWithForces(double t, const SystemSta
     return eval;
   }
   const ConstraintSystem sys = AssembleConstraints(t, state);
-  // Eq. 39 right-hand side of the constraint rows.
+  // eq. 39: right-hand side of the constraint rows.
   const Eigen::VectorXd phi_dot = sys.jac * state.v + sys.phi_t;
   const Eigen::VectorXd rhs =
       sys.gamma - 2.0 * baumgarte_.alpha * phi_dot - baumgarte_.beta * baumgarte_.beta * sys.phi;

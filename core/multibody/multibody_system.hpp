@@ -1,6 +1,6 @@
 #pragma once
 /// @file A general planar multibody system: bodies, ideal joints (Lagrange multipliers) and force
-/// elements, with the equations of motion of the paper's eq. 39 (Zhao & Shen; Baumgarte 1972):
+/// elements, with the equations of motion of eq. 39 (Baumgarte 1972 stabilisation):
 ///
 ///   [ M    Φ_qᵀ ] [ q̈ ]   [ Q                               ]
 ///   [ Φ_q  0    ] [ λ  ] = [ γ − 2α(Φ_q q̇ + Φ_t) − β² Φ      ]
@@ -15,7 +15,7 @@
 #include "core/multibody/constraint.hpp"
 #include "core/multibody/force_element.hpp"
 #include "core/multibody/system_state.hpp"
-#include "core/worker_pool.hpp"
+#include "core/base/worker_pool.hpp"
 
 namespace filmdyn::multibody {
 
@@ -63,9 +63,9 @@ class MultibodySystem {
 
   /// Sum of all applied forces Q (3n) at the state.
   Eigen::VectorXd AppliedForces(double t, const SystemState& state);
-  /// Eq. 39 at the state (force elements evaluated once).
+  /// eq. 39 at the state (force elements evaluated once).
   DynamicsEvaluation Evaluate(double t, const SystemState& state);
-  /// Eq. 39 with a given Q (no force element called).
+  /// eq. 39 with a given Q (no force element called).
   DynamicsEvaluation EvaluateWithForces(double t, const SystemState& state,
                                         const Eigen::VectorXd& applied_force) const;
 

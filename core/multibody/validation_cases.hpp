@@ -1,12 +1,10 @@
 #pragma once
-/// @file Rows of `filmdyn validate` for the multibody engine: the ideal crank train against the
-/// exact slider-crank kinematics and an independent Newton–Euler solution, and a free compound
-/// pendulum against its elliptic-integral period. For cycle-long comparisons `ours` is
-/// reference + (largest deviation over the cycle), `reference` the peak magnitude, so the relative
-/// error is the deviation relative to the peak.
+/// @file Rows of `filmdyn validate` for the general multibody engine: a free compound pendulum
+/// against its elliptic-integral period. (The crank train's rows live with the engine, which
+/// builds it: core/engine/validation_cases.hpp.)
 #include <vector>
 
-#include "core/verification/validation_row.hpp"
+#include "core/base/validation_row.hpp"
 
 namespace filmdyn::multibody {
 

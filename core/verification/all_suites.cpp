@@ -4,7 +4,8 @@
 #include <functional>
 #include <utility>
 
-#include "core/input_error.hpp"
+#include "core/base/input_error.hpp"
+#include "core/engine/validation_cases.hpp"
 #include "core/lubrication/validation_cases.hpp"
 #include "core/multibody/validation_cases.hpp"
 
@@ -15,7 +16,11 @@ namespace {
 const std::vector<std::pair<std::string, std::function<std::vector<ValidationRow>()>>>& Suites() {
   static const std::vector<std::pair<std::string, std::function<std::vector<ValidationRow>()>>>
       suites = {{"lubrication", [] { return lubrication::LubricationValidationRows(); }},
-                {"multibody", [] { return multibody::MultibodyValidationRows(); }}};
+                {"multibody", [] {
+                   auto rows = engine::CrankTrainValidationRows();
+                   for (auto& row : multibody::MultibodyValidationRows()) rows.push_back(row);
+                   return rows;
+                 }}};
   return suites;
 }
 

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "core/verification/validation_row.hpp"
+#include "core/base/validation_row.hpp"
 
 namespace filmdyn::verification {
 

@@ -12,7 +12,7 @@
 
 #include "app/cli/command.hpp"
 #include "app/cli/dispatcher.hpp"
-#include "core/input_error.hpp"
+#include "core/base/input_error.hpp"
 
 namespace {
 

@@ -102,7 +102,7 @@ QWidget* CaseEditor::makeParameterPage(CaseGroup group) {
     for (const RunModel& m : RunModels()) model_combo_->addItem(m.title, m.key);
     model_combo_->setCurrentIndex(model_combo_->findData(RunModelKey(document_->engineCase())));
     model_combo_->setToolTip(
-        tr("Which joints are lubricated (SPEC §3.2): Skirt-LBRBE both, "
+        tr("Which joints are lubricated: Skirt-LBRBE both, "
            "Only-Skirt, Only-LBRBE, or Ideal kinematics"));
     connect(model_combo_, &QComboBox::activated, this, [this](int index) {
       engine::EngineCase next = document_->engineCase();

@@ -5,7 +5,7 @@
 #include <nlohmann/json.hpp>
 #include <numbers>
 
-#include "core/input_error.hpp"
+#include "core/base/input_error.hpp"
 #include "core/io/case_file.hpp"
 
 namespace filmdyn::ui {

@@ -35,7 +35,8 @@ const std::vector<CaseParameter>& CaseParameters();
 /// The parameter with this dotted path, or nullptr.
 const CaseParameter* FindCaseParameter(const std::string& path);
 
-/// The run models of SPEC §3.2 and how they set the two joints.
+/// The run models (Skirt-LBRBE, Only-Skirt, Only-LBRBE, Ideal; docs/case-file.md) and how they
+/// set the two joints.
 struct RunModel {
   QString key;    ///< CLI spelling: "ideal", "only-skirt", "only-lbrbe", "skirt-lbrbe"
   QString title;  ///< "Ideal", "Only-Skirt", ...

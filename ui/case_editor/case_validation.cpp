@@ -4,7 +4,7 @@
 #include <numbers>
 
 #include "core/engine/pressure_curve.hpp"
-#include "core/input_error.hpp"
+#include "core/base/input_error.hpp"
 #include "core/io/case_file.hpp"
 #include "ui/case_editor/case_parameters.hpp"
 

@@ -1,5 +1,5 @@
 #pragma once
-/// @file The standard result plots (SPEC §5): what each shows, in display units. Shared by the
+/// @file The standard result plots (docs/gui.md): what each shows, in display units. Shared by the
 /// live plot panel and anything that draws the same plots from a finished run.
 #include <QList>
 #include <QPointF>

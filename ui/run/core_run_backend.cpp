@@ -7,7 +7,7 @@
 #include <stdexcept>
 
 #include "core/engine/run_job.hpp"
-#include "core/input_error.hpp"
+#include "core/base/input_error.hpp"
 #include "core/io/case_file.hpp"
 #include "core/io/field_output.hpp"
 #include "core/io/results_writer.hpp"

@@ -4,7 +4,7 @@
 #include <QThread>
 #include <exception>
 
-#include "core/input_error.hpp"
+#include "core/base/input_error.hpp"
 
 namespace filmdyn::ui {
 

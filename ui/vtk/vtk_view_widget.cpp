@@ -1,4 +1,4 @@
-// The bridge follows what worked on this stack (shared/stack-notes.md): VTK renders into its own
+// The bridge (docs/design.md, "VTK inside Qt 6", explains each step): VTK renders into its own
 // framebuffer inside Qt's context; paintGL blits it into the widget's FBO.
 #include "ui/vtk/vtk_view_widget.hpp"
 

@@ -1,6 +1,6 @@
 #pragma once
 /// @file A QOpenGLWidget that hosts a VTK render window, for Qt 6 without VTK's Qt module
-/// (Debian builds that against Qt 5; see shared/stack-notes.md). Reusable: add props to
+/// (Debian builds that against Qt 5; see docs/design.md, "VTK inside Qt 6"). Reusable: add props to
 /// renderer() and call update().
 #include <vtkNew.h>
 #include <vtkSmartPointer.h>

@@ -9,7 +9,7 @@ namespace filmdyn::lubrication {
 namespace {
 
 // Fit constants: Hu, Cheng, Arai, Kobayashi, Aoyama 1994 (Numerical simulation of piston ring in
-// mixed lubrication), also Arcoumanis et al. 1997; the coupling paper's eq. 30 prints 4.486e-5.
+// mixed lubrication), also Arcoumanis et al. 1997; eq. 30 prints 4.486e-5 (a misprint).
 constexpr double kFitAmplitude = 4.4086e-5;
 constexpr double kFitExponent = 6.804;
 constexpr double kFitCutoff = 4.0;

@@ -2,13 +2,13 @@
 /// @file Greenwood–Tripp asperity-contact integrals F_n(H) of a Gaussian height distribution
 /// (Greenwood & Tripp 1970, Proc IMechE 185:625-633):
 ///   F_n(H) = (1/sqrt(2 pi)) * integral_H^inf (s - H)^n exp(-s^2 / 2) ds.
-/// The asperity contact pressure is p_c = K E' F_5/2(h / sigma) (coupling paper eq. 29).
+/// The asperity contact pressure is p_c = K E' F_5/2(h / sigma) (eq. 29).
 
 namespace filmdyn::lubrication {
 
 /// The common curve fit F_5/2(H) = 4.4086e-5 (4 - H)^6.804 for H < 4, 0 for H >= 4
-/// (Hu et al. 1994; Arcoumanis et al. 1997). The coupling paper's eq. 30 misprints the constant
-/// as 4.486e-5 (SPEC "Known errata"). Continuous at H = 4; for H < 0 it keeps growing as the
+/// (Hu et al. 1994; Arcoumanis et al. 1997). eq. 30 misprints the constant as 4.486e-5
+/// (docs/equations.md). Continuous at H = 4; for H < 0 it keeps growing as the
 /// same power law.
 double GreenwoodTrippF52Fit(double H);
 

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "core/input_error.hpp"
+#include "core/base/input_error.hpp"
 #include "core/lubrication/surface/greenwood_tripp.hpp"
 
 namespace filmdyn::lubrication {

@@ -4,7 +4,7 @@
 /// node without allocation. Formulas, sources, continuity treatment and sample values:
 /// docs/surface-models.md.
 ///
-/// Average Reynolds equation these factors belong to (Patir & Cheng 1978 eq. 12, with the
+/// Average Reynolds equation these factors belong to (Patir & Cheng 1978, their eq. (12), with the
 /// Wu & Zheng 1989 contact factor; x = sliding direction, y = across it; U1, U2 = velocities of
 /// surface 1 and surface 2 along x; h = nominal film thickness; sigma = composite roughness):
 ///
@@ -12,7 +12,7 @@
 ///       = (U1 + U2)/2 * phi_c dh/dx  +  (U1 - U2)/2 * sigma * d(phi_s)/dx  +  phi_c dh/dt
 ///
 /// with phi_x = FlowFactors::pressure_along, phi_y = pressure_across, phi_s = shear,
-/// phi_c = contact. The coupling paper's eq. 1 is this equation with the liner (surface 2) at
+/// phi_c = contact. eq. 1 is this equation with the liner (surface 2) at
 /// rest and u_p = -U1 along its axial coordinate y, i.e. its right side
 /// -u_p/2 [phi_c dh/dy + sigma dphi_s/dy] is the same term.
 ///
@@ -22,7 +22,7 @@
 /// the names of the two surfaces flips the sign of both factors and leaves the term unchanged.
 /// It is 0 for equally rough surfaces, > 0 when surface 1 is the rougher one.
 ///
-/// Mean viscous shear stress on surface 1 (Patir & Cheng 1979; paper eq. 31 with u = U1 - U2):
+/// Mean viscous shear stress on surface 1 (Patir & Cheng 1979; eq. 31 with u = U1 - U2):
 ///   tau_1 = -mu (U1 - U2) / h * (Phi_f + Phi_fs) - Phi_fp * h/2 * dp/dx,
 /// with Phi_f = ShearStressFactors::f, Phi_fs = fs (already multiplied by Vr1 - Vr2, like
 /// phi_s), Phi_fp = fp. Asperity friction adds boundary_friction * ContactPressure(h).
@@ -45,7 +45,7 @@ struct SurfacePair {
 
   /// sqrt(sigma1^2 + sigma2^2) [m].
   double CompositeSigma() const;
-  /// E' = 2 / [(1-nu1^2)/E1 + (1-nu2^2)/E2] (Hu et al. 1994; SPEC §3.1) [Pa]. Twice the Hertz
+  /// E' = 2 / [(1-nu1^2)/E1 + (1-nu2^2)/E2] (Hu et al. 1994) [Pa]. Twice the Hertz
   /// E*; the default gt_k = 1.198e-4 belongs to this E'.
   double CompositeModulus() const;
   /// Throws filmdyn::InputError naming "<field_prefix>.<member>" (e.g. "skirt.surface.sigma1")
@@ -100,8 +100,8 @@ class SurfaceModel {
   patir_cheng::GammaBracket across_;
 };
 
-/// Greenwood–Tripp F_5/2(H): the common fit 4.4086e-5 (4-H)^6.804 for H<4 (paper eq. 30
-/// misprints 4.486e-5; SPEC errata) and the exact integral (1/sqrt(2pi)) ∫_H^∞ (s-H)^{5/2}
+/// Greenwood–Tripp F_5/2(H): the common fit 4.4086e-5 (4-H)^6.804 for H<4 (eq. 30
+/// misprints 4.486e-5) and the exact integral (1/sqrt(2pi)) ∫_H^∞ (s-H)^{5/2}
 /// e^{-s^2/2} ds (tabulated; see greenwood_tripp.hpp for the tolerance).
 double GreenwoodTrippF52Fit(double H);
 double GreenwoodTrippF52Exact(double H);

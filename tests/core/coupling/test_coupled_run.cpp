@@ -1,6 +1,6 @@
-// Coupled runs on coarse meshes (issue 5 items 2, 3, 5): the Skirt-LBRBE model to its periodic
-// steady state with every film column filled and the field callback, the piston inside its
-// clearance and ε < 1 throughout (d), the cycle energy balance (c), the film forces approaching
+// Coupled runs on coarse meshes (docs/validation/coupling.md): the Skirt-LBRBE model to its
+// periodic steady state with every film column filled and the field callback, the piston inside
+// its clearance and ε < 1 throughout (d), the cycle energy balance (c), the film forces approaching
 // the ideal joints' as the clearances shrink and the films stiffen (a), and a case that cannot
 // run ending with a status naming the cause and the crank angle. Full meshes and settings:
 // docs/validation/coupling.md and bench/bench_coupled.cpp.

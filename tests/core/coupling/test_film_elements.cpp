@@ -1,4 +1,4 @@
-// The lubricated joints as force elements (issue 5 item 1): kinematics of e0/γ and of the
+// The lubricated joints as force elements: kinematics of e0/γ and of the
 // eccentricity, Jacobians against central differences (JointJacobianMismatch), robustness at
 // ε → 0 and past ε_max, virtual-work consistency of the skirt wrench; the case's ovality table and
 // per-surface E, ν reach the solvers. Coarse meshes: fast.
@@ -9,6 +9,7 @@
 #include "core/coupling/lubricated_big_end_element.hpp"
 #include "core/coupling/lubricated_skirt_element.hpp"
 #include "core/engine/crank_train.hpp"
+#include "core/engine/film_joints.hpp"
 #include "core/io/case_file.hpp"
 #include "core/lubrication/surface_film.hpp"
 
@@ -38,7 +39,7 @@ BodyState PistonState(const engine::EngineCase& c, const engine::CrankTrainLayou
   return p;
 }
 
-// E' = 2/[(1−ν1²)/E1 + (1−ν2²)/E2] (Hu et al. 1994; SPEC §3.1), written out independently.
+// E' = 2/[(1−ν1²)/E1 + (1−ν2²)/E2] (Hu et al. 1994), written out independently.
 double HuCompositeModulus(double e1, double nu1, double e2, double nu2) {
   return 2.0 / ((1.0 - nu1 * nu1) / e1 + (1.0 - nu2 * nu2) / e2);
 }
@@ -55,11 +56,11 @@ class TestFilmElements : public QObject {
  private slots:
   void skirtOvalityFromTheCaseWidensTheFilm() {
     engine::EngineCase c = CoarseCase();
-    lubrication::SkirtSolver round(coupling::SkirtConfigFromCase(c));
+    lubrication::SkirtSolver round(engine::SkirtConfigFromCase(c));
     // Gap grows linearly from 0 on the thrust axis to 30 µm at the pin axis (α = π/2).
     c.skirt.ovality_alpha = {0.0, M_PI / 2};
     c.skirt.ovality_h = {0.0, 30e-6};
-    lubrication::SkirtSolver oval(coupling::SkirtConfigFromCase(c));
+    lubrication::SkirtSolver oval(engine::SkirtConfigFromCase(c));
     lubrication::SkirtState centred;  // e0 = γ = 0: h = c_p + h_profile(y) + h_ovality(α)
     centred.piston_velocity = -5.0;
     round.Solve(centred);
@@ -94,7 +95,7 @@ class TestFilmElements : public QObject {
     const double e_skirt =
         HuCompositeModulus(sk.modulus_skirt, sk.poisson_skirt, sk.modulus_liner, sk.poisson_liner);
     QVERIFY(std::abs(e_skirt / 9.82e10 - 1.0) < 5e-4);
-    const auto skirt_film = coupling::SkirtConfigFromCase(c).film;
+    const auto skirt_film = engine::SkirtConfigFromCase(c).film;
     const double sigma_s = std::hypot(sk.roughness_skirt, sk.roughness_liner);
     for (double H : {0.5, 1.5, 3.0}) {
       const double expected = k * e_skirt * lubrication::GreenwoodTrippF52Fit(H);
@@ -105,7 +106,7 @@ class TestFilmElements : public QObject {
     const double e_big_end = HuCompositeModulus(be.modulus_journal, be.poisson_journal,
                                                 be.modulus_bearing, be.poisson_bearing);
     QVERIFY(std::abs(e_big_end / 1.172e11 - 1.0) < 5e-4);
-    const auto bearing_film = coupling::BearingConfigFromCase(c).film;
+    const auto bearing_film = engine::BearingConfigFromCase(c).film;
     const double sigma_b = std::hypot(be.roughness_journal, be.roughness_bearing);
     const double expected_b = k * e_big_end * lubrication::GreenwoodTrippF52Fit(1.0);
     QVERIFY(std::abs(ContactPressureOf(*bearing_film, sigma_b) / expected_b - 1.0) < 1e-12);
@@ -114,7 +115,7 @@ class TestFilmElements : public QObject {
     c.skirt.poisson_skirt = 0.2;
     const double e_new = HuCompositeModulus(75e9, 0.2, 200e9, 0.26);
     const double h = 1.5 * sigma_s;
-    QVERIFY(std::abs(ContactPressureOf(*coupling::SkirtConfigFromCase(c).film, h) /
+    QVERIFY(std::abs(ContactPressureOf(*engine::SkirtConfigFromCase(c).film, h) /
                          ContactPressureOf(*skirt_film, h) -
                      e_new / e_skirt) < 1e-12);
   }
@@ -122,7 +123,7 @@ class TestFilmElements : public QObject {
   void skirtKinematicsMatchTheSampleDefinition() {
     const engine::EngineCase c = CoarseCase();
     engine::CrankTrain train = engine::BuildCrankTrain(c, 6000, engine::PressureCurve{});
-    auto element = coupling::MakeLubricatedSkirt(c, train.layout);
+    auto element = engine::MakeLubricatedSkirt(c, train.layout);
     auto& skirt = dynamic_cast<coupling::LubricatedSkirtElement&>(*element);
     const BodyState p = PistonState(c, train.layout);
     const coupling::SkirtKinematics k = skirt.Kinematics(p);
@@ -147,7 +148,7 @@ class TestFilmElements : public QObject {
   void skirtWrenchIsTheVirtualWorkOfTheFilmForces() {
     const engine::EngineCase c = CoarseCase();
     engine::CrankTrain train = engine::BuildCrankTrain(c, 6000, engine::PressureCurve{});
-    auto element = coupling::MakeLubricatedSkirt(c, train.layout);
+    auto element = engine::MakeLubricatedSkirt(c, train.layout);
     auto& skirt = dynamic_cast<coupling::LubricatedSkirtElement&>(*element);
     multibody::JointForceInput in;
     in.body_j = PistonState(c, train.layout);
@@ -167,7 +168,7 @@ class TestFilmElements : public QObject {
   void skirtJacobianMatchesCentralDifferences() {
     const engine::EngineCase c = CoarseCase();
     engine::CrankTrain train = engine::BuildCrankTrain(c, 6000, engine::PressureCurve{});
-    auto element = coupling::MakeLubricatedSkirt(c, train.layout);
+    auto element = engine::MakeLubricatedSkirt(c, train.layout);
     multibody::JointForceInput in;
     in.body_j = PistonState(c, train.layout);
     const double mismatch = multibody::JointJacobianMismatch(*element, in, 1e-9);
@@ -178,7 +179,7 @@ class TestFilmElements : public QObject {
   void bigEndJacobianMatchesCentralDifferencesAndIsFiniteAtTheCentre() {
     const engine::EngineCase c = CoarseCase();
     engine::CrankTrain train = engine::BuildCrankTrain(c, 6000, engine::PressureCurve{});
-    auto element = coupling::MakeLubricatedBigEnd(c, train.layout);
+    auto element = engine::MakeLubricatedBigEnd(c, train.layout);
     auto& big_end = dynamic_cast<coupling::LubricatedBigEndElement&>(*element);
     const multibody::SystemState& s = train.initial_state;
     multibody::JointForceInput in;

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "core/coupling/steady_state.hpp"
-#include "core/input_error.hpp"
+#include "core/base/input_error.hpp"
 
 using filmdyn::coupling::PeriodicSteadyState;
 

@@ -1,7 +1,7 @@
 // A whole ideal run as the CLI and the GUI worker make it: steady state, the reported cycle, the
-// output folder (every SPEC §4 column in order, empty where the model has none), monitor stop,
-// cancel flag, the film models' run-in (progress, cancel, where the first cycle starts), and a
-// lubricated model without film factories rejected naming the field.
+// output folder (every fixed column of docs/outputs.md in order, empty where the model has none),
+// monitor stop, cancel flag, the film models' run-in (progress, cancel, where the first cycle
+// starts), and a lubricated model without film factories rejected naming the field.
 #include <QtTest>
 
 #include <QTemporaryDir>
@@ -11,7 +11,7 @@
 #include <sstream>
 
 #include "core/engine/run_job.hpp"
-#include "core/input_error.hpp"
+#include "core/base/input_error.hpp"
 #include "core/io/case_file.hpp"
 #include "core/io/results_writer.hpp"
 
@@ -52,7 +52,7 @@ class TestRunJob : public QObject {
         "skirt_friction_force[N],skirt_moment[N*m],skirt_moft[m],skirt_fpl[W],"
         "journal_ecc_x[m],journal_ecc_y[m],bearing_eps[-],bearing_moft[m],bearing_fpl[W],"
         "bigend_force_x[N],bigend_force_y[N],gas_force[N]";
-    QVERIFY(header.rfind(spec, 0) == 0);  // SPEC columns first, in SPEC order
+    QVERIFY(header.rfind(spec, 0) == 0);  // the 19 fixed columns first, in their order
     // MOFT columns present and empty: fields 10 and 15 (1-based).
     std::vector<std::string> cells;
     std::stringstream line(first);

@@ -6,7 +6,7 @@
 #include <fstream>
 #include <numbers>
 
-#include "core/input_error.hpp"
+#include "core/base/input_error.hpp"
 #include "core/io/case_file.hpp"
 #include "core/io/resources.hpp"
 

@@ -6,7 +6,7 @@
 #include <numbers>
 #include <sstream>
 
-#include "core/input_error.hpp"
+#include "core/base/input_error.hpp"
 #include "core/io/pressure_csv.hpp"
 
 using namespace filmdyn;

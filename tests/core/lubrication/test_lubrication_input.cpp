@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-#include "core/input_error.hpp"
+#include "core/base/input_error.hpp"
 #include "core/lubrication/bearing_calculator.hpp"
 #include "core/lubrication/bearing_solver.hpp"
 #include "core/lubrication/skirt_solver.hpp"

@@ -54,7 +54,7 @@ class TestReynoldsFem : public QObject {
     SkirtSolver skirt(DefaultSkirt());
     QCOMPARE(skirt.mesh().nx_nodes(), 30 + 2 + 30 + 1);
     QCOMPARE(skirt.mesh().ny_nodes(), 41);
-    // Omega2 (pin-boss relief) nodes are fixed at p = 0, including its edges (paper eq. 6).
+    // Omega2 (pin-boss relief) nodes are fixed at p = 0, including its edges (eq. 6).
     const auto& m = skirt.mesh();
     for (int i = 30; i <= 32; ++i) QVERIFY(m.fixed[m.Node(i, 20)]);
     QVERIFY(!m.fixed[m.Node(29, 20)]);

@@ -1,6 +1,6 @@
 // Every export writes a valid file: each standard plot as PNG, SVG and PDF after a real run,
-// results.csv with the SPEC §4 header and one row per output step. (Field VTU/PVD export:
-// tests/ui/fields.)
+// results.csv with the header of docs/outputs.md and one row per output step. (Field VTU/PVD
+// export: tests/ui/fields.)
 #include <QAction>
 #include <QFile>
 #include <QImage>
@@ -78,7 +78,7 @@ class TestExports : public QObject {
     const QStringList lines = QString::fromUtf8(file.readAll()).split('\n', Qt::SkipEmptyParts);
     QCOMPARE(lines.size(), 1 + 360);
     const QStringList header = lines.first().split(',');
-    // Core's results.csv (what `filmdyn run` writes): the SPEC §4 columns first, in order.
+    // Core's results.csv (what `filmdyn run` writes): the 19 fixed columns first, in order.
     QVERIFY(header.size() >= filmdyn::ui::kColumnCount);
     for (int i = 0; i < filmdyn::ui::kColumnCount; ++i) {
       QCOMPARE(header[i], QString(filmdyn::ui::kColumnHeaders[size_t(i)]));

@@ -110,7 +110,7 @@ class TestGreenwoodTripp : public QObject {
     }
   }
 
-  // Fit: 4.4086e-5 (4 - H)^6.804 (Hu et al. 1994; paper eq. 30 with the SPEC erratum): at H = 0
+  // Fit: 4.4086e-5 (4 - H)^6.804 (Hu et al. 1994; eq. 30 misprints 4.486e-5): at H = 0
   // 0.5504487, at H = 2 4.926163e-3, 0 at H >= 4, continuous at 4.
   void fitMatchesPublishedForm() {
     QVERIFY(RelErr(fl::GreenwoodTrippF52Fit(0.0), 4.4086e-5 * std::pow(4.0, 6.804)) < 1e-14);

@@ -9,7 +9,7 @@
 #include <limits>
 #include <new>
 
-#include "core/input_error.hpp"
+#include "core/base/input_error.hpp"
 #include "core/lubrication/surface/greenwood_tripp.hpp"
 #include "core/lubrication/surface/surface_model.hpp"
 

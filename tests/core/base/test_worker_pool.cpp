@@ -11,7 +11,7 @@
 #include <thread>
 
 #include "core/multibody/multibody_system.hpp"
-#include "core/worker_pool.hpp"
+#include "core/base/worker_pool.hpp"
 
 using namespace filmdyn;
 using namespace filmdyn::multibody;

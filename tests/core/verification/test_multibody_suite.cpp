@@ -1,14 +1,14 @@
-// The `filmdyn validate` rows of the multibody engine all pass, and are real comparisons (a row
-// with a wrong reference would fail).
+// The `filmdyn validate` rows of the "multibody" suite (the ideal crank train and the general
+// multibody engine) all pass, and are real comparisons (a row with a wrong reference would fail).
 #include <QtTest>
 
-#include "core/multibody/validation_cases.hpp"
+#include "core/verification/all_suites.hpp"
 
 class TestValidationCases : public QObject {
   Q_OBJECT
  private slots:
   void allRowsPass() {
-    const auto rows = filmdyn::multibody::MultibodyValidationRows();
+    const auto rows = filmdyn::verification::RunSuites({"multibody"});
     QVERIFY(rows.size() >= 10);
     for (const auto& row : rows) {
       qInfo("%s: ours %.10g ref %.10g err %.3g tol %.1g", row.name.c_str(), row.ours, row.reference,
@@ -22,4 +22,4 @@ class TestValidationCases : public QObject {
 };
 
 QTEST_GUILESS_MAIN(TestValidationCases)
-#include "test_validation_cases.moc"
+#include "test_multibody_suite.moc"

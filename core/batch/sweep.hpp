@@ -16,17 +16,17 @@
 #include "core/engine/run_job.hpp"
 #include "core/io/results_writer.hpp"
 
-namespace filmdyn::engine {
+namespace filmdyn::batch {
 
 struct SweepJob {
-  RunConfig config;
+  engine::RunConfig config;
   std::string case_name;
   std::filesystem::path output_folder;
   bool write_fields = true;  ///< fields/ (VTU/PVD of the reported cycle) in the output folder
 };
 
 struct SweepOutcome {
-  RunResult result;
+  engine::RunResult result;
   std::vector<io::OutputRow> rows;  ///< as written to results.csv
   std::string error;                ///< non-empty when the job threw (bad input, I/O)
   bool finished = false;
@@ -64,4 +64,4 @@ class SweepRunner {
   std::vector<std::thread> workers_;
 };
 
-}  // namespace filmdyn::engine
+}  // namespace filmdyn::batch

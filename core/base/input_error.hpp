@@ -1,6 +1,7 @@
 #pragma once
-/// @file Bad user input (STYLE.md "Errors"): an exception whose message names the field, the
-/// value and what is allowed. Bugs in our own code are assertions instead, never this.
+/// @file Bad user input (docs/conventions.md, "Error handling"): an exception whose message
+/// names the field, the value and what is allowed. Bugs in our own code are assertions instead,
+/// never this.
 #include <stdexcept>
 #include <string>
 

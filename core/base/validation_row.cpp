@@ -1,4 +1,4 @@
-#include "core/verification/validation_row.hpp"
+#include "core/base/validation_row.hpp"
 
 #include <cmath>
 

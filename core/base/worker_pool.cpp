@@ -1,4 +1,4 @@
-#include "core/worker_pool.hpp"
+#include "core/base/worker_pool.hpp"
 
 #include <algorithm>
 

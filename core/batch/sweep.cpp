@@ -1,11 +1,11 @@
-#include "core/engine/sweep.hpp"
+#include "core/batch/sweep.hpp"
 
 #include <algorithm>
 #include <exception>
 
 #include "core/io/field_output.hpp"
 
-namespace filmdyn::engine {
+namespace filmdyn::batch {
 
 SweepRunner::SweepRunner(std::vector<SweepJob> jobs, int threads, const std::atomic<bool>* cancel)
     : jobs_(std::move(jobs)), outcomes_(jobs_.size()), cancel_(cancel), fractions_(jobs_.size()) {
@@ -23,15 +23,15 @@ void SweepRunner::Work() {
   for (int index = next_job_++; index < size(); index = next_job_++) {
     SweepOutcome outcome;
     try {
-      const RunMonitor monitor = [this, index](const RunProgress& p) {
+      const engine::RunMonitor monitor = [this, index](const engine::RunProgress& p) {
         fractions_[index] = std::min(p.fraction, 1.0);
         return true;
       };
       const SweepJob& job = jobs_[index];
       io::FieldRecorder fields;
-      RunConfig config = job.config;
+      engine::RunConfig config = job.config;
       if (job.write_fields) config.field_callback = fields.Callback();
-      outcome.result = RunJob(config, monitor, cancel_);
+      outcome.result = engine::RunJob(config, monitor, cancel_);
       outcome.rows =
           io::WriteRunFolder(job.output_folder, job.case_name, job.config, outcome.result);
       fields.Write(job.output_folder / "fields");
@@ -66,4 +66,4 @@ std::vector<double> SweepRunner::Fractions() const {
   return out;
 }
 
-}  // namespace filmdyn::engine
+}  // namespace filmdyn::batch

@@ -1,4 +1,4 @@
-#include "core/input_error.hpp"
+#include "core/base/input_error.hpp"
 
 #include <cmath>
 #include <sstream>

@@ -2,7 +2,7 @@
 // core + QtTest only, as every core test does).
 #include <QtTest>
 
-#include "core/version.hpp"
+#include "core/base/version.hpp"
 
 class TestVersion : public QObject {
   Q_OBJECT

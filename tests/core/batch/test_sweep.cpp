@@ -4,18 +4,18 @@
 #include <QtTest>
 #include <set>
 
-#include "core/engine/sweep.hpp"
+#include "core/batch/sweep.hpp"
 #include "core/io/case_file.hpp"
 
 using namespace filmdyn;
 
 namespace {
 
-std::vector<engine::SweepJob> MakeJobs(const std::filesystem::path& root) {
+std::vector<batch::SweepJob> MakeJobs(const std::filesystem::path& root) {
   const io::LoadedCase loaded = io::LoadCase("");
-  std::vector<engine::SweepJob> jobs;
+  std::vector<batch::SweepJob> jobs;
   for (double rpm : {1000.0, 2000.0, 4000.0, 6000.0}) {
-    engine::SweepJob job;
+    batch::SweepJob job;
     job.config = engine::MakeRunConfig(loaded.value, engine::Model::kIdeal, rpm,
                                        io::PressureCurveForSpeed(loaded, rpm));
     job.case_name = "t";
@@ -33,7 +33,7 @@ class TestSweep : public QObject {
   void everyJobOnceWithFoldersAndSameResultsAsAlone() {
     QTemporaryDir dir;
     const auto jobs = MakeJobs(dir.path().toStdString());
-    engine::SweepRunner runner(jobs, 2, nullptr);
+    batch::SweepRunner runner(jobs, 2, nullptr);
     std::set<int> seen;
     for (int index; (index = runner.WaitNext(std::chrono::milliseconds(100))) != -1;) {
       if (index == -2) continue;
@@ -63,7 +63,7 @@ class TestSweep : public QObject {
     QTemporaryDir dir;
     const auto jobs = MakeJobs(dir.path().toStdString());
     std::atomic<bool> cancel{true};
-    engine::SweepRunner runner(jobs, 2, &cancel);
+    batch::SweepRunner runner(jobs, 2, &cancel);
     int count = 0;
     for (int index; (index = runner.WaitNext(std::chrono::milliseconds(100))) != -1;) {
       if (index == -2) continue;

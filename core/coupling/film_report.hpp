@@ -1,0 +1,52 @@
+#pragma once
+/// @file What a lubricated joint element reports about its film at one instant: plain structs
+/// filled by the coupling elements and copied into the engine's samples. Knows nothing of the
+/// engine; the engine's crank-train sample holds one of each.
+#include <Eigen/Core>
+
+namespace filmdyn::coupling {
+
+/// Film quantities of the lubricated skirt at one instant (present = false with an ideal liner).
+/// Forces on the piston: lateral along +X (thrust side), friction along the bore, + toward the
+/// crank (skirt solver convention), moment about the pin (generalised force on the tilt).
+struct SkirtFilmSample {
+  bool present = false;
+  double normal_force = 0.0;          ///< [N] hydrodynamic + asperity, along +X
+  double contact_normal_force = 0.0;  ///< asperity part [N]
+  double friction_force = 0.0;        ///< [N] along +y of the skirt (toward the crank)
+  double moment_about_pin = 0.0;      ///< [N·m]
+  double moft = 0.0;                  ///< [m]
+  double fpl = 0.0;                   ///< friction power loss [W]
+  double max_pressure = 0.0;          ///< [Pa]
+  double min_gap = 0.0;  ///< smallest geometric gap over the panels (< 0: piston in the liner) [m]
+  long clamped_nodes = 0;
+  double power = 0.0;  ///< power of the film forces on the piston, F ė0 + M γ̇ + F_f u_p [W] (≤ 0)
+};
+
+/// Film quantities of the lubricated big end at one instant (present = false when ideal).
+struct BearingFilmSample {
+  bool present = false;
+  Eigen::Vector2d journal_ecc_rod = Eigen::Vector2d::Zero();  ///< journal − bearing centre, rod
+                                                              ///< frame [m]
+  Eigen::Vector2d journal_ecc_global = Eigen::Vector2d::Zero();  ///< same, global frame [m]
+  double eps = 0.0;                                              ///< ε [-]
+  double eps_dot = 0.0;                                          ///< [1/s]
+  double moft = 0.0;                                             ///< [m]
+  double fpl = 0.0;                                              ///< [W]
+  double max_pressure = 0.0;                                     ///< [Pa]
+  Eigen::Vector2d force_on_rod = Eigen::Vector2d::Zero();        ///< film (crank pin) → rod [N]
+  double friction_torque_journal = 0.0;                          ///< on the crank [N·m]
+  double friction_torque_bearing = 0.0;                          ///< on the rod [N·m]
+  double power = 0.0;  ///< power of the film on crank + rod, F·ė + T_j ω_j + T_b ω_b [W] (≤ 0)
+};
+
+/// Implemented by the lubricated joint elements so that whoever samples a system can fill the
+/// film quantities without knowing their types. Called right after the element was evaluated at
+/// the sampled state; each element fills its own joint's struct and leaves the other alone.
+class FilmReporter {
+ public:
+  virtual ~FilmReporter() = default;
+  virtual void ReportFilm(SkirtFilmSample* skirt, BearingFilmSample* bearing) const = 0;
+};
+
+}  // namespace filmdyn::coupling

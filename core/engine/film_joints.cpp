@@ -1,0 +1,111 @@
+#include "core/engine/film_joints.hpp"
+
+#include <numbers>
+
+#include "core/base/input_error.hpp"
+#include "core/coupling/lubricated_big_end_element.hpp"
+#include "core/coupling/lubricated_skirt_element.hpp"
+#include "core/lubrication/surface_film.hpp"
+
+namespace filmdyn::engine {
+
+lubrication::SkirtConfig SkirtConfigFromCase(const EngineCase& c) {
+  const SkirtCase& sk = c.skirt;
+  lubrication::SkirtConfig config;
+  lubrication::SkirtGeometry& g = config.geometry;
+  g.radius = sk.piston_radius;
+  g.skirt_length = sk.length;
+  g.radial_clearance = c.geometry.liner_radius - sk.piston_radius;
+  if (!(g.radial_clearance > 0.0)) {
+    throw InputError("skirt.piston_radius", FormatValue(sk.piston_radius),
+                     "must be smaller than geometry.liner_radius = " +
+                         FormatValue(c.geometry.liner_radius) + " [m] (no skirt clearance)");
+  }
+  g.pin_position = c.geometry.skirt_top_to_pin;
+  g.alpha1 = sk.thrust_half_width;
+  g.alpha2 = sk.anti_thrust_half_width;
+  g.profile.x = sk.profile_y;
+  g.profile.y = sk.profile_h;
+  g.ovality.x = sk.ovality_alpha;  // empty = round skirt
+  g.ovality.y = sk.ovality_h;
+  config.viscosity = c.lubricant.viscosity;
+  config.mesh.n_thrust = sk.mesh_thrust;
+  config.mesh.n_relief = sk.mesh_relief;
+  config.mesh.n_anti = sk.mesh_anti;
+  config.mesh.n_axial = sk.mesh_axial;
+  lubrication::SurfacePair pair;
+  pair.sigma1 = sk.roughness_skirt;
+  pair.sigma2 = sk.roughness_liner;
+  pair.peklenik = sk.peklenik;
+  pair.E1 = sk.modulus_skirt;  // surface 1 = skirt, 2 = liner; the pair forms E' (Hu et al.)
+  pair.nu1 = sk.poisson_skirt;
+  pair.E2 = sk.modulus_liner;
+  pair.nu2 = sk.poisson_liner;
+  pair.gt_k = c.lubricant.greenwood_tripp_k;
+  pair.boundary_friction = sk.boundary_friction;
+  pair.Validate("skirt");
+  config.film = lubrication::MakeSurfaceFilm(pair);
+  return config;
+}
+
+std::unique_ptr<multibody::JointForceElement> MakeLubricatedSkirt(
+    const EngineCase& c, const CrankTrainLayout& layout) {
+  coupling::SkirtMounting mount;
+  mount.com_lateral_offset = c.geometry.piston_com_lateral_offset;
+  mount.skirt_top_to_com = c.geometry.skirt_top_to_com;
+  mount.skirt_top_to_pin = c.geometry.skirt_top_to_pin;
+  mount.pin_offset = c.geometry.pin_offset;
+  return std::make_unique<coupling::LubricatedSkirtElement>(SkirtConfigFromCase(c), layout.piston, mount);
+}
+
+lubrication::BearingConfig BearingConfigFromCase(const EngineCase& c) {
+  const BigEndCase& be = c.big_end;
+  lubrication::BearingConfig config;
+  config.geometry.radius = be.journal_radius;
+  config.geometry.length = be.width;
+  config.geometry.radial_clearance = be.bearing_radius - be.journal_radius;
+  if (!(config.geometry.radial_clearance > 0.0)) {
+    throw InputError("big_end.journal_radius", FormatValue(be.journal_radius),
+                     "must be smaller than big_end.bearing_radius = " +
+                         FormatValue(be.bearing_radius) + " [m] (no clearance)");
+  }
+  config.viscosity = c.lubricant.viscosity;
+  config.mesh.n_theta = be.mesh_theta;
+  config.mesh.n_z = be.mesh_z;
+  if (be.oil_feed_pressure > 0.0) {  // a hole in the rod's bore, on the rod axis toward the pin
+    config.feed.kind = lubrication::OilFeed::Kind::kHole;
+    config.feed.angle = 0.5 * std::numbers::pi;
+    config.feed.pressure = be.oil_feed_pressure;
+  }
+  lubrication::SurfacePair pair;
+  pair.sigma1 = be.roughness_journal;
+  pair.sigma2 = be.roughness_bearing;
+  pair.peklenik = be.peklenik;
+  pair.E1 = be.modulus_journal;  // surface 1 = journal, 2 = bearing; the pair forms E'
+  pair.nu1 = be.poisson_journal;
+  pair.E2 = be.modulus_bearing;
+  pair.nu2 = be.poisson_bearing;
+  pair.gt_k = c.lubricant.greenwood_tripp_k;
+  pair.boundary_friction = be.boundary_friction;
+  pair.Validate("big_end");
+  config.film = lubrication::MakeSurfaceFilm(pair);
+  return config;
+}
+
+std::unique_ptr<multibody::JointForceElement> MakeLubricatedBigEnd(
+    const EngineCase& c, const CrankTrainLayout& layout) {
+  coupling::BigEndMounting mount;
+  mount.journal_point = layout.crank_pin;
+  mount.bearing_point = layout.rod_big_end;
+  return std::make_unique<coupling::LubricatedBigEndElement>(BearingConfigFromCase(c), layout.crank,
+                                                   layout.rod, mount);
+}
+
+LubricatedJointFactories FilmJointFactories() {
+  LubricatedJointFactories f;
+  f.skirt = &MakeLubricatedSkirt;
+  f.big_end = &MakeLubricatedBigEnd;
+  return f;
+}
+
+}  // namespace filmdyn::engine

@@ -1,0 +1,29 @@
+#pragma once
+/// @file The lubricated joints of a case: the mapping from the case's skirt, big-end, lubricant
+/// and surface fields to the coupling elements' plain solver configurations and mountings, and
+/// the factories BuildCrankTrain uses for the lubricated models.
+#include <memory>
+
+#include "core/engine/crank_train.hpp"
+#include "core/engine/engine_case.hpp"
+#include "core/lubrication/bearing_solver.hpp"
+#include "core/lubrication/skirt_solver.hpp"
+
+namespace filmdyn::engine {
+
+/// The skirt solver configuration of a case (mesh: the case's counts). Throws InputError naming
+/// the field when the case has no skirt clearance or its surfaces are invalid.
+lubrication::SkirtConfig SkirtConfigFromCase(const EngineCase& engine_case);
+/// The bearing solver configuration of a case (SurfaceModel from roughness, E and ν, μ_f, K).
+lubrication::BearingConfig BearingConfigFromCase(const EngineCase& engine_case);
+
+/// The lubricated skirt element of a case (liner = ground, the layout's piston).
+std::unique_ptr<multibody::JointForceElement> MakeLubricatedSkirt(const EngineCase& engine_case,
+                                                                  const CrankTrainLayout& layout);
+/// The lubricated big-end element of a case (journal on the crank, bearing on the rod).
+std::unique_ptr<multibody::JointForceElement> MakeLubricatedBigEnd(const EngineCase& engine_case,
+                                                                   const CrankTrainLayout& layout);
+/// Both factories: what RunConfig uses for the lubricated models.
+LubricatedJointFactories FilmJointFactories();
+
+}  // namespace filmdyn::engine

@@ -1,0 +1,77 @@
+#pragma once
+/// @file summary.json of a run as one struct with one JSON mapping: what `filmdyn run`, a sweep
+/// and the GUI write, and what the run comparison reads back. Keys and units in docs/outputs.md.
+#include <filesystem>
+#include <map>
+#include <nlohmann/json_fwd.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/engine/run_job.hpp"
+#include "core/io/results_writer.hpp"
+
+namespace filmdyn::io {
+
+/// Smallest and largest value of one results.csv column over the reported cycle.
+struct ColumnExtremes {
+  double min = 0.0;
+  double max = 0.0;
+};
+
+/// Solver statistics of a run.
+struct SolverSummary {
+  std::string integrator;
+  long steps = 0;
+  long rejected_steps = 0;
+  long newton_iterations = 0;
+  long newton_failures = 0;
+  long rhs_evaluations = 0;
+  long jacobian_evaluations = 0;
+  long reynolds_solves = 0;
+  double baumgarte_alpha = 0.0;
+  double baumgarte_beta = 0.0;
+  double relative_tolerance = 0.0;
+};
+
+struct RunSummary {
+  std::string filmdyn_version;
+  std::string case_name;  ///< "case" in the file
+  std::string model;      ///< e.g. "skirt-lbrbe"
+  double rpm = 0.0;
+  std::string status;     ///< engine::StatusName
+  bool complete = false;  ///< status is "completed"
+  std::string message;
+  int cycles = 0;
+  int cycles_to_steady_state = 0;
+  double cycle_to_cycle_change = 0.0;
+  std::string cycle_to_cycle_worst_quantity;
+  double wall_time_s = 0.0;
+  double max_constraint_violation = 0.0;
+  /// Per results.csv column header (all but crank angle and time) that has any value.
+  std::map<std::string, ColumnExtremes> extremes;
+  std::optional<double> mean_fpl_skirt_w;    ///< empty: the model has no skirt FPL
+  std::optional<double> mean_fpl_bearing_w;  ///< empty: the model has no bearing FPL
+  SolverSummary solver;
+  double pressure_peak_pa = 0.0;
+  double pressure_peak_crank_angle_deg = 0.0;
+};
+
+/// The summary of a finished (or stopped) run from its configuration, result and the rows
+/// written to results.csv.
+RunSummary SummarizeRun(const std::string& case_name, const engine::RunConfig& config,
+                        const engine::RunResult& result, const std::vector<OutputRow>& rows);
+
+/// The one mapping between the struct and summary.json.
+nlohmann::json SummaryToJson(const RunSummary& summary);
+/// model, rpm and status are required; other keys may be absent (an earlier version's summary)
+/// and keep their defaults. Throws std::runtime_error naming the key when a required key is
+/// missing or any key has the wrong type.
+RunSummary SummaryFromJson(const nlohmann::json& json);
+
+/// Writes `path` (2-space indented JSON and a newline). Throws std::runtime_error naming the file.
+void WriteSummaryJson(const std::filesystem::path& path, const RunSummary& summary);
+/// Reads `path`. Throws std::runtime_error naming the file when it is missing or malformed.
+RunSummary ReadSummaryJson(const std::filesystem::path& path);
+
+}  // namespace filmdyn::io

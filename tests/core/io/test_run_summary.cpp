@@ -1,0 +1,124 @@
+// summary.json has one struct and one mapping: every field survives a round trip through the
+// file, required keys and wrong types are named in the error, and a summary written by a real
+// (ideal, short) run carries the run's figures.
+#include <QTemporaryDir>
+#include <QtTest>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "core/io/case_file.hpp"
+#include "core/io/results_writer.hpp"
+#include "core/io/run_summary.hpp"
+
+using namespace filmdyn;
+
+namespace {
+
+io::RunSummary Full() {
+  io::RunSummary s;
+  s.filmdyn_version = "9.9.9";
+  s.case_name = "c";
+  s.model = "skirt-lbrbe";
+  s.rpm = 4500.5;
+  s.status = "not converged";
+  s.complete = false;
+  s.message = "cycle-to-cycle change 0.02 above 0.01";
+  s.cycles = 7;
+  s.cycles_to_steady_state = 0;
+  s.cycle_to_cycle_change = 0.02;
+  s.cycle_to_cycle_worst_quantity = "bearing_moft";
+  s.wall_time_s = 12.25;
+  s.max_constraint_violation = 3e-12;
+  s.extremes["bearing_moft[m]"] = {1.1e-6, 2.5e-5};
+  s.extremes["gas_force[N]"] = {-300.0, 41000.0};
+  s.mean_fpl_skirt_w = 659.75;
+  s.mean_fpl_bearing_w = std::nullopt;
+  s.solver = {"integrator", 5276, 12, 9000, 220, 12000, 300, 60000, 20.0, 30.0, 1e-4};
+  s.pressure_peak_pa = 6.1e6;
+  s.pressure_peak_crank_angle_deg = 372.0;
+  return s;
+}
+
+void CompareSummaries(const io::RunSummary& a, const io::RunSummary& b) {
+  QCOMPARE(io::SummaryToJson(a).dump(), io::SummaryToJson(b).dump());
+  QCOMPARE(a.case_name, b.case_name);
+  QCOMPARE(a.rpm, b.rpm);
+  QCOMPARE(a.extremes.at("gas_force[N]").max, b.extremes.at("gas_force[N]").max);
+  QCOMPARE(a.mean_fpl_skirt_w, b.mean_fpl_skirt_w);
+  QCOMPARE(a.mean_fpl_bearing_w.has_value(), b.mean_fpl_bearing_w.has_value());
+  QCOMPARE(a.solver.newton_failures, b.solver.newton_failures);
+  QCOMPARE(a.solver.relative_tolerance, b.solver.relative_tolerance);
+  QCOMPARE(a.pressure_peak_crank_angle_deg, b.pressure_peak_crank_angle_deg);
+}
+
+}  // namespace
+
+class TestRunSummary : public QObject {
+  Q_OBJECT
+ private slots:
+  void everyFieldRoundTrips() {
+    const io::RunSummary s = Full();
+    CompareSummaries(s, io::SummaryFromJson(io::SummaryToJson(s)));
+    QTemporaryDir dir;
+    const std::filesystem::path path = dir.filePath("summary.json").toStdString();
+    io::WriteSummaryJson(path, s);
+    CompareSummaries(s, io::ReadSummaryJson(path));
+    // The file's keys are the documented ones (docs/outputs.md).
+    const nlohmann::json j = io::SummaryToJson(s);
+    for (const char* key :
+         {"filmdyn_version", "case", "model", "rpm", "status", "complete", "message", "cycles",
+          "cycles_to_steady_state", "cycle_to_cycle_change", "cycle_to_cycle_worst_quantity",
+          "wall_time_s", "max_constraint_violation", "extremes", "mean_fpl_w", "solver",
+          "pressure_curve"}) {
+      QVERIFY2(j.contains(key), key);
+    }
+    QCOMPARE(j.size(), std::size_t(17));
+    QVERIFY(j["mean_fpl_w"]["bearing"].is_null());
+  }
+
+  void errorsNameTheKey() {
+    nlohmann::json j = io::SummaryToJson(Full());
+    j.erase("model");
+    try {
+      io::SummaryFromJson(j);
+      QFAIL("no error");
+    } catch (const std::runtime_error& e) {
+      QVERIFY2(QString(e.what()).contains("\"model\""), e.what());
+    }
+    j = io::SummaryToJson(Full());
+    j["solver"]["steps"] = "many";
+    try {
+      io::SummaryFromJson(j);
+      QFAIL("no error");
+    } catch (const std::runtime_error& e) {
+      QVERIFY2(QString(e.what()).contains("solver.steps"), e.what());
+    }
+  }
+
+  void writtenByARun() {
+    auto loaded = io::LoadCase({});
+    loaded.value.solver.max_cycles = 2;
+    engine::RunConfig config = engine::MakeRunConfig(
+        loaded.value, engine::Model::kIdeal, 3000.0, io::PressureCurveForSpeed(loaded, 3000.0));
+    const engine::RunResult result = engine::RunJob(config);
+    QTemporaryDir dir;
+    const auto rows = io::WriteRunFolder(dir.path().toStdString(), "default", config, result);
+    const io::RunSummary s = io::ReadSummaryJson(dir.filePath("summary.json").toStdString());
+    QCOMPARE(s.model, std::string("ideal"));
+    QCOMPARE(s.rpm, 3000.0);
+    QCOMPARE(s.cycles, result.cycles);
+    QCOMPARE(s.solver.steps, result.stats.steps);
+    double lo = 1e300, hi = -1e300;
+    for (const auto& row : rows) {
+      lo = std::min(lo, *row.gas_force);
+      hi = std::max(hi, *row.gas_force);
+    }
+    QCOMPARE(s.extremes.at("gas_force[N]").min, lo);
+    QCOMPARE(s.extremes.at("gas_force[N]").max, hi);
+    QCOMPARE(*s.mean_fpl_skirt_w, 0.0);  // ideal joints: frictionless
+    QVERIFY(!s.extremes.contains("skirt_moft[m]"));  // no film: no values, no extremes
+  }
+};
+
+QTEST_GUILESS_MAIN(TestRunSummary)
+#include "test_run_summary.moc"
