@@ -11,7 +11,7 @@ packages=(
   xvfb xauth libgl1-mesa-dri fonts-dejavu-core
 )
 # Deliberately NOT libvtk9-qt-dev: Debian builds VTK's Qt module against Qt 5, which cannot share
-# a process with Qt 6 (shared/stack-notes.md). FilmDyn has its own VTK-in-Qt-6 widget.
+# a process with Qt 6 (docs/design.md). FilmDyn has its own VTK-in-Qt-6 widget.
 
 missing=()
 for p in "${packages[@]}"; do

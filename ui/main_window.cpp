@@ -30,7 +30,6 @@
 #include "ui/fields/field_view.hpp"
 #include "ui/plots/plot_panel.hpp"
 #include "ui/run/run_controller.hpp"
-#include "ui/runs/results_csv.hpp"
 #include "ui/runs/run_table.hpp"
 
 namespace filmdyn::ui {
@@ -421,7 +420,10 @@ bool MainWindow::exportResultsCsv(const RunHandle& run, const QString& path, QSt
     return false;
   }
   const QByteArray core_csv = run->resultsCsv();
-  if (core_csv.isEmpty()) return WriteResultsCsv(run->samples(), path, error);
+  if (core_csv.isEmpty()) {
+    if (error) *error = tr("this run has no results to export yet");
+    return false;
+  }
   QSaveFile file(path);
   if (!file.open(QIODevice::WriteOnly) || file.write(core_csv) != core_csv.size() ||
       !file.commit()) {
@@ -524,8 +526,9 @@ void MainWindow::exportResultsInteractive() {
 }
 
 void MainWindow::exportFieldsInteractive() {
+  const RunHandle run = shown_fields_run_.lock();
   const FieldFrames* frames = field_view_->frames();
-  if (!frames || frames->empty()) {
+  if (!run || !frames || frames->empty()) {
     statusBar()->showMessage(
         tr("No pressure fields to export: only runs with a lubricated joint have them"), 8000);
     return;
@@ -533,7 +536,7 @@ void MainWindow::exportFieldsInteractive() {
   const QString dir = QFileDialog::getExistingDirectory(this, tr("Export fields to"));
   if (dir.isEmpty()) return;
   QString error;
-  if (ExportFieldFrames(*frames, dir, &error)) {
+  if (run->writeFields(dir, &error)) {
     statusBar()->showMessage(tr("Wrote fields to %1").arg(dir), 8000);
   } else {
     QMessageBox::warning(this, tr("Export failed"), error);

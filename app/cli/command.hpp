@@ -1,5 +1,5 @@
 #pragma once
-/// @file The subcommand framework of the one executable `filmdyn` (SPEC §4).
+/// @file The subcommand framework of the one executable `filmdyn`.
 ///
 /// A subcommand is a `Command`: a name, a one-line summary, its options and a run function.
 /// Commands live one per file in app/commands/<name>_command.cpp, expose

@@ -13,6 +13,7 @@ const std::vector<Command>& AllCommands() {
     list.push_back(MakeReproduceCommand());
     list.push_back(MakeBearingCommand());
     list.push_back(MakeValidateCommand());
+    list.push_back(MakeCaseFieldsCommand());
     list.push_back(MakeVersionsCommand());
     return list;
   }();

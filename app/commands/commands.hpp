@@ -6,6 +6,7 @@
 namespace filmdyn::cli {
 
 Command MakeVersionsCommand();
+Command MakeCaseFieldsCommand();
 Command MakeBearingCommand();
 Command MakeRunCommand();
 Command MakeSweepCommand();

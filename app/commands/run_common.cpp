@@ -12,7 +12,6 @@
 #include "core/io/pressure_csv.hpp"
 #include "core/io/run_comparison.hpp"
 #include "ui/plots/plot_export.hpp"
-#include "ui/run/sample_conversion.hpp"
 
 namespace filmdyn::cli {
 
@@ -47,10 +46,9 @@ engine::RunConfig BuildRunConfig(const io::LoadedCase& loaded, engine::Model mod
 std::string WriteRunPlots(const std::filesystem::path& folder, const engine::RunConfig& config,
                           const std::vector<io::OutputRow>& rows) {
   QString error;
-  ui::ExportStandardPlots(
-      {ui::FinishedRun(1, {config.engine_case, engine::ModelName(config.model), config.rpm},
-                       ui::RunSamplesFromRows(rows))},
-      QString::fromStdString((folder / "plots").string()), &error);
+  ui::ExportStandardPlots({ui::PlotRunFromRows(1, config.engine_case,
+                                               engine::ModelName(config.model), config.rpm, rows)},
+                          QString::fromStdString((folder / "plots").string()), &error);
   return error.toStdString();
 }
 
@@ -60,8 +58,8 @@ io::LoadedCase LoadCaseArgument(const Args& args) {
 }
 
 batch::SweepJob SweepJobFor(const io::LoadedCase& loaded, engine::Model model, double rpm,
-                             double time_limit, bool write_fields,
-                             const std::filesystem::path& parent) {
+                            double time_limit, bool write_fields,
+                            const std::filesystem::path& parent) {
   batch::SweepJob job;
   job.config = BuildRunConfig(loaded, model, rpm, std::nullopt, time_limit);
   job.case_name = loaded.value.name;
@@ -125,9 +123,9 @@ BatchOutcome RunBatch(std::vector<batch::SweepJob> jobs, int parallel, bool quie
         !error.empty()) {
       streams.err << prefix << ": " << label << ": plots not written: " << error << "\n";
     }
-    batch.runs[index] = ui::FinishedRun(
-        index + 1, {job.config.engine_case, engine::ModelName(job.config.model), job.config.rpm},
-        ui::RunSamplesFromRows(outcome.rows));
+    batch.runs[index] =
+        ui::PlotRunFromRows(index + 1, job.config.engine_case, engine::ModelName(job.config.model),
+                            job.config.rpm, outcome.rows);
     const bool complete = outcome.result.status == engine::RunStatus::kCompleted;
     if (!complete) ++batch.incomplete;
     streams.err << prefix << ": " << label << ": " << engine::StatusName(outcome.result.status)
@@ -145,11 +143,11 @@ std::string WriteComparison(const std::filesystem::path& out, const BatchOutcome
     for (int k = 0; k < static_cast<int>(batch.jobs.size()); ++k) chosen.push_back(k);
   }
   std::vector<io::ComparisonRow> rows;
-  std::vector<ui::RunHandle> runs;
+  std::vector<ui::PlotRun> runs;
   for (int k : chosen) {
     if (!batch.runs[k]) continue;  // did not run: reported already
     rows.push_back(io::ReadComparisonRow(batch.jobs[k].output_folder));
-    runs.push_back(batch.runs[k]);
+    runs.push_back(*batch.runs[k]);
   }
   std::sort(rows.begin(), rows.end(), [](const auto& a, const auto& b) {
     return a.model != b.model ? a.model < b.model : a.rpm < b.rpm;

@@ -14,7 +14,7 @@
 #include "core/batch/sweep.hpp"
 #include "core/io/case_file.hpp"
 #include "core/io/results_writer.hpp"
-#include "ui/run/run_record.hpp"
+#include "ui/plots/plot_run.hpp"
 
 namespace filmdyn::cli {
 
@@ -50,7 +50,7 @@ int JobsOption(const Args& args);
 /// The runs of a finished batch, in job order.
 struct BatchOutcome {
   std::vector<batch::SweepJob> jobs;
-  std::vector<ui::RunHandle> runs;  ///< null where the run could not start (error reported)
+  std::vector<std::optional<ui::PlotRun>> runs;  ///< empty where the run could not start
   int incomplete = 0;               ///< failed, cancelled, time limit or not converged
 };
 

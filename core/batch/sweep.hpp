@@ -1,5 +1,5 @@
 #pragma once
-/// @file Several runs in parallel (`filmdyn sweep`, SPEC §4): a fixed pool of worker threads takes
+/// @file Several runs in parallel (`filmdyn sweep`): a fixed pool of worker threads takes
 /// jobs in order; each job is a complete `RunJob` plus its output folder. The caller's thread
 /// collects finished jobs one by one (e.g. to render plots, which Qt allows on the main thread
 /// only). One cancel flag stops every job cleanly with its partial results written.

@@ -66,7 +66,8 @@ CrankTrain BuildCrankTrain(const EngineCase& c, double rpm, PressureCurve pressu
   auto add_lubricated = [&](const JointForceFactory& factory, const char* field) {
     if (!factory) {
       throw InputError(field, "lubricated",
-                       "this build has no lubricated joint model yet; use \"ideal\"");
+                       "no film model was given for this joint (BuildCrankTrain needs the "
+                       "factories of engine::FilmJointFactories()); use \"ideal\" otherwise");
     }
     auto element = factory(c, lay);
     multibody::JointForceElement* raw = element.get();

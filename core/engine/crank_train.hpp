@@ -1,7 +1,7 @@
 #pragma once
 /// @file The crank train (crank at imposed constant speed, connecting rod, piston) built from a
 /// case on the general multibody engine. Each of the skirt and the big end is an ideal joint or
-/// a lubricated force element supplied by a factory (issue 5); nothing else changes.
+/// a lubricated force element supplied by a factory; nothing else changes.
 ///
 /// Layout (docs/outputs.md): origin at the main-journal centre, +Y along the cylinder axis toward
 /// the head, +X toward the major thrust side, angles counter-clockwise. Crank angle φ = θ_crank;
@@ -75,8 +75,8 @@ struct CrankTrainSample {
   Eigen::Vector2d main_bearing_force_on_crank = Eigen::Vector2d::Zero();  ///< [N]
   double crank_torque = 0.0;          ///< drive torque on the crank [N·m]
   double constraint_violation = 0.0;  ///< max |Φ| of the position rows [m or rad]
-  SkirtFilmSample skirt;              ///< lubricated skirt (issue 5)
-  BearingFilmSample bearing;          ///< lubricated big end (issue 5)
+  SkirtFilmSample skirt;              ///< lubricated skirt
+  BearingFilmSample bearing;          ///< lubricated big end
 };
 
 CrankTrainSample SampleCrankTrain(CrankTrain& train, const EngineCase& engine_case, double t,

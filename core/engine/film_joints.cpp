@@ -48,14 +48,15 @@ lubrication::SkirtConfig SkirtConfigFromCase(const EngineCase& c) {
   return config;
 }
 
-std::unique_ptr<multibody::JointForceElement> MakeLubricatedSkirt(
-    const EngineCase& c, const CrankTrainLayout& layout) {
+std::unique_ptr<multibody::JointForceElement> MakeLubricatedSkirt(const EngineCase& c,
+                                                                  const CrankTrainLayout& layout) {
   coupling::SkirtMounting mount;
   mount.com_lateral_offset = c.geometry.piston_com_lateral_offset;
   mount.skirt_top_to_com = c.geometry.skirt_top_to_com;
   mount.skirt_top_to_pin = c.geometry.skirt_top_to_pin;
   mount.pin_offset = c.geometry.pin_offset;
-  return std::make_unique<coupling::LubricatedSkirtElement>(SkirtConfigFromCase(c), layout.piston, mount);
+  return std::make_unique<coupling::LubricatedSkirtElement>(SkirtConfigFromCase(c), layout.piston,
+                                                            mount);
 }
 
 lubrication::BearingConfig BearingConfigFromCase(const EngineCase& c) {
@@ -92,13 +93,13 @@ lubrication::BearingConfig BearingConfigFromCase(const EngineCase& c) {
   return config;
 }
 
-std::unique_ptr<multibody::JointForceElement> MakeLubricatedBigEnd(
-    const EngineCase& c, const CrankTrainLayout& layout) {
+std::unique_ptr<multibody::JointForceElement> MakeLubricatedBigEnd(const EngineCase& c,
+                                                                   const CrankTrainLayout& layout) {
   coupling::BigEndMounting mount;
   mount.journal_point = layout.crank_pin;
   mount.bearing_point = layout.rod_big_end;
   return std::make_unique<coupling::LubricatedBigEndElement>(BearingConfigFromCase(c), layout.crank,
-                                                   layout.rod, mount);
+                                                             layout.rod, mount);
 }
 
 LubricatedJointFactories FilmJointFactories() {

@@ -88,7 +88,7 @@ RunConfig MakeRunConfig(const EngineCase& engine_case, Model model, double rpm,
 
 namespace {
 
-// The periodic-steady-state quantities of a model (issue 5 item 2): e0, γ and the skirt MOFT for
+// The periodic-steady-state quantities of a model: e0, γ and the skirt MOFT for
 // a lubricated skirt, ε and the bearing MOFT for a lubricated big end; the ideal model tracks
 // the forces it has. Floors: 1 % of the clearance scales, so a flat trace cannot block.
 struct Tracked {

@@ -1,7 +1,7 @@
 #pragma once
 /// @file One headless run of the crank train: config in, result out, a per-output-step monitor that
 /// may stop the run, an atomic cancel flag. The CLI (`filmdyn run`) and the GUI worker make the
-/// same call; only the monitor differs (STYLE.md "Long work off the GUI thread").
+/// same call; only the monitor differs.
 #include <atomic>
 #include <functional>
 #include <string>
@@ -19,7 +19,7 @@ class BearingSolver;
 
 namespace filmdyn::engine {
 
-/// SPEC §3.2 models.
+/// The joint models: both ideal, one lubricated joint, or both (the paper's three plus Ideal).
 enum class Model { kIdeal, kOnlySkirt, kOnlyLbrbe, kSkirtLbrbe };
 /// "ideal", "only-skirt", "only-lbrbe", "skirt-lbrbe"; throws InputError("--model", ...).
 Model ParseModel(const std::string& text);
@@ -51,7 +51,7 @@ struct RunConfig {
   Model model = Model::kIdeal;
   double rpm = 6000.0;
   PressureCurve pressure;                  ///< cylinder pressure at rpm (io::PressureCurveForSpeed)
-  LubricatedJointFactories factories;      ///< empty until issue 5 provides the film elements
+  LubricatedJointFactories factories;      ///< the film elements (MakeRunConfig sets them)
   multibody::IntegratorConfig integrator;  ///< tolerances (set from the case by MakeRunConfig)
   double wall_time_limit = 0.0;  ///< [s]; 0 = none. Reached: result incomplete, partial rows kept
   /// Threads for the two film joints of each evaluation (side by side; results identical bit

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "core/base/input_error.hpp"
+#include "core/engine/case_schema.hpp"
 #include "core/io/pressure_csv.hpp"
 #include "core/io/resources.hpp"
 
@@ -23,116 +24,28 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-/// Allowed range of a number: lo < x (or ≤), x ≤ hi.
-struct Range {
-  double lo = -kInf, hi = kInf;
-  bool lo_open = false;
-  const char* unit = "";
-  bool hi_open = false;
-};
-Range Positive(const char* unit) { return {0.0, kInf, true, unit}; }
-Range NonNegative(const char* unit) { return {0.0, kInf, false, unit}; }
-Range Between(double lo, double hi, const char* unit) { return {lo, hi, false, unit}; }
-// Elastic constants of one surface (E' = 2/[(1−ν₁²)/E₁ + (1−ν₂²)/E₂] needs E > 0 and ν in
-// (−1, 0.5)).
-Range YoungsModulus() { return {0.0, 1e13, true, "Pa"}; }
-Range PoissonRatio() { return {-1.0, 0.5, true, "-", true}; }
-
-void Check(const std::string& path, double value, const Range& r) {
-  if (r.lo == -kInf && r.hi == kInf) {
-    RequireFinite(path, value, r.unit);
-  } else if (r.hi == kInf && r.lo == 0.0) {
-    r.lo_open ? RequirePositive(path, value, r.unit) : RequireNonNegative(path, value, r.unit);
-  } else {
-    RequireInRange(path, value, r.lo, r.hi, r.lo_open, r.hi_open, r.unit);
-  }
-}
-
-/// The one list of case fields (everything but the pressure curves and the notes).
+// The one list of case fields is the schema (core/engine/case_schema.hpp); V visits each with
+// its kind, in schema order.
 template <class V>
 void VisitCase(V& v, EngineCase& c) {
-  v.Text("name", c.name);
-  v.Text("description", c.description);
-  auto& g = c.geometry;
-  v.Number("geometry.crank_radius", g.crank_radius, Positive("m"));
-  v.Number("geometry.rod_length", g.rod_length, Positive("m"));
-  v.Number("geometry.crank_com_radius", g.crank_com_radius, NonNegative("m"));
-  v.Number("geometry.crank_mass", g.crank_mass, Positive("kg"));
-  v.Number("geometry.crank_inertia", g.crank_inertia, Positive("kg*m^2"));
-  v.Number("geometry.rod_com_from_big_end", g.rod_com_from_big_end, NonNegative("m"));
-  v.Number("geometry.rod_mass", g.rod_mass, Positive("kg"));
-  v.Number("geometry.rod_inertia", g.rod_inertia, Positive("kg*m^2"));
-  v.Number("geometry.piston_mass", g.piston_mass, Positive("kg"));
-  v.Number("geometry.piston_inertia", g.piston_inertia, Positive("kg*m^2"));
-  v.Number("geometry.pin_offset", g.pin_offset, Between(-0.01, 0.01, "m"));
-  v.Number("geometry.piston_com_lateral_offset", g.piston_com_lateral_offset,
-           Between(-0.01, 0.01, "m"));
-  v.Number("geometry.skirt_top_to_pin", g.skirt_top_to_pin, Between(-0.2, 0.2, "m"));
-  v.Number("geometry.skirt_top_to_com", g.skirt_top_to_com, Between(-0.2, 0.2, "m"));
-  v.Number("geometry.liner_radius", g.liner_radius, Positive("m"));
-  v.Number("geometry.compression_ratio", g.compression_ratio, Range{1.0, 40.0, true, "-"});
-  v.Number("geometry.gravity", g.gravity, Between(0.0, 100.0, "m/s^2"));
-  auto& s = c.skirt;
-  v.Model("skirt.model", s.model);
-  v.Number("skirt.piston_radius", s.piston_radius, Positive("m"));
-  v.Number("skirt.length", s.length, Positive("m"));
-  v.Number("skirt.thrust_half_width", s.thrust_half_width,
-           Range{0.0, std::numbers::pi / 2, true, "rad"});
-  v.Number("skirt.anti_thrust_half_width", s.anti_thrust_half_width,
-           Range{0.0, std::numbers::pi / 2, true, "rad"});
-  v.Number("skirt.roughness_skirt", s.roughness_skirt, Positive("m"));
-  v.Number("skirt.roughness_liner", s.roughness_liner, Positive("m"));
-  v.Number("skirt.peklenik", s.peklenik, Between(1.0 / 9.0, 9.0, "-"));
-  v.Number("skirt.modulus_skirt", s.modulus_skirt, YoungsModulus());
-  v.Number("skirt.poisson_skirt", s.poisson_skirt, PoissonRatio());
-  v.Number("skirt.modulus_liner", s.modulus_liner, YoungsModulus());
-  v.Number("skirt.poisson_liner", s.poisson_liner, PoissonRatio());
-  v.Number("skirt.boundary_friction", s.boundary_friction, Between(0.0, 1.0, "-"));
-  // FEM mesh (paper Table II defaults 30, 2, 30 circumferential x 40 axial).
-  v.Integer("skirt.mesh_thrust", s.mesh_thrust, 2, 2000);
-  v.Integer("skirt.mesh_relief", s.mesh_relief, 1, 2000);
-  v.Integer("skirt.mesh_anti", s.mesh_anti, 2, 2000);
-  v.Integer("skirt.mesh_axial", s.mesh_axial, 2, 2000);
-  v.Vector("skirt.profile_y", s.profile_y, NonNegative("m"));
-  v.Vector("skirt.profile_h", s.profile_h, NonNegative("m"));
-  // Ovality (empty = round skirt); order and sizes are checked in CheckConsistency.
-  v.Vector("skirt.ovality_alpha", s.ovality_alpha, Between(0.0, std::numbers::pi, "rad"));
-  v.Vector("skirt.ovality_h", s.ovality_h, NonNegative("m"));
-  auto& b = c.big_end;
-  v.Model("big_end.model", b.model);
-  v.Number("big_end.bearing_radius", b.bearing_radius, Positive("m"));
-  v.Number("big_end.journal_radius", b.journal_radius, Positive("m"));
-  v.Number("big_end.width", b.width, Positive("m"));
-  v.Number("big_end.roughness_journal", b.roughness_journal, Positive("m"));
-  v.Number("big_end.roughness_bearing", b.roughness_bearing, Positive("m"));
-  v.Number("big_end.peklenik", b.peklenik, Between(1.0 / 9.0, 9.0, "-"));
-  v.Number("big_end.modulus_journal", b.modulus_journal, YoungsModulus());
-  v.Number("big_end.poisson_journal", b.poisson_journal, PoissonRatio());
-  v.Number("big_end.modulus_bearing", b.modulus_bearing, YoungsModulus());
-  v.Number("big_end.poisson_bearing", b.poisson_bearing, PoissonRatio());
-  v.Number("big_end.boundary_friction", b.boundary_friction, Between(0.0, 1.0, "-"));
-  // FEM mesh (paper Table II defaults 50 around x 10 across).
-  v.Integer("big_end.mesh_theta", b.mesh_theta, 8, 5000);
-  v.Integer("big_end.mesh_z", b.mesh_z, 2, 2000);
-  v.Number("big_end.oil_feed_pressure", b.oil_feed_pressure, NonNegative("Pa"));
-  v.Number("lubricant.viscosity", c.lubricant.viscosity, Positive("Pa*s"));
-  v.Number("lubricant.greenwood_tripp_k", c.lubricant.greenwood_tripp_k, Positive("-"));
-  v.Number("operating.rpm", c.operating.rpm, Range{0.0, 30000.0, true, "rpm"});
-  v.Number("operating.crankcase_pressure", c.operating.crankcase_pressure, NonNegative("Pa"));
-  v.Number("operating.start_crank_angle", c.operating.start_crank_angle,
-           Between(0.0, 4 * std::numbers::pi, "rad"));
-  auto& o = c.solver;
-  v.Number("solver.baumgarte_alpha", o.baumgarte_alpha, NonNegative("1/s"));
-  v.Number("solver.baumgarte_beta", o.baumgarte_beta, NonNegative("1/s"));
-  v.Number("solver.relative_tolerance", o.relative_tolerance, Range{1e-14, 1e-2, false, "-"});
-  v.Number("solver.position_tolerance", o.position_tolerance, Range{1e-16, 1e-3, false, "m"});
-  v.Number("solver.output_interval", o.output_interval, Range{1e-4, 0.2, false, "rad"});
-  v.Number("solver.steady_state_tolerance", o.steady_state_tolerance, Positive("-"));
-  v.Integer("solver.max_cycles", o.max_cycles, 1, 10000);
-  v.Number("solver.run_in_angle", o.run_in_angle, Between(0.0, 8 * std::numbers::pi, "rad"));
+  for (const engine::CaseField& field : engine::CaseSchema()) {
+    switch (field.kind) {
+      case engine::FieldKind::kText:
+        v.Text(field, field.text(c));
+        break;
+      case engine::FieldKind::kJointModel:
+        v.Model(field, field.model(c));
+        break;
+      case engine::FieldKind::kNumber:
+      case engine::FieldKind::kInteger:
+        v.Scalar(field, c);
+        break;
+      case engine::FieldKind::kNumberList:
+        v.Vector(field, field.list(c));
+        break;
+    }
+  }
 }
-
-const char* ModelName(JointModel m) { return m == JointModel::kIdeal ? "ideal" : "lubricated"; }
 
 const json* Find(const json& root, const std::string& path) {
   const json* node = &root;
@@ -156,9 +69,9 @@ struct Reader {
     seen.insert(path);
     return Find(root, path);
   }
-  void Text(const std::string& path, std::string& value) {
-    if (const json* j = Get(path)) {
-      if (!j->is_string()) throw InputError(path, Dump(*j), "must be a string");
+  void Text(const engine::CaseField& field, std::string& value) {
+    if (const json* j = Get(field.path)) {
+      if (!j->is_string()) throw InputError(field.path, Dump(*j), "must be a string");
       value = j->get<std::string>();
     }
   }
@@ -173,34 +86,27 @@ struct Reader {
     }
     throw InputError(path, Dump(j), "must be a number");
   }
-  void Number(const std::string& path, double& value, const Range& range) {
-    if (const json* j = Get(path)) value = ToNumber(path, *j);
-    Check(path, value, range);
-  }
-  void Integer(const std::string& path, int& value, int lo, int hi) {
-    if (const json* j = Get(path)) {
-      const double x = ToNumber(path, *j);
-      if (!std::isfinite(x) || x != std::floor(x) || x < lo || x > hi) {
-        throw InputError(
-            path, FormatValue(x),
-            "must be an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
-      }
-      value = static_cast<int>(x);
+  void Scalar(const engine::CaseField& field, EngineCase& c) {
+    if (const json* j = Get(field.path)) {
+      const double x = ToNumber(field.path, *j);
+      field.Check(x);
+      field.set(c, x);
+    } else {
+      field.Check(field.get(c));
     }
   }
-  void Model(const std::string& path, JointModel& value) {
-    if (const json* j = Get(path)) {
-      const std::string text = j->is_string() ? j->get<std::string>() : Dump(*j);
-      if (text == "ideal") {
-        value = JointModel::kIdeal;
-      } else if (text == "lubricated") {
-        value = JointModel::kLubricated;
-      } else {
-        throw InputError(path, text, "must be \"ideal\" or \"lubricated\"");
-      }
+  void Model(const engine::CaseField& field, JointModel& value) {
+    if (const json* j = Get(field.path)) {
+      value =
+          engine::ParseJointModel(field.path, j->is_string() ? j->get<std::string>() : Dump(*j));
     }
   }
-  void Vector(const std::string& path, std::vector<double>& value, const Range& range) {
+  void Vector(const engine::CaseField& field, std::vector<double>& value) {
+    Vector(field.path, value,
+           [&field](const std::string& element, double x) { field.Check(x, element); });
+  }
+  template <class Check>
+  void Vector(const std::string& path, std::vector<double>& value, const Check& check) {
     if (const json* j = Get(path)) {
       if (!j->is_array()) throw InputError(path, Dump(*j), "must be an array of numbers");
       value.clear();
@@ -208,9 +114,7 @@ struct Reader {
         value.push_back(ToNumber(path + "." + std::to_string(k), (*j)[k]));
       }
     }
-    for (std::size_t k = 0; k < value.size(); ++k) {
-      Check(path + "." + std::to_string(k), value[k], range);
-    }
+    for (std::size_t k = 0; k < value.size(); ++k) check(path + "." + std::to_string(k), value[k]);
   }
 };
 
@@ -226,12 +130,19 @@ struct Writer {
       start = dot + 1;
     }
   }
-  void Text(const std::string& path, std::string& value) { At(path) = value; }
-  void Number(const std::string& path, double& value, const Range&) { At(path) = value; }
-  void Integer(const std::string& path, int& value, int, int) { At(path) = value; }
-  void Model(const std::string& path, JointModel& value) { At(path) = ModelName(value); }
-  void Vector(const std::string& path, std::vector<double>& value, const Range&) {
-    At(path) = value;
+  void Text(const engine::CaseField& field, std::string& value) { At(field.path) = value; }
+  void Scalar(const engine::CaseField& field, EngineCase& c) {
+    if (field.kind == engine::FieldKind::kInteger) {
+      At(field.path) = static_cast<long>(field.get(c));
+    } else {
+      At(field.path) = field.get(c);
+    }
+  }
+  void Model(const engine::CaseField& field, JointModel& value) {
+    At(field.path) = engine::JointModelName(value);
+  }
+  void Vector(const engine::CaseField& field, std::vector<double>& value) {
+    At(field.path) = value;
   }
 };
 
@@ -243,55 +154,6 @@ void LeafPaths(const json& node, const std::string& prefix, std::vector<std::str
       LeafPaths(*it, path, out);
     } else {
       out->push_back(path);
-    }
-  }
-}
-
-void CheckConsistency(const EngineCase& c) {
-  const auto& g = c.geometry;
-  if (g.rod_length <= g.crank_radius + std::abs(g.pin_offset)) {
-    throw InputError("geometry.rod_length", FormatValue(g.rod_length),
-                     "must exceed geometry.crank_radius + |geometry.pin_offset| = " +
-                         FormatValue(g.crank_radius + std::abs(g.pin_offset)) + " [m]");
-  }
-  if (g.rod_com_from_big_end > g.rod_length) {
-    throw InputError("geometry.rod_com_from_big_end", FormatValue(g.rod_com_from_big_end),
-                     "must lie on the rod: <= geometry.rod_length [m]");
-  }
-  if (c.skirt.piston_radius >= g.liner_radius) {
-    throw InputError(
-        "skirt.piston_radius", FormatValue(c.skirt.piston_radius),
-        "must be smaller than geometry.liner_radius = " + FormatValue(g.liner_radius) + " [m]");
-  }
-  if (c.big_end.journal_radius >= c.big_end.bearing_radius) {
-    throw InputError("big_end.journal_radius", FormatValue(c.big_end.journal_radius),
-                     "must be smaller than big_end.bearing_radius = " +
-                         FormatValue(c.big_end.bearing_radius) + " [m]");
-  }
-  if (c.skirt.thrust_half_width + c.skirt.anti_thrust_half_width >= std::numbers::pi) {
-    throw InputError("skirt.anti_thrust_half_width", FormatValue(c.skirt.anti_thrust_half_width),
-                     "thrust + anti-thrust half widths must be < π [rad]");
-  }
-  if (c.skirt.profile_y.size() != c.skirt.profile_h.size() || c.skirt.profile_y.size() < 2) {
-    throw InputError("skirt.profile_h", std::to_string(c.skirt.profile_h.size()) + " values",
-                     "needs as many values as skirt.profile_y (at least 2)");
-  }
-  for (std::size_t k = 1; k < c.skirt.profile_y.size(); ++k) {
-    if (c.skirt.profile_y[k] <= c.skirt.profile_y[k - 1]) {
-      throw InputError("skirt.profile_y." + std::to_string(k), FormatValue(c.skirt.profile_y[k]),
-                       "must increase strictly [m]");
-    }
-  }
-  const auto& alpha = c.skirt.ovality_alpha;
-  if (alpha.size() != c.skirt.ovality_h.size()) {
-    throw InputError("skirt.ovality_h", std::to_string(c.skirt.ovality_h.size()) + " values",
-                     "needs as many values as skirt.ovality_alpha (" +
-                         std::to_string(alpha.size()) + "; both empty = no ovality)");
-  }
-  for (std::size_t k = 1; k < alpha.size(); ++k) {
-    if (alpha[k] <= alpha[k - 1]) {
-      throw InputError("skirt.ovality_alpha." + std::to_string(k), FormatValue(alpha[k]),
-                       "must increase strictly [rad]");
     }
   }
 }
@@ -316,8 +178,11 @@ engine::PressureCurveSource CurveFromJson(const json& j, const std::string& path
     source.file = j["file"].get<std::string>();
   } else {
     Reader inner{j, {}};
-    inner.Vector("crank_angle_deg", source.crank_angle_deg, Between(0.0, 720.0, "deg"));
-    inner.Vector("pressure", source.pressure, NonNegative("Pa"));
+    inner.Vector("crank_angle_deg", source.crank_angle_deg, [](const std::string& f, double x) {
+      RequireInRange(f, x, 0.0, 720.0, false, false, "deg");
+    });
+    inner.Vector("pressure", source.pressure,
+                 [](const std::string& f, double x) { RequireNonNegative(f, x, "Pa"); });
     if (source.crank_angle_deg.empty()) {
       throw InputError(path, Dump(j), "needs \"file\" or the arrays crank_angle_deg and pressure");
     }
@@ -369,7 +234,7 @@ EngineCase CaseFromJson(const json& root) {
       c.assumed[it.key()] = it->get<std::string>();
     }
   }
-  CheckConsistency(c);
+  engine::CheckCaseConsistency(c);
   return c;
 }
 

@@ -1,9 +1,9 @@
 #include "core/io/field_output.hpp"
 
 #include <cmath>
-#include <cstdio>
 #include <numbers>
 
+#include "core/io/field_series.hpp"
 #include "core/lubrication/bearing_solver.hpp"
 #include "core/lubrication/skirt_solver.hpp"
 
@@ -152,24 +152,24 @@ void FieldRecorder::Write(const std::filesystem::path& folder) const {
   for (const auto& [name, joint] :
        {std::pair{"skirt", &frames_->skirt}, std::pair{"bearing", &frames_->bearing}}) {
     if (joint->frames.empty()) continue;
-    std::filesystem::create_directories(folder);
-    PvdCollection collection;
-    SurfaceField field = joint->geometry;
-    for (std::size_t i = 0; i < joint->frames.size(); ++i) {
-      const FrameValues& frame = joint->frames[i];
-      if (joint == &frames_->bearing) {
-        field.points = BearingPoints(frames_->bearing_theta, frames_->bearing_z,
-                                     frames_->bearing_radius, frame.eccentricity_angle);
-      }
-      for (std::size_t a = 0; a < field.point_data.size(); ++a) {
-        field.point_data[a].second.assign(frame.arrays[a].begin(), frame.arrays[a].end());
-      }
-      char file[64];
-      std::snprintf(file, sizeof file, "%s_%04zu.vtu", name, i);
-      WriteVtu((folder / file).string(), field);
-      collection.Add(frame.crank_angle_deg, file);
+    const bool bearing = joint == &frames_->bearing;
+    FieldSeries series;
+    series.name = name;
+    series.triangles = joint->geometry.triangles;
+    for (const auto& [array_name, values] : joint->geometry.point_data) {
+      series.array_names.push_back(array_name);
     }
-    collection.Write((folder / (std::string(name) + ".pvd")).string());
+    // The bearing turns with the journal's eccentricity direction: one reference position
+    // (eccentricity along the rod axis) and an angle per frame.
+    series.rotating = bearing;
+    series.points = bearing ? BearingPoints(frames_->bearing_theta, frames_->bearing_z,
+                                            frames_->bearing_radius, 0.0)
+                            : joint->geometry.points;
+    for (const FrameValues& frame : joint->frames) {
+      series.frames.push_back(
+          {frame.crank_angle_deg, bearing ? frame.eccentricity_angle : 0.0, frame.arrays});
+    }
+    WriteFieldSeries(folder, series);
   }
 }
 

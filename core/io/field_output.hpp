@@ -1,8 +1,12 @@
 #pragma once
-/// @file The `fields/` folder of a run (SPEC §4): the film fields of both lubricated joints at
-/// every output step of the reported cycle, as VTU files plus one PVD time index per joint
-/// (`skirt.pvd`, `bearing.pvd`; open them in ParaView). Recorded through RunConfig's field
-/// callback; only the newest cycle is kept, which is the cycle the run reports.
+/// @file The `fields/` folder of a run: the film fields of both lubricated joints at every
+/// output step of the reported cycle, one time series per joint (`skirt.h5` + `skirt.xdmf`,
+/// `bearing.h5` + `bearing.xdmf`; core/io/field_series.hpp has the layout): geometry stored once,
+/// nodal arrays `pressure[Pa]`, `contact_pressure[Pa]`, `film_thickness[m]` (and
+/// `fluid_fraction[-]` with mass-conserving cavitation) in single precision, compressed, the time
+/// value of each frame its crank angle [°CA]. ParaView opens the `.xdmf` files with its Xdmf3
+/// reader. Recorded through RunConfig's field callback; only the newest cycle is kept, which is
+/// the cycle the run reports.
 ///
 /// 3D layout (metres): the bore axis is z, the skirt top at z = 0 and the skirt below it
 /// (z = −y); the skirt is written as solved, α ∈ [0, π] from the thrust side (+x) — the film is
@@ -29,9 +33,9 @@ class FieldRecorder {
   /// Number of frames of the newest cycle recorded so far, per joint.
   std::size_t skirt_frames() const;
   std::size_t bearing_frames() const;
-  /// Writes `<folder>/skirt_NNNN.vtu`, `bearing_NNNN.vtu`, `skirt.pvd`, `bearing.pvd` for the
-  /// joints that are lubricated; nothing for an ideal run. Times in the PVD are crank angles
-  /// [°CA] within the cycle. Throws std::runtime_error naming the file on I/O failure.
+  /// Writes `<folder>/skirt.{h5,xdmf}` and `<folder>/bearing.{h5,xdmf}` for the joints that are
+  /// lubricated; nothing for an ideal run. Time values are crank angles [°CA] within the cycle.
+  /// Throws std::runtime_error naming the file on I/O failure.
   void Write(const std::filesystem::path& folder) const;
 
   /// The surface of one solve (exposed for tests and the GUI's field view).

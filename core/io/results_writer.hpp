@@ -1,5 +1,5 @@
 #pragma once
-/// @file The output folder of a run (SPEC §4): results.csv (every SPEC column in SPEC order, then
+/// @file The output folder of a run: results.csv (the documented core columns first, then
 /// extra crank-train columns; a column a model does not have is present and empty) and
 /// summary.json. Columns, frames and signs: docs/outputs.md.
 #include <filesystem>
@@ -18,7 +18,7 @@ struct OutputRow {
       piston_tilt_rate, skirt_normal_force, skirt_friction_force, skirt_moment, skirt_moft,
       skirt_fpl, journal_ecc_x, journal_ecc_y, bearing_eps, bearing_moft, bearing_fpl,
       bigend_force_x, bigend_force_y, gas_force,
-      // Extras (after the SPEC columns):
+      // Extras (after the core columns):
       piston_position, piston_velocity, piston_acceleration, rod_angle, rod_angular_velocity,
       rod_angular_acceleration, pin_force_x, pin_force_y, main_bearing_force_x,
       main_bearing_force_y, crank_torque, cylinder_pressure, constraint_violation;
@@ -47,7 +47,7 @@ std::vector<OutputRow> WriteRunFolder(const std::filesystem::path& directory,
                                       const std::string& case_name, const engine::RunConfig& config,
                                       const engine::RunResult& result);
 
-/// The default output folder `results/<case>-<model>-<rpm>` (SPEC §4).
+/// The default output folder `results/<case>-<model>-<rpm>`.
 std::filesystem::path DefaultOutputFolder(const std::string& case_name, engine::Model model,
                                           double rpm);
 

@@ -85,8 +85,8 @@ T Get(const json& object, const std::string& key, const std::string& where) {
   try {
     return object.at(key).get<T>();
   } catch (const json::exception&) {
-    throw std::runtime_error("\"" + path + "\" has the wrong type (" +
-                             object.at(key).type_name() + ")");
+    throw std::runtime_error("\"" + path + "\" has the wrong type (" + object.at(key).type_name() +
+                             ")");
   }
 }
 

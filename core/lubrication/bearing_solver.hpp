@@ -1,6 +1,6 @@
 #pragma once
 /// @file Lubricated revolute clearance joint (big-end bearing): mesh, film, Reynolds solve and the
-/// integrated outputs. SPEC.md §3.1; paper §2.2 with the errata for eqs. 17/22 (standard
+/// integrated outputs. Paper §2.2 with the errata for eqs. 17/22 (standard
 /// dynamically loaded form, e.g. Hamrock, Schmid & Jacobson, "Fundamentals of Fluid Film
 /// Lubrication", 2nd ed., ch. 20; Booker 1965):
 ///   div(phi h^3/(12 mu) grad p) = (U/2) phi_c dh/dx + (U_rel/2) sigma dphi_s/dx + phi_c dh/dt,
@@ -8,7 +8,7 @@
 ///   h = c (1 + eps cos theta),  dh/dt = c eps_dot cos theta,
 /// theta measured from the maximum film, i.e. from -n where n is the unit vector from the bearing
 /// centre to the journal centre (line of centres, angle phi in the global frame), positive
-/// counter-clockwise. Default boundary condition: p = 0 on theta = 0 (SPEC; Raimondi & Boyd 1958).
+/// counter-clockwise. Default boundary condition: p = 0 on theta = 0 (as the published finite-bearing tables assume; Raimondi & Boyd 1958).
 #include <memory>
 #include <string>
 
@@ -28,7 +28,7 @@ struct BearingMeshSpec {
   bool symmetric_half = false;  ///< mesh z in [0, L/2] with dp/dz = 0 at the mid-plane
 };
 
-/// Oil supply. kLineOfCentres is the default of SPEC §3.1 (p = 0 on theta = 0, the film start
+/// Oil supply. kLineOfCentres is the default (p = 0 on theta = 0, the film start
 /// following the line of centres). kHole / kGroove are fixed in the bearing body.
 struct OilFeed {
   enum class Kind { kLineOfCentres, kHole, kGroove };

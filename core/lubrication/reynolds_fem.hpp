@@ -43,7 +43,7 @@ namespace filmdyn::lubrication {
 
 enum class CavitationModel { kReynolds, kJfo, kNone };
 
-/// Numerical status of one solve (STYLE.md: numerical trouble is a status, never an exception).
+/// Numerical status of one solve (numerical trouble is a status, never an exception: docs/conventions.md).
 enum class SolveStatus { kConverged, kNotConverged, kFactorizationFailed };
 const char* ToString(SolveStatus status);
 const char* ToString(CavitationModel model);

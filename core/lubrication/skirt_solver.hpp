@@ -1,5 +1,5 @@
 #pragma once
-/// @file Lubricated piston skirt - liner joint (translational clearance joint). SPEC §3.1, paper
+/// @file Lubricated piston skirt - liner joint (translational clearance joint). Paper
 /// §2.1 (eqs. 1-6). Domain alpha in [0, pi] (symmetry about the pin-axis plane), y in [0, L] from
 /// the skirt top; thrust panel Omega1 = [0, alpha1], pin-boss relief Omega2 = [alpha1, pi-alpha2]
 /// with p = 0 (nodes on its edges included, paper eq. 6), anti-thrust panel Omega3.

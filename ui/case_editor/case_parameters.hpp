@@ -1,18 +1,20 @@
 #pragma once
-/// @file The scalar inputs of an EngineCase as the editor shows them: one row per value with its
-/// dotted path (the case-file key of core/io/case_file), label, display unit and the factor to SI.
-/// The file mapping itself is core's (case_json.cpp calls it); this table only drives the editor
-/// and the per-cell checks.
+/// @file The scalar inputs of an EngineCase as the editor shows them: one row per number or
+/// integer of core's case schema (core/engine/case_schema.hpp) with its dotted path, label,
+/// display unit, factor to SI, help and check. Nothing is retyped here: a field added to the
+/// schema appears in the editor with core's range.
 #include <QString>
 #include <functional>
 #include <string>
 #include <vector>
 
+#include "core/engine/case_schema.hpp"
 #include "core/engine/engine_case.hpp"
 
 namespace filmdyn::ui {
 
-enum class CaseGroup { kGeometry, kMasses, kSkirt, kBigEnd, kLubricant, kOperating, kSolver };
+/// The editor tabs: the schema's field groups.
+using CaseGroup = engine::FieldGroup;
 
 /// Title of a group as shown on its editor tab.
 QString CaseGroupTitle(CaseGroup group);
@@ -24,6 +26,8 @@ struct CaseParameter {
   QString unit;          ///< display unit, e.g. "mm"
   double to_si = 1.0;    ///< SI value = display value × to_si
   bool integer = false;  ///< shown and edited as a whole number
+  QString help;          ///< one line (core's schema)
+  QString range;         ///< allowed values in SI, e.g. "> 0", "integer in [8, 5000]"
   std::function<double(const engine::EngineCase&)> get;  ///< SI
   std::function<void(engine::EngineCase&, double)> set;  ///< SI
   /// Throws filmdyn::InputError (core's helpers) when the SI value is not allowed.

@@ -3,10 +3,10 @@
 #include <cmath>
 #include <numbers>
 
-#include "core/engine/pressure_curve.hpp"
 #include "core/base/input_error.hpp"
+#include "core/engine/case_schema.hpp"
+#include "core/engine/pressure_curve.hpp"
 #include "core/io/case_file.hpp"
-#include "ui/case_editor/case_parameters.hpp"
 
 namespace filmdyn::ui {
 
@@ -16,86 +16,48 @@ std::string PressureCurveKey(size_t index) {
   return "pressure_curves[" + std::to_string(index) + "]";
 }
 
+// The editor's key of a core field path: tables are one key each ("skirt.profile",
+// "skirt.ovality", "pressure_curves[i]"), every other field its own path.
+std::string EditorKey(std::string key) {
+  if (key.rfind("pressure_curves", 0) == 0) {
+    // "pressure_curves.2.pressure" → "pressure_curves[2]".
+    const size_t digit = key.find_first_of("0123456789");
+    const size_t end = key.find_first_not_of("0123456789", digit);
+    if (digit != std::string::npos)
+      return PressureCurveKey(std::stoul(key.substr(digit, end - digit)));
+  } else if (key.rfind("skirt.profile", 0) == 0) {
+    return "skirt.profile";
+  } else if (key.rfind("skirt.ovality", 0) == 0) {
+    return "skirt.ovality";
+  }
+  return key;
+}
+
 }  // namespace
 
 CaseIssues ValidateCase(const engine::EngineCase& c) {
   CaseIssues issues;
-  for (const CaseParameter& p : CaseParameters()) {
+  // Every field against its own range: core's schema.
+  engine::EngineCase copy = c;
+  for (const engine::CaseField& field : engine::CaseSchema()) {
     try {
-      p.check(p.path, p.get(c));
+      if (field.kind == engine::FieldKind::kNumber || field.kind == engine::FieldKind::kInteger) {
+        field.Check(field.get(c));
+      } else if (field.kind == engine::FieldKind::kNumberList) {
+        const std::vector<double>& values = field.list(copy);
+        for (size_t k = 0; k < values.size(); ++k) {
+          field.Check(values[k], field.path + "." + std::to_string(k));
+        }
+      }
     } catch (const InputError& e) {
-      issues[p.path] = e.what();
+      issues.emplace(EditorKey(field.path), e.what());
     }
   }
-  // Cross-field rules.
-  const double clearance = c.big_end.bearing_radius - c.big_end.journal_radius;
-  if (!issues.count("big_end.journal_radius") && !issues.count("big_end.bearing_radius") &&
-      !(clearance > 0)) {
-    issues["big_end.journal_radius"] =
-        InputError("big_end.journal_radius", FormatValue(c.big_end.journal_radius),
-                   "must be < big_end.bearing_radius = " + FormatValue(c.big_end.bearing_radius) +
-                       " [m] (radial clearance R_b - R_j > 0)")
-            .what();
-  }
-  if (!issues.count("skirt.piston_radius") && !issues.count("geometry.liner_radius") &&
-      !(c.skirt.piston_radius < c.geometry.liner_radius)) {
-    issues["skirt.piston_radius"] =
-        InputError("skirt.piston_radius", FormatValue(c.skirt.piston_radius),
-                   "must be < geometry.liner_radius = " + FormatValue(c.geometry.liner_radius) +
-                       " [m] (skirt clearance > 0)")
-            .what();
-  }
-  if (!issues.count("geometry.rod_length") && !issues.count("geometry.crank_radius") &&
-      !(c.geometry.rod_length > c.geometry.crank_radius)) {
-    issues["geometry.rod_length"] =
-        InputError("geometry.rod_length", FormatValue(c.geometry.rod_length),
-                   "must be > geometry.crank_radius [m]")
-            .what();
-  }
-  if (c.skirt.thrust_half_width + c.skirt.anti_thrust_half_width > std::numbers::pi) {
-    issues["skirt.anti_thrust_half_width"] =
-        InputError("skirt.anti_thrust_half_width", FormatValue(c.skirt.anti_thrust_half_width),
-                   "alpha_1 + alpha_2 must be <= pi [rad]")
-            .what();
-  }
-  // Skirt profile: positions strictly increasing within [0, L_skirt], drops finite.
-  const auto& y = c.skirt.profile_y;
-  const auto& h = c.skirt.profile_h;
+  // The rules that tie fields together: core's one function.
   try {
-    if (y.size() != h.size() || y.size() < 2) {
-      throw InputError("skirt.profile", std::to_string(y.size()) + " rows",
-                       "needs at least 2 rows of (y, h)");
-    }
-    for (size_t i = 0; i < y.size(); ++i) {
-      const std::string row = "skirt.profile[" + std::to_string(i) + "]";
-      RequireInRange(row + ".y", y[i], 0.0, c.skirt.length * (1 + 1e-9), false, false, "m");
-      RequireFinite(row + ".h", h[i], "m");
-      if (i > 0 && !(y[i] > y[i - 1])) {
-        throw InputError(row + ".y", FormatValue(y[i]), "must be > the previous row's y [m]");
-      }
-    }
+    engine::CheckCaseConsistency(c);
   } catch (const InputError& e) {
-    issues["skirt.profile"] = e.what();
-  }
-  // Skirt ovality: none, or angles strictly increasing within [0, π], gaps finite and ≥ 0.
-  const auto& alpha = c.skirt.ovality_alpha;
-  const auto& gap = c.skirt.ovality_h;
-  try {
-    if (alpha.size() != gap.size()) {
-      throw InputError("skirt.ovality", std::to_string(alpha.size()) + " angles",
-                       "needs one gap per angle (" + std::to_string(gap.size()) + " gaps)");
-    }
-    for (size_t i = 0; i < alpha.size(); ++i) {
-      const std::string row = "skirt.ovality[" + std::to_string(i) + "]";
-      RequireInRange(row + ".alpha", alpha[i], 0.0, std::numbers::pi, false, false, "rad");
-      RequireNonNegative(row + ".h", gap[i], "m");
-      if (i > 0 && !(alpha[i] > alpha[i - 1])) {
-        throw InputError(row + ".alpha", FormatValue(alpha[i]),
-                         "must be > the previous row's alpha [rad]");
-      }
-    }
-  } catch (const InputError& e) {
-    issues["skirt.ovality"] = e.what();
+    issues.emplace(EditorKey(e.field()), e.what());
   }
   // Pressure curves: core's own checks (PressureCurve constructor), one speed once.
   for (size_t i = 0; i < c.pressure_curves.size(); ++i) {
@@ -118,24 +80,12 @@ CaseIssues ValidateCase(const engine::EngineCase& c) {
       issues[key] = e.what();
     }
   }
-  // Core's own reader checks everything once more (its ranges win where they are stricter).
+  // Core's own reader checks everything once more (the case file's rules as a whole).
   if (issues.empty()) {
     try {
       io::CaseFromJson(io::CaseToJson(c));
     } catch (const InputError& e) {
-      std::string key = e.field();
-      if (key.rfind("pressure_curves", 0) == 0) {
-        // "pressure_curves.2.pressure" or "pressure_curves[2]..." → the table key.
-        const size_t digit = key.find_first_of("0123456789");
-        const size_t end = key.find_first_not_of("0123456789", digit);
-        if (digit != std::string::npos)
-          key = "pressure_curves[" + key.substr(digit, end - digit) + "]";
-      } else if (key.rfind("skirt.profile", 0) == 0) {
-        key = "skirt.profile";
-      } else if (key.rfind("skirt.ovality", 0) == 0) {
-        key = "skirt.ovality";
-      }
-      issues[key] = e.what();
+      issues[EditorKey(e.field())] = e.what();
     } catch (const std::exception& e) {
       issues["case"] = e.what();
     }

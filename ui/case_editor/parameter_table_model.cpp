@@ -76,9 +76,14 @@ QVariant ParameterTableModel::data(const QModelIndex& index, int role) const {
           return {};
       }
       break;
-    case Qt::ToolTipRole:
+    case Qt::ToolTipRole: {
       if (bad) return QString::fromStdString(issue->second);
-      return QString::fromStdString(p.path);
+      const engine::CaseField* field = engine::FindCaseField(p.path);
+      const QString si_unit = field ? QString::fromStdString(field->unit) : QString();
+      return tr("%1\nAllowed: %2%3\nCase file: %4")
+          .arg(p.help, p.range, si_unit.isEmpty() || si_unit == "-" ? QString() : " " + si_unit,
+               QString::fromStdString(p.path));
+    }
     case Qt::BackgroundRole:
       if (bad) return QBrush(QColor(255, 205, 205));
       break;

@@ -1,9 +1,9 @@
 #pragma once
 /// @file Film fields of a run for the 3D views: per joint and per output step one triangulated
 /// surface (node coordinates [m]) with nodal arrays in SI named "pressure" [Pa],
-/// "contact_pressure" [Pa] and "film_thickness" [m]. The coupled lubricated run (issue 5) fills
-/// this; the ideal model has no fields. Same surface type as core's VTU writer, so the GUI
-/// exports exactly the files the headless run writes.
+/// "contact_pressure" [Pa] and "film_thickness" [m]. The coupled lubricated run fills
+/// this; the ideal model has no fields. The GUI's exports are core's files
+/// (the run's writers), not these frames.
 #include <QString>
 #include <string>
 #include <vector>
@@ -37,7 +37,5 @@ struct FieldArrayInfo {
 };
 const std::vector<FieldArrayInfo>& FieldArrays();
 
-/// Writes <dir>/<joint>_<k>.vtu and <dir>/<joint>.pvd for every joint (core's writer).
-bool ExportFieldFrames(const FieldFrames& frames, const QString& directory, QString* error);
 
 }  // namespace filmdyn::ui

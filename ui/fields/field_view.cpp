@@ -62,7 +62,7 @@ vtkSmartPointer<vtkPolyData> ToPolyData(const io::SurfaceField& field, const Fra
   return poly;
 }
 
-// Qt 6.4 cannot render a QOpenGLWidget on the offscreen platform (stack-notes): no 3D there.
+// Qt 6.4 cannot render a QOpenGLWidget on the offscreen platform (docs/design.md, "VTK inside Qt 6"): no 3D there.
 bool CanRenderGl() { return QGuiApplication::platformName() != QLatin1String("offscreen"); }
 
 }  // namespace

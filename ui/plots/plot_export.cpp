@@ -6,17 +6,18 @@
 #include "ui/charts/chart_export.hpp"
 #include "ui/plots/plot_panel.hpp"
 #include "ui/plots/plot_specs.hpp"
+#include "ui/run/sample_conversion.hpp"
 
 namespace filmdyn::ui {
 
-RunHandle FinishedRun(int id, RunRequest request, std::vector<RunSample> samples) {
-  auto run = std::make_shared<RunRecord>(id, std::move(request));
-  run->Report(std::move(samples));
-  run->finish(RunStatus::kFinished, QString());
-  return run;
+PlotRun PlotRunFromRows(int id, const engine::EngineCase& engine_case, const std::string& model,
+                        double rpm, const std::vector<io::OutputRow>& rows) {
+  return {id, RunLabel(QString::fromStdString(model), rpm),
+          engine_case.big_end.bearing_radius - engine_case.big_end.journal_radius,
+          RunSamplesFromRows(rows)};
 }
 
-QStringList ExportStandardPlots(const std::vector<RunHandle>& runs, const QString& directory,
+QStringList ExportStandardPlots(const std::vector<PlotRun>& runs, const QString& directory,
                                 QString* error) {
   QStringList written;
   if (!QDir().mkpath(directory)) {

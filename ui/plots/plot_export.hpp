@@ -4,20 +4,24 @@
 /// (the `offscreen` platform is enough; no X server).
 #include <QString>
 #include <QStringList>
+#include <string>
 #include <vector>
 
-#include "ui/run/run_record.hpp"
+#include "core/io/results_writer.hpp"
+
+#include "ui/plots/plot_run.hpp"
 
 namespace filmdyn::ui {
 
-/// A finished run as the plots need it.
-RunHandle FinishedRun(int id, RunRequest request, std::vector<RunSample> samples);
+/// The plot data of a run from core's rows (as written to results.csv).
+PlotRun PlotRunFromRows(int id, const engine::EngineCase& engine_case, const std::string& model,
+                        double rpm, const std::vector<io::OutputRow>& rows);
 
 /// Writes `<directory>/<plot id>.png` and `.svg` for every standard plot, with all `runs`
 /// overlaid (one run: a run's own plots; several: a sweep comparison). Creates the directory.
 /// Returns the files written; on failure returns what was written and sets *error (naming the
 /// file).
-QStringList ExportStandardPlots(const std::vector<RunHandle>& runs, const QString& directory,
+QStringList ExportStandardPlots(const std::vector<PlotRun>& runs, const QString& directory,
                                 QString* error = nullptr);
 
 }  // namespace filmdyn::ui

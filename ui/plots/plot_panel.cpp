@@ -136,15 +136,17 @@ QColor PlotPanel::runColour(int run_id) {
   return colours_[run_id];
 }
 
-void PlotPanel::updateRun(const RunHandle& run) {
-  const int id = run->id();
-  const std::vector<RunSample> samples = run->samples();
+PlotRun PlotRunOf(const RunRecord& run) {
+  const engine::BigEndCase& big_end = run.request().engine_case.big_end;
+  return {run.id(), run.label(), big_end.bearing_radius - big_end.journal_radius, run.samples()};
+}
+
+void PlotPanel::updateRun(const PlotRun& run) {
+  const int id = run.id;
+  const std::vector<RunSample>& samples = run.samples;
   if (!visible_.contains(id)) visible_[id] = true;
-  const double c = (run->request().engine_case.big_end.bearing_radius -
-                    run->request().engine_case.big_end.journal_radius) *
-                   1e6;
-  clearance_um_[id] = c;
-  const QString label = run->label();
+  clearance_um_[id] = run.bearing_clearance * 1e6;
+  const QString label = run.label;
   for (ChartEntry& entry : charts_) {
     auto& series = entry.run_series[id];
     if (series.empty()) {

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "ui/plots/plot_specs.hpp"
+#include "ui/plots/plot_run.hpp"
 #include "ui/run/run_record.hpp"
 
 QT_BEGIN_NAMESPACE
@@ -25,7 +26,8 @@ class PlotPanel : public QWidget {
   explicit PlotPanel(QWidget* parent = nullptr);
 
   /// Adds the run if new, then redraws its series from its current samples.
-  void updateRun(const RunHandle& run);
+  void updateRun(const RunHandle& run) { updateRun(PlotRunOf(*run)); }
+  void updateRun(const PlotRun& run);
   void removeRun(int run_id);
   void setRunVisible(int run_id, bool visible);
   bool isRunVisible(int run_id) const;

@@ -6,8 +6,8 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "core/engine/run_job.hpp"
 #include "core/base/input_error.hpp"
+#include "core/engine/run_job.hpp"
 #include "core/io/case_file.hpp"
 #include "core/io/field_output.hpp"
 #include "core/io/results_writer.hpp"
@@ -151,20 +151,27 @@ RunBackend CoreRunBackend() {
     shared_config->field_callback = nullptr;  // refers to this call's collector
     auto shared_result = std::make_shared<engine::RunResult>(result);
     const std::string case_name = c.name;
-    sink.SetWriters(
-        [shared_config, shared_result, recorder, case_name](const std::string& dir) {
-          io::WriteRunFolder(dir, case_name, *shared_config, *shared_result);
-          recorder->Write(std::filesystem::path(dir) / "fields");
-        },
-        [shared_config, shared_result, model, report_start]() {
-          std::vector<io::OutputRow> rows;
-          for (const auto& sample : shared_result->samples) {
-            rows.push_back(io::RowFromSample(sample, model, report_start));
-          }
-          std::ostringstream out;
-          io::WriteResultsCsv(out, rows);
-          return out.str();
-        });
+    RunWriters writers;
+    writers.folder = [shared_config, shared_result, recorder, case_name](const std::string& dir) {
+      io::WriteRunFolder(dir, case_name, *shared_config, *shared_result);
+      recorder->Write(std::filesystem::path(dir) / "fields");
+    };
+    writers.fields = [recorder](const std::string& dir) {
+      if (recorder->skirt_frames() + recorder->bearing_frames() == 0) {
+        throw std::runtime_error("this run has no film fields (ideal joints)");
+      }
+      recorder->Write(dir);
+    };
+    writers.csv = [shared_config, shared_result, model, report_start]() {
+      std::vector<io::OutputRow> rows;
+      for (const auto& sample : shared_result->samples) {
+        rows.push_back(io::RowFromSample(sample, model, report_start));
+      }
+      std::ostringstream out;
+      io::WriteResultsCsv(out, rows);
+      return out.str();
+    };
+    sink.SetWriters(std::move(writers));
     if (auto fields = collector.Result(); fields && !fields->empty()) sink.ReportFields(fields);
     sink.Statistic("cycles", result.cycles);
     sink.Statistic("cycles to steady state", result.cycles_to_steady_state);

@@ -1,5 +1,6 @@
 #pragma once
-/// @file The per-output-step quantities of a run: exactly the results.csv columns of SPEC §4, in
+/// @file The per-output-step quantities a run shows: the leading documented results.csv columns
+/// (docs/outputs.md) of core's column table, in
 /// SI. A model that lacks a quantity leaves it NaN (an empty CSV cell).
 #include <array>
 #include <cstddef>
@@ -31,26 +32,10 @@ enum class Column {
 };
 constexpr int kColumnCount = int(Column::kCount);
 
-/// results.csv header names with units, in Column order.
-constexpr std::array<const char*, kColumnCount> kColumnHeaders = {"crank_angle[deg]",
-                                                                  "time[s]",
-                                                                  "piston_lateral[m]",
-                                                                  "piston_tilt[rad]",
-                                                                  "piston_lateral_velocity[m/s]",
-                                                                  "piston_tilt_rate[rad/s]",
-                                                                  "skirt_normal_force[N]",
-                                                                  "skirt_friction_force[N]",
-                                                                  "skirt_moment[N*m]",
-                                                                  "skirt_moft[m]",
-                                                                  "skirt_fpl[W]",
-                                                                  "journal_ecc_x[m]",
-                                                                  "journal_ecc_y[m]",
-                                                                  "bearing_eps[-]",
-                                                                  "bearing_moft[m]",
-                                                                  "bearing_fpl[W]",
-                                                                  "bigend_force_x[N]",
-                                                                  "bigend_force_y[N]",
-                                                                  "gas_force[N]"};
+/// results.csv header names with units, in Column order: the first kColumnCount columns of
+/// core's one column table (io::ResultColumns), which the enum above indexes.
+std::array<const char*, kColumnCount> ColumnHeadersFromCore();
+inline const std::array<const char*, kColumnCount> kColumnHeaders = ColumnHeadersFromCore();
 
 /// One output step.
 struct RunSample {

@@ -32,6 +32,14 @@ struct RunProgress {
   double remaining = -1;      ///< estimated wall time left [s] (< 0: unknown)
 };
 
+/// How a finished run writes its outputs: core's writers, so the GUI's exports are the files
+/// `filmdyn run` writes. Each throws std::runtime_error (naming the file) when it cannot write.
+struct RunWriters {
+  std::function<void(const std::string& dir)> folder;  ///< results.csv, summary.json, fields/
+  std::function<std::string()> csv;                    ///< results.csv's text
+  std::function<void(const std::string& dir)> fields;  ///< the fields/ files into `dir`
+};
+
 /// Receives results on the worker thread. Thread-safe (RunRecord implements it).
 class RunSink {
  public:
@@ -48,13 +56,8 @@ class RunSink {
   /// A caveat on usable results (e.g. no periodic steady state within max_cycles).
   virtual void Warn(const std::string& message) { (void)message; }
   /// Writers of the run's output in core's formats (the files `filmdyn run` writes):
-  /// `folder(dir)` writes results.csv, summary.json and fields/; `csv()` returns results.csv's
-  /// text. Each returns "" / the text, or throws std::runtime_error.
-  virtual void SetWriters(std::function<void(const std::string& dir)> folder,
-                          std::function<std::string()> csv) {
-    (void)folder;
-    (void)csv;
-  }
+  /// Core's writers of the finished run (the files `filmdyn run` writes).
+  virtual void SetWriters(RunWriters writers) { (void)writers; }
   /// The film fields of the reported cycle (lubricated joints only).
   virtual void ReportFields(std::shared_ptr<const FieldFrames> fields) { (void)fields; }
 };

@@ -31,10 +31,7 @@ class NotifyingSink : public RunSink {
     record_->Statistic(name, value);
   }
   void Warn(const std::string& message) override { record_->Warn(message); }
-  void SetWriters(std::function<void(const std::string&)> folder,
-                  std::function<std::string()> csv) override {
-    record_->SetWriters(std::move(folder), std::move(csv));
-  }
+  void SetWriters(RunWriters writers) override { record_->SetWriters(std::move(writers)); }
   void ReportFields(std::shared_ptr<const FieldFrames> fields) override {
     record_->ReportFields(std::move(fields));
   }
@@ -86,7 +83,7 @@ RunHandle RunController::start(RunRequest request) {
   RunRecord* raw = record.get();
   thread_ = QThread::create([this, backend, raw] {
     NotifyingSink sink(raw, this);
-    // Everything is caught at the thread boundary and reported (STYLE.md "Errors").
+    // Everything is caught at the thread boundary and reported.
     try {
       if (!backend) throw std::runtime_error("no solver backend is configured");
       backend(raw->request(), cancel_, sink);

@@ -1,7 +1,7 @@
 #pragma once
 /// @file Runs a backend on a worker thread (never the GUI thread), one run at a time, with a
 /// cancel flag. The worker only appends under a mutex and posts one notification per batch;
-/// the GUI coalesces notifications with a ~40 ms single-shot timer (STYLE.md, PlotJuggler).
+/// the GUI coalesces notifications with a ~40 ms single-shot timer (as PlotJuggler does).
 #include <QObject>
 #include <QTimer>
 #include <atomic>

@@ -25,12 +25,16 @@ RunRecord::RunRecord(int id, RunRequest request) : id_(id), request_(std::move(r
   clock_.start();
 }
 
-QString RunRecord::label() const {
-  QString model = QString::fromStdString(request_.model);
+QString RunLabel(const QString& model_key, double rpm) {
+  QString model = model_key;
   for (const RunModel& m : RunModels()) {
-    if (m.key == model) model = m.title;
+    if (m.key == model_key) model = m.title;
   }
-  return QObject::tr("%1 %2 rpm").arg(model, FormatDisplayNumber(request_.rpm));
+  return QObject::tr("%1 %2 rpm").arg(model, FormatDisplayNumber(rpm));
+}
+
+QString RunRecord::label() const {
+  return RunLabel(QString::fromStdString(request_.model), request_.rpm);
 }
 
 void RunRecord::BeginCycle(int cycle) {
@@ -76,19 +80,16 @@ void RunRecord::Warn(const std::string& message) {
   warning_ = QString::fromStdString(message);
 }
 
-void RunRecord::SetWriters(std::function<void(const std::string&)> folder,
-                           std::function<std::string()> csv) {
+void RunRecord::SetWriters(RunWriters writers) {
   std::lock_guard lock(mutex_);
-  folder_writer_ = std::move(folder);
-  csv_writer_ = std::move(csv);
+  writers_ = std::move(writers);
 }
 
-bool RunRecord::writeRunFolder(const QString& directory, QString* error) const {
-  std::function<void(const std::string&)> writer;
-  {
-    std::lock_guard lock(mutex_);
-    writer = folder_writer_;
-  }
+namespace {
+
+// Runs a folder writer of core, turning its exceptions into an error message.
+bool CallWriter(const std::function<void(const std::string&)>& writer, const QString& directory,
+                QString* error) {
   if (!writer) {
     if (error) *error = QObject::tr("this run has no output to write yet");
     return false;
@@ -102,11 +103,31 @@ bool RunRecord::writeRunFolder(const QString& directory, QString* error) const {
   return true;
 }
 
+}  // namespace
+
+bool RunRecord::writeRunFolder(const QString& directory, QString* error) const {
+  std::function<void(const std::string&)> writer;
+  {
+    std::lock_guard lock(mutex_);
+    writer = writers_.folder;
+  }
+  return CallWriter(writer, directory, error);
+}
+
+bool RunRecord::writeFields(const QString& directory, QString* error) const {
+  std::function<void(const std::string&)> writer;
+  {
+    std::lock_guard lock(mutex_);
+    writer = writers_.fields;
+  }
+  return CallWriter(writer, directory, error);
+}
+
 QByteArray RunRecord::resultsCsv() const {
   std::function<std::string()> writer;
   {
     std::lock_guard lock(mutex_);
-    writer = csv_writer_;
+    writer = writers_.csv;
   }
   if (!writer) return {};
   const std::string text = writer();

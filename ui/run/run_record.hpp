@@ -16,6 +16,8 @@
 namespace filmdyn::ui {
 
 enum class RunStatus { kRunning, kFinished, kFailed, kCancelled };
+/// "Skirt-LBRBE 6000 rpm": a run's label from its model key ("skirt-lbrbe") and speed.
+QString RunLabel(const QString& model_key, double rpm);
 QString RunStatusText(RunStatus status);
 
 class RunRecord : public RunSink {
@@ -35,11 +37,13 @@ class RunRecord : public RunSink {
   void Report(std::vector<RunSample> reported_cycle) override;
   void ReportFields(std::shared_ptr<const FieldFrames> fields) override;
   void Warn(const std::string& message) override;
-  void SetWriters(std::function<void(const std::string& dir)> folder,
-                  std::function<std::string()> csv) override;
+  void SetWriters(RunWriters writers) override;
   /// Writes the run folder as `filmdyn run` does; false with *error when it cannot (or when
   /// the backend provided no writer).
   bool writeRunFolder(const QString& directory, QString* error) const;
+  /// Writes the fields/ files of the run (as in its run folder) into `directory`; false with
+  /// *error when it cannot or the run has none.
+  bool writeFields(const QString& directory, QString* error) const;
   /// results.csv text in core's format, or empty when the backend provided no writer.
   QByteArray resultsCsv() const;
   QString warning() const;
@@ -72,8 +76,7 @@ class RunRecord : public RunSink {
   bool has_report_ = false;
   std::shared_ptr<const FieldFrames> fields_;
   QString warning_;
-  std::function<void(const std::string&)> folder_writer_;
-  std::function<std::string()> csv_writer_;
+  RunWriters writers_;
   RunProgress progress_;
   std::map<std::string, double> statistics_;
   RunStatus status_ = RunStatus::kRunning;

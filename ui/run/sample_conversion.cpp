@@ -5,30 +5,20 @@
 
 namespace filmdyn::ui {
 
+std::array<const char*, kColumnCount> ColumnHeadersFromCore() {
+  std::array<const char*, kColumnCount> headers{};
+  const auto& columns = io::ResultColumns();
+  for (int c = 0; c < kColumnCount; ++c) headers[std::size_t(c)] = columns[std::size_t(c)].header;
+  return headers;
+}
+
 RunSample RunSampleFromRow(const io::OutputRow& row) {
   RunSample out;
-  auto set = [&out](Column column, const std::optional<double>& value) {
-    out[column] = value.value_or(std::numeric_limits<double>::quiet_NaN());
-  };
-  set(Column::kCrankAngle, row.crank_angle_deg);
-  set(Column::kTime, row.time);
-  set(Column::kPistonLateral, row.piston_lateral);
-  set(Column::kPistonTilt, row.piston_tilt);
-  set(Column::kPistonLateralVelocity, row.piston_lateral_velocity);
-  set(Column::kPistonTiltRate, row.piston_tilt_rate);
-  set(Column::kSkirtNormalForce, row.skirt_normal_force);
-  set(Column::kSkirtFrictionForce, row.skirt_friction_force);
-  set(Column::kSkirtMoment, row.skirt_moment);
-  set(Column::kSkirtMoft, row.skirt_moft);
-  set(Column::kSkirtFpl, row.skirt_fpl);
-  set(Column::kJournalEccX, row.journal_ecc_x);
-  set(Column::kJournalEccY, row.journal_ecc_y);
-  set(Column::kBearingEps, row.bearing_eps);
-  set(Column::kBearingMoft, row.bearing_moft);
-  set(Column::kBearingFpl, row.bearing_fpl);
-  set(Column::kBigEndForceX, row.bigend_force_x);
-  set(Column::kBigEndForceY, row.bigend_force_y);
-  set(Column::kGasForce, row.gas_force);
+  const auto& columns = io::ResultColumns();
+  for (int c = 0; c < kColumnCount; ++c) {
+    out.values[std::size_t(c)] = (row.*(columns[std::size_t(c)].member))
+                                     .value_or(std::numeric_limits<double>::quiet_NaN());
+  }
   return out;
 }
 

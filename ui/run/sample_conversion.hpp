@@ -8,7 +8,7 @@
 
 namespace filmdyn::ui {
 
-/// Copies the SPEC §4 columns; columns the row lacks stay NaN.
+/// Copies the documented results.csv columns; columns the row lacks stay NaN.
 RunSample RunSampleFromRow(const io::OutputRow& row);
 std::vector<RunSample> RunSamplesFromRows(const std::vector<io::OutputRow>& rows);
 

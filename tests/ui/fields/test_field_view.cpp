@@ -148,23 +148,6 @@ class TestFieldView : public QObject {
     QVERIFY(view.jointView(0) == nullptr);
     QVERIFY(!view.slider()->isEnabled());
   }
-
-  void fieldsExportAsVtuAndPvd() {
-    const auto frames = SyntheticFrames(3);
-    QTemporaryDir dir;
-    QString error;
-    QVERIFY2(filmdyn::ui::ExportFieldFrames(*frames, dir.path(), &error), qPrintable(error));
-    QVERIFY(QFile::exists(dir.filePath("skirt.pvd")));
-    QVERIFY(QFile::exists(dir.filePath("big_end.pvd")));
-    vtkNew<vtkXMLUnstructuredGridReader> reader;
-    reader->SetFileName(dir.filePath("big_end_0002.vtu").toUtf8().constData());
-    reader->Update();
-    vtkUnstructuredGrid* grid = reader->GetOutput();
-    QCOMPARE(grid->GetNumberOfPoints(), vtkIdType(60 * 12));
-    QCOMPARE(grid->GetNumberOfCells(), vtkIdType(2 * 59 * 11));
-    QVERIFY(grid->GetPointData()->GetArray("pressure") != nullptr);
-    QVERIFY(grid->GetPointData()->GetArray("film_thickness") != nullptr);
-  }
 };
 
 int main(int argc, char** argv) {

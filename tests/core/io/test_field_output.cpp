@@ -1,11 +1,7 @@
-// The fields/ folder of a run: frames of the newest cycle only, one VTU per output step and a PVD
-// per joint, values identical to the solvers' fields, bearing geometry placed in the rod frame.
-// Driven by real skirt and bearing solves; read back with VTK's own readers.
-#include <vtkDataArray.h>
-#include <vtkPointData.h>
-#include <vtkUnstructuredGrid.h>
-#include <vtkXMLUnstructuredGridReader.h>
-
+// The fields/ folder of a run: frames of the newest cycle only, one HDF5 + XDMF time series per
+// joint with the crank angle of each frame, values identical to the solvers' fields (single
+// precision), bearing geometry placed in the rod frame. Driven by real skirt and bearing solves;
+// read back from the HDF5 files.
 #include <QDir>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -13,6 +9,7 @@
 #include <numbers>
 
 #include "core/io/field_output.hpp"
+#include "core/io/field_series.hpp"
 #include "core/lubrication/bearing_solver.hpp"
 #include "core/lubrication/skirt_solver.hpp"
 
@@ -42,11 +39,13 @@ lubrication::BearingConfig Bearing() {
   return cfg;
 }
 
-vtkSmartPointer<vtkUnstructuredGrid> Read(const QString& path) {
-  vtkNew<vtkXMLUnstructuredGridReader> reader;
-  reader->SetFileName(path.toUtf8().constData());
-  reader->Update();
-  return reader->GetOutput();
+// The values of array `name` of frame `frame`, or nullptr.
+const std::vector<float>* Array(const io::FieldSeries& series, std::size_t frame,
+                                const std::string& name) {
+  for (std::size_t a = 0; a < series.array_names.size(); ++a) {
+    if (series.array_names[a] == name) return &series.frames[frame].arrays[a];
+  }
+  return nullptr;
 }
 
 }  // namespace
@@ -93,41 +92,48 @@ class TestFieldOutput : public QObject {
     QTemporaryDir dir;
     recorder.Write(QDir(dir.path()).filePath("fields").toStdString());
     const QDir fields(dir.filePath("fields"));
-    QCOMPARE(fields.entryList({"skirt_*.vtu"}).size(), 4);
-    QCOMPARE(fields.entryList({"bearing_*.vtu"}).size(), 4);
-    QVERIFY(fields.exists("skirt.pvd"));
-    QVERIFY(fields.exists("bearing.pvd"));
+    for (const char* file : {"skirt.h5", "skirt.xdmf", "bearing.h5", "bearing.xdmf"}) {
+      QVERIFY2(fields.exists(file), file);
+    }
+    const io::FieldSeries skirt_series =
+        io::ReadFieldSeries(fields.filePath("skirt.xdmf").toStdString());
+    const io::FieldSeries bearing_series =
+        io::ReadFieldSeries(fields.filePath("bearing.h5").toStdString());
+    QCOMPARE(skirt_series.frames.size(), std::size_t(4));
+    QCOMPARE(bearing_series.frames.size(), std::size_t(4));
+    // The time value of each frame is its crank angle.
+    for (std::size_t i = 0; i < 4; ++i) {
+      QCOMPARE(skirt_series.frames[i].crank_angle_deg, 180.0 * double(i));
+      QCOMPARE(bearing_series.frames[i].crank_angle_deg, 180.0 * double(i));
+    }
 
     // The last skirt frame holds the last solve's values (float precision).
-    auto grid = Read(fields.filePath("skirt_0003.vtu"));
-    QCOMPARE(grid->GetNumberOfPoints(), vtkIdType(skirt.mesh().NodeCount()));
-    vtkDataArray* p = grid->GetPointData()->GetArray("pressure[Pa]");
-    vtkDataArray* h = grid->GetPointData()->GetArray("film_thickness[m]");
-    QVERIFY(p && h && grid->GetPointData()->GetArray("contact_pressure[Pa]"));
+    QCOMPARE(skirt_series.points.size(), std::size_t(skirt.mesh().NodeCount()));
+    QCOMPARE(skirt_series.triangles.size(), skirt.mesh().triangles.size());
+    const std::vector<float>* p = Array(skirt_series, 3, "pressure[Pa]");
+    const std::vector<float>* h = Array(skirt_series, 3, "film_thickness[m]");
+    QVERIFY(p && h && Array(skirt_series, 3, "contact_pressure[Pa]"));
     double p_max = 0;
     for (int k = 0; k < skirt.mesh().NodeCount(); ++k) {
-      QVERIFY(std::abs(p->GetTuple1(k) - skirt.fields().pressure[k]) <=
+      QVERIFY(std::abs((*p)[k] - skirt.fields().pressure[k]) <=
               1e-6 * std::max(1.0, std::abs(skirt.fields().pressure[k])));
-      QVERIFY(std::abs(h->GetTuple1(k) - skirt.film_thickness()[k]) <= 1e-6 * 1e-4);
-      p_max = std::max(p_max, p->GetTuple1(k));
+      QVERIFY(std::abs((*h)[k] - skirt.film_thickness()[k]) <= 1e-6 * 1e-4);
+      p_max = std::max(p_max, double((*p)[k]));
       // Skirt nodes lie on the piston radius, below the skirt top.
-      double x[3];
-      grid->GetPoint(k, x);
+      const auto& x = skirt_series.points[k];
       QVERIFY(std::abs(std::hypot(x[0], x[1]) - 0.0365) < 1e-12);
       QVERIFY(x[2] <= 1e-15);
     }
     QVERIFY(p_max > 0.0);  // a real film, not zeros
 
     // Bearing: the maximum film (θ = 0) sits opposite the eccentricity, at ψ = φ + π.
-    grid = Read(fields.filePath("bearing_0000.vtu"));
-    h = grid->GetPointData()->GetArray("film_thickness[m]");
-    vtkIdType thickest = 0;
-    for (vtkIdType k = 0; k < grid->GetNumberOfPoints(); ++k) {
-      if (h->GetTuple1(k) > h->GetTuple1(thickest)) thickest = k;
+    h = Array(bearing_series, 0, "film_thickness[m]");
+    const auto points = io::FramePoints(bearing_series, 0);
+    std::size_t thickest = 0;
+    for (std::size_t k = 0; k < points.size(); ++k) {
+      if ((*h)[k] > (*h)[thickest]) thickest = k;
     }
-    double x[3];
-    grid->GetPoint(thickest, x);
-    const double psi = std::atan2(x[1], x[0]);
+    const double psi = std::atan2(points[thickest][1], points[thickest][0]);
     QVERIFY2(std::abs(std::remainder(psi - (phi + std::numbers::pi), 2 * std::numbers::pi)) <
                  2 * std::numbers::pi / 24 + 1e-9,
              "maximum film not opposite the eccentricity");
@@ -141,5 +147,5 @@ class TestFieldOutput : public QObject {
   }
 };
 
-QTEST_MAIN(TestFieldOutput)
+QTEST_GUILESS_MAIN(TestFieldOutput)
 #include "test_field_output.moc"

@@ -1,0 +1,482 @@
+#include "core/engine/case_schema.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <type_traits>
+
+#include "core/base/input_error.hpp"
+
+namespace filmdyn::engine {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kPi = std::numbers::pi;
+constexpr double kMm = 1e-3, kUm = 1e-6, kDeg = kPi / 180.0, kMPa = 1e6, kGPa = 1e9;
+
+FieldRange Positive() { return {0.0, kInf, true, false}; }
+FieldRange NonNegative() { return {0.0, kInf, false, false}; }
+FieldRange Between(double lo, double hi) { return {lo, hi, false, false}; }
+FieldRange Open(double lo, double hi, bool lo_open, bool hi_open) {
+  return {lo, hi, lo_open, hi_open};
+}
+// Elastic constants of one surface: E' = 2/[(1−ν₁²)/E₁ + (1−ν₂²)/E₂] needs E > 0, ν in (−1, 0.5).
+FieldRange YoungsModulus() { return {0.0, 1e13, true, false}; }
+FieldRange PoissonRatio() { return {-1.0, 0.5, true, true}; }
+
+// What a row of the table says besides its accessor.
+struct Info {
+  FieldGroup group;
+  const char* label;
+  const char* unit;
+  const char* display_unit;
+  double display_scale;
+  FieldRange range;
+  const char* help;
+};
+
+CaseField Base(std::string path, FieldKind kind, const Info& i) {
+  CaseField f;
+  f.path = std::move(path);
+  f.kind = kind;
+  f.group = i.group;
+  f.label = i.label;
+  f.unit = i.unit;
+  f.display_unit = i.display_unit;
+  f.display_scale = i.display_scale;
+  f.range = i.range;
+  f.help = i.help;
+  return f;
+}
+
+// A scalar member (double or int) of a section of the case.
+template <typename Section, typename Value>
+CaseField Scalar(std::string path, Section EngineCase::*section, Value Section::*member,
+                 const Info& info) {
+  CaseField f = Base(std::move(path),
+                     std::is_integral_v<Value> ? FieldKind::kInteger : FieldKind::kNumber, info);
+  f.get = [section, member](const EngineCase& c) { return double(c.*section.*member); };
+  f.set = [section, member](EngineCase& c, double v) {
+    if constexpr (std::is_integral_v<Value>) {
+      c.*section.*member = std::isfinite(v) ? Value(std::lround(v)) : Value(-1);
+    } else {
+      c.*section.*member = v;
+    }
+  };
+  return f;
+}
+
+template <typename Section>
+CaseField List(std::string path, Section EngineCase::*section, std::vector<double> Section::*member,
+               const Info& info) {
+  CaseField f = Base(std::move(path), FieldKind::kNumberList, info);
+  f.list = [section, member](EngineCase& c) -> std::vector<double>& { return c.*section.*member; };
+  return f;
+}
+
+template <typename Section>
+CaseField Model(std::string path, Section EngineCase::*section, JointModel Section::*member,
+                const Info& info) {
+  CaseField f = Base(std::move(path), FieldKind::kJointModel, info);
+  f.model = [section, member](EngineCase& c) -> JointModel& { return c.*section.*member; };
+  return f;
+}
+
+CaseField Text(std::string path, std::string EngineCase::*member, const Info& info) {
+  CaseField f = Base(std::move(path), FieldKind::kText, info);
+  f.text = [member](EngineCase& c) -> std::string& { return c.*member; };
+  return f;
+}
+
+std::vector<CaseField> MakeSchema() {
+  using G = FieldGroup;
+  const auto geo = &EngineCase::geometry;
+  const auto sk = &EngineCase::skirt;
+  const auto be = &EngineCase::big_end;
+  const auto lub = &EngineCase::lubricant;
+  const auto op = &EngineCase::operating;
+  const auto sol = &EngineCase::solver;
+  using CG = CrankTrainGeometry;
+  using S = SkirtCase;
+  using B = BigEndCase;
+  std::vector<CaseField> f;
+  f.push_back(Text("name", &EngineCase::name,
+                   {G::kCase, "Case name", "", "", 1.0, {}, "names the run folders"}));
+  f.push_back(Text("description", &EngineCase::description,
+                   {G::kCase, "Description", "", "", 1.0, {}, "free text"}));
+  // Geometry and masses (Table I of Zhao & Shen).
+  f.push_back(Scalar("geometry.crank_radius", geo, &CG::crank_radius,
+                     {G::kGeometry, "Crank radius L₁", "m", "mm", kMm, Positive(),
+                      "main journal to crank pin; Table I: 39.93 mm"}));
+  f.push_back(Scalar("geometry.rod_length", geo, &CG::rod_length,
+                     {G::kGeometry, "Connecting-rod length L₂", "m", "mm", kMm, Positive(),
+                      "big-end to small-end centre, > crank_radius + |pin_offset|; Table I: "
+                      "129.5 mm"}));
+  f.push_back(Scalar("geometry.crank_com_radius", geo, &CG::crank_com_radius,
+                     {G::kGeometry, "Crank CoM radius L_r", "m", "mm", kMm, NonNegative(),
+                      "main journal to the crank's centre of mass; Table I: 20 mm"}));
+  f.push_back(Scalar("geometry.crank_mass", geo, &CG::crank_mass,
+                     {G::kMasses, "Crank mass m₁", "kg", "kg", 1.0, Positive(),
+                      "the crank speed is imposed: changes only the main-bearing force and "
+                      "drive torque"}));
+  f.push_back(Scalar("geometry.crank_inertia", geo, &CG::crank_inertia,
+                     {G::kMasses, "Crank inertia J₁ (CoM)", "kg*m^2", "kg·m²", 1.0, Positive(),
+                      "about the crank's centre of mass"}));
+  f.push_back(Scalar("geometry.rod_com_from_big_end", geo, &CG::rod_com_from_big_end,
+                     {G::kGeometry, "Rod CoM from big end L_c", "m", "mm", kMm, NonNegative(),
+                      "on the rod, ≤ rod_length; Table I: 28.49 mm, read as from the big-end "
+                      "centre"}));
+  f.push_back(
+      Scalar("geometry.rod_mass", geo, &CG::rod_mass,
+             {G::kMasses, "Rod mass m₂", "kg", "kg", 1.0, Positive(), "Table I: 0.345 kg"}));
+  f.push_back(Scalar("geometry.rod_inertia", geo, &CG::rod_inertia,
+                     {G::kMasses, "Rod inertia J₂ (CoM)", "kg*m^2", "kg·m²", 1.0, Positive(),
+                      "about the rod's centre of mass; Table I: 9.67e-4 kg·m²"}));
+  f.push_back(
+      Scalar("geometry.piston_mass", geo, &CG::piston_mass,
+             {G::kMasses, "Piston mass m₃", "kg", "kg", 1.0, Positive(), "Table I: 0.264 kg"}));
+  f.push_back(Scalar("geometry.piston_inertia", geo, &CG::piston_inertia,
+                     {G::kMasses, "Piston inertia J₃ (CoM)", "kg*m^2", "kg·m²", 1.0, Positive(),
+                      "about the piston's centre of mass; Table I: 1.29e-4 kg·m²"}));
+  f.push_back(
+      Scalar("geometry.pin_offset", geo, &CG::pin_offset,
+             {G::kGeometry, "Pin offset C_p (+ thrust)", "m", "mm", kMm, Between(-0.01, 0.01),
+              "pin axis from the bore axis, + toward the major thrust side; Table I: "
+              "0.7 mm"}));
+  f.push_back(Scalar(
+      "geometry.piston_com_lateral_offset", geo, &CG::piston_com_lateral_offset,
+      {G::kGeometry, "Piston CoM offset c_g (+ thrust)", "m", "mm", kMm, Between(-0.01, 0.01),
+       "piston centre of mass from the bore axis, + toward thrust; Table I: "
+       "0.13 mm"}));
+  f.push_back(Scalar("geometry.skirt_top_to_pin", geo, &CG::skirt_top_to_pin,
+                     {G::kGeometry, "Skirt top to pin a_p", "m", "mm", kMm, Between(-0.2, 0.2),
+                      "+ toward the crank; Table I: 11.8 mm"}));
+  f.push_back(Scalar("geometry.skirt_top_to_com", geo, &CG::skirt_top_to_com,
+                     {G::kGeometry, "Skirt top to CoM b_p", "m", "mm", kMm, Between(-0.2, 0.2),
+                      "+ toward the crank; Table I: −1.737 mm (CoM above the skirt top)"}));
+  f.push_back(Scalar("geometry.liner_radius", geo, &CG::liner_radius,
+                     {G::kGeometry, "Liner (bore) radius R_l", "m", "mm", kMm, Positive(),
+                      "> piston_radius; the gas force acts on π R_l²; Table I: 36.50 mm"}));
+  f.push_back(
+      Scalar("geometry.compression_ratio", geo, &CG::compression_ratio,
+             {G::kOperating, "Compression ratio (synthetic pressure model)", "-", "–", 1.0,
+              Open(1.0, 40.0, true, false), "used only by the synthetic cylinder-pressure model"}));
+  f.push_back(Scalar("geometry.gravity", geo, &CG::gravity,
+                     {G::kGeometry, "Gravity g", "m/s^2", "m/s²", 1.0, Between(0.0, 100.0),
+                      "along −Y (cylinder axis vertical, head up)"}));
+  // Skirt–liner joint.
+  f.push_back(Model("skirt.model", sk, &S::model,
+                    {G::kSkirt,
+                     "Skirt joint model",
+                     "",
+                     "",
+                     1.0,
+                     {},
+                     "\"ideal\" (prismatic joint) or \"lubricated\" (mixed-lubrication film)"}));
+  f.push_back(Scalar("skirt.piston_radius", sk, &S::piston_radius,
+                     {G::kSkirt, "Piston radius R", "m", "mm", kMm, Positive(),
+                      "< liner_radius (radial clearance R_l − R); Table I: 36.475 mm"}));
+  f.push_back(
+      Scalar("skirt.length", sk, &S::length,
+             {G::kSkirt, "Skirt length L_skirt", "m", "mm", kMm, Positive(), "Table I: 28 mm"}));
+  f.push_back(Scalar(
+      "skirt.thrust_half_width", sk, &S::thrust_half_width,
+      {G::kSkirt, "Thrust panel half-width α₁", "rad", "°", kDeg, Open(0.0, kPi / 2, true, false),
+       "half-width of the thrust panel; α₁ + α₂ < π; Table I: 46°"}));
+  f.push_back(Scalar("skirt.anti_thrust_half_width", sk, &S::anti_thrust_half_width,
+                     {G::kSkirt, "Anti-thrust panel half-width α₂", "rad", "°", kDeg,
+                      Open(0.0, kPi / 2, true, false),
+                      "half-width of the anti-thrust panel; the relief lies between α₁ and "
+                      "π − α₂; Table I: 46°"}));
+  f.push_back(Scalar("skirt.roughness_skirt", sk, &S::roughness_skirt,
+                     {G::kSkirt, "Skirt roughness σ_skirt", "m", "µm", kUm, Positive(),
+                      "RMS roughness; Table I: 0.615 µm"}));
+  f.push_back(Scalar("skirt.roughness_liner", sk, &S::roughness_liner,
+                     {G::kSkirt, "Liner roughness σ_liner", "m", "µm", kUm, Positive(),
+                      "RMS roughness; Table I: 0.815 µm"}));
+  f.push_back(Scalar("skirt.peklenik", sk, &S::peklenik,
+                     {G::kSkirt, "Peklenik number γ", "-", "–", 1.0, Between(1.0 / 9.0, 9.0),
+                      "surface pattern of the composite roughness (1 = isotropic)"}));
+  f.push_back(Scalar("skirt.modulus_skirt", sk, &S::modulus_skirt,
+                     {G::kSkirt, "Skirt Young's modulus E_skirt", "Pa", "GPa", kGPa,
+                      YoungsModulus(), "of the piston skirt (Al-Si alloy: 75 GPa)"}));
+  f.push_back(Scalar("skirt.poisson_skirt", sk, &S::poisson_skirt,
+                     {G::kSkirt, "Skirt Poisson ratio ν_skirt", "-", "–", 1.0, PoissonRatio(),
+                      "of the piston skirt"}));
+  f.push_back(
+      Scalar("skirt.modulus_liner", sk, &S::modulus_liner,
+             {G::kSkirt, "Liner Young's modulus E_liner", "Pa", "GPa", kGPa, YoungsModulus(),
+              "of the liner (grey cast iron: 110 GPa); with the skirt's forms E'"}));
+  f.push_back(Scalar(
+      "skirt.poisson_liner", sk, &S::poisson_liner,
+      {G::kSkirt, "Liner Poisson ratio ν_liner", "-", "–", 1.0, PoissonRatio(), "of the liner"}));
+  f.push_back(Scalar("skirt.boundary_friction", sk, &S::boundary_friction,
+                     {G::kSkirt, "Boundary friction μ_f", "-", "–", 1.0, Between(0.0, 1.0),
+                      "friction coefficient of asperity contact; Table I: 0.13"}));
+  f.push_back(Scalar("skirt.mesh_thrust", sk, &S::mesh_thrust,
+                     {G::kSolver, "Skirt mesh: elements over Ω₁ (thrust)", "-", "–", 1.0,
+                      Between(2, 2000), "circumferential elements of the thrust panel"}));
+  f.push_back(Scalar("skirt.mesh_relief", sk, &S::mesh_relief,
+                     {G::kSolver, "Skirt mesh: elements over Ω₂ (relief)", "-", "–", 1.0,
+                      Between(1, 2000), "circumferential elements of the pin-boss relief"}));
+  f.push_back(Scalar("skirt.mesh_anti", sk, &S::mesh_anti,
+                     {G::kSolver, "Skirt mesh: elements over Ω₃ (anti-thrust)", "-", "–", 1.0,
+                      Between(2, 2000), "circumferential elements of the anti-thrust panel"}));
+  f.push_back(Scalar("skirt.mesh_axial", sk, &S::mesh_axial,
+                     {G::kSolver, "Skirt mesh: elements axially", "-", "–", 1.0, Between(2, 2000),
+                      "elements along the skirt (Table II: 30, 2, 30 × 40)"}));
+  f.push_back(List("skirt.profile_y", sk, &S::profile_y,
+                   {G::kSkirt, "Skirt profile: axial position y", "m", "mm", kMm, NonNegative(),
+                    "from the skirt top, strictly increasing, within the skirt; same length as "
+                    "profile_h (≥ 2)"}));
+  f.push_back(List("skirt.profile_h", sk, &S::profile_h,
+                   {G::kSkirt, "Skirt profile: radial drop h", "m", "µm", kUm, NonNegative(),
+                    "barrel profile: extra radial gap at y, linear between rows"}));
+  f.push_back(List("skirt.ovality_alpha", sk, &S::ovality_alpha,
+                   {G::kSkirt, "Skirt ovality: angle α", "rad", "°", kDeg, Between(0.0, kPi),
+                    "from the thrust axis, strictly increasing; empty with ovality_h = round"}));
+  f.push_back(List("skirt.ovality_h", sk, &S::ovality_h,
+                   {G::kSkirt, "Skirt ovality: extra gap h", "m", "µm", kUm, NonNegative(),
+                    "extra radial gap at α, linear between rows, constant beyond the ends"}));
+  // Big-end bearing.
+  f.push_back(Model("big_end.model", be, &B::model,
+                    {G::kBigEnd,
+                     "Big-end joint model",
+                     "",
+                     "",
+                     1.0,
+                     {},
+                     "\"ideal\" (revolute joint) or \"lubricated\" (mixed-lubrication film)"}));
+  f.push_back(Scalar("big_end.bearing_radius", be, &B::bearing_radius,
+                     {G::kBigEnd, "Bearing radius R_b", "m", "mm", kMm, Positive(),
+                      "bore of the rod's big end; Table I: 15.00 mm"}));
+  f.push_back(Scalar("big_end.journal_radius", be, &B::journal_radius,
+                     {G::kBigEnd, "Journal radius R_j", "m", "mm", kMm, Positive(),
+                      "< bearing_radius; R_b − R_j = 50 µm radial (Table I's c_b = 0.1 mm is "
+                      "diametral)"}));
+  f.push_back(
+      Scalar("big_end.width", be, &B::width,
+             {G::kBigEnd, "Bearing width b", "m", "mm", kMm, Positive(), "Table I: 22 mm"}));
+  f.push_back(Scalar("big_end.roughness_journal", be, &B::roughness_journal,
+                     {G::kBigEnd, "Journal roughness σ_j", "m", "µm", kUm, Positive(),
+                      "RMS roughness; Table I: 0.308 µm"}));
+  f.push_back(Scalar("big_end.roughness_bearing", be, &B::roughness_bearing,
+                     {G::kBigEnd, "Bearing roughness σ_b", "m", "µm", kUm, Positive(),
+                      "RMS roughness; Table I: 0.408 µm"}));
+  f.push_back(Scalar("big_end.peklenik", be, &B::peklenik,
+                     {G::kBigEnd, "Peklenik number γ", "-", "–", 1.0, Between(1.0 / 9.0, 9.0),
+                      "surface pattern of the composite roughness (1 = isotropic)"}));
+  f.push_back(Scalar("big_end.modulus_journal", be, &B::modulus_journal,
+                     {G::kBigEnd, "Journal Young's modulus E_j", "Pa", "GPa", kGPa, YoungsModulus(),
+                      "of the crank-pin journal (steel: 210 GPa)"}));
+  f.push_back(Scalar(
+      "big_end.poisson_journal", be, &B::poisson_journal,
+      {G::kBigEnd, "Journal Poisson ratio ν_j", "-", "–", 1.0, PoissonRatio(), "of the journal"}));
+  f.push_back(Scalar("big_end.modulus_bearing", be, &B::modulus_bearing,
+                     {G::kBigEnd, "Bearing Young's modulus E_b", "Pa", "GPa", kGPa, YoungsModulus(),
+                      "of the bearing lining (Al-Sn: 70 GPa); with the journal's forms E'"}));
+  f.push_back(Scalar("big_end.poisson_bearing", be, &B::poisson_bearing,
+                     {G::kBigEnd, "Bearing Poisson ratio ν_b", "-", "–", 1.0, PoissonRatio(),
+                      "of the bearing lining"}));
+  f.push_back(Scalar("big_end.boundary_friction", be, &B::boundary_friction,
+                     {G::kBigEnd, "Boundary friction μ_f", "-", "–", 1.0, Between(0.0, 1.0),
+                      "friction coefficient of asperity contact; Table I: 0.13"}));
+  f.push_back(Scalar("big_end.mesh_theta", be, &B::mesh_theta,
+                     {G::kSolver, "Big-end mesh: elements around 360°", "-", "–", 1.0,
+                      Between(8, 5000), "circumferential elements (Table II: 50)"}));
+  f.push_back(Scalar("big_end.mesh_z", be, &B::mesh_z,
+                     {G::kSolver, "Big-end mesh: elements across the width", "-", "–", 1.0,
+                      Between(2, 2000), "axial elements (Table II: 10)"}));
+  f.push_back(
+      Scalar("big_end.oil_feed_pressure", be, &B::oil_feed_pressure,
+             {G::kBigEnd, "Oil-feed pressure (gauge, 0 = none)", "Pa", "MPa", kMPa, NonNegative(),
+              "0: no feed hole, the film starts at the line of centres (eq. 19)"}));
+  f.push_back(Scalar("lubricant.viscosity", lub, &LubricantCase::viscosity,
+                     {G::kLubricant, "Dynamic viscosity μ", "Pa*s", "mPa·s", 1e-3, Positive(),
+                      "constant over the film; Table I: 0.02 Pa·s"}));
+  f.push_back(Scalar("lubricant.greenwood_tripp_k", lub, &LubricantCase::greenwood_tripp_k,
+                     {G::kLubricant, "Greenwood–Tripp constant K", "-", "–", 1.0, Positive(),
+                      "asperity contact pressure K·E'·F_5/2 (eq. 29): 1.198e-4"}));
+  f.push_back(Scalar("operating.rpm", op, &OperatingCase::rpm,
+                     {G::kOperating, "Crank speed", "rpm", "rpm", 1.0,
+                      Open(0.0, 30000.0, true, false), "imposed crank speed"}));
+  f.push_back(Scalar("operating.crankcase_pressure", op, &OperatingCase::crankcase_pressure,
+                     {G::kOperating, "Crankcase pressure (absolute)", "Pa", "MPa", kMPa,
+                      NonNegative(), "acts under the crown: gas force (p − p_cc) π R_l²"}));
+  f.push_back(Scalar("operating.start_crank_angle", op, &OperatingCase::start_crank_angle,
+                     {G::kOperating, "Start crank angle", "rad", "°CA", kDeg, Between(0.0, 4 * kPi),
+                      "crank angle of the assembled start"}));
+  f.push_back(Scalar("solver.baumgarte_alpha", sol, &SolverCase::baumgarte_alpha,
+                     {G::kSolver, "Baumgarte 𝒢 (eq. 39)", "1/s", "1/s", 1.0, NonNegative(),
+                      "constraint stabilisation; Table II: 1e4"}));
+  f.push_back(Scalar("solver.baumgarte_beta", sol, &SolverCase::baumgarte_beta,
+                     {G::kSolver, "Baumgarte ζ (eq. 39)", "1/s", "1/s", 1.0, NonNegative(),
+                      "constraint stabilisation; Table II: 1e4"}));
+  f.push_back(Scalar("solver.relative_tolerance", sol, &SolverCase::relative_tolerance,
+                     {G::kSolver, "Relative tolerance", "-", "–", 1.0, Between(1e-14, 1e-2),
+                      "local error of the implicit integrator, relative"}));
+  f.push_back(
+      Scalar("solver.position_tolerance", sol, &SolverCase::position_tolerance,
+             {G::kSolver, "Absolute position tolerance", "m", "µm", kUm, Between(1e-16, 1e-3),
+              "absolute local error of positions (angles ×10 rad/m, velocities scaled: "
+              "docs/performance.md)"}));
+  f.push_back(Scalar("solver.output_interval", sol, &SolverCase::output_interval,
+                     {G::kSolver, "Output interval", "rad", "°CA", kDeg, Between(1e-4, 0.2),
+                      "crank angle between output steps (1 °CA)"}));
+  f.push_back(Scalar("solver.steady_state_tolerance", sol, &SolverCase::steady_state_tolerance,
+                     {G::kSolver, "Steady-state tolerance", "-", "–", 1.0, Positive(),
+                      "cycle-to-cycle change of each monitored quantity, relative to its range"}));
+  f.push_back(Scalar("solver.max_cycles", sol, &SolverCase::max_cycles,
+                     {G::kSolver, "Maximum cycles", "-", "–", 1.0, Between(1, 10000),
+                      "cycles before a run stops as not converged"}));
+  f.push_back(Scalar(
+      "solver.run_in_angle", sol, &SolverCase::run_in_angle,
+      {G::kSolver, "Run-in before the first cycle", "rad", "°CA", kDeg, Between(0.0, 8 * kPi),
+       "integrated at 10× looser tolerances before the first monitored cycle"}));
+  return f;
+}
+
+std::string Bound(double value) { return FormatValue(value); }
+
+}  // namespace
+
+std::string FieldGroupTitle(FieldGroup group) {
+  switch (group) {
+    case FieldGroup::kCase:
+      return "Case";
+    case FieldGroup::kGeometry:
+      return "Geometry";
+    case FieldGroup::kMasses:
+      return "Masses and inertias";
+    case FieldGroup::kSkirt:
+      return "Piston skirt";
+    case FieldGroup::kBigEnd:
+      return "Big-end bearing";
+    case FieldGroup::kLubricant:
+      return "Lubricant";
+    case FieldGroup::kOperating:
+      return "Operating point";
+    case FieldGroup::kSolver:
+      return "Solver";
+  }
+  return {};
+}
+
+void CaseField::Check(double value, const std::string& field) const {
+  const std::string& name = field.empty() ? path : field;
+  const FieldRange& r = range;
+  if (kind == FieldKind::kInteger) {
+    if (!std::isfinite(value) || value != std::floor(value) || value < r.lo || value > r.hi) {
+      throw InputError(name, FormatValue(value),
+                       "must be an integer in [" + std::to_string(static_cast<long>(r.lo)) + ", " +
+                           std::to_string(static_cast<long>(r.hi)) + "]");
+    }
+    return;
+  }
+  if (r.lo == -kInf && r.hi == kInf) {
+    RequireFinite(name, value, unit);
+  } else if (r.hi == kInf && r.lo == 0.0) {
+    r.lo_open ? RequirePositive(name, value, unit) : RequireNonNegative(name, value, unit);
+  } else {
+    RequireInRange(name, value, r.lo, r.hi, r.lo_open, r.hi_open, unit);
+  }
+}
+
+std::string CaseField::RangeText() const {
+  switch (kind) {
+    case FieldKind::kText:
+      return "text";
+    case FieldKind::kJointModel:
+      return "\"ideal\" | \"lubricated\"";
+    case FieldKind::kInteger:
+      return "integer in [" + std::to_string(static_cast<long>(range.lo)) + ", " +
+             std::to_string(static_cast<long>(range.hi)) + "]";
+    case FieldKind::kNumber:
+    case FieldKind::kNumberList:
+      break;
+  }
+  std::string text;
+  if (range.lo == -kInf && range.hi == kInf) {
+    text = "finite";
+  } else if (range.hi == kInf) {
+    text = (range.lo_open ? "> " : "≥ ") + Bound(range.lo);
+  } else {
+    text = std::string(range.lo_open ? "(" : "[") + Bound(range.lo) + ", " + Bound(range.hi) +
+           (range.hi_open ? ")" : "]");
+  }
+  return kind == FieldKind::kNumberList ? "each " + text : text;
+}
+
+const std::vector<CaseField>& CaseSchema() {
+  static const std::vector<CaseField> schema = MakeSchema();
+  return schema;
+}
+
+const CaseField* FindCaseField(std::string_view path) {
+  for (const CaseField& f : CaseSchema()) {
+    if (f.path == path) return &f;
+  }
+  return nullptr;
+}
+
+const char* JointModelName(JointModel model) {
+  return model == JointModel::kIdeal ? "ideal" : "lubricated";
+}
+
+JointModel ParseJointModel(const std::string& path, const std::string& text) {
+  if (text == "ideal") return JointModel::kIdeal;
+  if (text == "lubricated") return JointModel::kLubricated;
+  throw InputError(path, text, "must be \"ideal\" or \"lubricated\"");
+}
+
+void CheckCaseConsistency(const EngineCase& c) {
+  const auto& g = c.geometry;
+  if (g.rod_length <= g.crank_radius + std::abs(g.pin_offset)) {
+    throw InputError("geometry.rod_length", FormatValue(g.rod_length),
+                     "must exceed geometry.crank_radius + |geometry.pin_offset| = " +
+                         FormatValue(g.crank_radius + std::abs(g.pin_offset)) + " [m]");
+  }
+  if (g.rod_com_from_big_end > g.rod_length) {
+    throw InputError("geometry.rod_com_from_big_end", FormatValue(g.rod_com_from_big_end),
+                     "must lie on the rod: <= geometry.rod_length [m]");
+  }
+  if (c.skirt.piston_radius >= g.liner_radius) {
+    throw InputError(
+        "skirt.piston_radius", FormatValue(c.skirt.piston_radius),
+        "must be smaller than geometry.liner_radius = " + FormatValue(g.liner_radius) + " [m]");
+  }
+  if (c.big_end.journal_radius >= c.big_end.bearing_radius) {
+    throw InputError("big_end.journal_radius", FormatValue(c.big_end.journal_radius),
+                     "must be smaller than big_end.bearing_radius = " +
+                         FormatValue(c.big_end.bearing_radius) + " [m]");
+  }
+  if (c.skirt.thrust_half_width + c.skirt.anti_thrust_half_width >= kPi) {
+    throw InputError("skirt.anti_thrust_half_width", FormatValue(c.skirt.anti_thrust_half_width),
+                     "thrust + anti-thrust half widths must be < π [rad]");
+  }
+  const auto& y = c.skirt.profile_y;
+  if (y.size() != c.skirt.profile_h.size() || y.size() < 2) {
+    throw InputError("skirt.profile_h", std::to_string(c.skirt.profile_h.size()) + " values",
+                     "needs as many values as skirt.profile_y (at least 2)");
+  }
+  for (std::size_t k = 1; k < y.size(); ++k) {
+    if (y[k] <= y[k - 1]) {
+      throw InputError("skirt.profile_y." + std::to_string(k), FormatValue(y[k]),
+                       "must increase strictly [m]");
+    }
+  }
+  const auto& alpha = c.skirt.ovality_alpha;
+  if (alpha.size() != c.skirt.ovality_h.size()) {
+    throw InputError("skirt.ovality_h", std::to_string(c.skirt.ovality_h.size()) + " values",
+                     "needs as many values as skirt.ovality_alpha (" +
+                         std::to_string(alpha.size()) + "; both empty = no ovality)");
+  }
+  for (std::size_t k = 1; k < alpha.size(); ++k) {
+    if (alpha[k] <= alpha[k - 1]) {
+      throw InputError("skirt.ovality_alpha." + std::to_string(k), FormatValue(alpha[k]),
+                       "must increase strictly [rad]");
+    }
+  }
+}
+
+}  // namespace filmdyn::engine

@@ -1,0 +1,78 @@
+#pragma once
+/// @file The case schema: the one table of every field of an EngineCase (everything but the
+/// pressure curves and the notes): dotted path, kind, SI unit, display unit and scale, allowed
+/// range, label, one-line help, and accessors. The case file reader and writer, `--set`, the GUI's
+/// editors and their checks, and the field table of docs/case-file.md all come from it; the rules
+/// that tie several fields together live in CheckCaseConsistency, used by all of them.
+#include <functional>
+#include <limits>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/engine/engine_case.hpp"
+
+namespace filmdyn::engine {
+
+enum class FieldKind {
+  kText,        ///< a string
+  kJointModel,  ///< "ideal" | "lubricated"
+  kNumber,      ///< a finite real in SI
+  kInteger,     ///< a whole number (mesh counts, cycle counts)
+  kNumberList,  ///< an array of finite reals in SI, each within the range
+};
+
+/// The editor tab a field belongs to.
+enum class FieldGroup { kCase, kGeometry, kMasses, kSkirt, kBigEnd, kLubricant, kOperating, kSolver };
+/// "Geometry", "Masses and inertias", ... (the GUI's tab titles).
+std::string FieldGroupTitle(FieldGroup group);
+
+/// Allowed values of a number (SI): lo < x or lo ≤ x, x < hi or x ≤ hi. Unbounded ends are ±inf.
+struct FieldRange {
+  double lo = -std::numeric_limits<double>::infinity();
+  double hi = std::numeric_limits<double>::infinity();
+  bool lo_open = false;
+  bool hi_open = false;
+};
+
+struct CaseField {
+  std::string path;  ///< dotted case-file key, e.g. "big_end.journal_radius"
+  FieldKind kind = FieldKind::kNumber;
+  FieldGroup group = FieldGroup::kCase;
+  std::string label;             ///< with the paper's symbol, e.g. "Journal radius R_j"
+  std::string help;              ///< one line: what it is, where the default comes from
+  std::string unit;              ///< SI unit as the file uses it: "m", "Pa*s", "-", "rpm", ...
+  std::string display_unit;      ///< unit the GUI shows: "mm", "µm", "°", "MPa", ...
+  double display_scale = 1.0;    ///< SI value = display value × display_scale
+  FieldRange range;              ///< numbers, integers and list elements (SI)
+
+  /// Numbers and integers: the value in SI, and setting it (integers are rounded; a non-finite
+  /// value becomes −1, which every integer range rejects).
+  std::function<double(const EngineCase&)> get;
+  std::function<void(EngineCase&, double)> set;
+  /// Number lists, text, joint models: the member itself.
+  std::function<std::vector<double>&(EngineCase&)> list;
+  std::function<std::string&(EngineCase&)> text;
+  std::function<JointModel&(EngineCase&)> model;
+
+  /// Throws InputError naming `field` (the path, or path.k for a list element), the value and
+  /// the allowed range when `si_value` is not allowed; the one check of a field's own range.
+  void Check(double si_value, const std::string& field = {}) const;
+  /// "> 0 [m]", "[1e-14, 0.01] [-]", "integer in [8, 5000]", ... (docs and tooltips).
+  std::string RangeText() const;
+};
+
+/// Every field, in case-file order.
+const std::vector<CaseField>& CaseSchema();
+/// The field with this dotted path, or nullptr.
+const CaseField* FindCaseField(std::string_view path);
+
+/// "ideal" / "lubricated"; ParseJointModel throws InputError(path, text, allowed).
+const char* JointModelName(JointModel model);
+JointModel ParseJointModel(const std::string& path, const std::string& text);
+
+/// The rules that tie fields together (rod longer than crank + |pin offset|, clearances > 0,
+/// panel widths, profile and ovality tables). Throws InputError naming the field to fix.
+void CheckCaseConsistency(const EngineCase& engine_case);
+
+}  // namespace filmdyn::engine

@@ -1,0 +1,173 @@
+// The case schema is the one definition of every case field: each scalar field round-trips
+// through the case file, `--set` and the GUI's editor cell, every list element through the file,
+// and at each end of each field's range (and just beyond it) the GUI accepts exactly what core's
+// case reader accepts.
+#include <QApplication>
+#include <QtTest>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "core/base/input_error.hpp"
+#include "core/engine/case_schema.hpp"
+#include "core/io/case_file.hpp"
+#include "ui/case_editor/case_document.hpp"
+#include "ui/case_editor/case_parameters.hpp"
+#include "ui/case_editor/case_validation.hpp"
+#include "ui/case_editor/parameter_table_model.hpp"
+
+using namespace filmdyn;
+
+namespace {
+
+engine::EngineCase DefaultCase() { return io::LoadCase({}).value; }
+
+std::string Exact(double value) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%.17g", value);
+  return text;
+}
+
+// Does core's case reader accept the default case with `path` set to `value` (through --set)?
+bool CoreAccepts(const std::string& path, double value) {
+  nlohmann::json root = io::CaseToJson(DefaultCase());
+  try {
+    io::ApplyOverride(&root, path + "=" + Exact(value));
+    io::CaseFromJson(root);
+    return true;
+  } catch (const InputError&) {
+    return false;
+  }
+}
+
+// Does the GUI's validation accept it?
+bool GuiAccepts(const engine::CaseField& field, double value) {
+  engine::EngineCase c = DefaultCase();
+  field.set(c, value);
+  return ui::ValidateCase(c).empty();
+}
+
+// A valid value different from the default (inside the range and the cross-field rules).
+double Changed(const engine::CaseField& field, const engine::EngineCase& c) {
+  const double v = field.get(c);
+  if (field.kind == engine::FieldKind::kInteger) return v + 1 <= field.range.hi ? v + 1 : v - 1;
+  for (double factor : {1.001, 0.999, 0.5}) {
+    const double candidate =
+        v != 0.0 ? v * factor : (std::isfinite(field.range.hi) ? field.range.hi * 1e-3 : factor);
+    engine::EngineCase changed = c;
+    field.set(changed, candidate);
+    if (ui::ValidateCase(changed).empty()) return candidate;
+  }
+  return std::isfinite(field.range.hi) ? 0.5 * (field.range.lo + field.range.hi) : v + 1.0;
+}
+
+}  // namespace
+
+class TestCaseSchema : public QObject {
+  Q_OBJECT
+ private slots:
+  void everyFieldIsInTheFileAndTheEditor() {
+    const nlohmann::json file = io::CaseToJson(DefaultCase());
+    int scalars = 0;
+    for (const engine::CaseField& field : engine::CaseSchema()) {
+      // Every field is in the file under its path, with a label, help and (numbers) a unit.
+      const nlohmann::json* node = &file;
+      std::size_t start = 0;
+      for (std::size_t dot; (dot = field.path.find('.', start)), true; start = dot + 1) {
+        const std::string key = field.path.substr(start, dot - start);
+        QVERIFY2(node->contains(key), field.path.c_str());
+        node = &(*node)[key];
+        if (dot == std::string::npos) break;
+      }
+      QVERIFY2(!field.label.empty() && !field.help.empty(), field.path.c_str());
+      if (field.kind == engine::FieldKind::kNumber || field.kind == engine::FieldKind::kInteger) {
+        ++scalars;
+        QVERIFY2(!field.unit.empty() && field.display_scale > 0, field.path.c_str());
+        const ui::CaseParameter* row = ui::FindCaseParameter(field.path);
+        QVERIFY2(row != nullptr, field.path.c_str());
+        QCOMPARE(row->to_si, field.display_scale);
+        QCOMPARE(row->integer, field.kind == engine::FieldKind::kInteger);
+      }
+    }
+    QCOMPARE(int(ui::CaseParameters().size()), scalars);
+  }
+
+  void everyScalarRoundTripsThroughFileSetAndEditor() {
+    const engine::EngineCase base = DefaultCase();
+    for (const engine::CaseField& field : engine::CaseSchema()) {
+      if (field.kind != engine::FieldKind::kNumber && field.kind != engine::FieldKind::kInteger) {
+        continue;
+      }
+      const double value = Changed(field, base);
+      QVERIFY2(value != field.get(base), field.path.c_str());
+      // File.
+      engine::EngineCase c = base;
+      field.set(c, value);
+      QCOMPARE(field.get(io::CaseFromJson(io::CaseToJson(c))), value);
+      // --set.
+      nlohmann::json root = io::CaseToJson(base);
+      io::ApplyOverride(&root, field.path + "=" + Exact(value));
+      QCOMPARE(field.get(io::CaseFromJson(root)), value);
+      // The editor cell: typed in display units, stored in SI.
+      ui::CaseDocument document;
+      document.reset(base);
+      ui::ParameterTableModel model(&document, field.group);
+      const int row = model.rowOf(field.path);
+      QVERIFY2(row >= 0, field.path.c_str());
+      const QModelIndex cell = model.index(row, ui::ParameterTableModel::kValue);
+      QVERIFY(
+          model.setData(cell, QString::number(value / field.display_scale, 'g', 17), Qt::EditRole));
+      const double stored = field.get(document.engineCase());
+      QVERIFY2(std::abs(stored - value) <= 1e-12 * std::abs(value), field.path.c_str());
+      QVERIFY2(document.issues().empty(), field.path.c_str());
+    }
+  }
+
+  void listsRoundTripThroughTheFile() {
+    engine::EngineCase c = DefaultCase();
+    c.skirt.ovality_alpha = {0.0, 1.5, 3.0};
+    c.skirt.ovality_h = {0.0, 4e-6, 1e-6};
+    c.skirt.profile_h[1] = 6.5e-6;
+    const engine::EngineCase back = io::CaseFromJson(io::CaseToJson(c));
+    for (const engine::CaseField& field : engine::CaseSchema()) {
+      if (field.kind != engine::FieldKind::kNumberList) continue;
+      engine::EngineCase a = c, b = back;
+      QVERIFY2(field.list(a) == field.list(b), field.path.c_str());
+    }
+  }
+
+  void guiAndCoreAgreeAtEveryBoundary() {
+    int checked = 0;
+    for (const engine::CaseField& field : engine::CaseSchema()) {
+      if (field.kind != engine::FieldKind::kNumber && field.kind != engine::FieldKind::kInteger) {
+        continue;
+      }
+      std::vector<double> probes = {std::numeric_limits<double>::quiet_NaN()};
+      for (double bound : {field.range.lo, field.range.hi}) {
+        if (!std::isfinite(bound)) continue;
+        const double step = field.kind == engine::FieldKind::kInteger
+                                ? 1.0
+                                : std::max(std::abs(bound) * 1e-9, 1e-300);
+        probes.insert(probes.end(), {bound - step, bound, bound + step});
+      }
+      for (double value : probes) {
+        const bool core = CoreAccepts(field.path, value);
+        const bool gui = GuiAccepts(field, value);
+        QVERIFY2(core == gui, qPrintable(QString("%1 = %2: core %3, GUI %4")
+                                             .arg(QString::fromStdString(field.path))
+                                             .arg(value, 0, 'g', 17)
+                                             .arg(core ? "accepts" : "rejects")
+                                             .arg(gui ? "accepts" : "rejects")));
+        ++checked;
+      }
+    }
+    QVERIFY(checked > 150);
+  }
+};
+
+int main(int argc, char** argv) {
+  QApplication app(argc, argv);
+  TestCaseSchema test;
+  return QTest::qExec(&test, argc, argv);
+}
+#include "test_case_schema.moc"

@@ -1,0 +1,23 @@
+#pragma once
+/// @file The data a plot needs of a run, with no run record behind it.
+#include <QString>
+#include <vector>
+
+#include "ui/run/result_columns.hpp"
+
+namespace filmdyn::ui {
+
+class RunRecord;
+
+/// What the plots need of one run: its identity, label, bearing clearance and samples. The GUI
+/// makes one from a run record; headless commands from core's rows (no run record).
+struct PlotRun {
+  int id = 0;
+  QString label;                   ///< e.g. "Skirt-LBRBE 6000 rpm"
+  double bearing_clearance = 0.0;  ///< radial [m] (the journal-orbit plot's circle)
+  std::vector<RunSample> samples;
+};
+/// The current samples of a run record as plot data.
+PlotRun PlotRunOf(const RunRecord& run);
+
+}  // namespace filmdyn::ui
