@@ -1,13 +1,14 @@
 // `filmdyn run`: one headless run (docs/outputs.md). All the work is in core (io::LoadCase,
 // engine::RunJob, io::WriteRunFolder); this file only parses options and prints progress on
 // stderr. Ctrl-C stops the run cleanly: the cycle computed so far is written, marked incomplete.
+#include <fmt/format.h>
 #include <chrono>
 #include <cstdio>
 
 #include "app/commands/commands.hpp"
 #include "app/commands/run_common.hpp"
-#include "core/engine/run_job.hpp"
 #include "core/base/input_error.hpp"
+#include "core/engine/run_job.hpp"
 #include "core/io/case_file.hpp"
 #include "core/io/field_output.hpp"
 #include "core/io/results_writer.hpp"
@@ -32,7 +33,8 @@ Command MakeRunCommand() {
       {"no-fields", "", "do not write fields/ (film fields as VTU/PVD per output step)"},
       {"quiet", "", "no progress on stderr"}};
   command.details =
-      "Without CASE.json the built-in default case (Table I of Zhao & Shen's coupling-model paper;\n"
+      "Without CASE.json the built-in default case (Table I of Zhao & Shen's coupling-model "
+      "paper;\n"
       "docs/case-file.md) is used.\n"
       "Examples:\n  filmdyn run --model ideal --rpm 4000\n"
       "  filmdyn run my.json --set geometry.pin_offset=0.001 --out /tmp/r1";
@@ -60,16 +62,12 @@ Command MakeRunCommand() {
       const auto now = std::chrono::steady_clock::now();
       if (!quiet && now - last_print > std::chrono::milliseconds(200)) {
         last_print = now;
-        char where[48], line[160];
-        if (p.run_in) {
-          std::snprintf(where, sizeof where, "run-in %5.1f °CA", p.crank_angle_deg);
-        } else {
-          std::snprintf(where, sizeof where, "cycle %d/%d  %5.1f °CA", p.cycle, p.max_cycles,
-                        p.crank_angle_deg);
-        }
-        std::snprintf(line, sizeof line, "\r%s  %3.0f %%  elapsed %.1f s  ETA %.1f s ", where,
-                      100.0 * std::min(p.fraction, 1.0), p.elapsed, p.remaining);
-        streams.err << line << std::flush;
+        const std::string where = p.run_in ? fmt::format("run-in {:5.1f} °CA", p.crank_angle_deg)
+                                           : fmt::format("cycle {}/{}  {:5.1f} °CA", p.cycle,
+                                                         p.max_cycles, p.crank_angle_deg);
+        streams.err << fmt::format("\r{}  {:3.0f} %  elapsed {:.1f} s  ETA {:.1f} s ", where,
+                                   100.0 * std::min(p.fraction, 1.0), p.elapsed, p.remaining)
+                    << std::flush;
       }
       return true;
     };

@@ -1,5 +1,6 @@
 #include "app/commands/run_common.hpp"
 
+#include <fmt/format.h>
 #include <algorithm>
 #include <chrono>
 #include <csignal>
@@ -100,11 +101,10 @@ BatchOutcome RunBatch(std::vector<batch::SweepJob> jobs, int parallel, bool quie
         const auto fractions = runner.Fractions();
         double total = 0;
         for (double f : fractions) total += f;
-        char line[120];
-        std::snprintf(line, sizeof line, "\r%s: %d/%d runs done, %3.0f %% overall ", prefix.c_str(),
-                      done, runner.size(),
-                      100.0 * total / std::max<std::size_t>(1, fractions.size()));
-        streams.err << line << std::flush;
+        streams.err << fmt::format("\r{}: {}/{} runs done, {:3.0f} % overall ", prefix, done,
+                                   runner.size(),
+                                   100.0 * total / std::max<std::size_t>(1, fractions.size()))
+                    << std::flush;
       }
       continue;
     }

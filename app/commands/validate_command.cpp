@@ -1,5 +1,6 @@
 // `filmdyn validate`: runs the built-in verification cases (published tables and closed forms)
 // and prints one row each: suite, case, ours, reference, error, tolerance, pass.
+#include <fmt/format.h>
 #include <cstdio>
 #include <nlohmann/json.hpp>
 
@@ -37,16 +38,13 @@ Command MakeValidateCommand() {
       }
       streams.out << array.dump(2) << "\n";
     } else {
-      char line[512];
-      std::snprintf(line, sizeof line, "%-12s %-66s %14s %14s %11s %11s  %s\n", "suite", "case",
-                    "ours", "reference", "error", "tolerance", "pass");
-      streams.out << line;
+      streams.out << fmt::format("{:<12} {:<66} {:>14} {:>14} {:>11} {:>11}  {}\n", "suite", "case",
+                                 "ours", "reference", "error", "tolerance", "pass");
       for (const auto& row : rows) {
-        const std::string kind = row.relative ? "" : " abs";
-        std::snprintf(line, sizeof line, "%-12s %-66s %14.6g %14.6g %11.3g %11.3g%s  %s\n",
-                      row.suite.c_str(), row.name.c_str(), row.ours, row.reference, row.Error(),
-                      row.tolerance, kind.c_str(), row.Pass() ? "pass" : "FAIL");
-        streams.out << line;
+        streams.out << fmt::format("{:<12} {:<66} {:>14.6g} {:>14.6g} {:>11.3g} {:>11.3g}{}  {}\n",
+                                   row.suite, row.name, row.ours, row.reference, row.Error(),
+                                   row.tolerance, row.relative ? "" : " abs",
+                                   row.Pass() ? "pass" : "FAIL");
       }
       streams.out << rows.size() - failed << " of " << rows.size() << " cases pass\n";
     }

@@ -1,81 +1,55 @@
 #include "core/base/worker_pool.hpp"
 
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
 #include <algorithm>
+#include <exception>
+#include <vector>
 
 namespace filmdyn {
 
-WorkerPool::WorkerPool(int threads) {
-  for (int k = 1; k < std::max(1, threads); ++k) helpers_.emplace_back([this] { HelperLoop(); });
-}
+struct WorkerPool::Arena {
+  explicit Arena(int threads) : arena(threads) {}
+  tbb::task_arena arena;
+};
 
-WorkerPool::~WorkerPool() {
-  {
-    std::lock_guard lock(mutex_);
-    stop_ = true;
+WorkerPool::WorkerPool(int threads) : threads_(std::max(1, threads)) {
+  if (threads_ > 1) {
+    arena_ = std::make_unique<Arena>(threads_);
+    // TBB starts its worker threads on first demand; ask now, so that the first evaluation
+    // does not wait for a thread to be created.
+    arena_->arena.execute([] { tbb::parallel_for(0, 2, [](int) {}); });
   }
-  start_.notify_all();
-  for (std::thread& helper : helpers_) helper.join();
 }
 
-void WorkerPool::Drain() {
-  std::unique_lock lock(mutex_);
-  while (next_ < count_) {
-    const int index = next_++;
-    const std::function<void(int)>& task = *task_;
-    lock.unlock();
-    std::exception_ptr error;
+WorkerPool::~WorkerPool() = default;
+
+void WorkerPool::Run(int count, const std::function<void(int)>& task) {
+  std::vector<std::exception_ptr> errors(static_cast<std::size_t>(std::max(0, count)));
+  auto run_one = [&](int index) {
     try {
       task(index);
     } catch (...) {
-      error = std::current_exception();
+      errors[static_cast<std::size_t>(index)] = std::current_exception();
     }
-    lock.lock();
-    errors_[index] = error;
-    if (++finished_ == count_) done_.notify_all();
+  };
+  if (!arena_ || count <= 1) {
+    for (int index = 0; index < count; ++index) run_one(index);
+  } else {
+    // One task per index (grain 1): the work items are few and large (a Reynolds solve each).
+    arena_->arena.execute([&] {
+      tbb::parallel_for(
+          tbb::blocked_range<int>(0, count, 1),
+          [&](const tbb::blocked_range<int>& range) {
+            for (int index = range.begin(); index < range.end(); ++index) {
+              run_one(index);
+            }
+          },
+          tbb::simple_partitioner());
+    });
   }
-}
-
-void WorkerPool::HelperLoop() {
-  std::uint64_t seen = 0;
-  for (;;) {
-    {
-      std::unique_lock lock(mutex_);
-      start_.wait(lock, [&] { return stop_ || batch_ != seen; });
-      if (stop_) return;
-      seen = batch_;
-    }
-    Drain();
-  }
-}
-
-void WorkerPool::Run(int count, const std::function<void(int)>& task) {
-  if (count <= 0) return;
-  if (helpers_.empty() || count == 1) {  // inline: no hand-over cost
-    std::exception_ptr first;
-    for (int k = 0; k < count; ++k) {
-      try {
-        task(k);
-      } catch (...) {
-        if (!first) first = std::current_exception();
-      }
-    }
-    if (first) std::rethrow_exception(first);
-    return;
-  }
-  {
-    std::lock_guard lock(mutex_);
-    task_ = &task;
-    count_ = count;
-    next_ = finished_ = 0;
-    errors_.assign(count, nullptr);
-    ++batch_;
-  }
-  start_.notify_all();
-  Drain();
-  std::unique_lock lock(mutex_);
-  done_.wait(lock, [&] { return finished_ == count_; });
-  task_ = nullptr;
-  for (const std::exception_ptr& error : errors_) {
+  for (const std::exception_ptr& error : errors) {
     if (error) std::rethrow_exception(error);
   }
 }

@@ -1,44 +1,33 @@
 #pragma once
-/// @file A small fixed pool of helper threads for fork-join work inside one evaluation (the
-/// film joints of a right-hand side, the two panels of the skirt). The calling thread takes part,
-/// so a pool of size 1 has no helper and runs everything inline.
-#include <condition_variable>
-#include <cstdint>
-#include <exception>
+/// @file Fork-join work inside one evaluation (the film joints of a right-hand side, the two
+/// panels of the skirt) on oneTBB: tasks of a batch run in a task arena of at most `threads`
+/// threads, the calling thread taking part. Every parallel level of FilmDyn (sweep runs, film
+/// joints, skirt panels) uses TBB's one worker pool, so nested levels share the machine's cores
+/// instead of each starting threads of its own. A pool of size 1 runs everything inline.
 #include <functional>
-#include <mutex>
-#include <thread>
-#include <vector>
+#include <memory>
 
 namespace filmdyn {
 
 class WorkerPool {
  public:
-  /// `threads` >= 1 threads in all (the caller and threads - 1 helpers).
+  /// `threads` >= 1 threads in all (the caller included).
   explicit WorkerPool(int threads);
   ~WorkerPool();
   WorkerPool(const WorkerPool&) = delete;
   WorkerPool& operator=(const WorkerPool&) = delete;
 
-  int Threads() const { return static_cast<int>(helpers_.size()) + 1; }
-  /// Runs task(0) ... task(count - 1), each exactly once, on the caller and the helpers; returns
-  /// when all have finished. When tasks throw, the exception of the lowest index is rethrown (the
-  /// same one a sequential loop would have thrown first, with all tasks run).
+  int Threads() const { return threads_; }
+  /// Runs task(0) ... task(count - 1), each exactly once; returns when all have finished. When
+  /// tasks throw, the exception of the lowest index is rethrown (the same one a sequential loop
+  /// would have thrown first, with all tasks run). Results do not depend on the thread count as
+  /// long as each task writes only its own outputs.
   void Run(int count, const std::function<void(int)>& task);
 
  private:
-  void HelperLoop();
-  // Claims and runs tasks of the current batch until none is left.
-  void Drain();
-
-  std::vector<std::thread> helpers_;
-  std::mutex mutex_;
-  std::condition_variable start_, done_;
-  std::uint64_t batch_ = 0;  // generation of the current batch
-  bool stop_ = false;
-  const std::function<void(int)>* task_ = nullptr;
-  int count_ = 0, next_ = 0, finished_ = 0;
-  std::vector<std::exception_ptr> errors_;
+  struct Arena;  // a tbb::task_arena of threads_ slots
+  int threads_ = 1;
+  std::unique_ptr<Arena> arena_;  // null when threads_ == 1
 };
 
 }  // namespace filmdyn

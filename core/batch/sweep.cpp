@@ -3,20 +3,48 @@
 #include <algorithm>
 #include <exception>
 
+#include <tbb/global_control.h>
+#include <tbb/info.h>
+#include <tbb/task_arena.h>
+#include <tbb/task_group.h>
+
 #include "core/io/field_output.hpp"
 
 namespace filmdyn::batch {
 
+struct SweepRunner::Tasks {
+  explicit Tasks(int slots)
+      : slots(slots),
+        // The runs execute on TBB's workers while the caller's thread only collects them: allow
+        // one worker per slot (on a 2-core machine TBB starts one worker by default). A run's
+        // film joints and skirt panels are nested tasks on the same workers: with every slot
+        // busy they run inline, so nested levels never add threads.
+        parallelism(tbb::global_control::max_allowed_parallelism,
+                    std::max<std::size_t>(tbb::info::default_concurrency(),
+                                          static_cast<std::size_t>(slots) + 1)),
+        arena(slots, 0) {}
+  int slots;  // runs at the same time
+  tbb::global_control parallelism;
+  tbb::task_arena arena;
+  tbb::task_group group;  // the slots' work loops, run in `arena`
+};
+
 SweepRunner::SweepRunner(std::vector<SweepJob> jobs, int threads, const std::atomic<bool>* cancel)
-    : jobs_(std::move(jobs)), outcomes_(jobs_.size()), cancel_(cancel), fractions_(jobs_.size()) {
+    : jobs_(std::move(jobs)),
+      outcomes_(jobs_.size()),
+      cancel_(cancel),
+      fractions_(jobs_.size()),
+      tasks_(std::make_unique<Tasks>(
+          std::clamp(threads, 1, std::max(1, static_cast<int>(jobs_.size()))))) {
   for (auto& f : fractions_) f = 0.0;
-  const int n = std::clamp(threads, 1, std::max(1, size()));
-  workers_.reserve(n);
-  for (int i = 0; i < n; ++i) workers_.emplace_back([this] { Work(); });
+  // Jobs are taken in order; each slot works through them until none is left.
+  for (int slot = 0; slot < tasks_->slots; ++slot) {
+    tasks_->arena.execute([this] { tasks_->group.run([this] { Work(); }); });
+  }
 }
 
 SweepRunner::~SweepRunner() {
-  for (auto& worker : workers_) worker.join();
+  tasks_->arena.execute([this] { tasks_->group.wait(); });
 }
 
 void SweepRunner::Work() {

@@ -1,5 +1,5 @@
 #pragma once
-/// @file Several runs in parallel (`filmdyn sweep`): a fixed pool of worker threads takes
+/// @file Several runs in parallel (`filmdyn sweep`): a TBB task arena of `threads` slots takes
 /// jobs in order; each job is a complete `RunJob` plus its output folder. The caller's thread
 /// collects finished jobs one by one (e.g. to render plots, which Qt allows on the main thread
 /// only). One cancel flag stops every job cleanly with its partial results written.
@@ -10,7 +10,7 @@
 #include <filesystem>
 #include <mutex>
 #include <string>
-#include <thread>
+#include <memory>
 #include <vector>
 
 #include "core/engine/run_job.hpp"
@@ -34,7 +34,7 @@ struct SweepOutcome {
 
 class SweepRunner {
  public:
-  /// Starts min(threads, jobs) workers at once. `cancel` may be null.
+  /// Starts min(threads, jobs) runs at once. `cancel` may be null.
   SweepRunner(std::vector<SweepJob> jobs, int threads, const std::atomic<bool>* cancel);
   ~SweepRunner();  ///< cancels nothing, waits for the workers
   SweepRunner(const SweepRunner&) = delete;
@@ -61,7 +61,10 @@ class SweepRunner {
   std::condition_variable finished_cv_;
   std::deque<int> finished_;
   int returned_ = 0;
-  std::vector<std::thread> workers_;
+  // The TBB arena and task group running the slots' work loops (kept out of this header: Qt's
+  // `emit` macro clashes with TBB's headers in files that include both).
+  struct Tasks;
+  std::unique_ptr<Tasks> tasks_;
 };
 
 }  // namespace filmdyn::batch

@@ -1,16 +1,17 @@
 #include "core/engine/run_job.hpp"
 
+#include <fmt/format.h>
+
 #include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <numbers>
 #include <thread>
 
+#include "core/base/input_error.hpp"
 #include "core/coupling/lubricated_big_end_element.hpp"
 #include "core/coupling/lubricated_skirt_element.hpp"
 #include "core/coupling/steady_state.hpp"
 #include "core/engine/film_joints.hpp"
-#include "core/base/input_error.hpp"
 
 namespace filmdyn::engine {
 
@@ -141,21 +142,18 @@ Tracked TrackedFor(const EngineCase& c) {
 
 // Physical failure of a film joint at a sample: the reason, or empty.
 std::string FilmTrouble(const CrankTrainSample& s) {
-  char text[200];
   if (s.bearing.present && (!std::isfinite(s.bearing.eps) ||
                             s.bearing.eps >= coupling::LubricatedBigEndElement::kEpsMax)) {
-    std::snprintf(text, sizeof text,
-                  "big-end journal touches the bearing (eps = %.5f): the film cannot carry the "
-                  "load with this clearance/viscosity",
-                  s.bearing.eps);
-    return text;
+    return fmt::format(
+        "big-end journal touches the bearing (eps = {:.5f}): the film cannot carry the load "
+        "with this clearance/viscosity",
+        s.bearing.eps);
   }
   if (s.skirt.present && (!std::isfinite(s.skirt.min_gap) || s.skirt.min_gap <= 0.0)) {
-    std::snprintf(text, sizeof text,
-                  "piston skirt touches the liner (smallest gap %.3g um): the skirt film cannot "
-                  "carry the side force with this clearance/profile",
-                  s.skirt.min_gap * 1e6);
-    return text;
+    return fmt::format(
+        "piston skirt touches the liner (smallest gap {:.3g} um): the skirt film cannot carry "
+        "the side force with this clearance/profile",
+        s.skirt.min_gap * 1e6);
   }
   if (!std::isfinite(s.piston_lateral) || !std::isfinite(s.crank_torque) ||
       !std::isfinite(s.big_end_force_on_rod.norm())) {
@@ -167,13 +165,8 @@ std::string FilmTrouble(const CrankTrainSample& s) {
 // Where the run stands, for messages: " (cycle 2, 123.0 °CA)"; cycle 0 is the run-in, whose
 // angles count (negative) towards the first cycle.
 std::string AtAngle(int cycle, double crank_deg) {
-  char text[96];
-  if (cycle < 1) {
-    std::snprintf(text, sizeof text, " (run-in, %.1f °CA before the first cycle)", -crank_deg);
-  } else {
-    std::snprintf(text, sizeof text, " (cycle %d, %.1f °CA)", cycle, crank_deg);
-  }
-  return text;
+  if (cycle < 1) return fmt::format(" (run-in, {:.1f} °CA before the first cycle)", -crank_deg);
+  return fmt::format(" (cycle {}, {:.1f} °CA)", cycle, crank_deg);
 }
 
 }  // namespace
@@ -366,11 +359,9 @@ RunResult RunJob(const RunConfig& config, const RunMonitor& monitor,
     result.status = RunStatus::kFailed;
     result.message = std::string("integration failed: ") + error.what() + AtAngle(cycle, crank_deg);
     if (!current.empty()) {  // name the film state where it stopped
-      char text[160];
       const CrankTrainSample& last = current.back();
-      std::snprintf(text, sizeof text, "; last output: eps = %.4f, skirt gap %.3g um",
-                    last.bearing.eps, last.skirt.min_gap * 1e6);
-      result.message += text;
+      result.message += fmt::format("; last output: eps = {:.4f}, skirt gap {:.3g} um",
+                                    last.bearing.eps, last.skirt.min_gap * 1e6);
     }
     result.samples = current.empty() ? previous : current;
   }

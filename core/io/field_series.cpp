@@ -2,8 +2,8 @@
 
 // The HDF5 C API (Debian: libhdf5-dev; core/CMakeLists.txt links HDF5::HDF5 into this package).
 #include <hdf5.h>
-#include <optional>
 #include <unistd.h>  // fsync
+#include <optional>
 
 #include <algorithm>
 #include <cctype>

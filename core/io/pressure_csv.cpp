@@ -1,5 +1,6 @@
 #include "core/io/pressure_csv.hpp"
 
+#include <fmt/format.h>
 #include <algorithm>
 #include <cctype>
 #include <charconv>
@@ -95,10 +96,8 @@ void WritePressureCsv(std::ostream& out, const std::vector<double>& crank_angle_
   std::string line;
   while (std::getline(lines, line)) out << "# " << line << "\n";
   out << "crank_angle[deg],pressure[Pa]\n";
-  char buffer[64];
   for (std::size_t k = 0; k < crank_angle_deg.size(); ++k) {
-    std::snprintf(buffer, sizeof buffer, "%.2f,%.1f\n", crank_angle_deg[k], pressure[k]);
-    out << buffer;
+    out << fmt::format("{:.2f},{:.1f}\n", crank_angle_deg[k], pressure[k]);
   }
 }
 

@@ -1,7 +1,8 @@
 #include "core/io/results_writer.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
-#include <cstdio>
 #include <fstream>
 #include <numbers>
 #include <stdexcept>
@@ -125,13 +126,11 @@ void WriteResultsCsv(std::ostream& out, const std::vector<OutputRow>& rows) {
   const auto& columns = ResultColumns();
   for (std::size_t c = 0; c < columns.size(); ++c) out << (c ? "," : "") << columns[c].header;
   out << "\n";
-  char buffer[40];
   for (const OutputRow& row : rows) {
     for (std::size_t c = 0; c < columns.size(); ++c) {
       if (c) out << ",";
       if (const auto& value = row.*(columns[c].member)) {
-        std::snprintf(buffer, sizeof buffer, "%.10g", *value);
-        out << buffer;
+        out << fmt::format("{:.10g}", *value);
       }
     }
     out << "\n";
@@ -140,10 +139,8 @@ void WriteResultsCsv(std::ostream& out, const std::vector<OutputRow>& rows) {
 
 std::filesystem::path DefaultOutputFolder(const std::string& case_name, engine::Model model,
                                           double rpm) {
-  char speed[32];
-  std::snprintf(speed, sizeof speed, "%g", rpm);
   return std::filesystem::path("results") /
-         (case_name + "-" + engine::ModelName(model) + "-" + speed);
+         fmt::format("{}-{}-{:g}", case_name, engine::ModelName(model), rpm);
 }
 
 std::vector<OutputRow> WriteRunFolder(const std::filesystem::path& directory,

@@ -1,8 +1,11 @@
 #include "core/lubrication/validation_cases.hpp"
 
+#include <fmt/format.h>
 #include <cmath>
 #include <numbers>
 #include <string>
+
+#include <boost/math/quadrature/gauss.hpp>
 
 #include "core/lubrication/bearing_calculator.hpp"
 
@@ -11,11 +14,7 @@ namespace filmdyn::lubrication {
 namespace {
 constexpr double kPi = std::numbers::pi;
 
-std::string Fmt(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
-}
+std::string Fmt(double v) { return fmt::format("{:g}", v); }
 }  // namespace
 
 const std::vector<RaimondiBoydPoint>& RaimondiBoydTable() {
@@ -77,23 +76,17 @@ double SqueezeIntegralFull(double eps) {
 }
 
 double SqueezeIntegralHalf(double eps) {
-  // Composite 8-point Gauss-Legendre on 256 panels: the integrand is smooth on the interval.
-  static const double xg[4] = {0.1834346424956498, 0.5255324099163290, 0.7966664774136267,
-                               0.9602898564975363};
-  static const double wg[4] = {0.3626837833783620, 0.3137066458778873, 0.2223810344533745,
-                               0.1012285362903763};
+  // Composite 8-point Gauss-Legendre (Boost.Math) on 256 panels: the integrand is smooth.
   const int panels = 256;
   const double a = 0.5 * kPi, b = 1.5 * kPi, hp = (b - a) / panels;
+  auto integrand = [eps](double t) {
+    const double c = std::cos(t);
+    return c * c / std::pow(1.0 + eps * c, 3);
+  };
   double sum = 0.0;
   for (int i = 0; i < panels; ++i) {
-    const double mid = a + (i + 0.5) * hp;
-    for (int k = 0; k < 4; ++k) {
-      for (int sgn = -1; sgn <= 1; sgn += 2) {
-        const double t = mid + sgn * 0.5 * hp * xg[k];
-        const double c = std::cos(t);
-        sum += wg[k] * 0.5 * hp * c * c / std::pow(1.0 + eps * c, 3);
-      }
-    }
+    sum += boost::math::quadrature::gauss<double, 8>::integrate(integrand, a + i * hp,
+                                                                a + (i + 1) * hp);
   }
   return sum;
 }

@@ -1,5 +1,7 @@
 #include "core/lubrication/surface/greenwood_tripp.hpp"
 
+#include <boost/math/quadrature/gauss.hpp>
+
 #include <array>
 #include <cassert>
 #include <cmath>
@@ -14,43 +16,8 @@ constexpr double kFitAmplitude = 4.4086e-5;
 constexpr double kFitExponent = 6.804;
 constexpr double kFitCutoff = 4.0;
 
-// Gauss–Legendre rule on [-1, 1], computed once by Newton iteration on P_N.
-constexpr int kGaussPoints = 10;
+// Composite 10-point Gauss–Legendre (Boost.Math's rule) over panels of the smooth integrand.
 constexpr int kQuadraturePanels = 64;
-
-struct GaussRule {
-  std::array<double, kGaussPoints> x{};
-  std::array<double, kGaussPoints> w{};
-};
-
-GaussRule MakeGaussRule() {
-  GaussRule rule;
-  for (int i = 0; i < kGaussPoints; ++i) {
-    double x = std::cos(std::numbers::pi * (i + 0.75) / (kGaussPoints + 0.5));
-    double derivative = 1.0;
-    for (int iteration = 0; iteration < 100; ++iteration) {
-      double p0 = 1.0;
-      double p1 = x;
-      for (int k = 2; k <= kGaussPoints; ++k) {
-        const double p2 = ((2.0 * k - 1.0) * x * p1 - (k - 1.0) * p0) / k;
-        p0 = p1;
-        p1 = p2;
-      }
-      derivative = kGaussPoints * (x * p1 - p0) / (x * x - 1.0);
-      const double step = p1 / derivative;
-      x -= step;
-      if (std::abs(step) < 1e-16) break;
-    }
-    rule.x[i] = x;
-    rule.w[i] = 2.0 / ((1.0 - x * x) * derivative * derivative);
-  }
-  return rule;
-}
-
-const GaussRule& Gauss() {
-  static const GaussRule rule = MakeGaussRule();
-  return rule;
-}
 
 // Lookup table of ln F_n on a uniform grid with exact slopes for cubic Hermite interpolation.
 constexpr double kTableStart = -4.0;
@@ -144,20 +111,19 @@ double GreenwoodTrippF32Exact(double H) { return TableF32()(H); }
 
 double GreenwoodTrippQuadrature(double n, double H) {
   assert(n >= 0.0);
-  const GaussRule& rule = Gauss();
   const double u_end = std::sqrt(std::abs(H) + 10.0);
   const double panel = u_end / kQuadraturePanels;
   const double power = 2.0 * n + 1.0;
+  auto integrand = [H, power](double u) {
+    const double s = H + u * u;
+    return 2.0 * std::pow(u, power) * std::exp(-0.5 * s * s);
+  };
   double sum = 0.0;
   for (int p = 0; p < kQuadraturePanels; ++p) {
-    const double centre = (p + 0.5) * panel;
-    for (int k = 0; k < kGaussPoints; ++k) {
-      const double u = centre + 0.5 * panel * rule.x[k];
-      const double s = H + u * u;
-      sum += rule.w[k] * 2.0 * std::pow(u, power) * std::exp(-0.5 * s * s);
-    }
+    sum += boost::math::quadrature::gauss<double, 10>::integrate(integrand, p * panel,
+                                                                 (p + 1) * panel);
   }
-  return 0.5 * panel * sum / std::sqrt(2.0 * std::numbers::pi);
+  return sum / std::sqrt(2.0 * std::numbers::pi);
 }
 
 }  // namespace filmdyn::lubrication

@@ -10,8 +10,8 @@
 #include <stdexcept>
 #include <thread>
 
-#include "core/multibody/multibody_system.hpp"
 #include "core/base/worker_pool.hpp"
+#include "core/multibody/multibody_system.hpp"
 
 using namespace filmdyn;
 using namespace filmdyn::multibody;
@@ -33,7 +33,8 @@ class RecordingSpring final : public ForceElement {
       std::lock_guard lock(*mutex_);
       threads_->insert(std::this_thread::get_id());
     }
-    std::this_thread::sleep_for(std::chrono::milliseconds(2));  // long enough to overlap
+    // Long enough to overlap even on a loaded machine (a worker must wake and take the other).
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
     const BodyState b = state.Body(body_);
     for (int c = 0; c < 3; ++c) {
       q_force[3 * body_ + c] += -k_ * b.q[c] * (1.0 + b.q[c] * b.q[c]) - 0.1 * k_ * b.v[c];

@@ -15,27 +15,27 @@ using namespace filmdyn;
 namespace {
 
 io::RunSummary Full() {
-  io::RunSummary s;
-  s.filmdyn_version = "9.9.9";
-  s.case_name = "c";
-  s.model = "skirt-lbrbe";
-  s.rpm = 4500.5;
-  s.status = "not converged";
-  s.complete = false;
-  s.message = "cycle-to-cycle change 0.02 above 0.01";
-  s.cycles = 7;
-  s.cycles_to_steady_state = 0;
-  s.cycle_to_cycle_change = 0.02;
-  s.cycle_to_cycle_worst_quantity = "bearing_moft";
-  s.wall_time_s = 12.25;
-  s.max_constraint_violation = 3e-12;
-  s.extremes["bearing_moft[m]"] = {1.1e-6, 2.5e-5};
-  s.extremes["gas_force[N]"] = {-300.0, 41000.0};
-  s.mean_fpl_skirt_w = 659.75;
-  s.mean_fpl_bearing_w = std::nullopt;
-  s.solver = {"integrator", 5276, 12, 9000, 220, 12000, 300, 60000, 20.0, 30.0, 1e-4};
-  s.pressure_peak_pa = 6.1e6;
-  s.pressure_peak_crank_angle_deg = 372.0;
+  io::RunSummary s{.filmdyn_version = "9.9.9",
+                   .case_name = "c",
+                   .model = "skirt-lbrbe",
+                   .rpm = 4500.5,
+                   .status = "not converged",
+                   .complete = false,
+                   .message = "cycle-to-cycle change 0.02 above 0.01",
+                   .cycles = 7,
+                   .cycles_to_steady_state = 0,
+                   .cycle_to_cycle_change = 0.02,
+                   .cycle_to_cycle_worst_quantity = "bearing_moft",
+                   .wall_time_s = 12.25,
+                   .max_constraint_violation = 3e-12,
+                   .extremes = {{"bearing_moft[m]", {1.1e-6, 2.5e-5}},
+                                {"gas_force[N]", {-300.0, 41000.0}}},
+                   .mean_fpl_skirt_w = 659.75,
+                   .mean_fpl_bearing_w = std::nullopt,
+                   .solver = {"integrator", 5276, 12, 9000, 220, 12000, 300, 60000, 20.0, 30.0,
+                              1e-4},
+                   .pressure_peak_pa = 6.1e6,
+                   .pressure_peak_crank_angle_deg = 372.0};
   return s;
 }
 
