@@ -1,6 +1,9 @@
+#include <CLI/CLI.hpp>
+
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <map>
 #include <sstream>
 
 #include "app/cli/command.hpp"
@@ -28,48 +31,80 @@ std::string AllowedOptions(const std::vector<OptionSpec>& specs) {
 
 Args Args::Parse(const std::string& command, const std::vector<std::string>& argv,
                  const std::vector<OptionSpec>& specs, int max_positional) {
-  Args args;
-  for (std::size_t i = 0; i < argv.size(); ++i) {
-    const std::string& token = argv[i];
-    if (token.size() > 2 && token.rfind("--", 0) == 0) {
-      std::string name = token.substr(2);
-      std::optional<std::string> inline_value;
-      if (const auto eq = name.find('='); eq != std::string::npos) {
-        inline_value = name.substr(eq + 1);
-        name = name.substr(0, eq);
-      }
-      const OptionSpec* spec = FindSpec(specs, name);
-      if (spec == nullptr) {
-        throw InputError("option --" + name, "'" + token + "'",
-                         "unknown option for '" + command + "'; " + AllowedOptions(specs));
-      }
-      if (!spec->repeatable && args.Has(name)) {
-        throw InputError("option --" + name, "'" + token + "'", "may be given only once");
-      }
-      std::string value;
-      if (spec->value_name.empty()) {
-        if (inline_value) {
-          throw InputError("option --" + name, "'" + token + "'", "is a flag and takes no value");
-        }
-      } else if (inline_value) {
-        value = *inline_value;
-      } else {
-        if (i + 1 >= argv.size()) {
-          throw InputError("option --" + name, "(missing)",
-                           "needs a value: --" + name + " " + spec->value_name);
-        }
-        value = argv[++i];
-      }
-      args.options_.emplace_back(name, value);
+  // A flag given a value ("--json=1") would be taken by CLI11 as a flag override; FilmDyn's
+  // flags take none.
+  for (const std::string& token : argv) {
+    if (token.rfind("--", 0) != 0) continue;
+    const auto eq = token.find('=');
+    if (eq == std::string::npos) continue;
+    const OptionSpec* spec = FindSpec(specs, token.substr(2, eq - 2));
+    if (spec != nullptr && spec->value_name.empty()) {
+      throw InputError("option --" + spec->name, "'" + token + "'", "is a flag and takes no value");
+    }
+  }
+  CLI::App app{"", command};
+  app.set_help_flag();  // the dispatcher answers --help before parsing
+  app.allow_extras();   // unknown options and surplus arguments are reported below, by name
+  std::vector<std::pair<const OptionSpec*, CLI::Option*>> options;
+  for (const OptionSpec& spec : specs) {
+    CLI::Option* option = nullptr;
+    if (spec.value_name.empty()) {
+      option = app.add_flag("--" + spec.name, spec.help);
     } else {
-      if (static_cast<int>(args.positional_.size()) >= max_positional) {
-        throw InputError("argument", "'" + token + "'",
-                         max_positional == 0
-                             ? "'" + command + "' takes no positional arguments"
-                             : "'" + command + "' takes at most " + std::to_string(max_positional) +
-                                   " positional argument(s)");
+      option = app.add_option("--" + spec.name, spec.help)->type_name(spec.value_name)->expected(1);
+    }
+    option->multi_option_policy(spec.repeatable ? CLI::MultiOptionPolicy::TakeAll
+                                                : CLI::MultiOptionPolicy::Throw);
+    options.emplace_back(&spec, option);
+  }
+  Args args;
+  if (max_positional > 0) {
+    app.add_option("positional", args.positional_)->expected(0, max_positional);
+  }
+  std::vector<std::string> reversed(argv.rbegin(), argv.rend());  // CLI11 pops from the back
+  try {
+    app.parse(reversed);
+  } catch (const CLI::ArgumentMismatch& error) {
+    const std::string what = error.what();
+    const std::string name = what.substr(0, what.find(':'));
+    if (name == "positional") {
+      throw InputError("argument", "'" + argv.back() + "'",
+                       "'" + command + "' takes at most " + std::to_string(max_positional) +
+                           " positional argument(s)");
+    }
+    const std::string bare = name.rfind("--", 0) == 0 ? name.substr(2) : name;
+    const OptionSpec* spec = FindSpec(specs, bare);
+    if (spec != nullptr && what.find("missing") != std::string::npos) {
+      throw InputError("option --" + bare, "(missing)",
+                       "needs a value: --" + bare + " " + spec->value_name);
+    }
+    throw InputError("option --" + bare, "'" + name + "'", "may be given only once");
+  } catch (const CLI::ParseError& error) {
+    throw InputError("command line", "'" + command + "'", error.what());
+  }
+  for (const std::string& extra : app.remaining()) {
+    if (extra.size() > 2 && extra.rfind("--", 0) == 0) {
+      const std::string name = extra.substr(2, extra.find('=') - 2);
+      throw InputError("option --" + name, "'" + extra + "'",
+                       "unknown option for '" + command + "'; " + AllowedOptions(specs));
+    }
+    throw InputError("argument", "'" + extra + "'",
+                     max_positional == 0
+                         ? "'" + command + "' takes no positional arguments"
+                         : "'" + command + "' takes at most " + std::to_string(max_positional) +
+                               " positional argument(s)");
+  }
+  // The options in command-line order, each occurrence with its value (flags: empty).
+  std::map<const CLI::Option*, std::size_t> taken;
+  for (const CLI::Option* option : app.parse_order()) {
+    for (const auto& [spec, registered] : options) {
+      if (registered != option) continue;
+      std::string value;
+      if (!spec->value_name.empty()) {
+        const std::size_t k = taken[option]++;
+        if (k < option->results().size()) value = option->results()[k];
       }
-      args.positional_.push_back(token);
+      args.options_.emplace_back(spec->name, value);
     }
   }
   return args;
