@@ -19,7 +19,7 @@
 #include <vector>
 
 #include "core/engine/run_job.hpp"
-#include "core/io/vtk_xml_writer.hpp"
+#include "core/io/surface_field.hpp"
 
 namespace filmdyn::io {
 

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "core/io/vtk_xml_writer.hpp"
+#include "core/io/surface_field.hpp"
 
 namespace filmdyn::ui {
 
