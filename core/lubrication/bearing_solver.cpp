@@ -1,10 +1,12 @@
 #include "core/lubrication/bearing_solver.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 
 #include "core/base/input_error.hpp"
+#include "core/lubrication/film_integrals.hpp"
 
 namespace filmdyn::lubrication {
 
@@ -75,7 +77,6 @@ BearingSolver::BearingSolver(BearingConfig config)
   theta_.resize(n);
   cos_.resize(n);
   sin_.resize(n);
-  ptot_.resize(n);
   for (int k = 0; k < n; ++k) {
     theta_[k] = m.x[k] / config_.geometry.radius;
     cos_[k] = std::cos(theta_[k]);
@@ -147,71 +148,39 @@ const BearingResult& BearingSolver::Solve(const BearingState& s) {
   r.stats = sol.stats;
   const double sym = config_.mesh.symmetric_half ? 2.0 : 1.0;
   // Force on the journal: F = -int p r_hat dA with r_hat = cos(theta) a1 + sin(theta) a2 and
-  // a1 = -n, a2 = -t  =>  F_n = int p cos(theta) dA, F_t = int p sin(theta) dA.
-  ptot_ = sol.pressure + sol.contact_pressure;
-  r.force_n = sym * fem_.IntegrateProduct(ptot_, cos_);
-  r.force_t = sym * fem_.IntegrateProduct(ptot_, sin_);
-  r.contact_force_n = sym * fem_.IntegrateProduct(sol.contact_pressure, cos_);
-  r.contact_force_t = sym * fem_.IntegrateProduct(sol.contact_pressure, sin_);
+  // a1 = -n, a2 = -t  =>  F_n = int p cos(theta) dA, F_t = int p sin(theta) dA. The friction
+  // (eq. 31) acts along +x = R theta: surface 1 is the journal, surface 2 the bearing; the
+  // torques come from the part-by-part sums (the element-by-element sum agrees to rounding, but
+  // that rounding is enough to change the step sequence of a coupled run).
+  const std::array<const Eigen::VectorXd*, 2> directions = {&cos_, &sin_};
+  const FilmIntegrals fi =
+      IntegrateFilm(fem_, sol, params, {.load_directions = directions, .symmetry = sym});
+  r.force_n = fi.load[0];
+  r.force_t = fi.load[1];
+  r.contact_force_n = fi.contact_load[0];
+  r.contact_force_t = fi.contact_load[1];
   const double cphi = std::cos(s.line_of_centres_angle), sphi = std::sin(s.line_of_centres_angle);
   r.force_x = r.force_n * cphi - r.force_t * sphi;
   r.force_y = r.force_n * sphi + r.force_t * cphi;
   r.load = std::hypot(r.force_n, r.force_t);
   r.attitude_deg = std::atan2(r.force_t, -r.force_n) * 180.0 / kPi;
-
-  // Friction: shear stress on the journal (lower surface z = 0, velocity U1 = R omega_j) in +x,
-  //   tau_j = -mu U_rel/h (Phi_f + Phi_fs) - Phi_fp (h/2) dp/dx   (Patir & Cheng 1979; paper
-  // eq. 31), on the bearing tau_b = +mu U_rel/h (Phi_f - Phi_fs) - Phi_fp (h/2) dp/dx; the
-  // asperity part mu_f p_c opposes the relative sliding. With Reynolds cavitation the Couette
-  // shear acts over the whole film (as in Raimondi & Boyd's friction variable); with JFO it is
-  // scaled by the fluid fraction.
-  const auto& fac = fem_.factors();
-  const double mu = config_.viscosity;
-  const double u_rel = params.u_diff;
-  const bool jfo = config_.solver.cavitation == CavitationModel::kJfo;
-  double couette_j = 0.0, couette_b = 0.0, poiseuille = 0.0, contact = 0.0;
-  for (const auto& e : fem_.elements()) {
-    double cj = 0.0, cb = 0.0, hfp = 0.0, dpdx = 0.0, pc = 0.0;
-    for (int a = 0; a < 3; ++a) {
-      const int k = e.node[a];
-      const double theta_f = jfo ? sol.fluid_fraction[k] : 1.0;
-      cj += theta_f * (fac[k].shear_f + fac[k].shear_fs) / h[k];
-      cb += theta_f * (fac[k].shear_f - fac[k].shear_fs) / h[k];
-      hfp += fac[k].shear_fp * h[k];
-      dpdx += e.dndx[a] * sol.pressure[k];
-      pc += sol.contact_pressure[k];
-    }
-    couette_j += e.area * cj / 3.0;
-    couette_b += e.area * cb / 3.0;
-    poiseuille += e.area * 0.5 * (hfp / 3.0) * dpdx;
-    contact += e.area * pc / 3.0;
-  }
-  const double mu_f = config_.film ? config_.film->boundary_friction() : 0.0;
-  const double sgn = (u_rel > 0) - (u_rel < 0);
-  const double shear_j = -mu * u_rel * couette_j - poiseuille - sgn * mu_f * contact;
-  const double shear_b = mu * u_rel * couette_b - poiseuille + sgn * mu_f * contact;
-  r.friction_torque_journal = sym * R * shear_j;
-  r.friction_torque_bearing = sym * R * shear_b;
+  r.friction_torque_journal = R * fi.friction.surface1;
+  r.friction_torque_bearing = R * fi.friction.surface2;
   r.friction_power_loss = std::abs(r.friction_torque_journal * (s.omega_journal - s.omega_bearing));
 
-  // MOFT, peak pressure, cavitated fraction, flows.
-  r.moft = 1e300;
-  double cav_area = 0.0, film_area = 0.0;
-  const auto& area = fem_.lumped_area();
+  r.moft = fi.moft;
+  if (fi.moft_node >= 0) {
+    r.moft_theta = theta_[fi.moft_node];
+    r.moft_z = m.y[fi.moft_node];
+  }
+  r.max_pressure = fi.max_pressure;
+  if (fi.max_pressure_node >= 0) r.max_pressure_theta = theta_[fi.max_pressure_node];
+  r.max_contact_pressure = fi.max_contact_pressure;
+  r.cavitated_fraction = fi.CavitatedFraction();
+
+  // Flows through the edges and the feed.
   const int ny = m.ny_nodes();
   for (int k = 0; k < n; ++k) {
-    if (h[k] < r.moft) {
-      r.moft = h[k];
-      r.moft_theta = theta_[k];
-      r.moft_z = m.y[k];
-    }
-    if (sol.pressure[k] > r.max_pressure) {
-      r.max_pressure = sol.pressure[k];
-      r.max_pressure_theta = theta_[k];
-    }
-    r.max_contact_pressure = std::max(r.max_contact_pressure, sol.contact_pressure[k]);
-    film_area += area[k];
-    if (sol.cavitated[k]) cav_area += area[k] * (jfo ? 1.0 - sol.fluid_fraction[k] : 1.0);
     // Outflow through prescribed-pressure nodes is -w (w = nodal residual of the interior rows).
     // The corner nodes of the film-start line are supply nodes: counted as feed (with their
     // upstream Couette inflow below) Q and Q_s become independent of the axial mesh.
@@ -223,7 +192,6 @@ const BearingResult& BearingSolver::Solve(const BearingState& s) {
     else if (m.fixed[k] || fem_.extra_fixed()[k])
       r.feed_flow += sol.residual[k];
   }
-  r.cavitated_fraction = film_area > 0 ? cav_area / film_area : 0.0;
   r.inlet_flow = r.feed_flow;
   if (config_.feed.kind == OilFeed::Kind::kLineOfCentres) {
     // Couette flow carried onto the film-start line by the upstream film (dual-cell widths).

@@ -111,7 +111,7 @@ class BearingSolver {
   ReynoldsFem fem_;
   std::vector<double> theta_;
   BearingResult result_;
-  Eigen::VectorXd cos_, sin_, ptot_;
+  Eigen::VectorXd cos_, sin_;  // load directions of the film integrals
 };
 
 }  // namespace filmdyn::lubrication

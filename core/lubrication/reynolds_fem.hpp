@@ -122,6 +122,8 @@ class ReynoldsFem {
 
   const TriMesh& mesh() const { return mesh_; }
   const ReynoldsOptions& options() const { return options_; }
+  /// 0 = mesh x, 1 = mesh y (the constructor's sliding_axis).
+  int sliding_axis() const { return axis_; }
   void set_cavitation(CavitationModel model) { options_.cavitation = model; }
   int NodeCount() const { return mesh_.NodeCount(); }
 

@@ -1,16 +1,21 @@
 #include "core/lubrication/skirt_solver.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 
 #include "core/base/input_error.hpp"
+#include "core/lubrication/film_integrals.hpp"
 
 namespace filmdyn::lubrication {
 
 namespace {
 constexpr double kPi = std::numbers::pi;
-}
+// Indices of a panel's load directions (SolvePanel): lateral, cos(alpha); tilt, the moment arm
+// cos(alpha) (y - a_p).
+constexpr int kLateral = 0, kTilt = 1;
+}  // namespace
 
 void SkirtConfig::Validate(const std::string& prefix) const {
   const SkirtGeometry& g = geometry;
@@ -60,16 +65,14 @@ TriMesh SkirtSolver::MakeMesh(const SkirtGeometry& g, const SkirtMeshSpec& spec)
 }
 
 // One lubricated panel: its own mesh and Reynolds solver, the per-node data it needs, and the
-// partial integrals of the last solve (summed over the panels in panel order).
+// integrals of the last solve (summed over the panels in panel order).
 struct SkirtSolver::Panel {
   std::unique_ptr<ReynoldsFem> fem;
   std::vector<int> node;  // whole-skirt node of each panel node
   Eigen::VectorXd cos, weight;
   std::vector<double> alpha;
   ReynoldsStats stats;
-  double lateral = 0, contact_lateral = 0, normal_moment = 0, friction = 0, friction_moment = 0,
-         contact_friction = 0, moft = 0, moft_alpha = 0, moft_y = 0, max_pressure = 0,
-         max_contact_pressure = 0, cavitated_area = 0, area = 0;
+  FilmIntegrals integrals;
 };
 
 SkirtSolver::SkirtSolver(SkirtConfig config)
@@ -158,74 +161,17 @@ void SkirtSolver::SolvePanel(Panel& pa, const SkirtState& s) {
   const ReynoldsSolution& sol = fem.Solve(params);
   pa.stats = sol.stats;
 
-  // One pass over the elements for the loads and the friction.
-  // Normal load: film pushes the piston surface inwards, -p n with n = (cos a) along +e0; x2 for
-  // the mirrored half. Generalised force on gamma: arm (y - a_p) times the lateral force density.
-  // Products of P1 fields integrate exactly: int a b = A/12 (sum a sum b + sum a_i b_i).
-  // Friction on the skirt (surface 1, at rest; liner slides at -u_p): Patir & Cheng 1979 /
-  // paper eq. 31  tau = -mu u_p/h (Phi_f + Phi_fs) - Phi_fp h/2 dp/dy, plus -mu_f p_c sign(u_p).
-  // A rigid rotation d(gamma) moves a skirt point axially by -R cos(alpha) d(gamma), so the
-  // friction moment (generalised force on gamma) is -int tau R cos(alpha) dA. Every element of
-  // a panel carries film (the relief's elements belong to no panel).
-  const auto& fac = fem.factors();
-  const double mu = config_.viscosity, up = s.piston_velocity;
-  const double mu_f = config_.film ? config_.film->boundary_friction() : 0.0;
-  const double sgn = (up > 0) - (up < 0);
-  const bool jfo = config_.solver.cavitation == CavitationModel::kJfo;
-  const double radius = config_.geometry.radius;
-  const Eigen::VectorXd &p = sol.pressure, &pc_node = sol.contact_pressure;
-  double load = 0.0, contact_load = 0.0, load_moment = 0.0;
-  double force = 0.0, moment = 0.0, contact = 0.0;
-  for (const auto& e : fem.elements()) {
-    double cpl = 0.0, hfp = 0.0, dpdy = 0.0, pc = 0.0, cs = 0.0, sw = 0.0, pt = 0.0;
-    double pt_cs = 0.0, pc_cs = 0.0, pt_w = 0.0;
-    for (int a = 0; a < 3; ++a) {
-      const int k = e.node[a];
-      const double theta_f = jfo ? sol.fluid_fraction[k] : 1.0;
-      const double ptot = p[k] + pc_node[k];
-      cpl += theta_f * (fac[k].shear_f + fac[k].shear_fs) / h[k];
-      hfp += fac[k].shear_fp * h[k];
-      dpdy += e.dndy[a] * p[k];
-      pc += pc_node[k];
-      cs += pa.cos[k];
-      sw += pa.weight[k];
-      pt += ptot;
-      pt_cs += ptot * pa.cos[k];
-      pc_cs += pc_node[k] * pa.cos[k];
-      pt_w += ptot * pa.weight[k];
-    }
-    const double a12 = e.area / 12.0;
-    load += a12 * (pt * cs + pt_cs);
-    contact_load += a12 * (pc * cs + pc_cs);
-    load_moment += a12 * (pt * sw + pt_w);
-    const double tau_area = -mu * up * e.area * cpl / 3.0 - e.area * 0.5 * (hfp / 3.0) * dpdy -
-                            sgn * mu_f * e.area * pc / 3.0;
-    force += tau_area;
-    moment += -tau_area * radius * cs / 3.0;
-    contact += -sgn * mu_f * e.area * pc / 3.0;
-  }
-  pa.lateral = -2.0 * load;
-  pa.contact_lateral = -2.0 * contact_load;
-  pa.normal_moment = -2.0 * load_moment;
-  pa.friction = 2.0 * force;
-  pa.contact_friction = 2.0 * contact;
-  pa.friction_moment = 2.0 * moment;
-
-  pa.moft = 1e300;
-  pa.max_pressure = pa.max_contact_pressure = pa.cavitated_area = pa.area = 0.0;
-  const auto& area = fem.lumped_area();
-  const TriMesh& pm = fem.mesh();
-  for (int k = 0; k < n; ++k) {
-    if (h[k] < pa.moft) {
-      pa.moft = h[k];
-      pa.moft_alpha = pa.alpha[k];
-      pa.moft_y = pm.y[k];
-    }
-    pa.max_pressure = std::max(pa.max_pressure, sol.pressure[k]);
-    pa.max_contact_pressure = std::max(pa.max_contact_pressure, sol.contact_pressure[k]);
-    pa.area += area[k];
-    if (sol.cavitated[k]) pa.cavitated_area += area[k] * (jfo ? 1.0 - sol.fluid_fraction[k] : 1.0);
-  }
+  // Normal load: the film pushes the piston surface inwards, -p n with n = (cos a) along +e0.
+  // Generalised force on gamma: arm (y - a_p) times the lateral force density. Friction on the
+  // skirt (surface 1, at rest; the liner slides at -u_p, so U1 - U2 = u_p) along +y, eq. 31. A
+  // rigid rotation d(gamma) moves a skirt point axially by -R cos(alpha) d(gamma), so the
+  // friction moment (generalised force on gamma) is int tau (-R cos(alpha)) dA: the element-by-
+  // element friction, which carries that arm. x2 for the mirrored half. Every element of a panel
+  // carries film (the relief's belong to no panel).
+  const std::array<const Eigen::VectorXd*, 2> directions = {&pa.cos, &pa.weight};
+  const std::array<ScaledField, 1> arms = {ScaledField{&pa.cos, -config_.geometry.radius}};
+  pa.integrals = IntegrateFilm(
+      fem, sol, params, {.load_directions = directions, .friction_arms = arms, .symmetry = 2.0});
 }
 
 const SkirtResult& SkirtSolver::Solve(const SkirtState& s) {
@@ -253,22 +199,23 @@ const SkirtResult& SkirtSolver::Solve(const SkirtState& s) {
   double cavitated_area = 0.0, panel_area = 0.0;
   r.moft = 1e300;
   for (const auto& pa : panels_) {
+    const FilmIntegrals& fi = pa->integrals;
     st.Add(pa->stats);
-    r.lateral_force += pa->lateral;
-    r.contact_lateral_force += pa->contact_lateral;
-    r.friction_force += pa->friction;
-    r.contact_friction_force += pa->contact_friction;
-    r.friction_moment_about_pin += pa->friction_moment;
-    r.moment_about_pin += pa->normal_moment;
-    if (pa->moft < r.moft) {
-      r.moft = pa->moft;
-      r.moft_alpha = pa->moft_alpha;
-      r.moft_y = pa->moft_y;
+    r.lateral_force -= fi.load[kLateral];
+    r.contact_lateral_force -= fi.contact_load[kLateral];
+    r.friction_force += fi.element_friction.force;
+    r.contact_friction_force += fi.element_friction.contact_force;
+    r.friction_moment_about_pin += fi.element_friction.moment[0];
+    r.moment_about_pin -= fi.load[kTilt];
+    if (fi.moft < r.moft) {
+      r.moft = fi.moft;
+      r.moft_alpha = pa->alpha[fi.moft_node];
+      r.moft_y = pa->fem->mesh().y[fi.moft_node];
     }
-    r.max_pressure = std::max(r.max_pressure, pa->max_pressure);
-    r.max_contact_pressure = std::max(r.max_contact_pressure, pa->max_contact_pressure);
-    cavitated_area += pa->cavitated_area;
-    panel_area += pa->area;
+    r.max_pressure = std::max(r.max_pressure, fi.max_pressure);
+    r.max_contact_pressure = std::max(r.max_contact_pressure, fi.max_contact_pressure);
+    cavitated_area += fi.cavitated_area;
+    panel_area += fi.film_area;
   }
   fields_stale_ = true;
   r.moment_about_pin += r.friction_moment_about_pin;
