@@ -284,6 +284,11 @@ std::vector<CaseField> MakeSchema() {
   f.push_back(Scalar("big_end.mesh_theta", be, &B::mesh_theta,
                      {G::kSolver, "Big-end mesh: elements around 360°", "-", "–", 1.0,
                       Between(8, 5000), "circumferential elements (Table II: 50)"}));
+  f.push_back(Scalar(
+      "big_end.mesh_theta_grading", be, &B::mesh_theta_grading,
+      {G::kSolver, "Big-end mesh: circumferential grading", "-", "–", 1.0, Between(1.0, 100.0),
+       "largest / smallest element around, the finest at the minimum film "
+       "(1 = uniform, the paper's)"}));
   f.push_back(Scalar("big_end.mesh_z", be, &B::mesh_z,
                      {G::kSolver, "Big-end mesh: elements across the width", "-", "–", 1.0,
                       Between(2, 2000), "axial elements (Table II: 10)"}));

@@ -80,6 +80,8 @@ struct BigEndCase {
   double oil_feed_pressure = 0.0;    ///< gauge [Pa]; 0 = no feed hole (assumed)
   /// FEM mesh: elements around 360° and across the width (paper Table II).
   int mesh_theta = 50, mesh_z = 10;
+  /// Largest / smallest circumferential element, finest at the minimum film (1 = uniform) [-].
+  double mesh_theta_grading = 1.0;
 };
 
 /// One cylinder-pressure curve: absolute pressure vs crank angle at one speed.

@@ -30,6 +30,7 @@ void BearingConfig::Validate(const std::string& prefix) const {
   RequirePositive(prefix + ".viscosity", viscosity, "Pa*s");
   RequireInRange(prefix + ".mesh.n_theta", mesh.n_theta, 8, 20000);
   RequireInRange(prefix + ".mesh.n_z", mesh.n_z, 2, 5000);
+  RequireInRange(prefix + ".mesh.theta_grading", mesh.theta_grading, 1.0, 100.0, false, false, "-");
   RequireInRange(prefix + ".solver.max_iterations", solver.max_iterations, 1, 100000);
   if (feed.kind != OilFeed::Kind::kLineOfCentres) {
     RequireFinite(prefix + ".feed.angle", feed.angle, "rad");
@@ -50,10 +51,29 @@ void BearingState::Validate(const std::string& prefix) const {
   RequireFinite(prefix + ".bearing_angle", bearing_angle, "rad");
 }
 
+std::vector<double> GradedAngles(int n, double ratio) {
+  const double beta = (ratio - 1.0) / (ratio + 1.0);
+  std::vector<double> theta(static_cast<std::size_t>(n) + 1);
+  for (int i = 0; i <= n; ++i) {
+    const double s = static_cast<double>(i) / n;
+    theta[static_cast<std::size_t>(i)] = 2.0 * kPi * s + beta * std::sin(2.0 * kPi * s);
+  }
+  theta.front() = 0.0;
+  theta.back() = 2.0 * kPi;
+  return theta;
+}
+
 TriMesh BearingSolver::MakeMesh(const BearingGeometry& g, const BearingMeshSpec& spec,
                                 bool fix_theta0) {
   const double period = 2.0 * kPi * g.radius;
-  std::vector<double> xs = Linspace(0.0, period, spec.n_theta);
+  std::vector<double> xs;
+  if (spec.theta_grading == 1.0) {
+    xs = Linspace(0.0, period, spec.n_theta);  // uniform
+  } else {
+    xs = GradedAngles(spec.n_theta, spec.theta_grading);
+    for (double& x : xs) x *= g.radius;
+    xs.back() = period;
+  }
   xs.pop_back();  // periodic: x = 2 pi R is node column 0
   const double width = spec.symmetric_half ? 0.5 * g.length : g.length;
   TriMesh m = MakeTensorMesh(std::move(xs), Linspace(0.0, width, spec.n_z), true, period);

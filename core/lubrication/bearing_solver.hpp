@@ -8,7 +8,8 @@
 ///   h = c (1 + eps cos theta),  dh/dt = c eps_dot cos theta,
 /// theta measured from the maximum film, i.e. from -n where n is the unit vector from the bearing
 /// centre to the journal centre (line of centres, angle phi in the global frame), positive
-/// counter-clockwise. Default boundary condition: p = 0 on theta = 0 (as the published finite-bearing tables assume; Raimondi & Boyd 1958).
+/// counter-clockwise. Default boundary condition: p = 0 on theta = 0 (as the published
+/// finite-bearing tables assume; Raimondi & Boyd 1958).
 #include <memory>
 #include <string>
 
@@ -26,7 +27,18 @@ struct BearingMeshSpec {
   int n_theta = 50;             ///< elements around the full 360 deg
   int n_z = 10;                 ///< elements across the width (or the half width)
   bool symmetric_half = false;  ///< mesh z in [0, L/2] with dp/dz = 0 at the mid-plane
+  /// Circumferential grading: the ratio of the largest to the smallest element, the smallest at
+  /// theta = pi (the minimum film of the line-of-centres frame, where the pressure spike sits),
+  /// the largest at theta = 0. 1 = uniform. See GradedAngles.
+  double theta_grading = 1.0;
 };
+
+/// The n + 1 node angles in [0, 2 pi] of a circumferential mesh of n elements graded by `ratio`
+/// (largest / smallest element, >= 1): theta(s) = 2 pi s + beta sin(2 pi s), s uniform in
+/// [0, 1], beta = (ratio - 1) / (ratio + 1) < 1, so that dtheta/ds = 2 pi (1 + beta cos 2 pi s)
+/// is smallest at theta = pi and largest at theta = 0, smooth and periodic (neighbouring
+/// elements differ by O(1/n)).
+std::vector<double> GradedAngles(int n, double ratio);
 
 /// Oil supply. kLineOfCentres is the default (p = 0 on theta = 0, the film start
 /// following the line of centres). kHole / kGroove are fixed in the bearing body.
