@@ -292,6 +292,10 @@ std::vector<CaseField> MakeSchema() {
   f.push_back(Scalar("big_end.mesh_z", be, &B::mesh_z,
                      {G::kSolver, "Big-end mesh: elements across the width", "-", "–", 1.0,
                       Between(2, 2000), "axial elements (Table II: 10)"}));
+  f.push_back(Scalar("big_end.mesh_z_grading", be, &B::mesh_z_grading,
+                     {G::kSolver, "Big-end mesh: axial grading", "-", "–", 1.0, Between(1.0, 100.0),
+                      "largest (mid-plane) / smallest (edges) element across the width (1 = "
+                      "uniform, the paper's)"}));
   f.push_back(
       Scalar("big_end.oil_feed_pressure", be, &B::oil_feed_pressure,
              {G::kBigEnd, "Oil-feed pressure (gauge, 0 = none)", "Pa", "MPa", kMPa, NonNegative(),

@@ -82,6 +82,8 @@ struct BigEndCase {
   int mesh_theta = 50, mesh_z = 10;
   /// Largest / smallest circumferential element, finest at the minimum film (1 = uniform) [-].
   double mesh_theta_grading = 1.0;
+  /// Largest (mid-plane) / smallest (edges) axial element (1 = uniform) [-].
+  double mesh_z_grading = 1.0;
 };
 
 /// One cylinder-pressure curve: absolute pressure vs crank angle at one speed.

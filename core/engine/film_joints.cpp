@@ -74,6 +74,7 @@ lubrication::BearingConfig BearingConfigFromCase(const EngineCase& c) {
   config.mesh.n_theta = be.mesh_theta;
   config.mesh.n_z = be.mesh_z;
   config.mesh.theta_grading = be.mesh_theta_grading;
+  config.mesh.z_grading = be.mesh_z_grading;
   if (be.oil_feed_pressure > 0.0) {  // a hole in the rod's bore, on the rod axis toward the pin
     config.feed.kind = lubrication::OilFeed::Kind::kHole;
     config.feed.angle = 0.5 * std::numbers::pi;

@@ -31,6 +31,7 @@ void BearingConfig::Validate(const std::string& prefix) const {
   RequireInRange(prefix + ".mesh.n_theta", mesh.n_theta, 8, 20000);
   RequireInRange(prefix + ".mesh.n_z", mesh.n_z, 2, 5000);
   RequireInRange(prefix + ".mesh.theta_grading", mesh.theta_grading, 1.0, 100.0, false, false, "-");
+  RequireInRange(prefix + ".mesh.z_grading", mesh.z_grading, 1.0, 100.0, false, false, "-");
   RequireInRange(prefix + ".solver.max_iterations", solver.max_iterations, 1, 100000);
   if (feed.kind != OilFeed::Kind::kLineOfCentres) {
     RequireFinite(prefix + ".feed.angle", feed.angle, "rad");
@@ -63,6 +64,19 @@ std::vector<double> GradedAngles(int n, double ratio) {
   return theta;
 }
 
+std::vector<double> GradedWidth(int n, double length, double ratio, bool half) {
+  const double beta = (ratio - 1.0) / (ratio + 1.0);
+  const double end = half ? 0.5 : 1.0;
+  std::vector<double> z(static_cast<std::size_t>(n) + 1);
+  for (int i = 0; i <= n; ++i) {
+    const double s = end * static_cast<double>(i) / n;
+    z[static_cast<std::size_t>(i)] = length * (s - beta * std::sin(2.0 * kPi * s) / (2.0 * kPi));
+  }
+  z.front() = 0.0;
+  z.back() = end * length;
+  return z;
+}
+
 TriMesh BearingSolver::MakeMesh(const BearingGeometry& g, const BearingMeshSpec& spec,
                                 bool fix_theta0) {
   const double period = 2.0 * kPi * g.radius;
@@ -76,7 +90,10 @@ TriMesh BearingSolver::MakeMesh(const BearingGeometry& g, const BearingMeshSpec&
   }
   xs.pop_back();  // periodic: x = 2 pi R is node column 0
   const double width = spec.symmetric_half ? 0.5 * g.length : g.length;
-  TriMesh m = MakeTensorMesh(std::move(xs), Linspace(0.0, width, spec.n_z), true, period);
+  std::vector<double> zs =
+      spec.z_grading == 1.0 ? Linspace(0.0, width, spec.n_z)  // uniform
+                            : GradedWidth(spec.n_z, g.length, spec.z_grading, spec.symmetric_half);
+  TriMesh m = MakeTensorMesh(std::move(xs), std::move(zs), true, period);
   const int nx = m.nx_nodes(), ny = m.ny_nodes();
   for (int i = 0; i < nx; ++i) {
     m.fixed[m.Node(i, 0)] = 1;                                 // edge z = 0

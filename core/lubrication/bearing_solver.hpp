@@ -31,6 +31,9 @@ struct BearingMeshSpec {
   /// theta = pi (the minimum film of the line-of-centres frame, where the pressure spike sits),
   /// the largest at theta = 0. 1 = uniform. See GradedAngles.
   double theta_grading = 1.0;
+  /// Axial grading: the ratio of the largest element (at the mid-plane) to the smallest (at the
+  /// edges, where the pressure falls to zero). 1 = uniform. See GradedWidth.
+  double z_grading = 1.0;
 };
 
 /// The n + 1 node angles in [0, 2 pi] of a circumferential mesh of n elements graded by `ratio`
@@ -39,6 +42,12 @@ struct BearingMeshSpec {
 /// is smallest at theta = pi and largest at theta = 0, smooth and periodic (neighbouring
 /// elements differ by O(1/n)).
 std::vector<double> GradedAngles(int n, double ratio);
+
+/// The n + 1 node positions across a width `length` (or its half [0, length/2] when `half`)
+/// graded by `ratio` (largest element at the mid-plane / smallest at the edges, >= 1):
+/// z(s) = length (s - beta sin(2 pi s) / (2 pi)), s uniform in [0, 1] (or [0, 1/2]),
+/// beta = (ratio - 1) / (ratio + 1).
+std::vector<double> GradedWidth(int n, double length, double ratio, bool half);
 
 /// Oil supply. kLineOfCentres is the default (p = 0 on theta = 0, the film start
 /// following the line of centres). kHole / kGroove are fixed in the bearing body.

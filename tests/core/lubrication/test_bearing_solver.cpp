@@ -120,6 +120,25 @@ class TestBearing : public QObject {
     }
   }
 
+  void gradedWidthPutsTheFinestElementsAtTheEdges() {
+    const int n = 100;
+    for (bool half : {false, true}) {
+      const std::vector<double> z = GradedWidth(n, 0.022, 5.0, half);
+      QCOMPARE(int(z.size()), n + 1);
+      QCOMPARE(z.front(), 0.0);
+      QCOMPARE(z.back(), half ? 0.011 : 0.022);
+      const double edge = z[1] - z[0];
+      const double middle = half ? z[n] - z[n - 1] : z[n / 2 + 1] - z[n / 2];
+      for (int i = 0; i < n; ++i) QVERIFY(z[i + 1] > z[i]);
+      QVERIFY2(std::abs(middle / edge - 5.0) < 0.01 * 5.0,
+               qPrintable(QString::number(middle / edge)));
+    }
+    // A graded half width is the lower half of the graded full width with twice the elements.
+    const std::vector<double> full = GradedWidth(40, 0.022, 3.0, false);
+    const std::vector<double> half = GradedWidth(20, 0.022, 3.0, true);
+    for (int i = 0; i <= 20; ++i) QVERIFY(std::abs(full[i] - half[i]) < 1e-15);
+  }
+
   void gradedMeshResolvesTheMinimumFilmWithFewerElements() {
     // eps = 0.97, the default big end's regime: with 50 elements around, a mesh graded 8:1
     // toward the minimum film gives load and peak pressure closer to a fine uniform mesh
