@@ -29,8 +29,7 @@ std::vector<CaseParameter> MakeParameters() {
     p.unit = QString::fromStdString(field.display_unit);
     p.to_si = field.display_scale;
     p.integer = field.kind == engine::FieldKind::kInteger;
-    p.help = QString::fromStdString(field.help);
-    p.range = QString::fromStdString(field.RangeText());
+    p.field = &field;
     p.get = field.get;
     p.set = field.set;
     p.check = [&field](const std::string& name, double si) { field.Check(si, name); };

@@ -26,8 +26,7 @@ struct CaseParameter {
   QString unit;          ///< display unit, e.g. "mm"
   double to_si = 1.0;    ///< SI value = display value × to_si
   bool integer = false;  ///< shown and edited as a whole number
-  QString help;          ///< one line (core's schema)
-  QString range;         ///< allowed values in SI, e.g. "> 0", "integer in [8, 5000]"
+  const engine::CaseField* field = nullptr;  ///< core's schema row (help, SI unit, range)
   std::function<double(const engine::EngineCase&)> get;  ///< SI
   std::function<void(engine::EngineCase&, double)> set;  ///< SI
   /// Throws filmdyn::InputError (core's helpers) when the SI value is not allowed.

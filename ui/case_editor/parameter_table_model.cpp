@@ -78,10 +78,11 @@ QVariant ParameterTableModel::data(const QModelIndex& index, int role) const {
       break;
     case Qt::ToolTipRole: {
       if (bad) return QString::fromStdString(issue->second);
-      const engine::CaseField* field = engine::FindCaseField(p.path);
-      const QString si_unit = field ? QString::fromStdString(field->unit) : QString();
+      const engine::CaseField& field = *p.field;
+      const bool dimensionless = field.unit.empty() || field.unit == "-";
       return tr("%1\nAllowed: %2%3\nCase file: %4")
-          .arg(p.help, p.range, si_unit.isEmpty() || si_unit == "-" ? QString() : " " + si_unit,
+          .arg(QString::fromStdString(field.help), QString::fromStdString(field.RangeText()),
+               dimensionless ? QString() : QString::fromStdString(" " + field.unit),
                QString::fromStdString(p.path));
     }
     case Qt::BackgroundRole:
