@@ -88,6 +88,7 @@ Command MakeRunCommand() {
     streams.err << "filmdyn run: " << engine::StatusName(result.status) << ", " << result.cycles
                 << " cycles, " << result.stats.steps << " steps, " << result.wall_time
                 << " s; results in " << out.string() << "\n";
+    streams.err << "filmdyn run: " << result.error_estimate.Summary() << "\n";
     if (result.status != engine::RunStatus::kCompleted) {
       streams.err << "filmdyn run: incomplete: " << result.message << "\n";
       return 1;

@@ -130,7 +130,8 @@ BatchOutcome RunBatch(std::vector<batch::SweepJob> jobs, int parallel, bool quie
     if (!complete) ++batch.incomplete;
     streams.err << prefix << ": " << label << ": " << engine::StatusName(outcome.result.status)
                 << ", " << outcome.result.cycles << " cycles, " << outcome.result.wall_time << " s"
-                << (complete ? "" : " — " + outcome.result.message) << "\n";
+                << (complete ? "" : " — " + outcome.result.message) << "; "
+                << outcome.result.error_estimate.Summary() << "\n";
   }
   return batch;
 }

@@ -342,6 +342,11 @@ std::vector<CaseField> MakeSchema() {
       "solver.run_in_angle", sol, &SolverCase::run_in_angle,
       {G::kSolver, "Run-in before the first cycle", "rad", "°CA", kDeg, Between(0.0, 8 * kPi),
        "integrated at 10× looser tolerances before the first monitored cycle"}));
+  f.push_back(Scalar("solver.error_estimate", sol, &SolverCase::error_estimate,
+                     {G::kSolver, "Discretisation-error estimate (1 = on)", "-", "–", 1.0,
+                      Between(0, 1),
+                      "1: a companion run on meshes with half the elements estimates the error "
+                      "of the headline figures; 0: off"}));
   return f;
 }
 

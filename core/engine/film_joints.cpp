@@ -1,5 +1,7 @@
 #include "core/engine/film_joints.hpp"
 
+#include <fmt/format.h>
+
 #include <numbers>
 
 #include "core/base/input_error.hpp"
@@ -109,6 +111,32 @@ LubricatedJointFactories FilmJointFactories() {
   f.skirt = &MakeLubricatedSkirt;
   f.big_end = &MakeLubricatedBigEnd;
   return f;
+}
+
+std::string DescribeMeshes(const EngineCase& c) {
+  const SkirtCase& s = c.skirt;
+  const BigEndCase& b = c.big_end;
+  std::string grading;
+  if (b.mesh_theta_grading != 1.0 || b.mesh_z_grading != 1.0) {
+    grading = fmt::format(", graded {:g}:1 around and {:g}:1 across", b.mesh_theta_grading,
+                          b.mesh_z_grading);
+  } else {
+    grading = ", uniform";
+  }
+  return fmt::format("skirt {} + {} + {} x {} elements; big end {} x {} elements{}",
+                     s.mesh_thrust, s.mesh_relief, s.mesh_anti, s.mesh_axial, b.mesh_theta,
+                     b.mesh_z, grading);
+}
+
+void UsePaperMeshes(EngineCase* c) {
+  c->skirt.mesh_thrust = 30;
+  c->skirt.mesh_relief = 2;
+  c->skirt.mesh_anti = 30;
+  c->skirt.mesh_axial = 40;
+  c->big_end.mesh_theta = 50;
+  c->big_end.mesh_z = 10;
+  c->big_end.mesh_theta_grading = 1.0;
+  c->big_end.mesh_z_grading = 1.0;
 }
 
 }  // namespace filmdyn::engine

@@ -3,6 +3,7 @@
 /// and surface fields to the coupling elements' plain solver configurations and mountings, and
 /// the factories BuildCrankTrain uses for the lubricated models.
 #include <memory>
+#include <string>
 
 #include "core/engine/crank_train.hpp"
 #include "core/engine/engine_case.hpp"
@@ -23,6 +24,12 @@ std::unique_ptr<multibody::JointForceElement> MakeLubricatedSkirt(const EngineCa
 /// The lubricated big-end element of a case (journal on the crank, bearing on the rod).
 std::unique_ptr<multibody::JointForceElement> MakeLubricatedBigEnd(const EngineCase& engine_case,
                                                                    const CrankTrainLayout& layout);
+/// The film meshes of a case in words, e.g. "skirt 15 + 2 + 15 x 20 elements; big end 100 x 10
+/// elements, graded 8:1 around and 4:1 across".
+std::string DescribeMeshes(const EngineCase& engine_case);
+/// Sets the paper's meshes (Table II: skirt 30 + 2 + 30 x 40, big end 50 x 10 uniform).
+void UsePaperMeshes(EngineCase* engine_case);
+
 /// Both factories: what RunConfig uses for the lubricated models.
 LubricatedJointFactories FilmJointFactories();
 

@@ -169,10 +169,9 @@ std::string AtAngle(int cycle, double crank_deg) {
   return fmt::format(" (cycle {}, {:.1f} °CA)", cycle, crank_deg);
 }
 
-}  // namespace
-
-RunResult RunJob(const RunConfig& config, const RunMonitor& monitor,
-                 const std::atomic<bool>* cancel) {
+// One run of the model as configured (no error estimate).
+RunResult RunSingle(const RunConfig& config, const RunMonitor& monitor,
+                    const std::atomic<bool>* cancel) {
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
@@ -368,6 +367,80 @@ RunResult RunJob(const RunConfig& config, const RunMonitor& monitor,
   result.stats = integrator.Stats();
   result.reynolds_solves = solves();
   result.wall_time = elapsed();
+  return result;
+}
+
+}  // namespace
+
+RunResult RunJob(const RunConfig& config, const RunMonitor& monitor,
+                 const std::atomic<bool>* cancel) {
+  const EngineCase& c = config.engine_case;
+  const bool has_films =
+      c.skirt.model == JointModel::kLubricated || c.big_end.model == JointModel::kLubricated;
+  if (!has_films || c.solver.error_estimate == 0) {
+    RunResult result = RunSingle(config, monitor, cancel);
+    result.error_estimate.status = has_films ? "off" : "not-applicable";
+    return result;
+  }
+  // The coarse companion runs beside the run on its own thread (one film thread: the run itself
+  // keeps the machine's other core busy only part of the time) and is stopped when the run is
+  // cancelled or ends without a reported cycle.
+  const auto start = std::chrono::steady_clock::now();
+  const CoarseCompanion companion = MakeCoarseCompanion(c);
+  RunConfig coarse = config;
+  coarse.engine_case = companion.engine_case;
+  coarse.integrator = config.integrator.ScaledTolerances(companion.tolerance_factor);
+  coarse.threads = 1;
+  coarse.field_callback = nullptr;
+  std::atomic<bool> stop_coarse{false};
+  RunResult coarse_result;
+  std::string coarse_error;
+  std::thread coarse_thread([&] {
+    try {
+      coarse_result = RunSingle(
+          coarse,
+          [&](const RunProgress&) { return !stop_coarse.load() && !(cancel && cancel->load()); },
+          nullptr);
+    } catch (const std::exception& error) {
+      coarse_error = error.what();
+    }
+  });
+  RunResult result;
+  try {
+    result = RunSingle(config, monitor, cancel);
+  } catch (...) {
+    stop_coarse = true;
+    coarse_thread.join();
+    throw;
+  }
+  if (result.status != RunStatus::kCompleted && result.status != RunStatus::kNotConverged) {
+    stop_coarse = true;
+  }
+  coarse_thread.join();
+  ErrorEstimate& estimate = result.error_estimate;
+  if (!coarse_error.empty()) {
+    estimate.status = "unavailable";
+    estimate.message = "the coarse companion run failed: " + coarse_error;
+  } else if (stop_coarse) {
+    estimate.status = "unavailable";
+    estimate.message = "the run did not complete";
+  } else if (coarse_result.status != RunStatus::kCompleted &&
+             coarse_result.status != RunStatus::kNotConverged) {
+    estimate.status = "unavailable";
+    estimate.message = fmt::format(
+        "the companion run on meshes with half the elements did not complete ({}: {}); the "
+        "meshes are likely too coarse for this operating point",
+        StatusName(coarse_result.status), coarse_result.message);
+  } else {
+    estimate = EstimateErrors(result.samples, coarse_result.samples, companion);
+  }
+  estimate.skirt_ratio = companion.skirt_ratio;
+  estimate.big_end_ratio = companion.big_end_ratio;
+  estimate.tolerance_factor = companion.tolerance_factor;
+  estimate.coarse_wall_time = coarse_result.wall_time;
+  estimate.coarse_steps = coarse_result.stats.steps;
+  result.wall_time =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }
 

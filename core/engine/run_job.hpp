@@ -9,6 +9,7 @@
 
 #include "core/engine/crank_train.hpp"
 #include "core/engine/engine_case.hpp"
+#include "core/engine/error_estimate.hpp"
 #include "core/engine/pressure_curve.hpp"
 #include "core/multibody/integrator.hpp"
 
@@ -96,14 +97,19 @@ struct RunResult {
   long reynolds_solves = 0;               ///< Reynolds (FEM + cavitation) solves, both joints
   long reynolds_factorizations = 0;       ///< their numeric LDLᵀ factorisations
   multibody::SolverStats stats;
-  double wall_time = 0.0;  ///< [s]
+  double wall_time = 0.0;  ///< [s], start to end (with the error estimate's companion run)
   double max_constraint_violation = 0.0;
+  /// The discretisation error of the headline figures (solver.error_estimate): a coarse
+  /// companion run of the same case beside this one.
+  ErrorEstimate error_estimate;
 };
 
 /// Runs cycles from the assembled start until the periodic steady state (cycle-to-cycle change of
 /// the monitored outputs below solver.steady_state_tolerance of their range) or max_cycles, and
-/// keeps the last cycle. Never throws for numerical trouble (status + message instead); bad input
-/// still throws InputError before anything runs.
+/// keeps the last cycle. With solver.error_estimate = 1 and a film joint, a coarse companion
+/// run (MakeCoarseCompanion) computes beside it and RunResult::error_estimate compares the two;
+/// wall_time includes waiting for it. Never throws for numerical trouble (status + message
+/// instead); bad input still throws InputError before anything runs.
 RunResult RunJob(const RunConfig& config, const RunMonitor& monitor = {},
                  const std::atomic<bool>* cancel = nullptr);
 

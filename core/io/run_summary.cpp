@@ -41,19 +41,12 @@ RunSummary SummarizeRun(const std::string& case_name, const engine::RunConfig& c
     }
     if (any) s.extremes[columns[c].header] = {lo, hi};
   }
-  auto mean_of = [&rows](std::optional<double> OutputRow::*member) -> std::optional<double> {
-    double sum = 0;
-    int n = 0;
-    for (const OutputRow& row : rows) {
-      if (const auto& v = row.*member) {
-        sum += *v;
-        ++n;
-      }
-    }
-    return n ? std::optional<double>(sum / n) : std::nullopt;
-  };
-  s.mean_fpl_skirt_w = mean_of(&OutputRow::skirt_fpl);
-  s.mean_fpl_bearing_w = mean_of(&OutputRow::bearing_fpl);
+  s.headline = engine::HeadlineFigures(result.samples);
+  for (const engine::HeadlineFigure& f : s.headline) {
+    if (f.key == "skirt_fpl_mean[W]") s.mean_fpl_skirt_w = f.value;
+    if (f.key == "bearing_fpl_mean[W]") s.mean_fpl_bearing_w = f.value;
+  }
+  s.error_estimate = result.error_estimate;
   SolverSummary& v = s.solver;
   v.integrator = "CVODE BDF (SUNDIALS), dense Newton";
   v.steps = result.stats.steps;
@@ -142,6 +135,33 @@ json SummaryToJson(const RunSummary& s) {
                  {"relative_tolerance", v.relative_tolerance}};
   j["pressure_curve"] = {{"peak_pa", s.pressure_peak_pa},
                          {"peak_crank_angle_deg", s.pressure_peak_crank_angle_deg}};
+  json headline = json::object();
+  for (const engine::HeadlineFigure& f : s.headline) headline[f.key] = f.value;
+  j["headline"] = headline;
+  const engine::ErrorEstimate& e = s.error_estimate;
+  json figures = json::object();
+  for (const engine::FigureError& f : e.figures) {
+    figures[f.figure.key] = {{"value", f.figure.value},
+                             {"coarse_value", f.coarse_value},
+                             {"error", f.error},
+                             {"relative", f.relative},
+                             {"order", f.figure.order}};
+  }
+  j["discretisation_error"] = {
+      {"status", e.status},
+      {"message", e.message},
+      {"summary", e.Summary()},
+      {"warning", e.Warn()},
+      {"threshold", e.threshold},
+      {"worst_relative", e.worst_relative},
+      {"worst_figure", e.worst_label},
+      {"coarse_run",
+       {{"skirt_spacing_ratio", e.skirt_ratio},
+        {"big_end_spacing_ratio", e.big_end_ratio},
+        {"tolerance_factor", e.tolerance_factor},
+        {"wall_time_s", e.coarse_wall_time},
+        {"steps", e.coarse_steps}}},
+      {"figures", figures}};
   return j;
 }
 
@@ -192,6 +212,51 @@ RunSummary FromJson(const json& j) {
   Read(j, "pressure_curve", "", &curve);
   Read(curve, "peak_pa", "pressure_curve", &s.pressure_peak_pa);
   Read(curve, "peak_crank_angle_deg", "pressure_curve", &s.pressure_peak_crank_angle_deg);
+  json headline = json::object();
+  Read(j, "headline", "", &headline);
+  if (!headline.is_object()) throw std::runtime_error("\"headline\" is not an object");
+  for (const auto& [key, value] : headline.items()) {
+    engine::HeadlineFigure f;
+    f.key = key;
+    f.label = engine::HeadlineLabel(key);
+    f.value = Get<double>(headline, key, "headline");
+    f.big_end = key.rfind("bearing_", 0) == 0;
+    s.headline.push_back(f);
+  }
+  json error = json::object();
+  Read(j, "discretisation_error", "", &error);
+  engine::ErrorEstimate& e = s.error_estimate;
+  Read(error, "status", "discretisation_error", &e.status);
+  Read(error, "message", "discretisation_error", &e.message);
+  Read(error, "threshold", "discretisation_error", &e.threshold);
+  Read(error, "worst_relative", "discretisation_error", &e.worst_relative);
+  Read(error, "worst_figure", "discretisation_error", &e.worst_label);
+  json coarse = json::object();
+  Read(error, "coarse_run", "discretisation_error", &coarse);
+  const std::string where = "discretisation_error.coarse_run";
+  Read(coarse, "skirt_spacing_ratio", where, &e.skirt_ratio);
+  Read(coarse, "big_end_spacing_ratio", where, &e.big_end_ratio);
+  Read(coarse, "tolerance_factor", where, &e.tolerance_factor);
+  Read(coarse, "wall_time_s", where, &e.coarse_wall_time);
+  Read(coarse, "steps", where, &e.coarse_steps);
+  json figures = json::object();
+  Read(error, "figures", "discretisation_error", &figures);
+  if (!figures.is_object()) {
+    throw std::runtime_error("\"discretisation_error.figures\" is not an object");
+  }
+  for (const auto& [key, f] : figures.items()) {
+    const std::string at = "discretisation_error.figures." + key;
+    engine::FigureError fe;
+    fe.figure.key = key;
+    fe.figure.label = engine::HeadlineLabel(key);
+    fe.figure.big_end = key.rfind("bearing_", 0) == 0;
+    fe.figure.value = Get<double>(f, "value", at);
+    fe.coarse_value = Get<double>(f, "coarse_value", at);
+    fe.error = Get<double>(f, "error", at);
+    fe.relative = Get<double>(f, "relative", at);
+    Read(f, "order", at, &fe.figure.order);
+    e.figures.push_back(fe);
+  }
   return s;
 }
 

@@ -55,6 +55,10 @@ struct RunSummary {
   SolverSummary solver;
   double pressure_peak_pa = 0.0;
   double pressure_peak_crank_angle_deg = 0.0;
+  /// engine::HeadlineFigures of the reported cycle ("headline" in the file).
+  std::vector<engine::HeadlineFigure> headline;
+  /// Their estimated discretisation error ("discretisation_error").
+  engine::ErrorEstimate error_estimate;
 };
 
 /// The summary of a finished (or stopped) run from its configuration, result and the rows

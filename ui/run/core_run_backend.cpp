@@ -180,6 +180,7 @@ RunBackend CoreRunBackend() {
     sink.Statistic("rejected steps", double(result.stats.rejected_steps));
     sink.Statistic("max constraint violation", result.max_constraint_violation);
     sink.Statistic("Reynolds solves", double(result.reynolds_solves));
+    sink.ReportErrorEstimate(result.error_estimate);
     switch (result.status) {
       case engine::RunStatus::kCompleted:
       case engine::RunStatus::kCancelled:

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/engine/engine_case.hpp"
+#include "core/engine/error_estimate.hpp"
 #include "ui/fields/field_frames.hpp"
 #include "ui/run/result_columns.hpp"
 
@@ -55,9 +56,10 @@ class RunSink {
   virtual void Report(std::vector<RunSample> reported_cycle) = 0;
   /// A caveat on usable results (e.g. no periodic steady state within max_cycles).
   virtual void Warn(const std::string& message) { (void)message; }
-  /// Writers of the run's output in core's formats (the files `filmdyn run` writes):
   /// Core's writers of the finished run (the files `filmdyn run` writes).
   virtual void SetWriters(RunWriters writers) { (void)writers; }
+  /// The estimated discretisation error of the run's headline figures.
+  virtual void ReportErrorEstimate(const engine::ErrorEstimate& estimate) { (void)estimate; }
   /// The film fields of the reported cycle (lubricated joints only).
   virtual void ReportFields(std::shared_ptr<const FieldFrames> fields) { (void)fields; }
 };

@@ -80,6 +80,17 @@ void RunRecord::Warn(const std::string& message) {
   warning_ = QString::fromStdString(message);
 }
 
+void RunRecord::ReportErrorEstimate(const engine::ErrorEstimate& estimate) {
+  std::lock_guard lock(mutex_);
+  error_estimate_ = estimate;
+  ++version_;
+}
+
+engine::ErrorEstimate RunRecord::errorEstimate() const {
+  std::lock_guard lock(mutex_);
+  return error_estimate_;
+}
+
 void RunRecord::SetWriters(RunWriters writers) {
   std::lock_guard lock(mutex_);
   writers_ = std::move(writers);

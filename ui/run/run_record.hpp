@@ -38,6 +38,9 @@ class RunRecord : public RunSink {
   void ReportFields(std::shared_ptr<const FieldFrames> fields) override;
   void Warn(const std::string& message) override;
   void SetWriters(RunWriters writers) override;
+  void ReportErrorEstimate(const engine::ErrorEstimate& estimate) override;
+  /// The estimate of the finished run (status "off" until one is reported).
+  engine::ErrorEstimate errorEstimate() const;
   /// Writes the run folder as `filmdyn run` does; false with *error when it cannot (or when
   /// the backend provided no writer).
   bool writeRunFolder(const QString& directory, QString* error) const;
@@ -76,6 +79,7 @@ class RunRecord : public RunSink {
   bool has_report_ = false;
   std::shared_ptr<const FieldFrames> fields_;
   QString warning_;
+  engine::ErrorEstimate error_estimate_;
   RunWriters writers_;
   RunProgress progress_;
   std::map<std::string, double> statistics_;

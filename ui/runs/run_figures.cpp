@@ -20,18 +20,18 @@ double Reduce(const std::vector<RunSample>& samples, F value, bool take_max) {
   return best;
 }
 
-// Time average (trapezoidal) over the samples, NaN when there is no data.
+// Cycle mean: the plain mean of the cycle's equally spaced output samples (the periodic
+// trapezoidal rule), as engine::HeadlineFigures defines it for summary.json; NaN without data.
 double Mean(const std::vector<RunSample>& samples, Column column) {
-  double integral = 0, span = 0;
-  for (size_t k = 1; k < samples.size(); ++k) {
-    const double a = samples[k - 1][column], b = samples[k][column];
-    const double dt = samples[k][Column::kTime] - samples[k - 1][Column::kTime];
-    if (std::isfinite(a) && std::isfinite(b) && dt > 0) {
-      integral += 0.5 * (a + b) * dt;
-      span += dt;
+  double sum = 0;
+  int count = 0;
+  for (const RunSample& s : samples) {
+    if (std::isfinite(s[column])) {
+      sum += s[column];
+      ++count;
     }
   }
-  return span > 0 ? integral / span : kNaN;
+  return count > 0 ? sum / count : kNaN;
 }
 
 }  // namespace

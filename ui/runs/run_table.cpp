@@ -13,6 +13,32 @@ QString Number(double v, double scale, int decimals = 2) {
   return std::isfinite(v) ? QString::number(v * scale, 'f', decimals) : QStringLiteral("–");
 }
 
+// "≤ 0.4 %", "2.8 %" in red with a warning sign above the threshold, "–" when not estimated;
+// the tooltip lists every headline figure with its estimate.
+void ShowErrorEstimate(const engine::ErrorEstimate& e, QTableWidgetItem* cell) {
+  QString text = QStringLiteral("–");
+  if (e.Estimated()) {
+    const QString percent = QString::number(100.0 * e.worst_relative, 'g', 2);
+    text = e.Warn() ? QString("⚠ %1 %").arg(percent) : QString("≤ %1 %").arg(percent);
+  } else if (e.status == "unavailable") {
+    text = QStringLiteral("⚠ not estimated");
+  }
+  QString tip = QString::fromStdString(e.Summary());
+  for (const engine::FigureError& f : e.figures) {
+    tip += QString("\n%1: %2%3 %").arg(QString::fromStdString(f.figure.label))
+               .arg(f.error >= 0 ? "+" : "−")
+               .arg(QString::number(100.0 * f.relative, 'g', 2));
+  }
+  if (e.Estimated()) {
+    tip += QString("\n(converged ≈ value + error; from a companion run on meshes with half the "
+                   "elements, %1 s)")
+               .arg(QString::number(e.coarse_wall_time, 'f', 1));
+  }
+  cell->setText(text);
+  cell->setToolTip(tip);
+  cell->setForeground(e.Warn() ? QBrush(QColor(180, 0, 0)) : QBrush());
+}
+
 }  // namespace
 
 RunTable::RunTable(QWidget* parent) : QTableWidget(0, kColumns, parent) {
@@ -20,7 +46,8 @@ RunTable::RunTable(QWidget* parent) : QTableWidget(0, kColumns, parent) {
   setHorizontalHeaderLabels({tr("Show"), tr("Run"), tr("Status"), tr("Cycles"), tr("Wall [s]"),
                              tr("max |e₀| [µm]"), tr("max |γ| [mrad]"), tr("min MOFT skirt [µm]"),
                              tr("min MOFT big end [µm]"), tr("mean FPL skirt [W]"),
-                             tr("mean FPL big end [W]"), tr("max |F big end| [kN]"), tr("Reason")});
+                             tr("mean FPL big end [W]"), tr("max |F big end| [kN]"), tr("Discretisation error"),
+                             tr("Reason")});
   setSelectionBehavior(QAbstractItemView::SelectRows);
   setSelectionMode(QAbstractItemView::SingleSelection);
   setEditTriggers(QAbstractItemView::NoEditTriggers);
@@ -71,6 +98,7 @@ void RunTable::updateRun(const RunHandle& run) {
   item(row, kSkirtFpl)->setText(Number(f.mean_skirt_fpl, 1.0, 1));
   item(row, kBearingFpl)->setText(Number(f.mean_bearing_fpl, 1.0, 1));
   item(row, kBigEndForce)->setText(Number(f.max_big_end_force, 1e-3));
+  ShowErrorEstimate(run->errorEstimate(), item(row, kError));
   item(row, kReason)->setText(run->reason());
   item(row, kReason)->setToolTip(run->reason());
   const bool failed = run->status() == RunStatus::kFailed;

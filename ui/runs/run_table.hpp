@@ -25,6 +25,7 @@ class RunTable : public QTableWidget {
     kSkirtFpl,
     kBearingFpl,
     kBigEndForce,
+    kError,
     kReason,
     kColumns
   };

@@ -17,7 +17,7 @@ class TestCaseFieldsDoc : public QObject {
     std::size_t rows = 0;
     for (char ch : generated) rows += ch == '\n';
     QCOMPARE(rows, filmdyn::engine::CaseSchema().size() + 2);
-    QVERIFY(generated.find("| `big_end.mesh_theta` | - | integer in [8, 5000] | 50 |") !=
+    QVERIFY(generated.find("| `big_end.mesh_theta` | - | integer in [8, 5000] | 100 |") !=
             std::string::npos);
     QVERIFY(generated.find("| `geometry.pin_offset` | m | [-0.01, 0.01] | 0.0007 |") !=
             std::string::npos);

@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "core/base/input_error.hpp"
+#include "core/engine/film_joints.hpp"
 #include "core/io/case_file.hpp"
 #include "core/io/resources.hpp"
 
@@ -33,11 +34,22 @@ class TestCaseFile : public QObject {
   Q_OBJECT
  private slots:
   void meshSizesAreCaseFields() {
-    // Paper Table II defaults; reachable by --set and rejected when not a sensible integer.
+    // The default case's meshes (graded big end; the paper's Table II meshes by --set or
+    // engine::UsePaperMeshes); reachable by --set and rejected when not a sensible integer.
     const engine::EngineCase d = io::CaseFromJson(DefaultJson());
-    QCOMPARE(d.skirt.mesh_thrust, 30);
-    QCOMPARE(d.skirt.mesh_axial, 40);
-    QCOMPARE(d.big_end.mesh_theta, 50);
+    QCOMPARE(d.skirt.mesh_thrust, 15);
+    QCOMPARE(d.skirt.mesh_axial, 20);
+    QCOMPARE(d.big_end.mesh_theta, 100);
+    QCOMPARE(d.big_end.mesh_theta_grading, 8.0);
+    QCOMPARE(d.big_end.mesh_z_grading, 4.0);
+    engine::EngineCase paper = d;
+    engine::UsePaperMeshes(&paper);
+    QCOMPARE(paper.skirt.mesh_thrust, 30);
+    QCOMPARE(paper.skirt.mesh_axial, 40);
+    QCOMPARE(paper.big_end.mesh_theta, 50);
+    QCOMPARE(paper.big_end.mesh_theta_grading, 1.0);
+    QCOMPARE(engine::DescribeMeshes(paper),
+             std::string("skirt 30 + 2 + 30 x 40 elements; big end 50 x 10 elements, uniform"));
     const io::LoadedCase c = io::LoadCase("", {"skirt.mesh_axial=12", "big_end.mesh_theta=24"});
     QCOMPARE(c.value.skirt.mesh_axial, 12);
     QCOMPARE(c.value.big_end.mesh_theta, 24);

@@ -35,7 +35,20 @@ io::RunSummary Full() {
                    .solver = {"integrator", 5276, 12, 9000, 220, 12000, 300, 60000, 20.0, 30.0,
                               1e-4},
                    .pressure_peak_pa = 6.1e6,
-                   .pressure_peak_crank_angle_deg = 372.0};
+                   .pressure_peak_crank_angle_deg = 372.0,
+                   .headline = {{"skirt_fpl_mean[W]", "mean skirt FPL", 659.75, false},
+                                {"bearing_moft_min[m]", "min big-end MOFT", 1.1e-6, true}},
+                   .error_estimate = {}};
+  engine::ErrorEstimate& e = s.error_estimate;
+  e.status = "estimated";
+  e.figures = {{{"bearing_moft_min[m]", "min big-end MOFT", 1.1e-6, true}, 1.0e-6, 3.3e-8, 0.03}};
+  e.worst_relative = 0.03;
+  e.worst_label = "min big-end MOFT";
+  e.skirt_ratio = 2.0;
+  e.big_end_ratio = 2.0;
+  e.tolerance_factor = 4.0;
+  e.coarse_wall_time = 3.5;
+  e.coarse_steps = 4000;
   return s;
 }
 
@@ -49,6 +62,7 @@ void CompareSummaries(const io::RunSummary& a, const io::RunSummary& b) {
   QCOMPARE(a.solver.newton_failures, b.solver.newton_failures);
   QCOMPARE(a.solver.relative_tolerance, b.solver.relative_tolerance);
   QCOMPARE(a.pressure_peak_crank_angle_deg, b.pressure_peak_crank_angle_deg);
+  QCOMPARE(a.error_estimate.Summary(), b.error_estimate.Summary());
 }
 
 }  // namespace
@@ -69,10 +83,17 @@ class TestRunSummary : public QObject {
          {"filmdyn_version", "case", "model", "rpm", "status", "complete", "message", "cycles",
           "cycles_to_steady_state", "cycle_to_cycle_change", "cycle_to_cycle_worst_quantity",
           "wall_time_s", "max_constraint_violation", "extremes", "mean_fpl_w", "solver",
-          "pressure_curve"}) {
+          "pressure_curve", "headline", "discretisation_error"}) {
       QVERIFY2(j.contains(key), key);
     }
-    QCOMPARE(j.size(), std::size_t(17));
+    QCOMPARE(j.size(), std::size_t(19));
+    QCOMPARE(j["discretisation_error"]["figures"]["bearing_moft_min[m]"]["relative"].get<double>(),
+             0.03);
+    QVERIFY(j["discretisation_error"]["warning"].get<bool>());  // 3 % > 1 %
+    // The labels come back from the one table of headline figures.
+    const io::RunSummary back = io::SummaryFromJson(j);
+    QCOMPARE(back.error_estimate.figures.at(0).figure.label, std::string("min big-end MOFT"));
+    QCOMPARE(back.error_estimate.worst_relative, 0.03);
     QVERIFY(j["mean_fpl_w"]["bearing"].is_null());
   }
 

@@ -1,0 +1,87 @@
+#pragma once
+/// @file The headline figures of a run and the estimate of their discretisation error.
+///
+/// Headline figures: what a designer reads first, over the reported cycle — the minimum film
+/// thickness of each lubricated joint, the big end's largest eccentricity ratio, the peak film
+/// pressure of each joint and the cycle-mean friction power loss of each joint. This is their
+/// one definition: summary.json, the CLI, the GUI and the estimate all use it.
+///
+/// Estimate: a second, coarser run of the whole coupled model — every film mesh with half the
+/// elements in each direction (same grading; spacing ratio r ≈ 2), every integrator tolerance
+/// r² times looser (the films' second-order spatial convergence, the integrator's error growing
+/// with its tolerance: both error sources grow alike). Richardson's estimate of the run's
+/// error is then (f − f_coarse) / (r^p − 1) with p = 2 the figures' observed order, signed:
+/// converged value ≈ f + error. It sees the coupled result (the coarse films move the journal and the
+/// piston). Justification and its check against converged solutions: docs/validation/errors.md.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/engine/crank_train.hpp"
+#include "core/engine/engine_case.hpp"
+
+namespace filmdyn::engine {
+
+/// One headline figure of a run.
+struct HeadlineFigure {
+  std::string key;    ///< e.g. "bearing_moft_min[m]" (summary.json key, unit in brackets)
+  std::string label;  ///< e.g. "min big-end MOFT" (messages, GUI)
+  double value = 0.0;  ///< SI
+  bool big_end = false;  ///< the figure belongs to the big end (else the skirt)
+  double order = 2.0;    ///< its observed order of convergence in the element size
+};
+
+/// The headline figures present for the samples' joints, in a fixed order: skirt MOFT min,
+/// skirt peak pressure, skirt mean FPL, big-end MOFT min, max ε, big-end peak pressure, big-end
+/// mean FPL. Means are plain means over the cycle's equally spaced output samples (the periodic
+/// trapezoidal rule). Empty when no sample has a lubricated joint.
+std::vector<HeadlineFigure> HeadlineFigures(const std::vector<CrankTrainSample>& samples);
+/// The label of a headline key ("min big-end MOFT"); the key itself when unknown.
+std::string HeadlineLabel(const std::string& key);
+
+/// The coarse companion of a case: meshes with half the elements (never below each count's
+/// minimum), the same gradings, tolerances `tolerance_factor` times looser.
+struct CoarseCompanion {
+  EngineCase engine_case;
+  double skirt_ratio = 2.0;        ///< h_coarse / h of the skirt mesh (√ of the element ratio)
+  double big_end_ratio = 2.0;      ///< the same for the big-end mesh
+  double tolerance_factor = 4.0;   ///< coarse tolerances / the run's
+};
+CoarseCompanion MakeCoarseCompanion(const EngineCase& engine_case);
+
+/// The estimate for one figure.
+struct FigureError {
+  HeadlineFigure figure;
+  double coarse_value = 0.0;  ///< the same figure of the coarse run
+  double error = 0.0;         ///< signed estimate: converged ≈ value + error (SI)
+  double relative = 0.0;      ///< |error| / |value|
+};
+
+/// The estimate of a run.
+struct ErrorEstimate {
+  /// "estimated"; "off" (solver.error_estimate = 0); "not-applicable" (no lubricated joint);
+  /// "unavailable" (the coarse run did not complete: `message` says why).
+  std::string status = "off";
+  std::string message;
+  std::vector<FigureError> figures;
+  double worst_relative = 0.0;   ///< the largest relative estimate
+  std::string worst_label;       ///< its figure
+  double threshold = 0.01;       ///< a warning is due above this relative error
+  double skirt_ratio = 0.0, big_end_ratio = 0.0, tolerance_factor = 0.0;
+  double coarse_wall_time = 0.0;  ///< [s]
+  long coarse_steps = 0;
+
+  bool Estimated() const { return status == "estimated"; }
+  /// Above the threshold, or unavailable although films were computed.
+  bool Warn() const { return (Estimated() && worst_relative > threshold) || status == "unavailable"; }
+  /// One line for a terminal or a status bar, e.g. "estimated discretisation error ≤ 0.4 %
+  /// (largest: min big-end MOFT)"; a warning names the figure and what to refine.
+  std::string Summary() const;
+};
+
+/// Richardson's estimate from the run's and the coarse run's reported cycles.
+ErrorEstimate EstimateErrors(const std::vector<CrankTrainSample>& samples,
+                             const std::vector<CrankTrainSample>& coarse_samples,
+                             const CoarseCompanion& companion);
+
+}  // namespace filmdyn::engine

@@ -1,0 +1,197 @@
+// The discretisation-error estimate of a run against the true error of the whole coupled cycle:
+// the default case, Skirt-LBRBE, at 6000 and 2000 rpm on 1x, 2x and 4x meshes (1x = skirt
+// 12 + 2 + 12 x 16, big end 50 x 5 graded 8:1 / 4:1). The "true" error of each run is its
+// distance to the Richardson extrapolation of the 2x and 4x runs at the order observed over the
+// three meshes — data the estimate never sees for the 1x and 2x runs (it uses only the run and
+// its own coarse companion). Each headline estimate must be within a factor of 2 of the true
+// error, unless both are below 0.25 % of the figure (the integrator's tolerance noise;
+// docs/validation/errors.md). Exception, measured and documented there: the peak pressures on
+// the 1x meshes (coarser than the default case's), whose companion (big end 25 x 3) is not in
+// the asymptotic range — the nodal peak of a spike a few elements wide jumps with the node
+// positions; there the estimate overstates the error (up to 2.5x on the big end). Also: the companion's meshes and tolerances, the figures'
+// definitions against the samples, and the estimate off / unavailable.
+#include <QtTest>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+
+#include "core/engine/error_estimate.hpp"
+#include "core/engine/run_job.hpp"
+#include "core/io/case_file.hpp"
+
+using namespace filmdyn;
+
+namespace {
+
+engine::RunConfig Config(double rpm, int multiple) {
+  io::LoadedCase loaded = io::LoadCase({});
+  engine::EngineCase& c = loaded.value;
+  c.skirt.mesh_thrust = c.skirt.mesh_anti = 12 * multiple;
+  c.skirt.mesh_relief = 2 * multiple;
+  c.skirt.mesh_axial = 16 * multiple;
+  c.big_end.mesh_theta = 50 * multiple;
+  c.big_end.mesh_z = 5 * multiple;
+  c.big_end.mesh_theta_grading = 8.0;
+  c.big_end.mesh_z_grading = 4.0;
+  return engine::MakeRunConfig(c, engine::Model::kSkirtLbrbe, rpm,
+                               io::PressureCurveForSpeed(loaded, rpm));
+}
+
+std::map<std::string, double> Values(const std::vector<engine::HeadlineFigure>& figures) {
+  std::map<std::string, double> v;
+  for (const auto& f : figures) v[f.key] = f.value;
+  return v;
+}
+
+}  // namespace
+
+class TestErrorEstimate : public QObject {
+  Q_OBJECT
+ private slots:
+  void companionHalvesTheMeshesAndLoosensTheTolerances() {
+    engine::EngineCase c = io::LoadCase({}).value;
+    c.skirt.mesh_thrust = 15;
+    c.skirt.mesh_relief = 2;
+    c.skirt.mesh_anti = 15;
+    c.skirt.mesh_axial = 20;
+    c.big_end.mesh_theta = 100;
+    c.big_end.mesh_z = 10;
+    c.skirt.model = c.big_end.model = engine::JointModel::kLubricated;
+    const engine::CoarseCompanion k = engine::MakeCoarseCompanion(c);
+    QCOMPARE(k.engine_case.skirt.mesh_thrust, 8);  // round(7.5)
+    QCOMPARE(k.engine_case.skirt.mesh_relief, 1);
+    QCOMPARE(k.engine_case.skirt.mesh_axial, 10);
+    QCOMPARE(k.engine_case.big_end.mesh_theta, 50);
+    QCOMPARE(k.engine_case.big_end.mesh_z, 5);
+    QCOMPARE(k.engine_case.big_end.mesh_theta_grading, c.big_end.mesh_theta_grading);
+    QCOMPARE(k.big_end_ratio, 2.0);
+    QCOMPARE(k.skirt_ratio, std::sqrt(32.0 * 20.0 / (17.0 * 10.0)));
+    QCOMPARE(k.tolerance_factor, k.skirt_ratio * k.skirt_ratio);  // the smaller ratio, squared
+    QCOMPARE(k.engine_case.solver.relative_tolerance,
+             c.solver.relative_tolerance * k.tolerance_factor);
+    QCOMPARE(k.engine_case.solver.error_estimate, 0);
+    // Counts at their minimum stay there.
+    c.big_end.mesh_theta = 8;
+    c.skirt.mesh_relief = 1;
+    const engine::CoarseCompanion m = engine::MakeCoarseCompanion(c);
+    QCOMPARE(m.engine_case.big_end.mesh_theta, 8);
+    QCOMPARE(m.engine_case.skirt.mesh_relief, 1);
+  }
+
+  void headlineFiguresAreTheirDefinitions() {
+    std::vector<engine::CrankTrainSample> samples(4);
+    const double moft[] = {3e-6, 1e-6, 2e-6, 4e-6}, fpl[] = {10, 20, 30, 60};
+    for (int k = 0; k < 4; ++k) {
+      samples[k].bearing.present = true;
+      samples[k].bearing.moft = moft[k];
+      samples[k].bearing.eps = 0.5 + 0.1 * k;
+      samples[k].bearing.max_pressure = 1e6 * (k == 2 ? 9 : 1);
+      samples[k].bearing.fpl = fpl[k];
+    }
+    const auto v = Values(engine::HeadlineFigures(samples));
+    QCOMPARE(v.size(), std::size_t(4));  // no skirt figures without a skirt
+    QCOMPARE(v.at("bearing_moft_min[m]"), 1e-6);
+    QCOMPARE(v.at("bearing_eps_max[-]"), 0.8);
+    QCOMPARE(v.at("bearing_peak_pressure[Pa]"), 9e6);
+    QCOMPARE(v.at("bearing_fpl_mean[W]"), 30.0);
+    // Richardson: converged ≈ f + (f − f_coarse) / (r² − 1).
+    auto coarse = samples;
+    for (auto& s : coarse) s.bearing.moft *= 0.7;
+    engine::CoarseCompanion companion;
+    companion.big_end_ratio = 2.0;
+    const engine::ErrorEstimate e = engine::EstimateErrors(samples, coarse, companion);
+    QCOMPARE(e.status, std::string("estimated"));
+    const auto& moft_error = e.figures.at(0);
+    QCOMPARE(moft_error.figure.key, std::string("bearing_moft_min[m]"));
+    const double p = moft_error.figure.order;
+    QVERIFY(p >= 1.0 && p <= 2.0);
+    QVERIFY(std::abs(moft_error.error - 0.3e-6 / (std::pow(2.0, p) - 1.0)) < 1e-15);
+    QVERIFY(std::abs(moft_error.relative - 0.3 / (std::pow(2.0, p) - 1.0)) < 1e-12);
+    QCOMPARE(e.worst_label, std::string("min big-end MOFT"));
+    QVERIFY(e.Warn());
+    QVERIFY2(QString::fromStdString(e.Summary())
+                 .contains(QString("%1 % in the min big-end MOFT")
+                               .arg(100 * moft_error.relative, 0, 'g', 2)),
+             e.Summary().c_str());
+  }
+
+  void offAndUnavailableSayWhy() {
+    engine::RunConfig config = Config(6000, 1);
+    config.engine_case.solver.error_estimate = 0;
+    config.engine_case.solver.max_cycles = 1;
+    config.engine_case.solver.run_in_angle = 0.0;
+    const engine::RunResult off = engine::RunJob(config);
+    QCOMPARE(off.error_estimate.status, std::string("off"));
+    QVERIFY(!off.error_estimate.Warn());
+    // The paper's 50 x 10 uniform big-end mesh: at half of it the journal touches the bearing
+    // near firing, so the estimate is unavailable, which is a warning.
+    config = Config(6000, 1);
+    config.engine_case.big_end.mesh_theta = 24;
+    config.engine_case.big_end.mesh_z = 4;
+    config.engine_case.big_end.mesh_theta_grading = config.engine_case.big_end.mesh_z_grading = 1;
+    const engine::RunResult r = engine::RunJob(config);
+    QCOMPARE(r.error_estimate.status, std::string("unavailable"));
+    QVERIFY(r.error_estimate.Warn());
+    QVERIFY2(QString::fromStdString(r.error_estimate.message).contains("half the elements"),
+             r.error_estimate.message.c_str());
+  }
+
+  void estimateIsWithinAFactorOfTwoOfTheTrueError() {
+    QStringList failures;  // all of them, after the whole table is printed
+    for (const double rpm : {6000.0, 2000.0}) {
+      std::array<engine::RunResult, 3> runs;
+      for (int level = 0; level < 3; ++level) {
+        runs[level] = engine::RunJob(Config(rpm, 1 << level));
+        QCOMPARE(engine::StatusName(runs[level].status), std::string("completed"));
+        QCOMPARE(runs[level].error_estimate.status, std::string("estimated"));
+        qInfo("%.0f rpm, %dx meshes: %.1f s (companion %.1f s), %s", rpm, 1 << level,
+              runs[level].wall_time, runs[level].error_estimate.coarse_wall_time,
+              runs[level].error_estimate.Summary().c_str());
+      }
+      const auto f1 = Values(engine::HeadlineFigures(runs[0].samples));
+      const auto f2 = Values(engine::HeadlineFigures(runs[1].samples));
+      const auto f4 = Values(engine::HeadlineFigures(runs[2].samples));
+      for (const auto& [key, v4] : f4) {
+        const double d12 = f2.at(key) - f1.at(key), d24 = v4 - f2.at(key);
+        // Observed order over the three meshes, kept to [1, 3] (2 when the differences do not
+        // shrink monotonically).
+        double p = 2.0;
+        if (d12 * d24 > 0 && std::abs(d24) < std::abs(d12)) {
+          p = std::clamp(std::log2(d12 / d24), 1.0, 3.0);
+        }
+        const double reference = v4 + d24 / (std::pow(2.0, p) - 1.0);
+        for (int level = 0; level < 3; ++level) {
+          const engine::FigureError* e = nullptr;
+          for (const auto& fe : runs[level].error_estimate.figures) {
+            if (fe.figure.key == key) e = &fe;
+          }
+          QVERIFY(e != nullptr);
+          const double value = e->figure.value;
+          const double truth = std::abs(reference - value), estimate = std::abs(e->error);
+          const double floor = 2.5e-3 * std::abs(value);
+          qInfo("  %-26s %dx: value %.6g, true error %+.3f %%, estimate %+.3f %% (order %.2f)",
+                key.c_str(), 1 << level, value, 100 * (reference - value) / std::abs(value),
+                100 * e->error / std::abs(value), p);
+          const bool both_small = truth < floor && estimate < floor;
+          const bool pre_asymptotic = level == 0 && key.find("peak_pressure") != std::string::npos;
+          if (pre_asymptotic) continue;
+          const bool within = estimate <= 2.0 * truth && estimate >= 0.5 * truth;
+          if (!both_small && !within) {
+            failures << QString("%1 rpm %2x %3: estimate %4, true %5")
+                            .arg(rpm)
+                            .arg(1 << level)
+                            .arg(QString::fromStdString(key))
+                            .arg(e->error)
+                            .arg(reference - value);
+          }
+        }
+      }
+    }
+    QVERIFY2(failures.isEmpty(), qPrintable(failures.join("; ")));
+  }
+};
+
+QTEST_GUILESS_MAIN(TestErrorEstimate)
+#include "test_error_estimate.moc"
