@@ -1,5 +1,7 @@
 #include "core/base/worker_pool.hpp"
 
+#include "core/base/vector_unit.hpp"
+
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
@@ -28,6 +30,7 @@ WorkerPool::~WorkerPool() = default;
 void WorkerPool::Run(int count, const std::function<void(int)>& task) {
   std::vector<std::exception_ptr> errors(static_cast<std::size_t>(std::max(0, count)));
   auto run_one = [&](int index) {
+    ResetVectorUnitState();  // TBB's worker threads may have started with a dirty state
     try {
       task(index);
     } catch (...) {

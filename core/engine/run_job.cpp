@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "core/base/input_error.hpp"
+#include "core/base/vector_unit.hpp"
 #include "core/coupling/lubricated_big_end_element.hpp"
 #include "core/coupling/lubricated_skirt_element.hpp"
 #include "core/coupling/steady_state.hpp"
@@ -172,6 +173,7 @@ std::string AtAngle(int cycle, double crank_deg) {
 // One run of the model as configured (no error estimate).
 RunResult RunSingle(const RunConfig& config, const RunMonitor& monitor,
                     const std::atomic<bool>* cancel) {
+  ResetVectorUnitState();  // e.g. after a QApplication in this thread (core/base/vector_unit.hpp)
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
