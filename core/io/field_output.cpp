@@ -91,7 +91,7 @@ std::vector<std::array<double, 3>> BearingPoints(const std::vector<double>& thet
 }
 
 std::vector<double> NodeAngles(const lubrication::BearingSolver& bearing) {
-  std::vector<double> theta(bearing.mesh().x);
+  std::vector<double> theta(bearing.full_width().mesh.x);
   for (double& t : theta) t /= bearing.config().geometry.radius;
   return theta;
 }
@@ -118,12 +118,12 @@ void Keep(const SurfaceField& surface, double crank_angle_deg, double eccentrici
 SurfaceField FieldRecorder::BearingSurface(const lubrication::BearingSolver& bearing,
                                            double eccentricity_angle_rod) {
   SurfaceField field;
-  field.points = BearingPoints(NodeAngles(bearing), bearing.mesh().y,
+  // The whole width, also when the solver computes the symmetric half.
+  const lubrication::FullWidthSurface& surface = bearing.full_width();
+  field.points = BearingPoints(NodeAngles(bearing), surface.mesh.y,
                                bearing.config().geometry.radius, eccentricity_angle_rod);
-  field.triangles = bearing.mesh().triangles;
-  std::vector<int> source(field.points.size());
-  for (std::size_t k = 0; k < source.size(); ++k) source[k] = static_cast<int>(k);
-  AddFilmArrays(bearing.fields(), bearing.film_thickness(), source, &field);
+  field.triangles = surface.mesh.triangles;
+  AddFilmArrays(bearing.fields(), bearing.film_thickness(), surface.source, &field);
   return field;
 }
 
@@ -141,7 +141,7 @@ void FieldRecorder::Record(const engine::FieldFrame& frame) {
     const double angle = std::atan2(e.y(), e.x());
     if (frames_->bearing_theta.empty()) {
       frames_->bearing_theta = NodeAngles(*frame.bearing);
-      frames_->bearing_z = frame.bearing->mesh().y;
+      frames_->bearing_z = frame.bearing->full_width().mesh.y;
       frames_->bearing_radius = frame.bearing->config().geometry.radius;
     }
     Keep(BearingSurface(*frame.bearing, angle), frame.crank_angle_deg, angle, &frames_->bearing);

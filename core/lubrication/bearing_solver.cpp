@@ -119,6 +119,26 @@ BearingSolver::BearingSolver(BearingConfig config)
     cos_[k] = std::cos(theta_[k]);
     sin_[k] = std::sin(theta_[k]);
   }
+  if (!config_.mesh.symmetric_half) {
+    full_width_.mesh = m;
+    full_width_.source.resize(static_cast<std::size_t>(n));
+    for (int k = 0; k < n; ++k) full_width_.source[static_cast<std::size_t>(k)] = k;
+  } else {
+    // Rows 0 … ny−1 of the half (edge to mid-plane), then their mirror images up to the far edge.
+    const int ny = m.ny_nodes();
+    std::vector<double> ys = m.y_lines;
+    for (int j = ny - 2; j >= 0; --j) ys.push_back(config_.geometry.length - m.y_lines[j]);
+    full_width_.mesh =
+        MakeTensorMesh(m.x_lines, std::move(ys), m.periodic_x, m.x_period);
+    const TriMesh& f = full_width_.mesh;
+    full_width_.source.resize(static_cast<std::size_t>(f.NodeCount()));
+    for (int j = 0; j < f.ny_nodes(); ++j) {
+      const int mirrored = j < ny ? j : 2 * (ny - 1) - j;
+      for (int i = 0; i < f.nx_nodes(); ++i) {
+        full_width_.source[static_cast<std::size_t>(f.Node(i, j))] = m.Node(i, mirrored);
+      }
+    }
+  }
 }
 
 const BearingResult& BearingSolver::Solve(const BearingState& s) {

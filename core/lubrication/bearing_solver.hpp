@@ -110,6 +110,13 @@ struct BearingResult {
   double inlet_flow = 0.0;
 };
 
+/// The film surface over the whole width, for output and display: the solver's own mesh, or —
+/// when it solves the symmetric half — the half and its mirror image about the mid-plane.
+struct FullWidthSurface {
+  TriMesh mesh;             ///< x = R theta (periodic), y = z from the edge z = 0 to the width
+  std::vector<int> source;  ///< per node of `mesh`: the solver node whose values it shows
+};
+
 /// Construct once per bearing (mesh + symbolic factorisation), then Solve() per time step.
 class BearingSolver {
  public:
@@ -123,6 +130,8 @@ class BearingSolver {
   const ReynoldsFem& fem() const { return fem_; }
   ReynoldsFem& fem() { return fem_; }
   const BearingConfig& config() const { return config_; }
+  /// The whole width of the film (the mesh itself unless the symmetric half is solved).
+  const FullWidthSurface& full_width() const { return full_width_; }
 
   /// Mesh of the bearing: x = R theta in [0, 2 pi R) (periodic), y = z from one edge.
   static TriMesh MakeMesh(const BearingGeometry& g, const BearingMeshSpec& spec, bool fix_theta0);
@@ -133,6 +142,7 @@ class BearingSolver {
   std::vector<double> theta_;
   BearingResult result_;
   Eigen::VectorXd cos_, sin_;  // load directions of the film integrals
+  FullWidthSurface full_width_;
 };
 
 }  // namespace filmdyn::lubrication

@@ -47,9 +47,9 @@ class FieldCollector {
     if (frames_->joints.empty()) {
       if (frame.skirt)
         frames_->joints.push_back(MakeJoint("skirt", frame.skirt->mesh(), skirt_radius_, M_PI));
-      if (frame.bearing)
-        frames_->joints.push_back(
-            MakeJoint("big_end", frame.bearing->mesh(), bearing_radius_, 2 * M_PI));
+      if (frame.bearing)  // the whole width, also when the solver computes the symmetric half
+        frames_->joints.push_back(MakeJoint("big_end", frame.bearing->full_width().mesh,
+                                            bearing_radius_, 2 * M_PI));
     }
     frames_->crank_angle_deg.push_back(frame.crank_angle_deg);
     frames_->time.push_back(frame.time);
@@ -57,7 +57,8 @@ class FieldCollector {
     if (frame.skirt)
       Append(frames_->joints[j++], frame.skirt->fields(), frame.skirt->film_thickness());
     if (frame.bearing)
-      Append(frames_->joints[j++], frame.bearing->fields(), frame.bearing->film_thickness());
+      Append(frames_->joints[j++], frame.bearing->fields(), frame.bearing->film_thickness(),
+             &frame.bearing->full_width().source);
   }
 
   std::shared_ptr<const FieldFrames> Result() const { return frames_; }
@@ -77,10 +78,14 @@ class FieldCollector {
     return joint;
   }
 
+  // `source`: the solver node of each displayed node (nullptr = the same numbering).
   static void Append(JointFieldFrames& joint, const lubrication::ReynoldsSolution& fields,
-                     const Eigen::VectorXd& film) {
-    auto vec = [](const Eigen::VectorXd& v) {
-      return std::vector<double>(v.data(), v.data() + v.size());
+                     const Eigen::VectorXd& film, const std::vector<int>* source = nullptr) {
+    auto vec = [source](const Eigen::VectorXd& v) {
+      if (!source) return std::vector<double>(v.data(), v.data() + v.size());
+      std::vector<double> out(source->size());
+      for (std::size_t k = 0; k < source->size(); ++k) out[k] = v[(*source)[k]];
+      return out;
     };
     joint.frames.push_back({{"pressure", vec(fields.pressure)},
                             {"contact_pressure", vec(fields.contact_pressure)},

@@ -166,6 +166,47 @@ class TestBearing : public QObject {
     QVERIFY(std::abs(g.moft_theta - std::numbers::pi) < 1e-9);
   }
 
+  void symmetricHalfShowsTheWholeWidth() {
+    // The coupled big end solves the half width when the axial count is even (graded as the
+    // default case). Same nodes as the whole-width mesh, so load, friction and minimum film agree
+    // to the triangulation's difference (the diagonals are not mirrored); the full-width surface
+    // of the half shows the whole film: the full mesh's node positions, each with the value of
+    // its mirror node.
+    BearingMeshSpec whole{100, 10, false};
+    whole.theta_grading = 8.0;
+    whole.z_grading = 4.0;
+    BearingMeshSpec half = whole;
+    half.n_z = 5;
+    half.symmetric_half = true;
+    BearingSolver a(Bearing(whole)), b(Bearing(half));
+    BearingState s;
+    s.eps = 0.95;
+    s.eps_dot = 20.0;
+    s.omega_journal = 600.0;
+    const BearingResult ra = a.Solve(s), rb = b.Solve(s);
+    qInfo("eps 0.95: load whole %.6g half %.6g, friction torque %.6g / %.6g", ra.load, rb.load,
+          ra.friction_torque_journal, rb.friction_torque_journal);
+    QVERIFY(std::abs(rb.load / ra.load - 1.0) < 2e-3);
+    QVERIFY(std::abs(rb.friction_torque_journal / ra.friction_torque_journal - 1.0) < 2e-3);
+    QCOMPARE(rb.moft, ra.moft);
+    QCOMPARE(b.mesh().NodeCount(), 100 * 6);
+    const FullWidthSurface& full = b.full_width();
+    QCOMPARE(full.mesh.NodeCount(), a.mesh().NodeCount());
+    QCOMPARE(full.source.size(), std::size_t(a.mesh().NodeCount()));
+    for (int k = 0; k < full.mesh.NodeCount(); ++k) {
+      QVERIFY(std::abs(full.mesh.x[k] - a.mesh().x[k]) < 1e-15);
+      QVERIFY(std::abs(full.mesh.y[k] - a.mesh().y[k]) < 1e-15);
+      // The mirror node: same angle, z reflected about the mid-plane.
+      const int m = full.source[std::size_t(k)];
+      QVERIFY(std::abs(b.mesh().x[m] - full.mesh.x[k]) < 1e-15);
+      const double z = full.mesh.y[k], zm = b.mesh().y[m];
+      QVERIFY(std::abs(zm - std::min(z, 0.025 - z)) < 1e-15);
+    }
+    QCOMPARE(full.mesh.triangles.size(), a.mesh().triangles.size());
+    // A whole-width solver shows itself.
+    QCOMPARE(a.full_width().source.at(7), 7);
+  }
+
   void smoothSurfaceLimitIsClassicalReynolds() {
     BearingConfig smooth = Bearing();
     BearingConfig rough = Bearing();
