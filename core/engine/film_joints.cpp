@@ -121,16 +121,14 @@ LubricatedJointFactories FilmJointFactories() {
 std::string DescribeMeshes(const EngineCase& c) {
   const SkirtCase& s = c.skirt;
   const BigEndCase& b = c.big_end;
-  std::string grading;
-  if (b.mesh_theta_grading != 1.0 || b.mesh_z_grading != 1.0) {
-    grading = fmt::format(", graded {:g}:1 around and {:g}:1 across", b.mesh_theta_grading,
-                          b.mesh_z_grading);
-  } else {
-    grading = ", uniform";
-  }
+  const std::string big_end_grading =
+      b.mesh_theta_grading != 1.0 || b.mesh_z_grading != 1.0
+          ? fmt::format(", graded {:g}:1 around and {:g}:1 across", b.mesh_theta_grading,
+                        b.mesh_z_grading)
+          : std::string(", uniform");
   return fmt::format("skirt {} + {} + {} x {} elements; big end {} x {} elements{}",
                      s.mesh_thrust, s.mesh_relief, s.mesh_anti, s.mesh_axial, b.mesh_theta,
-                     b.mesh_z, grading);
+                     b.mesh_z, big_end_grading);
 }
 
 void UsePaperMeshes(EngineCase* c) {

@@ -145,7 +145,8 @@ json SummaryToJson(const RunSummary& s) {
                              {"coarse_value", f.coarse_value},
                              {"error", f.error},
                              {"relative", f.relative},
-                             {"order", f.figure.order}};
+                             {"order", f.figure.order},
+                             {"extrapolated", f.figure.value + f.error}};
   }
   j["discretisation_error"] = {
       {"status", e.status},

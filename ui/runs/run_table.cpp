@@ -25,13 +25,24 @@ void ShowErrorEstimate(const engine::ErrorEstimate& e, QTableWidgetItem* cell) {
   }
   QString tip = QString::fromStdString(e.Summary());
   for (const engine::FigureError& f : e.figures) {
-    tip += QString("\n%1: %2%3 %").arg(QString::fromStdString(f.figure.label))
+    // Unit from the key ("bearing_moft_min[m]"): lengths in µm, pressures in MPa.
+    const QString key = QString::fromStdString(f.figure.key);
+    double scale = 1.0;
+    QString unit = key.section('[', 1).section(']', 0, 0);
+    if (unit == "m") scale = 1e6, unit = "µm";
+    if (unit == "Pa") scale = 1e-6, unit = "MPa";
+    if (unit == "-") unit.clear();
+    tip += QString("\n%1: %2 %3, %4%5 % → %6 %3")
+               .arg(QString::fromStdString(f.figure.label))
+               .arg(QString::number(f.figure.value * scale, 'g', 5))
+               .arg(unit)
                .arg(f.error >= 0 ? "+" : "−")
-               .arg(QString::number(100.0 * f.relative, 'g', 2));
+               .arg(QString::number(100.0 * f.relative, 'g', 2))
+               .arg(QString::number((f.figure.value + f.error) * scale, 'g', 5));
   }
   if (e.Estimated()) {
-    tip += QString("\n(converged ≈ value + error; from a companion run on meshes with half the "
-                   "elements, %1 s)")
+    tip += QString("\n(value, estimated error, extrapolated value = value + error; from a "
+                   "companion run on meshes with half the elements, %1 s)")
                .arg(QString::number(e.coarse_wall_time, 'f', 1));
   }
   cell->setText(text);

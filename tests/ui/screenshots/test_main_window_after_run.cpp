@@ -119,6 +119,15 @@ class TestMainWindowAfterRun : public QObject {
       QVERIFY(std::isfinite(samples[90][filmdyn::ui::Column::kBearingMoft]));
       QVERIFY(run->fields() != nullptr);
       QCOMPARE(int(run->fields()->joints.size()), 2);
+      // The run table shows the estimated discretisation error, its tooltip every figure.
+      QCOMPARE(QString::fromStdString(run->errorEstimate().status), QString("estimated"));
+      auto* error_cell = window.runTable()->item(2, filmdyn::ui::RunTable::kError);
+      qInfo("error column: %s", qPrintable(error_cell->text()));
+      QVERIFY(error_cell->text().contains("%"));
+      QVERIFY(error_cell->toolTip().contains("min big-end MOFT"));
+      QVERIFY(error_cell->toolTip().contains("min skirt MOFT"));
+      // The Ideal runs have no film: nothing to estimate.
+      QCOMPARE(window.runTable()->item(0, filmdyn::ui::RunTable::kError)->text(), QString("–"));
       window.runTable()->selectRow(2);
       window.workspace()->setCurrentIndex(1);
       QTest::qWait(300);
