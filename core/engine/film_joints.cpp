@@ -77,8 +77,9 @@ lubrication::BearingConfig BearingConfigFromCase(const EngineCase& c) {
   // The planar model keeps the journal parallel to the bearing and every feed on the mid-plane,
   // so the film is symmetric about it: with an even axial count only the half is solved (the
   // same nodes, half the unknowns; the outputs show the whole width). An odd count has no node
-  // row on the mid-plane and is solved over the whole width.
-  config.mesh.symmetric_half = be.mesh_z % 2 == 0;
+  // row on the mid-plane and is solved over the whole width, as are 2 elements (the half
+  // needs two).
+  config.mesh.symmetric_half = be.mesh_z % 2 == 0 && be.mesh_z >= 4;
   config.mesh.n_z = config.mesh.symmetric_half ? be.mesh_z / 2 : be.mesh_z;
   config.mesh.theta_grading = be.mesh_theta_grading;
   config.mesh.z_grading = be.mesh_z_grading;

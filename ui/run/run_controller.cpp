@@ -35,6 +35,9 @@ class NotifyingSink : public RunSink {
   void ReportFields(std::shared_ptr<const FieldFrames> fields) override {
     record_->ReportFields(std::move(fields));
   }
+  void ReportErrorEstimate(const engine::ErrorEstimate& estimate) override {
+    record_->ReportErrorEstimate(estimate);
+  }
   void Report(std::vector<RunSample> reported_cycle) override {
     record_->Report(std::move(reported_cycle));
     Notify();
