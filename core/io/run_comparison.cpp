@@ -11,7 +11,7 @@ namespace filmdyn::io {
 
 namespace {
 
-enum class Reduce { kMaxAbs, kMin, kMax, kMeanFplSkirt, kMeanFplBearing };
+enum class Reduce { kMaxAbs, kMin, kMax, kMeanFplSkirt, kMeanFplBearing, kWorstError };
 
 struct FigureRecipe {
   ComparisonFigure figure;
@@ -37,6 +37,10 @@ const std::vector<FigureRecipe>& Recipes() {
       {{"max_abs_bigend_force_y[N]", "max abs big-end F_y [N]", 1.0},
        "bigend_force_y[N]",
        Reduce::kMaxAbs},
+      // The largest estimated discretisation error of the run's headline figures (relative).
+      {{"max_discretisation_error[-]", "max est. discretisation error [%]", 100.0},
+       "",
+       Reduce::kWorstError},
   };
   return recipes;
 }
@@ -74,6 +78,8 @@ ComparisonRow ReadComparisonRow(const std::filesystem::path& folder) {
       value = summary.mean_fpl_skirt_w;
     } else if (recipe.reduce == Reduce::kMeanFplBearing) {
       value = summary.mean_fpl_bearing_w;
+    } else if (recipe.reduce == Reduce::kWorstError) {
+      if (summary.error_estimate.Estimated()) value = summary.error_estimate.worst_relative;
     } else if (const auto e = summary.extremes.find(recipe.column); e != summary.extremes.end()) {
       switch (recipe.reduce) {
         case Reduce::kMaxAbs:

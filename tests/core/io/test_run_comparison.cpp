@@ -34,7 +34,8 @@ class TestRunComparison : public QObject {
       "extremes": {"piston_lateral[m]": {"min": -2.0e-5, "max": 1.5e-5},
                    "skirt_moft[m]": {"min": 1.2e-6, "max": 2.0e-5},
                    "bearing_eps[-]": {"min": 0.1, "max": 0.93}},
-      "mean_fpl_w": {"skirt": 120.5, "bearing": null}})");
+      "mean_fpl_w": {"skirt": 120.5, "bearing": null},
+      "discretisation_error": {"status": "estimated", "worst_relative": 0.028}})");
     const auto row = filmdyn::io::ReadComparisonRow(folder);
     QCOMPARE(row.folder, std::string("c-skirt-lbrbe-6000"));
     QCOMPARE(row.model, std::string("skirt-lbrbe"));
@@ -46,6 +47,7 @@ class TestRunComparison : public QObject {
     QCOMPARE(*row.figures[FigureIndex("mean_skirt_fpl[W]")], 120.5);
     QVERIFY(!row.figures[FigureIndex("mean_bearing_fpl[W]")].has_value());  // null
     QVERIFY(!row.figures[FigureIndex("min_bearing_moft[m]")].has_value());  // absent
+    QCOMPARE(*row.figures[FigureIndex("max_discretisation_error[-]")], 0.028);
 
     std::ostringstream csv;
     filmdyn::io::WriteComparisonCsv(csv, {row});
