@@ -138,7 +138,7 @@ void MainWindow::createMenus() {
                          &MainWindow::exportResultsInteractive);
   export_menu->addAction(tr("Run &folder of the selected run (as filmdyn run)…"), this,
                          &MainWindow::exportRunFolderInteractive);
-  export_menu->addAction(tr("Pressure &fields shown (VTU/PVD)…"), this,
+  export_menu->addAction(tr("Pressure &fields shown (HDF5 + XDMF for ParaView)…"), this,
                          &MainWindow::exportFieldsInteractive);
   export_menu->addAction(tr("Cylinder pressure curve (CSV)…"), case_editor_,
                          [this] { case_editor_->exportPressureCsv(); });

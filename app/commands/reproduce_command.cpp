@@ -88,7 +88,7 @@ std::string FiguresIndex(const std::string& models_dir, const std::string& speed
   t += "| Fig. 10 | asperity contact pressure and friction stresses of the LBRBE at 62 and 562 "
        "°CA | contact pressure field: `runs/" +
        skirt_lbrbe_6000 +
-       "/fields/` (VTU per °CA, open the PVD in ParaView at 62 and 562 °CA); the friction-stress "
+       "/fields/` (`bearing.xdmf` with `bearing.h5`, one frame per output step: open the XDMF in ParaView and go to 62 and 562 °CA); the friction-stress "
        "fields are not an output |\n";
   t += "| Fig. 11 | piston secondary motion, speeds | `" + s + "piston_lateral.png`, `" + s +
        "piston_tilt.png`, `" + s + "secondary_rates.png` |\n";

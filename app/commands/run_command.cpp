@@ -30,12 +30,15 @@ Command MakeRunCommand() {
       {"pressure-curve", "FILE.csv", "cylinder pressure: crank_angle[deg],pressure[Pa] (absolute)"},
       {"time-limit", "S", "stop after S seconds of wall time, keeping what was computed"},
       {"threads", "N", "1 or 2: the two film joints side by side (default: 2 on >= 2 cores)"},
-      {"no-fields", "", "do not write fields/ (film fields as VTU/PVD per output step)"},
+      {"no-fields", "", "do not write fields/ (film fields per output step, HDF5 + XDMF)"},
       {"quiet", "", "no progress on stderr"}};
   command.details =
       "Without CASE.json the built-in default case (Table I of Zhao & Shen's coupling-model "
       "paper;\n"
       "docs/case-file.md) is used.\n"
+      "Film runs also compute a companion run on meshes with half the elements and report the\n"
+      "estimated discretisation error of the headline figures (last line, summary.json; warns\n"
+      "above 1 %; --set solver.error_estimate=0 turns it off; docs/validation/errors.md).\n"
       "Examples:\n  filmdyn run --model ideal --rpm 4000\n"
       "  filmdyn run my.json --set geometry.pin_offset=0.001 --out /tmp/r1";
   command.run = [](const Args& args, Streams& streams) {

@@ -37,7 +37,7 @@ Command MakeSweepCommand() {
       {"out", "DIR", "folder of the sweep (default: ./results/sweep-<case>)"},
       {"set", "KEY=VALUE", "override a case field by its dotted JSON path", true},
       {"time-limit", "S", "wall-time limit of each run [s], keeping what was computed"},
-      {"no-fields", "", "do not write the runs' fields/ (VTU/PVD per output step)"},
+      {"no-fields", "", "do not write the runs' fields/ (HDF5 + XDMF per joint)"},
       {"quiet", "", "no progress on stderr"}};
   command.details =
       "Each run writes <DIR>/<case>-<model>-<rpm>/ like `filmdyn run`; the sweep adds\n"

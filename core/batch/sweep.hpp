@@ -22,7 +22,7 @@ struct SweepJob {
   engine::RunConfig config;
   std::string case_name;
   std::filesystem::path output_folder;
-  bool write_fields = true;  ///< fields/ (VTU/PVD of the reported cycle) in the output folder
+  bool write_fields = true;  ///< fields/ (HDF5 + XDMF of the reported cycle) in the output folder
 };
 
 struct SweepOutcome {

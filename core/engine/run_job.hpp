@@ -28,7 +28,7 @@ std::string ModelName(Model model);
 /// Sets skirt.model / big_end.model of a case for a model.
 void ApplyModel(Model model, EngineCase* engine_case);
 
-/// The nodal fields of both lubricated joints at one output step (for VTU output and the field
+/// The nodal fields of both lubricated joints at one output step (for the field files and the field
 /// view). The solvers' fields() (pressure, contact_pressure, fluid_fraction), film_thickness() and
 /// mesh() (node coordinates: skirt x = R α, y from the skirt top; bearing x = R θ from the maximum
 /// film, y = z across the width) belong to the sampled state. nullptr = joint not lubricated.

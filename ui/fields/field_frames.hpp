@@ -18,7 +18,7 @@ struct JointFieldFrames {
   std::string name;       ///< "skirt", "big_end"
   io::SurfaceField mesh;  ///< point_data unused
   std::vector<std::vector<std::pair<std::string, std::vector<double>>>> frames;
-  /// Frame k as a complete surface with its arrays (for the VTU writer).
+  /// Frame k as a complete surface with its arrays.
   io::SurfaceField Frame(size_t k) const;
 };
 

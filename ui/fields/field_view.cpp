@@ -145,7 +145,7 @@ void FieldView::setFrames(std::shared_ptr<const FieldFrames> frames, const QStri
   }
   if (!CanRenderGl()) {
     placeholder_->setText(tr("3D views need an OpenGL display (not available on the '%1' "
-                             "platform); export the fields as VTU instead.")
+                             "platform); export the fields (HDF5 + XDMF) for ParaView instead.")
                               .arg(QGuiApplication::platformName()));
     stack_->setCurrentWidget(placeholder_);
   } else {

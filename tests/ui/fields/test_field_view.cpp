@@ -1,6 +1,6 @@
 // The pressure-field view under a real X server (xvfb-run): skirt and bearing surfaces built from
 // FieldFrames render a non-blank, colour-mapped image; the crank-angle slider and play/pause
-// change the frame and move the plot cursor; fields export as VTU/PVD that VTK reads back.
+// change the frame and move the plot cursor.
 // The frames here are SYNTHETIC test data (analytic pressure bumps), never shown to users.
 #include <vtkNew.h>
 #include <vtkPointData.h>

@@ -1,6 +1,6 @@
 // Every export writes a valid file: each standard plot as PNG, SVG and PDF after a real run,
-// results.csv with the header of docs/outputs.md and one row per output step. (Field VTU/PVD
-// export: tests/ui/fields.)
+// results.csv with the header of docs/outputs.md and one row per output step. (The field files:
+// tests/core/io/test_field_output.cpp and tests/ui/run/test_output_path.cpp.)
 #include <QAction>
 #include <QFile>
 #include <QImage>
