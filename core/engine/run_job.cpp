@@ -7,6 +7,12 @@
 #include <numbers>
 #include <thread>
 
+#if defined(__linux__)
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
+#endif
+
 #include "core/base/input_error.hpp"
 #include "core/base/vector_unit.hpp"
 #include "core/coupling/lubricated_big_end_element.hpp"
@@ -398,6 +404,13 @@ RunResult RunJob(const RunConfig& config, const RunMonitor& monitor,
   RunResult coarse_result;
   std::string coarse_error;
   std::thread coarse_thread([&] {
+    // Lower priority (nice +10): the companion takes the cycles the run and the GUI leave idle
+    // instead of taking them from them — a desktop's event loop must stay responsive with the
+    // run's two film threads and the companion busy. On Linux, setpriority with a thread id
+    // affects that thread only; elsewhere the companion runs at normal priority.
+#if defined(__linux__)
+    setpriority(PRIO_PROCESS, static_cast<id_t>(syscall(SYS_gettid)), 10);
+#endif
     try {
       coarse_result = RunSingle(
           coarse,
