@@ -71,11 +71,11 @@ const std::vector<HeadlineDefinition>& Definitions() {
 
 }  // namespace
 
-std::string HeadlineLabel(const std::string& key) {
+HeadlineFigure HeadlineFigureFor(const std::string& key, double value) {
   for (const HeadlineDefinition& d : Definitions()) {
-    if (key == d.key) return d.label;
+    if (key == d.key) return {d.key, d.label, value, d.big_end, d.order};
   }
-  return key;
+  return {key, key, value, key.rfind("bearing_", 0) == 0};
 }
 
 std::vector<HeadlineFigure> HeadlineFigures(const std::vector<CrankTrainSample>& samples) {

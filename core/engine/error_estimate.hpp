@@ -36,8 +36,9 @@ struct HeadlineFigure {
 /// mean FPL. Means are plain means over the cycle's equally spaced output samples (the periodic
 /// trapezoidal rule). Empty when no sample has a lubricated joint.
 std::vector<HeadlineFigure> HeadlineFigures(const std::vector<CrankTrainSample>& samples);
-/// The label of a headline key ("min big-end MOFT"); the key itself when unknown.
-std::string HeadlineLabel(const std::string& key);
+/// The figure of a headline key with this value: label, joint and order from the table (an
+/// unknown key keeps itself as label; "bearing_…" keys belong to the big end).
+HeadlineFigure HeadlineFigureFor(const std::string& key, double value);
 
 /// The coarse companion of a case: meshes with half the elements (never below each count's
 /// minimum), the same gradings, tolerances `tolerance_factor` times looser.

@@ -217,12 +217,7 @@ RunSummary FromJson(const json& j) {
   Read(j, "headline", "", &headline);
   if (!headline.is_object()) throw std::runtime_error("\"headline\" is not an object");
   for (const auto& [key, value] : headline.items()) {
-    engine::HeadlineFigure f;
-    f.key = key;
-    f.label = engine::HeadlineLabel(key);
-    f.value = Get<double>(headline, key, "headline");
-    f.big_end = key.rfind("bearing_", 0) == 0;
-    s.headline.push_back(f);
+    s.headline.push_back(engine::HeadlineFigureFor(key, Get<double>(headline, key, "headline")));
   }
   json error = json::object();
   Read(j, "discretisation_error", "", &error);
@@ -248,10 +243,7 @@ RunSummary FromJson(const json& j) {
   for (const auto& [key, f] : figures.items()) {
     const std::string at = "discretisation_error.figures." + key;
     engine::FigureError fe;
-    fe.figure.key = key;
-    fe.figure.label = engine::HeadlineLabel(key);
-    fe.figure.big_end = key.rfind("bearing_", 0) == 0;
-    fe.figure.value = Get<double>(f, "value", at);
+    fe.figure = engine::HeadlineFigureFor(key, Get<double>(f, "value", at));
     fe.coarse_value = Get<double>(f, "coarse_value", at);
     fe.error = Get<double>(f, "error", at);
     fe.relative = Get<double>(f, "relative", at);
