@@ -43,6 +43,12 @@ struct CycleProfile {
     }
   }
   bool Record(const engine::RunProgress& p) {
+    if (p.run_in) {  // not a cycle's work (negative angles): only move the baseline on
+      last_steps = p.steps;
+      last_solves = p.reynolds_solves;
+      last_wall = p.elapsed;
+      return true;
+    }
     if (p.cycle != cycle) {
       if (cycle > 0) Print();
       *this = CycleProfile{.cycle = p.cycle,

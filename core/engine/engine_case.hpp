@@ -116,7 +116,7 @@ struct SolverCase {
   /// (journal and piston start centred and at rest) has decayed [rad of crank]; default 360 °CA.
   /// Film models only (the Ideal model has no start-up transient).
   double run_in_angle = 6.283185307179586;
-  /// 1: a coarse companion run (meshes with half the elements, tolerances looser) estimates the
+  /// 1: a coarse companion run (meshes with half the elements, same tolerances) estimates the
   /// discretisation error of the headline figures (core/engine/error_estimate.hpp); 0: off.
   int error_estimate = 1;
 };

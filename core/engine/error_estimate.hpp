@@ -7,9 +7,8 @@
 /// one definition: summary.json, the CLI, the GUI and the estimate all use it.
 ///
 /// Estimate: a second, coarser run of the whole coupled model — every film mesh with half the
-/// elements in each direction (same grading; spacing ratio r ≈ 2), every integrator tolerance
-/// r² times looser (the films' second-order spatial convergence, the integrator's error growing
-/// with its tolerance: both error sources grow alike). Richardson's estimate of the run's
+/// elements in each direction (same grading; spacing ratio r ≈ 2), the run's own integrator
+/// tolerances (so that the time error is alike in both). Richardson's estimate of the run's
 /// error is then (f − f_coarse) / (r^p − 1) with p = 2 the figures' observed order, signed:
 /// converged value ≈ f + error. It sees the coupled result (the coarse films move the journal and the
 /// piston). Justification and its check against converged solutions: docs/validation/errors.md.
@@ -41,12 +40,13 @@ std::vector<HeadlineFigure> HeadlineFigures(const std::vector<CrankTrainSample>&
 HeadlineFigure HeadlineFigureFor(const std::string& key, double value);
 
 /// The coarse companion of a case: meshes with half the elements (never below each count's
-/// minimum), the same gradings, tolerances `tolerance_factor` times looser.
+/// minimum), the same gradings, the same tolerances (`tolerance_factor` = 1; kept in the
+/// summary so that a reader sees what the companion used).
 struct CoarseCompanion {
   EngineCase engine_case;
   double skirt_ratio = 2.0;        ///< h_coarse / h of the skirt mesh (√ of the element ratio)
   double big_end_ratio = 2.0;      ///< the same for the big-end mesh
-  double tolerance_factor = 4.0;   ///< coarse tolerances / the run's
+  double tolerance_factor = 1.0;   ///< coarse tolerances / the run's
 };
 CoarseCompanion MakeCoarseCompanion(const EngineCase& engine_case);
 

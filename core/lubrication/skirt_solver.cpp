@@ -45,15 +45,20 @@ void SkirtState::Validate(const std::string& prefix) const {
 }
 
 TriMesh SkirtSolver::MakeMesh(const SkirtGeometry& g, const SkirtMeshSpec& spec) {
+  // Node lines through the kinks of the profile and ovality tables (ConformingLines), so that
+  // the piecewise-linear film thickness is exact on the mesh and refining it converges at the
+  // scheme's order (the error estimate's halved companion mesh relies on that).
   const double a1 = g.alpha1, a2 = kPi - g.alpha2;
-  std::vector<double> alpha = Linspace(0.0, a1, spec.n_thrust);
-  const auto mid = Linspace(a1, a2, spec.n_relief);
-  const auto anti = Linspace(a2, kPi, spec.n_anti);
+  std::vector<double> alpha = ConformingLines(0.0, a1, spec.n_thrust, g.ovality.x);
+  const auto mid = ConformingLines(a1, a2, spec.n_relief, g.ovality.x);
+  const auto anti = ConformingLines(a2, kPi, spec.n_anti, g.ovality.x);
   alpha.insert(alpha.end(), mid.begin() + 1, mid.end());
   alpha.insert(alpha.end(), anti.begin() + 1, anti.end());
   std::vector<double> xs(alpha.size());
   for (size_t i = 0; i < alpha.size(); ++i) xs[i] = g.radius * alpha[i];
-  TriMesh m = MakeTensorMesh(std::move(xs), Linspace(0.0, g.skirt_length, spec.n_axial), false, 0);
+  TriMesh m = MakeTensorMesh(std::move(xs),
+                             ConformingLines(0.0, g.skirt_length, spec.n_axial, g.profile.x),
+                             false, 0);
   const int nx = m.nx_nodes(), ny = m.ny_nodes();
   for (int j = 0; j < ny; ++j) {
     for (int i = 0; i < nx; ++i) {

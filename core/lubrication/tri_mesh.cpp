@@ -1,5 +1,6 @@
 #include "core/lubrication/tri_mesh.hpp"
 
+#include <algorithm>
 #include <cassert>
 #include <cmath>
 #include <stdexcept>
@@ -17,6 +18,36 @@ std::vector<double> Linspace(double a, double b, int n) {
   for (int k = 0; k <= n; ++k) v[k] = a + (b - a) * static_cast<double>(k) / n;
   v[n] = b;  // exact end point
   return v;
+}
+
+std::vector<double> ConformingLines(double a, double b, int n, const std::vector<double>& breaks) {
+  const double tiny = 1e-9 * (b - a);
+  std::vector<double> ends{a};
+  std::vector<double> inside(breaks);
+  std::sort(inside.begin(), inside.end());
+  for (double x : inside) {
+    if (x > ends.back() + tiny && x < b - tiny) ends.push_back(x);
+  }
+  ends.push_back(b);
+  const int segments = static_cast<int>(ends.size()) - 1;
+  if (segments == 1 || n < segments) return Linspace(a, b, n);
+  // Each segment gets one interval, then each further interval goes to the segment whose
+  // spacing is largest (greedy: minimises the largest spacing).
+  std::vector<int> count(static_cast<std::size_t>(segments), 1);
+  auto spacing = [&](int s) { return (ends[s + 1] - ends[s]) / count[s]; };
+  for (int k = segments; k < n; ++k) {
+    int widest = 0;
+    for (int s = 1; s < segments; ++s) {
+      if (spacing(s) > spacing(widest) * (1.0 + 1e-12)) widest = s;
+    }
+    ++count[widest];
+  }
+  std::vector<double> lines{a};
+  for (int s = 0; s < segments; ++s) {
+    const std::vector<double> part = Linspace(ends[s], ends[s + 1], count[s]);
+    lines.insert(lines.end(), part.begin() + 1, part.end());
+  }
+  return lines;
 }
 
 TriMesh MakeTensorMesh(std::vector<double> x_lines, std::vector<double> y_lines, bool periodic_x,

@@ -40,6 +40,15 @@ TriMesh MakeTensorMesh(std::vector<double> x_lines, std::vector<double> y_lines,
 /// Evenly spaced lines: n intervals on [a, b] (n + 1 values).
 std::vector<double> Linspace(double a, double b, int n);
 
+/// n intervals on [a, b] with a line on every break strictly inside (a, b) — the kinks of a
+/// piecewise-linear surface table — and spacing as even as the breaks allow: the segments
+/// between breaks share the n intervals so that the largest spacing is smallest, each segment
+/// evenly divided. A film thickness with a kink between two nodes is interpolated across it,
+/// an O(h) error that makes mesh convergence erratic; with the kinks on nodes it converges at
+/// the scheme's order. Breaks closer than 1e-9 (b - a) to another line are ignored; with fewer
+/// intervals than segments the lines are evenly spaced (Linspace).
+std::vector<double> ConformingLines(double a, double b, int n, const std::vector<double>& breaks);
+
 /// Per-node lumped area (integral of the shape function) [m^2].
 std::vector<double> LumpedAreas(const TriMesh& mesh);
 

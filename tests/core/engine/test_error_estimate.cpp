@@ -50,7 +50,7 @@ std::map<std::string, double> Values(const std::vector<engine::HeadlineFigure>& 
 class TestErrorEstimate : public QObject {
   Q_OBJECT
  private slots:
-  void companionHalvesTheMeshesAndLoosensTheTolerances() {
+  void companionHalvesTheMeshesAndKeepsTheTolerances() {
     engine::EngineCase c = io::LoadCase({}).value;
     c.skirt.mesh_thrust = 15;
     c.skirt.mesh_relief = 2;
@@ -68,9 +68,9 @@ class TestErrorEstimate : public QObject {
     QCOMPARE(k.engine_case.big_end.mesh_theta_grading, c.big_end.mesh_theta_grading);
     QCOMPARE(k.big_end_ratio, 2.0);
     QCOMPARE(k.skirt_ratio, std::sqrt(32.0 * 20.0 / (17.0 * 10.0)));
-    QCOMPARE(k.tolerance_factor, k.skirt_ratio * k.skirt_ratio);  // the smaller ratio, squared
-    QCOMPARE(k.engine_case.solver.relative_tolerance,
-             c.solver.relative_tolerance * k.tolerance_factor);
+    QCOMPARE(k.tolerance_factor, 1.0);  // the run's own tolerances
+    QCOMPARE(k.engine_case.solver.relative_tolerance, c.solver.relative_tolerance);
+    QCOMPARE(k.engine_case.solver.position_tolerance, c.solver.position_tolerance);
     QCOMPARE(k.engine_case.solver.error_estimate, 0);
     // Counts at their minimum stay there.
     c.big_end.mesh_theta = 8;

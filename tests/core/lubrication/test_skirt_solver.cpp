@@ -3,6 +3,7 @@
 // problem on the whole skirt mesh (serial and side by side).
 #include <QtTest>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -168,6 +169,60 @@ class TestSkirt : public QObject {
     QCOMPARE(r.stats.status, SolveStatus::kConverged);
     QVERIFY(r.stats.max_mass_residual < 1e-10);
     QVERIFY(r.lateral_force < 0.0);
+  }
+
+  // Node lines go through the kinks of the profile and ovality tables: the film thickness is
+  // then exact at its minimum on any mesh. Evenly spaced lines (7 axial elements of 4.57 mm)
+  // would put no node on the profile's crown at 12.3 mm and report a MOFT 1.1 um too thick.
+  void meshFollowsTheProfileAndOvalityKinks() {
+    SkirtConfig cfg = Skirt({{0.0, 0.0123, 0.032}, {20e-6, 0.0, 15e-6}});
+    cfg.geometry.ovality = {{0.3, 2.0}, {0.0, 8e-6}};  // kinks at 0.3 rad (thrust), 2.0 (anti)
+    cfg.mesh.n_axial = 7;
+    cfg.mesh.n_thrust = 5;
+    cfg.mesh.n_anti = 5;
+    const TriMesh m = SkirtSolver::MakeMesh(cfg.geometry, cfg.mesh);
+    QCOMPARE(m.ny_nodes(), 8);
+    QCOMPARE(m.nx_nodes(), 5 + cfg.mesh.n_relief + 5 + 1);
+    auto has_line = [](const std::vector<double>& lines, double at) {
+      for (double v : lines) {
+        if (std::abs(v - at) < 1e-15) return true;
+      }
+      return false;
+    };
+    QVERIFY(has_line(m.y_lines, 0.0123));
+    QVERIFY(has_line(m.x_lines, 0.3 * cfg.geometry.radius));
+    QVERIFY(has_line(m.x_lines, 2.0 * cfg.geometry.radius));
+    SkirtSolver solver(cfg);
+    SkirtState s;
+    s.e0 = 5e-6;  // toward the thrust side: the thinnest film on the thrust axis at the crown
+    s.piston_velocity = 5.0;
+    const SkirtResult& r = solver.Solve(s);
+    QCOMPARE(r.stats.status, SolveStatus::kConverged);
+    QVERIFY(std::abs(r.moft - (20e-6 - 5e-6)) < 1e-15);
+    QVERIFY(std::abs(r.moft_y - 0.0123) < 1e-15);
+  }
+
+  // The line placement itself: every break on a line, n intervals, spacing as even as the
+  // breaks allow (the largest spacing is the smallest possible), even spacing without breaks
+  // or with fewer intervals than segments.
+  void conformingLinesPlaceTheBreaks() {
+    const std::vector<double> lines = ConformingLines(0.0, 1.0, 10, {0.25, 0.5, 0.75});
+    QCOMPARE(static_cast<int>(lines.size()), 11);
+    double widest = 0.0;
+    for (std::size_t k = 1; k < lines.size(); ++k) {
+      QVERIFY(lines[k] > lines[k - 1]);
+      widest = std::max(widest, lines[k] - lines[k - 1]);
+    }
+    QCOMPARE(widest, 0.25 / 2);  // 3 + 3 + 2 + 2 intervals: no split does better than 1/8
+    for (double at : {0.25, 0.5, 0.75}) {
+      QVERIFY(std::count(lines.begin(), lines.end(), at) == 1);
+    }
+    QCOMPARE(ConformingLines(0.0, 1.0, 4, {}), Linspace(0.0, 1.0, 4));
+    QCOMPARE(ConformingLines(0.0, 1.0, 4, {0.0, 1.0, -3.0, 7.0}), Linspace(0.0, 1.0, 4));
+    QCOMPARE(ConformingLines(0.0, 1.0, 2, {0.2, 0.4, 0.6}), Linspace(0.0, 1.0, 2));
+    // A short segment keeps one interval; the rest share the remainder evenly.
+    const std::vector<double> uneven = ConformingLines(0.0, 1.0, 5, {0.1});
+    QCOMPARE(uneven, (std::vector<double>{0.0, 0.1, 0.325, 0.55, 0.775, 1.0}));
   }
 };
 

@@ -4,6 +4,7 @@
 #include <QtTest>
 
 #include <atomic>
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
@@ -12,6 +13,7 @@
 #include "core/base/input_error.hpp"
 #include "core/lubrication/surface/greenwood_tripp.hpp"
 #include "core/lubrication/surface/surface_model.hpp"
+#include "core/lubrication/surface_film.hpp"
 
 // Counts heap allocations of the whole test program, to prove the per-node calls allocate none.
 namespace {
@@ -261,6 +263,7 @@ class TestSurfaceModel : public QObject {
   }
 
   // Per-node evaluation must not touch the heap (requirement: evaluated at every FEM node).
+  void tabulatedFilmMatchesTheFormulas();
   void noAllocationPerCall() {
     fl::SurfacePair pair = SkirtLiner();
     pair.peklenik = 2.0;
@@ -280,6 +283,60 @@ class TestSurfaceModel : public QObject {
     QCOMPARE(after - before, 0L);
   }
 };
+
+
+// The film model the joints use reads the factors from a table: within 1e-5 of the formulas
+// (each factor's scale: 1, or the asperity pressure at H = 0) over the whole table, at the
+// branch points of the fits and just beside them, for the asperity fit and the exact
+// Greenwood–Tripp integral, three Peklenik numbers, unequal roughness (phi_s, Phi_fs != 0);
+// beyond the table and for h < 0 the formulas themselves.
+void TestSurfaceModel::tabulatedFilmMatchesTheFormulas() {
+  for (const double gamma : {1.0, 1.0 / 9.0, 3.7}) {
+    for (const fl::AsperityModel asperity :
+         {fl::AsperityModel::kGreenwoodTrippFit, fl::AsperityModel::kGreenwoodTrippExact}) {
+      fl::SurfacePair pair;
+      pair.sigma1 = 0.4e-6;
+      pair.sigma2 = 0.3e-6;
+      pair.peklenik = gamma;
+      pair.E1 = 210e9;
+      pair.E2 = 110e9;
+      pair.asperity_model = asperity;
+      const fl::TabulatedSurfaceFilm table(pair);
+      const fl::SurfaceFilm& direct = table.direct();
+      const double sigma = direct.sigma();
+      const double pc_scale = direct.At(0.0).contact_pressure;
+      QVERIFY(pc_scale > 1e6);
+      std::vector<double> hs;
+      for (int i = 0; i <= 400000; ++i) hs.push_back(520.0 * i / 400000.0 * 1.0000371);
+      for (double kink : {0.5, 0.75, 1.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 15.0, 64.0, 512.0}) {
+        for (double d : {-1e-9, 0.0, 1e-9, 3e-4}) hs.push_back(kink + d);
+      }
+      double worst = 0.0;
+      for (const double H : hs) {
+        const fl::NodalFilmFactors a = table.At(H * sigma), b = direct.At(H * sigma);
+        const double e[] = {a.phi_along - b.phi_along,
+                            a.phi_across - b.phi_across,
+                            a.phi_shear - b.phi_shear,
+                            a.phi_contact - b.phi_contact,
+                            (a.contact_pressure - b.contact_pressure) / pc_scale,
+                            a.shear_f - b.shear_f,
+                            a.shear_fs - b.shear_fs,
+                            a.shear_fp - b.shear_fp};
+        for (double x : e) worst = std::max(worst, std::abs(x));
+      }
+      qInfo("gamma %.3f, %s: largest table error %.2e", gamma,
+            asperity == fl::AsperityModel::kGreenwoodTrippFit ? "fit" : "exact", worst);
+      QVERIFY2(worst < 1e-5, qPrintable(QString::number(worst)));
+      // Outside the table: the formulas exactly.
+      for (const double H : {-0.3, 600.0, 1e5}) {
+        const fl::NodalFilmFactors a = table.At(H * sigma), b = direct.At(H * sigma);
+        QCOMPARE(a.phi_along, b.phi_along);
+        QCOMPARE(a.shear_f, b.shear_f);
+        QCOMPARE(a.contact_pressure, b.contact_pressure);
+      }
+    }
+  }
+}
 
 QTEST_GUILESS_MAIN(TestSurfaceModel)
 #include "test_surface_model.moc"
