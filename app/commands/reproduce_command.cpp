@@ -121,6 +121,7 @@ Command MakeReproduceCommand() {
       {"time-limit", "S", "wall-time limit of each run [s], keeping what was computed"},
       {"no-fields", "", "do not write the runs' fields/ (Fig. 10 then has no data)"},
       {"paper-meshes", "", "the paper's film meshes (Table II) instead of the case's"},
+      {"overwrite", "", "--out may hold an earlier reproduction: FilmDyn's files are replaced"},
       {"quiet", "", "no progress on stderr"}};
   command.details =
       "The paper: Zhao & Shen, \"A numerical coupling model for a multibody system with multiple\n"
@@ -155,7 +156,7 @@ Command MakeReproduceCommand() {
     const double time_limit = args.Double("time-limit").value_or(0.0);
     const std::filesystem::path out =
         args.Value("out") ? std::filesystem::path(*args.Value("out"))
-                          : std::filesystem::path("results") / ("reproduce-" + c.name);
+                          : std::filesystem::path("results") / ("reproduce-" + io::SafeFolderName(c.name));
 
     // Job order: the three models at 6000 rpm (indices 0-2, Skirt-LBRBE last), then Skirt-LBRBE
     // at the other speeds (3-5).
@@ -168,6 +169,8 @@ Command MakeReproduceCommand() {
       run_jobs.push_back(
           SweepJobFor(loaded, model, rpm, time_limit, !args.Has("no-fields"), out / "runs"));
     }
+    const auto folder = PrepareBatchFolders(out, run_jobs, args.Value("out").has_value(),
+                                            args.Has("overwrite"), "the plan");
     std::filesystem::create_directories(out / "figures");
     if (const std::string error = WritePressureFigure(loaded, out / "figures"); !error.empty()) {
       streams.err << "reproduce: Fig. 5 not written: " << error << "\n";
@@ -183,15 +186,13 @@ Command MakeReproduceCommand() {
         WriteComparison(out / speeds_dir, batch, "Paper §4: Skirt-LBRBE at four speeds",
                         "reproduce", streams, {3, 4, 5, 2});
     const std::string skirt_lbrbe_6000 = batch.jobs[2].output_folder.filename().string();
-    {
-      std::ofstream index(out / "figures.md");
-      index << FiguresIndex(models_dir, speeds_dir, skirt_lbrbe_6000)
-            << "\nFilm meshes of every run: " << meshes
-            << (args.Has("paper-meshes") ? " (the paper's Table II)" : " (the case's)")
-            << ". Each run's `summary.json` holds the estimated discretisation error of its "
-               "headline figures (`discretisation_error`).\n";
-      if (!index) throw std::runtime_error("cannot write " + (out / "figures.md").string());
-    }
+    io::WriteFileAtomically(
+        out / "figures.md",
+        FiguresIndex(models_dir, speeds_dir, skirt_lbrbe_6000) +
+            "\nFilm meshes of every run: " + meshes +
+            (args.Has("paper-meshes") ? " (the paper's Table II)" : " (the case's)") +
+            ". Each run's `summary.json` holds the estimated discretisation error of its "
+            "headline figures (`discretisation_error`).\n");
     streams.out << "## The three models at 6000 rpm\n\n"
                 << models_table << "\n## Skirt-LBRBE at four speeds\n\n"
                 << speeds_table;

@@ -1,6 +1,7 @@
 // `filmdyn run`: one headless run (docs/outputs.md). All the work is in core (io::LoadCase,
 // engine::RunJob, io::WriteRunFolder); this file only parses options and prints progress on
-// stderr. Ctrl-C stops the run cleanly: the cycle computed so far is written, marked incomplete.
+// stderr. Ctrl-C, SIGTERM and SIGHUP stop the run cleanly: the cycle computed so far is written,
+// marked incomplete.
 #include <fmt/format.h>
 #include <chrono>
 #include <cstdio>
@@ -11,6 +12,7 @@
 #include "core/engine/run_job.hpp"
 #include "core/io/case_file.hpp"
 #include "core/io/field_output.hpp"
+#include "core/io/output_files.hpp"
 #include "core/io/results_writer.hpp"
 
 namespace filmdyn::cli {
@@ -31,6 +33,7 @@ Command MakeRunCommand() {
       {"time-limit", "S", "stop after S seconds of wall time, keeping what was computed"},
       {"threads", "N", "1 or 2: the two film joints side by side (default: 2 on >= 2 cores)"},
       {"no-fields", "", "do not write fields/ (film fields per output step, HDF5 + XDMF)"},
+      {"overwrite", "", "--out may hold an earlier run: FilmDyn's files in it are replaced"},
       {"quiet", "", "no progress on stderr"}};
   command.details =
       "Without CASE.json the built-in default case (Table I of Zhao & Shen's coupling-model "
@@ -39,6 +42,10 @@ Command MakeRunCommand() {
       "Film runs also compute a companion run on meshes with half the elements and report the\n"
       "estimated discretisation error of the headline figures (last line, summary.json; warns\n"
       "above 1 %; --set solver.error_estimate=0 turns it off; docs/validation/errors.md).\n"
+      "Outputs: summary.json says \"running\" until every other file is written, then comes last;\n"
+      "each file is written whole or not at all. An --out folder holding an earlier run is\n"
+      "refused without --overwrite; the default folder's earlier run is replaced. Ctrl-C,\n"
+      "SIGTERM and SIGHUP stop the run with what was computed written, marked incomplete.\n"
       "Examples:\n  filmdyn run --model ideal --rpm 4000\n"
       "  filmdyn run my.json --set geometry.pin_offset=0.001 --out /tmp/r1";
   command.run = [](const Args& args, Streams& streams) {
@@ -56,10 +63,21 @@ Command MakeRunCommand() {
       }
       config.threads = static_cast<int>(*threads);
     }
-    const std::filesystem::path out = args.Value("out")
-                                          ? std::filesystem::path(*args.Value("out"))
-                                          : io::DefaultOutputFolder(c.name, model, rpm);
+    const bool explicit_out = args.Value("out").has_value();
+    const std::filesystem::path out = explicit_out ? std::filesystem::path(*args.Value("out"))
+                                                   : io::DefaultOutputFolder(c.name, model, rpm);
     const bool quiet = args.Has("quiet");
+    // Locked against a second FilmDyn writer until the end; an earlier run's files are refused
+    // (--out without --overwrite) or replaced (the default folder is FilmDyn's own).
+    const io::OutputFolder folder(out,
+                                  explicit_out && !args.Has("overwrite")
+                                      ? io::OutputFolder::Reuse::kRefuse
+                                      : io::OutputFolder::Reuse::kReplace,
+                                  "--out");
+    if (folder.replaced_earlier_run() && !quiet) {
+      streams.err << "filmdyn run: replacing the earlier run in " << out.string() << "\n";
+    }
+    io::MarkRunStarted(out, c.name, config);
     auto last_print = std::chrono::steady_clock::now() - std::chrono::seconds(1);
     const engine::RunMonitor monitor = [&](const engine::RunProgress& p) {
       const auto now = std::chrono::steady_clock::now();
@@ -81,13 +99,14 @@ Command MakeRunCommand() {
       const InterruptGuard interrupt;
       result = engine::RunJob(config, monitor, interrupt.flag());
     }
-    const std::vector<io::OutputRow> rows = io::WriteRunFolder(out, c.name, config, result);
-    fields.Write(out / "fields");
     if (!quiet) streams.err << "\n";
-    // The same charts the GUI draws, also for an incomplete run (what was computed).
-    if (const std::string error = WriteRunPlots(out, config, rows); !error.empty()) {
-      streams.err << "filmdyn run: plots not written: " << error << "\n";
-    }
+    io::WriteRunFolder(out, c.name, config, result, [&](const std::vector<io::OutputRow>& rows) {
+      fields.Write(out / "fields");
+      // The same charts the GUI draws, also for an incomplete run (what was computed).
+      if (const std::string error = WriteRunPlots(out, config, rows); !error.empty()) {
+        streams.err << "filmdyn run: plots not written: " << error << "\n";
+      }
+    });
     streams.err << "filmdyn run: " << engine::StatusName(result.status) << ", " << result.cycles
                 << " cycles, " << result.stats.steps << " steps, " << result.wall_time
                 << " s; results in " << out.string() << "\n";

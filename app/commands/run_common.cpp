@@ -75,6 +75,35 @@ std::string RpmText(double rpm) {
   return out.str();
 }
 
+std::unique_ptr<io::OutputFolder> PrepareBatchFolders(const std::filesystem::path& out,
+                                                      std::vector<batch::SweepJob>& jobs,
+                                                      bool explicit_out, bool overwrite,
+                                                      const std::string& points_option) {
+  const bool replace = overwrite || !explicit_out;
+  for (std::size_t i = 0; i < jobs.size(); ++i) {
+    for (std::size_t k = 0; k < i; ++k) {
+      if (jobs[k].output_folder == jobs[i].output_folder) {
+        throw InputError(points_option,
+                         engine::ModelName(jobs[i].config.model) + " at " +
+                             RpmText(jobs[i].config.rpm) + " rpm",
+                         "is given twice; each run of a batch must differ in model or speed");
+      }
+    }
+  }
+  auto folder = std::make_unique<io::OutputFolder>(
+      out, replace ? io::OutputFolder::Reuse::kReplace : io::OutputFolder::Reuse::kRefuse,
+      "--out");
+  for (batch::SweepJob& job : jobs) {
+    if (!replace && io::OutputFolder::HoldsEarlierRun(job.output_folder)) {
+      throw InputError("--out", job.output_folder.string(),
+                       "holds an earlier run; choose another folder, or pass --overwrite to "
+                       "replace FilmDyn's files in it");
+    }
+    job.overwrite = replace;
+  }
+  return folder;
+}
+
 int JobsOption(const Args& args) {
   const long jobs =
       args.Integer("jobs").value_or(std::max(1u, std::thread::hardware_concurrency()));
@@ -154,13 +183,11 @@ std::string WriteComparison(const std::filesystem::path& out, const BatchOutcome
     return a.model != b.model ? a.model < b.model : a.rpm < b.rpm;
   });
   std::filesystem::create_directories(out);
-  {
-    std::ofstream csv(out / "comparison.csv");
-    io::WriteComparisonCsv(csv, rows);
-    if (!csv) throw std::runtime_error("cannot write " + (out / "comparison.csv").string());
-  }
+  std::ostringstream csv;
+  io::WriteComparisonCsv(csv, rows);
+  io::WriteFileAtomically(out / "comparison.csv", csv.str());
   const std::string table = io::ComparisonMarkdown(rows);
-  std::ofstream(out / "comparison.md") << "# " << title << "\n\n" << table;
+  io::WriteFileAtomically(out / "comparison.md", "# " + title + "\n\n" + table);
   QString plot_error;
   ui::ExportStandardPlots(runs, QString::fromStdString((out / "plots").string()), &plot_error);
   if (!plot_error.isEmpty()) {
@@ -169,12 +196,18 @@ std::string WriteComparison(const std::filesystem::path& out, const BatchOutcome
   return table;
 }
 
+namespace {
+constexpr int kStopSignals[3] = {SIGINT, SIGTERM, SIGHUP};
+}  // namespace
+
 InterruptGuard::InterruptGuard() {
   g_interrupted = false;
-  previous_ = std::signal(SIGINT, OnInterrupt);
+  for (int k = 0; k < 3; ++k) previous_[k] = std::signal(kStopSignals[k], OnInterrupt);
 }
 
-InterruptGuard::~InterruptGuard() { std::signal(SIGINT, previous_); }
+InterruptGuard::~InterruptGuard() {
+  for (int k = 0; k < 3; ++k) std::signal(kStopSignals[k], previous_[k]);
+}
 
 const std::atomic<bool>* InterruptGuard::flag() const { return &g_interrupted; }
 

@@ -5,6 +5,7 @@
 #include <QString>
 #include <atomic>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -13,6 +14,7 @@
 #include "core/engine/run_job.hpp"
 #include "core/batch/sweep.hpp"
 #include "core/io/case_file.hpp"
+#include "core/io/output_files.hpp"
 #include "core/io/results_writer.hpp"
 #include "ui/plots/plot_run.hpp"
 
@@ -44,6 +46,16 @@ batch::SweepJob SweepJobFor(const io::LoadedCase& loaded, engine::Model model, d
 /// "6000", "1500.5": a speed as it appears in folder names and messages.
 std::string RpmText(double rpm);
 
+/// The output folders of a batch (sweep, reproduce), checked before any run starts: `out`
+/// locked for the batch's lifetime (the returned object), the same run twice (same model and
+/// speed) an input error naming `points_option`, and any run folder holding an earlier run
+/// refused unless `overwrite` (then each job replaces FilmDyn's files in its folder).
+/// `explicit_out`: --out was given; the default folder under results/ is replaced instead.
+std::unique_ptr<io::OutputFolder> PrepareBatchFolders(const std::filesystem::path& out,
+                                                      std::vector<batch::SweepJob>& jobs,
+                                                      bool explicit_out, bool overwrite,
+                                                      const std::string& points_option);
+
 /// --jobs: runs computed at the same time (default: the number of cores), checked to [1, 256].
 int JobsOption(const Args& args);
 
@@ -66,8 +78,8 @@ std::string WriteComparison(const std::filesystem::path& out, const BatchOutcome
                             const std::string& title, const std::string& prefix, Streams& streams,
                             const std::vector<int>& indices = {});
 
-/// Installs a SIGINT handler for its lifetime: Ctrl-C sets flag() so runs stop cleanly with
-/// their partial results written.
+/// Installs handlers of SIGINT (Ctrl-C), SIGTERM and SIGHUP for its lifetime: each sets flag() so
+/// runs stop cleanly with their partial results written.
 class InterruptGuard {
  public:
   InterruptGuard();
@@ -77,7 +89,7 @@ class InterruptGuard {
   const std::atomic<bool>* flag() const;
 
  private:
-  void (*previous_)(int);
+  void (*previous_[3])(int);
 };
 
 }  // namespace filmdyn::cli

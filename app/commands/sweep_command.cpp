@@ -38,11 +38,14 @@ Command MakeSweepCommand() {
       {"set", "KEY=VALUE", "override a case field by its dotted JSON path", true},
       {"time-limit", "S", "wall-time limit of each run [s], keeping what was computed"},
       {"no-fields", "", "do not write the runs' fields/ (HDF5 + XDMF per joint)"},
+      {"overwrite", "", "--out may hold an earlier sweep: FilmDyn's files in it are replaced"},
       {"quiet", "", "no progress on stderr"}};
   command.details =
       "Each run writes <DIR>/<case>-<model>-<rpm>/ like `filmdyn run`; the sweep adds\n"
       "<DIR>/comparison.csv (SI), <DIR>/comparison.md (display units) and <DIR>/plots/ with all\n"
-      "runs overlaid. Ctrl-C stops every run cleanly with its partial results written.\n"
+      "runs overlaid. Ctrl-C, SIGTERM or SIGHUP stop every run cleanly with its partial results\n"
+      "written. A --out folder holding an earlier sweep is refused without --overwrite; the\n"
+      "same speed and model given twice is refused.\n"
       "Example:\n  filmdyn sweep --rpm 1000,2000,4000,6000 --models skirt-lbrbe --jobs 2";
   command.run = [](const Args& args, Streams& streams) {
     const io::LoadedCase loaded = LoadCaseArgument(args);
@@ -61,7 +64,7 @@ Command MakeSweepCommand() {
     const double time_limit = args.Double("time-limit").value_or(0.0);
     const std::filesystem::path out = args.Value("out")
                                           ? std::filesystem::path(*args.Value("out"))
-                                          : std::filesystem::path("results") / ("sweep-" + c.name);
+                                          : std::filesystem::path("results") / ("sweep-" + io::SafeFolderName(c.name));
 
     // Every configuration is built (and checked) before anything starts.
     std::vector<batch::SweepJob> sweep_jobs;
@@ -71,7 +74,8 @@ Command MakeSweepCommand() {
             SweepJobFor(loaded, model, rpm, time_limit, !args.Has("no-fields"), out));
       }
     }
-    std::filesystem::create_directories(out);
+    const auto folder = PrepareBatchFolders(out, sweep_jobs, args.Value("out").has_value(),
+                                            args.Has("overwrite"), "--rpm/--models");
 
     const BatchOutcome batch =
         RunBatch(std::move(sweep_jobs), jobs, args.Has("quiet"), "sweep", streams);

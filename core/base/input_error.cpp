@@ -5,11 +5,75 @@
 
 namespace filmdyn {
 
+namespace {
+// A value as echoed in a message: control characters shown as '?', and cut after
+// kEchoLimit bytes (at a character boundary) with its full length said — a 30 MB CSV cell
+// or a binary file must not flood the terminal.
+constexpr std::size_t kEchoLimit = 160;
+std::string Echo(std::string value) {
+  const std::size_t size = value.size();
+  if (size > kEchoLimit) {
+    std::size_t cut = kEchoLimit;
+    while (cut > 0 && (static_cast<unsigned char>(value[cut]) & 0xC0) == 0x80) --cut;
+    value.resize(cut);
+    value += "… (" + std::to_string(size) + " bytes)";
+  }
+  for (char& c : value) {
+    const auto u = static_cast<unsigned char>(c);
+    if (u < 0x20 || u == 0x7F) c = '?';
+  }
+  return value;
+}
+}  // namespace
+
 InputError::InputError(std::string field, std::string value, std::string allowed)
-    : std::runtime_error(field + " = " + value + ": " + allowed),
+    : std::runtime_error(Echo(field) + " = " + Echo(value) + ": " + allowed),
       field_(std::move(field)),
-      value_(std::move(value)),
+      value_(Echo(std::move(value))),
       allowed_(std::move(allowed)) {}
+
+bool IsUtf8(std::string_view text) {
+  std::size_t i = 0;
+  const std::size_t n = text.size();
+  while (i < n) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    int extra = 0;
+    unsigned long code = 0;
+    if (c < 0x80) {
+      ++i;
+      continue;
+    } else if ((c & 0xE0) == 0xC0) {
+      extra = 1;
+      code = c & 0x1F;
+    } else if ((c & 0xF0) == 0xE0) {
+      extra = 2;
+      code = c & 0x0F;
+    } else if ((c & 0xF8) == 0xF0) {
+      extra = 3;
+      code = c & 0x07;
+    } else {
+      return false;
+    }
+    if (i + static_cast<std::size_t>(extra) >= n) return false;
+    for (int k = 1; k <= extra; ++k) {
+      const auto d = static_cast<unsigned char>(text[i + k]);
+      if ((d & 0xC0) != 0x80) return false;
+      code = (code << 6) | (d & 0x3F);
+    }
+    static constexpr unsigned long kMin[4] = {0, 0x80, 0x800, 0x10000};
+    if (code < kMin[extra] || code > 0x10FFFF || (code >= 0xD800 && code <= 0xDFFF)) {
+      return false;
+    }
+    i += static_cast<std::size_t>(extra) + 1;
+  }
+  return true;
+}
+
+void RequireUtf8(const std::string& field, std::string_view text) {
+  if (!IsUtf8(text)) {
+    throw InputError(field, std::string(text), "must be text in UTF-8 (this is not)");
+  }
+}
 
 std::string FormatValue(double value) {
   if (std::isnan(value)) return "nan";

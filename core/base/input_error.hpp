@@ -4,6 +4,7 @@
 /// never this.
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace filmdyn {
 
@@ -23,6 +24,11 @@ class InputError : public std::runtime_error {
   std::string value_;
   std::string allowed_;
 };
+
+/// Whether `text` is well-formed UTF-8 (no overlong forms, no surrogates, at most U+10FFFF).
+bool IsUtf8(std::string_view text);
+/// Throws InputError naming `field` unless `text` is well-formed UTF-8.
+void RequireUtf8(const std::string& field, std::string_view text);
 
 /// Formats a double for error messages with enough digits to be recognised ("nan", "inf" too).
 std::string FormatValue(double value);

@@ -9,6 +9,8 @@
 #include <tbb/task_group.h>
 
 #include "core/io/field_output.hpp"
+#include "core/io/output_files.hpp"
+#include "core/io/results_writer.hpp"
 
 namespace filmdyn::batch {
 
@@ -56,13 +58,19 @@ void SweepRunner::Work() {
         return true;
       };
       const SweepJob& job = jobs_[index];
+      // Locked for the run; marked "running" until its summary is written last.
+      const io::OutputFolder folder(
+          job.output_folder,
+          job.overwrite ? io::OutputFolder::Reuse::kReplace : io::OutputFolder::Reuse::kRefuse,
+          "--out");
+      io::MarkRunStarted(job.output_folder, job.case_name, job.config);
       io::FieldRecorder fields;
       engine::RunConfig config = job.config;
       if (job.write_fields) config.field_callback = fields.Callback();
       outcome.result = engine::RunJob(config, monitor, cancel_);
-      outcome.rows =
-          io::WriteRunFolder(job.output_folder, job.case_name, job.config, outcome.result);
-      fields.Write(job.output_folder / "fields");
+      outcome.rows = io::WriteRunFolder(
+          job.output_folder, job.case_name, job.config, outcome.result,
+          [&](const std::vector<io::OutputRow>&) { fields.Write(job.output_folder / "fields"); });
     } catch (const std::exception& error) {
       outcome.error = error.what();
     }

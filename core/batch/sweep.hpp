@@ -23,6 +23,9 @@ struct SweepJob {
   std::string case_name;
   std::filesystem::path output_folder;
   bool write_fields = true;  ///< fields/ (HDF5 + XDMF of the reported cycle) in the output folder
+  /// An earlier run's files in output_folder: replaced (true) or the job fails naming the
+  /// folder (false; the sweep command checks every folder before it starts).
+  bool overwrite = false;
 };
 
 struct SweepOutcome {

@@ -11,6 +11,7 @@
 
 #include "core/base/input_error.hpp"
 #include "core/engine/case_schema.hpp"
+#include "core/io/output_files.hpp"
 #include "core/io/pressure_csv.hpp"
 #include "core/io/resources.hpp"
 
@@ -23,6 +24,9 @@ using nlohmann::json;
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
+// Input limits (docs/case-file.md): a case file is a few KB and a few levels deep.
+constexpr std::uintmax_t kMaxCaseFileBytes = 16u << 20;
+constexpr int kMaxCaseDepth = 64;
 
 // The one list of case fields is the schema (core/engine/case_schema.hpp); V visits each with
 // its kind, in schema order.
@@ -298,6 +302,7 @@ void ApplyOverride(json* root, const std::string& assignment) {
     }
     *node = value;
   } else if (node->is_string()) {
+    RequireUtf8("--set " + path, text);
     *node = text;
   } else if (node->is_boolean()) {
     if (text != "true" && text != "false")
@@ -317,17 +322,23 @@ LoadedCase LoadCase(const std::filesystem::path& path, const std::vector<std::st
     text = *resource;
     loaded.source = "embedded:cases/default.json";
   } else {
-    std::ifstream file(path);
-    if (!file) throw InputError("case", path.string(), "cannot open the file");
-    text.assign(std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>());
+    text = ReadInputFile(path, "case", kMaxCaseFileBytes);
     loaded.directory = path.parent_path();
     loaded.source = path.string();
   }
   json root;
   try {
-    root = json::parse(text);
-  } catch (const json::parse_error& error) {
-    throw InputError(loaded.source, "not JSON", error.what());
+    // Nesting is bounded while parsing: a case is a few levels deep, and a value nested 10^5
+    // deep would exhaust the stack of every recursive walk of it later.
+    root = json::parse(text, [](int depth, json::parse_event_t, json&) {
+      if (depth > kMaxCaseDepth) {
+        throw InputError("case", "nested deeper than " + std::to_string(kMaxCaseDepth) + " levels",
+                         "a case file is a few levels deep; this is not a case file");
+      }
+      return true;
+    });
+  } catch (const json::exception& error) {  // syntax, bad UTF-8, a number out of range
+    throw InputError(loaded.source, "not a valid JSON file", error.what());
   }
   for (const std::string& assignment : overrides) ApplyOverride(&root, assignment);
   loaded.value = CaseFromJson(root);
@@ -348,7 +359,7 @@ engine::PressureCurve CurveFromSource(const LoadedCase& loaded,
   if (!loaded.directory.empty() || relative.is_absolute()) {
     const std::filesystem::path full =
         relative.is_absolute() ? relative : loaded.directory / relative;
-    if (std::filesystem::exists(full)) return ReadPressureCsvFile(full);
+    if (std::filesystem::exists(full)) return ReadPressureCsvFile(full, field + ".file");
   }
   // Not on disk: the embedded resources, addressed relative to resources/cases/.
   const std::string name =

@@ -1,8 +1,9 @@
 #include "core/io/field_series.hpp"
 
+#include "core/io/output_files.hpp"
+
 // The HDF5 C API (Debian: libhdf5-dev; core/CMakeLists.txt links HDF5::HDF5 into this package).
 #include <hdf5.h>
-#include <unistd.h>  // fsync
 #include <optional>
 
 #include <algorithm>
@@ -19,6 +20,7 @@
 #include <set>
 #include <stdexcept>
 #include <system_error>
+#include <string_view>
 #include <utility>
 
 namespace filmdyn::io {
@@ -252,7 +254,7 @@ Hid CompressedLayout(const H5Context& h5, const std::vector<hsize_t>& chunk,
 }
 
 // The whole .h5 as bytes. HDF5 builds the file in memory (core driver, no backing store) and
-// WriteBytes puts it on disk: when a flush to disk fails inside HDF5 (full disk), the library
+// WriteAndSync puts it on disk: when a flush to disk fails inside HDF5 (full disk), the library
 // keeps the file open and HDF5 1.10.8 then crashes at exit closing it (measured with a file
 // size limit), and its message hides errno. In memory nothing can fail that way, and our own
 // write reports "No space left on device". The image is ~10 MB for a cycle of the skirt.
@@ -427,31 +429,6 @@ std::string XdmfText(const FieldSeries& series, const std::string& h5_name) {
   return xml;
 }
 
-// Writes `size` bytes to `file` and syncs them to the disk, so that the rename that follows
-// never publishes a file whose content is still only in the page cache.
-void WriteBytes(const std::filesystem::path& file, const std::filesystem::path& shown_as,
-                const void* data, std::size_t size) {
-  auto fail = [&shown_as](const char* what) {
-    throw std::runtime_error("cannot write " + shown_as.string() + ": " + what + " (" +
-                             std::strerror(errno) + ")");
-  };
-  std::FILE* out = std::fopen(file.c_str(), "wb");
-  if (out == nullptr) fail("cannot open for writing");
-  const bool written = std::fwrite(data, 1, size, out) == size && std::fflush(out) == 0 &&
-                       ::fsync(::fileno(out)) == 0;
-  const int write_errno = errno;
-  if (std::fclose(out) != 0 || !written) {
-    if (!written) errno = write_errno;
-    fail("write failed");
-  }
-}
-
-void Rename(const std::filesystem::path& from, const std::filesystem::path& to) {
-  std::error_code error;
-  std::filesystem::rename(from, to, error);
-  if (error) throw std::runtime_error("cannot write " + to.string() + ": " + error.message());
-}
-
 // ---------------------------------------------------------------------------------------------
 // Reading.
 
@@ -623,17 +600,18 @@ void WriteFieldSeries(const std::filesystem::path& folder, const FieldSeries& se
       const QuietHdf5Errors quiet;
       image = Hdf5Image(series, options, h5_path);
     }
-    WriteBytes(h5_temporary, h5_path, image.data(), image.size());
+    WriteAndSync(h5_temporary, h5_path,
+                 std::string_view(reinterpret_cast<const char*>(image.data()), image.size()));
     const std::string xdmf = XdmfText(series, h5_name);
-    WriteBytes(xdmf_temporary, xdmf_path, xdmf.data(), xdmf.size());
+    WriteAndSync(xdmf_temporary, xdmf_path, xdmf);
     // Old index first: between the two renames no index can pair new data with an old frame
     // list, and an old index never points at a half-replaced .h5 (each rename is atomic).
     std::filesystem::remove(xdmf_path, error);
     if (error) {
       throw std::runtime_error("cannot replace " + xdmf_path.string() + ": " + error.message());
     }
-    Rename(h5_temporary, h5_path);
-    Rename(xdmf_temporary, xdmf_path);
+    RenameInto(h5_temporary, h5_path);
+    RenameInto(xdmf_temporary, xdmf_path);
   } catch (...) {
     remove_temporaries();
     throw;

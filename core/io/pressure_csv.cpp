@@ -1,5 +1,7 @@
 #include "core/io/pressure_csv.hpp"
 
+#include "core/io/output_files.hpp"
+
 #include <fmt/format.h>
 #include <algorithm>
 #include <cctype>
@@ -84,10 +86,10 @@ engine::PressureCurve ReadPressureCsv(std::istream& in, const std::string& sourc
   return engine::PressureCurve(std::move(angles), std::move(pressures), source);
 }
 
-engine::PressureCurve ReadPressureCsvFile(const std::filesystem::path& path) {
-  std::ifstream file(path);
-  if (!file) throw InputError("--pressure-curve", path.string(), "cannot open the file");
-  return ReadPressureCsv(file, path.string());
+engine::PressureCurve ReadPressureCsvFile(const std::filesystem::path& path,
+                                          const std::string& field) {
+  std::istringstream text(ReadInputFile(path, field, std::uintmax_t{64} << 20));
+  return ReadPressureCsv(text, path.string());
 }
 
 void WritePressureCsv(std::ostream& out, const std::vector<double>& crank_angle_deg,

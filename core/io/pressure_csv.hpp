@@ -12,7 +12,10 @@ namespace filmdyn::io {
 
 /// Parses CSV text; `source` names the file in errors ("curve.csv:12"). Throws InputError.
 engine::PressureCurve ReadPressureCsv(std::istream& in, const std::string& source);
-engine::PressureCurve ReadPressureCsvFile(const std::filesystem::path& path);
+/// Reads the file (a regular file of at most 64 MB); errors name `field` (the option or case
+/// field that gave the path) and the file's line.
+engine::PressureCurve ReadPressureCsvFile(const std::filesystem::path& path,
+                                          const std::string& field = "--pressure-curve");
 
 /// Writes the table with the standard header, after `comment` lines (each prefixed "# ").
 void WritePressureCsv(std::ostream& out, const std::vector<double>& crank_angle_deg,

@@ -1,5 +1,7 @@
 #include "core/io/results_writer.hpp"
 
+#include "core/io/output_files.hpp"
+
 #include <fmt/format.h>
 
 #include <cmath>
@@ -140,12 +142,13 @@ void WriteResultsCsv(std::ostream& out, const std::vector<OutputRow>& rows) {
 std::filesystem::path DefaultOutputFolder(const std::string& case_name, engine::Model model,
                                           double rpm) {
   return std::filesystem::path("results") /
-         fmt::format("{}-{}-{:g}", case_name, engine::ModelName(model), rpm);
+         fmt::format("{}-{}-{:g}", SafeFolderName(case_name), engine::ModelName(model), rpm);
 }
 
 std::vector<OutputRow> WriteRunFolder(const std::filesystem::path& directory,
                                       const std::string& case_name, const engine::RunConfig& config,
-                                      const engine::RunResult& result) {
+                                      const engine::RunResult& result,
+                                      const BeforeSummary& before_summary) {
   std::error_code error;
   std::filesystem::create_directories(directory, error);
   if (error)
@@ -153,15 +156,23 @@ std::vector<OutputRow> WriteRunFolder(const std::filesystem::path& directory,
   std::vector<OutputRow> rows;
   const double start = result.samples.empty() ? 0.0 : result.samples.front().time;
   for (const auto& s : result.samples) rows.push_back(RowFromSample(s, config.model, start));
-  {
-    std::ofstream csv(directory / "results.csv");
-    if (!csv) throw InputError("--out", directory.string(), "cannot write results.csv");
-    WriteResultsCsv(csv, rows);
-    csv.close();
-    if (!csv) throw std::runtime_error("cannot write " + (directory / "results.csv").string());
-  }
+  std::ostringstream csv;
+  WriteResultsCsv(csv, rows);
+  WriteFileAtomically(directory / "results.csv", csv.str());
+  if (before_summary) before_summary(rows);
+  // Last: a summary that says "completed" is only ever beside complete files.
   WriteSummaryJson(directory / "summary.json", SummarizeRun(case_name, config, result, rows));
   return rows;
+}
+
+void MarkRunStarted(const std::filesystem::path& directory, const std::string& case_name,
+                    const engine::RunConfig& config) {
+  engine::RunResult running;
+  RunSummary summary = SummarizeRun(case_name, config, running, {});
+  summary.status = kRunningStatus;
+  summary.complete = false;
+  summary.message = "the run is in progress, or was killed before it could write its results";
+  WriteSummaryJson(directory / "summary.json", summary);
 }
 
 }  // namespace filmdyn::io

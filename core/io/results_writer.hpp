@@ -3,6 +3,7 @@
 /// extra crank-train columns; a column a model does not have is present and empty) and
 /// summary.json. Columns, frames and signs: docs/outputs.md.
 #include <filesystem>
+#include <functional>
 #include <iosfwd>
 #include <optional>
 #include <string>
@@ -42,10 +43,23 @@ OutputRow RowFromSample(const engine::CrankTrainSample& sample, engine::Model mo
 
 void WriteResultsCsv(std::ostream& out, const std::vector<OutputRow>& rows);
 
-/// Writes results.csv and summary.json into `directory` (created). Returns the rows written.
+/// Called by WriteRunFolder after results.csv and before summary.json, with the rows written:
+/// the caller's further outputs (fields, plots) go here, so that the summary comes last.
+using BeforeSummary = std::function<void(const std::vector<OutputRow>&)>;
+
+/// Writes results.csv, then `before_summary`'s outputs, then summary.json into `directory`
+/// (created), each file atomically (core/io/output_files.hpp). Returns the rows written. Throws
+/// OutputError naming the file when a write fails (the summary then stays what it was:
+/// MarkRunStarted's "running").
 std::vector<OutputRow> WriteRunFolder(const std::filesystem::path& directory,
                                       const std::string& case_name, const engine::RunConfig& config,
-                                      const engine::RunResult& result);
+                                      const engine::RunResult& result,
+                                      const BeforeSummary& before_summary = {});
+
+/// Writes the summary.json of a run that has started: status "running", not complete. A run
+/// killed before it writes its results leaves exactly this, never an earlier run's summary.
+void MarkRunStarted(const std::filesystem::path& directory, const std::string& case_name,
+                    const engine::RunConfig& config);
 
 /// The default output folder `results/<case>-<model>-<rpm>`.
 std::filesystem::path DefaultOutputFolder(const std::string& case_name, engine::Model model,

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "core/base/version.hpp"
+#include "core/io/output_files.hpp"
 
 namespace filmdyn::io {
 
@@ -264,10 +265,10 @@ RunSummary SummaryFromJson(const json& j) {
 }
 
 void WriteSummaryJson(const std::filesystem::path& path, const RunSummary& summary) {
-  std::ofstream out(path);
-  out << SummaryToJson(summary).dump(2) << "\n";
-  out.close();
-  if (!out) throw std::runtime_error("cannot write " + path.string());
+  // Invalid UTF-8 in a text field (the readers refuse it; this is the last guard) is replaced
+  // rather than losing the summary.
+  WriteFileAtomically(path,
+                      SummaryToJson(summary).dump(2, ' ', false, json::error_handler_t::replace) + "\n");
 }
 
 RunSummary ReadSummaryJson(const std::filesystem::path& path) {

@@ -34,12 +34,16 @@ struct SolverSummary {
   double relative_tolerance = 0.0;
 };
 
+/// The status of a run folder whose run has started and not yet written its results (or was
+/// killed before it could): io::MarkRunStarted.
+inline constexpr char kRunningStatus[] = "running";
+
 struct RunSummary {
   std::string filmdyn_version;
   std::string case_name;  ///< "case" in the file
   std::string model;      ///< e.g. "skirt-lbrbe"
   double rpm = 0.0;
-  std::string status;     ///< engine::StatusName
+  std::string status;     ///< engine::StatusName, or kRunningStatus
   bool complete = false;  ///< status is "completed"
   std::string message;
   int cycles = 0;
@@ -73,7 +77,8 @@ nlohmann::json SummaryToJson(const RunSummary& summary);
 /// missing or any key has the wrong type.
 RunSummary SummaryFromJson(const nlohmann::json& json);
 
-/// Writes `path` (2-space indented JSON and a newline). Throws std::runtime_error naming the file.
+/// Writes `path` (2-space indented JSON and a newline) atomically. Throws OutputError naming the
+/// file.
 void WriteSummaryJson(const std::filesystem::path& path, const RunSummary& summary);
 /// Reads `path`. Throws std::runtime_error naming the file when it is missing or malformed.
 RunSummary ReadSummaryJson(const std::filesystem::path& path);

@@ -80,32 +80,44 @@ bool ExportChart(QChart* chart, const QString& path, ImageFormat format, const Q
         ok = file.open(QIODevice::WriteOnly) && image.save(&file, "PNG") && file.commit();
         break;
       }
+      // Every format through QSaveFile: written under a temporary name, renamed into place
+      // only when complete (commit), so a failed or interrupted export never leaves a cut file.
       case ImageFormat::kSvg: {
-        QSvgGenerator generator;
-        generator.setFileName(path);
-        generator.setSize(size);
-        generator.setViewBox(QRect(QPoint(0, 0), size));
-        generator.setTitle(chart->title());
-        QPainter painter;
-        ok = painter.begin(&generator);
+        QSaveFile file(path);
+        ok = file.open(QIODevice::WriteOnly);
         if (ok) {
-          view.Render(&painter, QRectF(QPointF(0, 0), size));
-          painter.end();
+          QSvgGenerator generator;
+          generator.setOutputDevice(&file);
+          generator.setSize(size);
+          generator.setViewBox(QRect(QPoint(0, 0), size));
+          generator.setTitle(chart->title());
+          QPainter painter;
+          ok = painter.begin(&generator);
+          if (ok) {
+            view.Render(&painter, QRectF(QPointF(0, 0), size));
+            painter.end();
+          }
         }
+        ok = ok && file.commit();
         break;
       }
       case ImageFormat::kPdf: {
-        QPdfWriter writer(path);
-        writer.setPageSize(QPageSize(QSizeF(size), QPageSize::Point));
-        writer.setPageMargins(QMarginsF(0, 0, 0, 0));
-        writer.setResolution(72);
-        writer.setTitle(chart->title());
-        QPainter painter;
-        ok = painter.begin(&writer);
+        QSaveFile file(path);
+        ok = file.open(QIODevice::WriteOnly);
         if (ok) {
-          view.Render(&painter, QRectF(QPointF(0, 0), size));
-          painter.end();
+          QPdfWriter writer(&file);
+          writer.setPageSize(QPageSize(QSizeF(size), QPageSize::Point));
+          writer.setPageMargins(QMarginsF(0, 0, 0, 0));
+          writer.setResolution(72);
+          writer.setTitle(chart->title());
+          QPainter painter;
+          ok = painter.begin(&writer);
+          if (ok) {
+            view.Render(&painter, QRectF(QPointF(0, 0), size));
+            painter.end();
+          }
         }
+        ok = ok && file.commit();
         break;
       }
     }

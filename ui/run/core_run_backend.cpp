@@ -158,8 +158,10 @@ RunBackend CoreRunBackend() {
     const std::string case_name = c.name;
     RunWriters writers;
     writers.folder = [shared_config, shared_result, recorder, case_name](const std::string& dir) {
-      io::WriteRunFolder(dir, case_name, *shared_config, *shared_result);
-      recorder->Write(std::filesystem::path(dir) / "fields");
+      io::WriteRunFolder(dir, case_name, *shared_config, *shared_result,
+                         [&](const std::vector<io::OutputRow>&) {
+                           recorder->Write(std::filesystem::path(dir) / "fields");
+                         });
     };
     writers.fields = [recorder](const std::string& dir) {
       if (recorder->skirt_frames() + recorder->bearing_frames() == 0) {

@@ -1,0 +1,218 @@
+#include "core/io/output_files.hpp"
+
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <initializer_list>
+#include <system_error>
+#include <vector>
+
+#include "core/base/input_error.hpp"
+
+namespace filmdyn::io {
+
+void WriteAndSync(const std::filesystem::path& file, const std::filesystem::path& shown_as,
+                  std::string_view bytes) {
+  auto fail = [&shown_as](const char* what, int error) {
+    throw OutputError("cannot write " + shown_as.string() + ": " + what + " (" +
+                      std::strerror(error) + ")");
+  };
+  std::FILE* out = std::fopen(file.c_str(), "wb");
+  if (out == nullptr) fail("cannot open for writing", errno);
+  const bool written = std::fwrite(bytes.data(), 1, bytes.size(), out) == bytes.size() &&
+                       std::fflush(out) == 0 && ::fsync(::fileno(out)) == 0;
+  const int write_errno = errno;
+  const bool closed = std::fclose(out) == 0;
+  if (!written || !closed) fail("write failed", !written ? write_errno : errno);
+}
+
+void RenameInto(const std::filesystem::path& from, const std::filesystem::path& to) {
+  std::error_code error;
+  std::filesystem::rename(from, to, error);
+  if (error) throw OutputError("cannot write " + to.string() + ": " + error.message());
+}
+
+std::filesystem::path TemporaryFor(const std::filesystem::path& target) {
+  std::filesystem::path temporary = target;
+  temporary += ".tmp";
+  return temporary;
+}
+
+void WriteFileAtomically(const std::filesystem::path& target, std::string_view bytes) {
+  const std::filesystem::path temporary = TemporaryFor(target);
+  try {
+    WriteAndSync(temporary, target, bytes);
+    RenameInto(temporary, target);
+  } catch (...) {
+    std::error_code ignored;
+    std::filesystem::remove(temporary, ignored);
+    throw;
+  }
+}
+
+namespace {
+constexpr const char* kRunFiles[] = {"results.csv", "summary.json", "comparison.csv",
+                                     "comparison.md"};
+// FilmDyn's files in its subfolders, by extension.
+struct OwnFiles {
+  const char* folder;
+  std::initializer_list<const char*> extensions;
+};
+const OwnFiles kOwnSubfolders[] = {{"fields", {".h5", ".xdmf", ".tmp"}},
+                                   {"plots", {".png", ".svg", ".tmp"}}};
+
+bool IsOwnFile(const std::filesystem::path& file, const OwnFiles& own) {
+  const std::string extension = file.extension().string();
+  for (const char* e : own.extensions) {
+    if (extension == e) return true;
+  }
+  return false;
+}
+}  // namespace
+
+bool OutputFolder::HoldsEarlierRun(const std::filesystem::path& folder) {
+  std::error_code error;
+  for (const char* name : kRunFiles) {
+    if (std::filesystem::exists(folder / name, error)) return true;
+  }
+  for (const OwnFiles& own : kOwnSubfolders) {
+    const std::filesystem::path sub = folder / own.folder;
+    if (!std::filesystem::is_directory(sub, error)) continue;
+    for (const auto& entry : std::filesystem::directory_iterator(sub, error)) {
+      if (IsOwnFile(entry.path(), own)) return true;
+    }
+  }
+  return false;
+}
+
+void OutputFolder::RemoveEarlierRun(const std::filesystem::path& folder) {
+  auto remove = [](const std::filesystem::path& file) {
+    std::error_code error;
+    std::filesystem::remove(file, error);
+    if (error) {
+      throw OutputError("cannot remove the earlier run's " + file.string() + ": " +
+                        error.message());
+    }
+  };
+  for (const char* name : kRunFiles) remove(folder / name);
+  for (const OwnFiles& own : kOwnSubfolders) {
+    const std::filesystem::path sub = folder / own.folder;
+    std::error_code error;
+    if (!std::filesystem::is_directory(sub, error)) continue;
+    std::vector<std::filesystem::path> files;
+    for (const auto& entry : std::filesystem::directory_iterator(sub, error)) {
+      if (entry.is_regular_file(error) && IsOwnFile(entry.path(), own)) {
+        files.push_back(entry.path());
+      }
+    }
+    for (const auto& file : files) remove(file);
+    if (std::filesystem::is_empty(sub, error)) std::filesystem::remove(sub, error);
+  }
+}
+
+OutputFolder::OutputFolder(const std::filesystem::path& folder, Reuse reuse,
+                           const std::string& option)
+    : folder_(folder) {
+  std::error_code error;
+  std::filesystem::create_directories(folder, error);
+  if (error) throw InputError(option, folder.string(), "cannot create the folder: " + error.message());
+  if (!std::filesystem::is_directory(folder, error)) {
+    throw InputError(option, folder.string(), "is not a folder");
+  }
+  const std::filesystem::path lock = folder / ".filmdyn.lock";
+  lock_fd_ = ::open(lock.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  if (lock_fd_ < 0) {
+    throw InputError(option, folder.string(),
+                     std::string("cannot write in the folder: ") + std::strerror(errno));
+  }
+  if (::flock(lock_fd_, LOCK_EX | LOCK_NB) != 0) {
+    ::close(lock_fd_);
+    lock_fd_ = -1;
+    throw InputError(option, folder.string(),
+                     "another FilmDyn run is writing into this folder; wait for it or choose "
+                     "another folder");
+  }
+  try {
+    if (HoldsEarlierRun(folder)) {
+      if (reuse == Reuse::kRefuse) {
+        throw InputError(option, folder.string(),
+                         "holds an earlier run (results.csv, summary.json, fields/ or plots/); "
+                         "choose another folder, or pass --overwrite to replace FilmDyn's files "
+                         "in it");
+      }
+      RemoveEarlierRun(folder);
+      replaced_ = true;
+    }
+  } catch (...) {
+    ::close(lock_fd_);
+    lock_fd_ = -1;
+    throw;
+  }
+}
+
+OutputFolder::~OutputFolder() {
+  if (lock_fd_ >= 0) ::close(lock_fd_);  // releases the flock
+}
+
+}  // namespace filmdyn::io
+
+namespace filmdyn::io {
+
+std::string ReadInputFile(const std::filesystem::path& path, const std::string& field,
+                          std::uintmax_t max_bytes) {
+  std::error_code error;
+  const auto status = std::filesystem::status(path, error);
+  if (error || !std::filesystem::exists(status)) {
+    throw InputError(field, path.string(), "cannot open the file: it does not exist");
+  }
+  if (!std::filesystem::is_regular_file(status)) {
+    throw InputError(field, path.string(),
+                     "is not a regular file (a folder, device or pipe): give a file");
+  }
+  const std::uintmax_t size = std::filesystem::file_size(path, error);
+  auto too_big = [&](std::uintmax_t bytes) {
+    return InputError(field, path.string(),
+                      "is too large (" + std::to_string(bytes) + " bytes; at most " +
+                          std::to_string(max_bytes) + ")");
+  };
+  if (!error && size > max_bytes) throw too_big(size);
+  std::FILE* in = std::fopen(path.c_str(), "rb");
+  if (in == nullptr) {
+    throw InputError(field, path.string(),
+                     std::string("cannot open the file: ") + std::strerror(errno));
+  }
+  std::string text;
+  char buffer[65536];
+  std::size_t got = 0;
+  while ((got = std::fread(buffer, 1, sizeof buffer, in)) > 0) {
+    text.append(buffer, got);
+    if (text.size() > max_bytes) {  // grew while read
+      std::fclose(in);
+      throw too_big(text.size());
+    }
+  }
+  const bool failed = std::ferror(in) != 0;
+  std::fclose(in);
+  if (failed) throw InputError(field, path.string(), "cannot read the file");
+  return text;
+}
+
+std::string SafeFolderName(const std::string& name) {
+  std::string safe = IsUtf8(name) ? name : std::string();
+  if (safe.empty() && !name.empty()) {  // not UTF-8: keep the ASCII, mark the rest
+    for (char c : name) safe += static_cast<unsigned char>(c) < 0x80 ? c : '_';
+  }
+  for (char& c : safe) {
+    const auto u = static_cast<unsigned char>(c);
+    if (c == '/' || c == '\\' || u < 0x20 || u == 0x7F || c == ':') c = '_';
+  }
+  for (std::size_t i = 0; i < safe.size() && safe[i] == '.'; ++i) safe[i] = '_';
+  if (safe.empty()) safe = "case";
+  return safe;
+}
+
+}  // namespace filmdyn::io

@@ -1,0 +1,87 @@
+#pragma once
+/// @file How every output file is written, and the output folder of a run.
+///
+/// Files: written under a temporary name beside the target, flushed and synced to the disk,
+/// every write checked, then renamed into place — a reader (or a later run) sees the old file
+/// or the whole new one, never a cut one. A failed write throws OutputError naming the file and
+/// the reason (e.g. "No space left on device") and leaves no temporary behind.
+///
+/// Folders: a run's folder is locked against a second FilmDyn writer for the run's lifetime
+/// (an advisory flock(2) on `.filmdyn.lock`, released by the kernel if the process dies), and a
+/// folder holding an earlier run is refused unless the caller asks to replace it; replacing
+/// removes only FilmDyn's own files (docs/outputs.md, "Output folders").
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <cstdint>
+#include <string_view>
+
+namespace filmdyn::io {
+
+/// An output could not be written: the message names the file and the reason.
+class OutputError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// Writes `bytes` to `file` (created or truncated), flushed and synced to the disk. Messages
+/// name `shown_as` (the file the user knows; `file` may be its temporary). Throws OutputError;
+/// `file` is left as it is (the caller removes its temporary).
+void WriteAndSync(const std::filesystem::path& file, const std::filesystem::path& shown_as,
+                  std::string_view bytes);
+/// Renames `from` to `to` (atomic on one file system). Throws OutputError naming `to`.
+void RenameInto(const std::filesystem::path& from, const std::filesystem::path& to);
+/// The temporary name WriteFileAtomically uses for `target`: "<name>.tmp" beside it.
+std::filesystem::path TemporaryFor(const std::filesystem::path& target);
+/// Writes `bytes` to a temporary beside `target`, syncs it and renames it into place.
+void WriteFileAtomically(const std::filesystem::path& target, std::string_view bytes);
+
+/// The output folder of one run (or of a sweep's comparison) while FilmDyn writes it.
+class OutputFolder {
+ public:
+  enum class Reuse {
+    kRefuse,   ///< a folder holding an earlier run is an input error naming `option`
+    kReplace,  ///< FilmDyn's own files of the earlier run are removed first
+  };
+  /// Creates `folder`, takes its lock (an input error naming `option` when another FilmDyn
+  /// process holds it) and applies `reuse` to an earlier run's files in it. Throws InputError.
+  OutputFolder(const std::filesystem::path& folder, Reuse reuse, const std::string& option);
+  ~OutputFolder();
+  OutputFolder(const OutputFolder&) = delete;
+  OutputFolder& operator=(const OutputFolder&) = delete;
+
+  const std::filesystem::path& path() const { return folder_; }
+  /// True when an earlier run's files were found (and, with kReplace, removed).
+  bool replaced_earlier_run() const { return replaced_; }
+
+  /// Whether `folder` holds files of an earlier FilmDyn run (results.csv, summary.json, fields/,
+  /// plots/, comparison.csv/.md).
+  static bool HoldsEarlierRun(const std::filesystem::path& folder);
+  /// Removes FilmDyn's own files from `folder`: results.csv, summary.json, comparison.csv/.md,
+  /// the .h5/.xdmf/.tmp files in fields/ and the .png/.svg/.tmp files in plots/ (each
+  /// subfolder itself only when it is then empty). Anything else is left alone.
+  static void RemoveEarlierRun(const std::filesystem::path& folder);
+
+ private:
+  std::filesystem::path folder_;
+  int lock_fd_ = -1;
+  bool replaced_ = false;
+};
+
+}  // namespace filmdyn::io
+
+namespace filmdyn::io {
+
+/// Reads a whole input file named by `field` (the option or case field that gave the path):
+/// only a regular file (no device, FIFO or folder: "/dev/zero" would never end), at most
+/// `max_bytes` (a clear error naming the field, the file's size and the limit). Throws
+/// InputError.
+std::string ReadInputFile(const std::filesystem::path& path, const std::string& field,
+                          std::uintmax_t max_bytes);
+
+/// A case name as a folder name: path separators, "..", leading dots, control characters and
+/// bytes that are not UTF-8 become '_' (a name can never point outside its parent); empty →
+/// "case".
+std::string SafeFolderName(const std::string& name);
+
+}  // namespace filmdyn::io
