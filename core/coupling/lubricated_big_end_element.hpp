@@ -50,6 +50,8 @@ class LubricatedBigEndElement final : public multibody::JointForceElement,
   BigEndKinematics Kinematics(const multibody::BodyState& crank,
                               const multibody::BodyState& rod) const;
   const lubrication::BearingSolver& solver() const { return *solver_; }
+  /// A cancel honoured inside the film solve (ReynoldsFem::SetStopCheck).
+  void SetStopCheck(const StopCheck& check) { solver_->fem().SetStopCheck(check); }
   /// Re-solves at the last state evaluated without a Jacobian if a Jacobian evaluation has left
   /// other fields in the solver since (so fields() belong to the sampled state).
   void RefreshFields();

@@ -62,6 +62,8 @@ class LubricatedSkirtElement final : public multibody::JointForceElement,
   const lubrication::SkirtResult& last_result() const { return result_; }
   /// 2: the skirt's thrust and anti-thrust panels solved side by side (SkirtSolver::SetThreads).
   void SetPanelThreads(int threads) { solver_->SetThreads(threads); }
+  /// A cancel honoured inside the film solves (ReynoldsFem::SetStopCheck).
+  void SetStopCheck(const StopCheck& check) { solver_->SetStopCheck(check); }
   long reynolds_solves() const { return solves_; }
   /// Numeric LDLᵀ factorisations over all solves (the other linear solves reuse a factor).
   long factorizations() const { return factorizations_; }

@@ -203,6 +203,15 @@ RunResult RunSingle(const RunConfig& config, const RunMonitor& monitor,
                           : std::min(2, static_cast<int>(std::thread::hardware_concurrency()));
   train.system->SetThreads(threads);
   if (skirt) skirt->SetPanelThreads(threads);
+  // A cancel or the time limit stops the integration inside an output step, at the next
+  // evaluation of the films (a step on a huge mesh can take minutes).
+  const StopCheck stop = [&] {
+    return (cancel && cancel->load()) ||
+           (config.wall_time_limit > 0 && elapsed() > config.wall_time_limit);
+  };
+  train.system->SetStopCheck(stop);
+  if (skirt) skirt->SetStopCheck(stop);
+  if (big_end) big_end->SetStopCheck(stop);
   multibody::Integrator integrator(*train.system, config.integrator);
   integrator.Initialize(0.0, train.initial_state);
 
@@ -362,6 +371,13 @@ RunResult RunSingle(const RunConfig& config, const RunMonitor& monitor,
     result.samples = std::move(previous);
   } catch (const InputError&) {
     throw;
+  } catch (const StopRequested&) {
+    const bool cancelled = cancel && cancel->load();
+    result.status = cancelled ? RunStatus::kCancelled : RunStatus::kTimeLimit;
+    result.message =
+        (cancelled ? "cancelled" : "wall-time limit reached") + AtAngle(cycle, crank_deg);
+    result.cycles = std::max(cycle, 0);
+    result.samples = previous.empty() ? current : previous;
   } catch (const std::exception& error) {
     result.status = RunStatus::kFailed;
     result.message = std::string("integration failed: ") + error.what() + AtAngle(cycle, crank_deg);
@@ -415,7 +431,7 @@ RunResult RunJob(const RunConfig& config, const RunMonitor& monitor,
       coarse_result = RunSingle(
           coarse,
           [&](const RunProgress&) { return !stop_coarse.load() && !(cancel && cancel->load()); },
-          nullptr);
+          &stop_coarse);
     } catch (const std::exception& error) {
       coarse_error = error.what();
     }

@@ -64,6 +64,7 @@ bool ReynoldsFem::SolveReynoldsLcp(bool unconstrained) {
   const bool modify = ldlt_->SupportsRowModify();
   const int modify_limit = std::max(16, n / 25);
   while (st.iterations < options_.max_iterations) {
+    ThrowIfStopRequested(stop_check_);
     auto t0 = Clock::now();
     if (refactorize) {
       for (int q = 0; q < nnz; ++q) {

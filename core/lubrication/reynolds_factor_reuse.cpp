@@ -68,6 +68,7 @@ bool ReynoldsFem::SolvePcg(Eigen::VectorXd& x, bool x_is_guess) {
   pcg_d_ = pcg_z_;
   double rz = pcg_r_.dot(pcg_z_);
   for (int it = 1; it <= options_.pcg_max_iterations; ++it) {
+    ThrowIfStopRequested(stop_check_);
     ApplyMasked(pcg_d_, pcg_q_);
     const double dq = pcg_d_.dot(pcg_q_);
     if (!(dq > 0.0)) return false;  // not SPD in floating point: refactorise

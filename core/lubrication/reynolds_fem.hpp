@@ -37,6 +37,7 @@
 
 #include "core/lubrication/film_factors.hpp"
 #include "core/lubrication/sparse_ldlt.hpp"
+#include "core/base/stop.hpp"
 #include "core/lubrication/tri_mesh.hpp"
 
 namespace filmdyn::lubrication {
@@ -122,6 +123,10 @@ class ReynoldsFem {
 
   const TriMesh& mesh() const { return mesh_; }
   const ReynoldsOptions& options() const { return options_; }
+  /// Called at every iteration of a solve (active set, JFO, CG): when it returns true the solve
+  /// throws filmdyn::StopRequested (a cancel honoured within one iteration on any mesh). The
+  /// solver must not be used again after that.
+  void SetStopCheck(StopCheck check) { stop_check_ = std::move(check); }
   /// 0 = mesh x, 1 = mesh y (the constructor's sliding_axis).
   int sliding_axis() const { return axis_; }
   void set_cavitation(CavitationModel model) { options_.cavitation = model; }
@@ -173,6 +178,7 @@ class ReynoldsFem {
   TriMesh mesh_;
   int axis_;
   ReynoldsOptions options_;
+  StopCheck stop_check_;
   std::vector<Element> elements_;
   std::vector<double> lumped_area_;
   // Lower-triangular stiffness (SPD solver) and its full version (JFO LU), same element maps.

@@ -58,6 +58,7 @@ bool ReynoldsFem::SolveJfo() {
   bool converged = false;
   st.complementarity_s += Seconds(t_start, Clock::now()) - 0.0;
   while (st.iterations < options_.max_iterations) {
+    ThrowIfStopRequested(stop_check_);
     auto t0 = Clock::now();
     for (int c = 0; c < n; ++c) {
       const int begin = k_full_.outerIndexPtr()[c], end = k_full_.outerIndexPtr()[c + 1];

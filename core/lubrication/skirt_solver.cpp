@@ -137,6 +137,10 @@ SkirtSolver::SkirtSolver(SkirtConfig config)
 
 SkirtSolver::~SkirtSolver() = default;
 
+void SkirtSolver::SetStopCheck(const StopCheck& check) {
+  for (auto& panel : panels_) panel->fem->SetStopCheck(check);
+}
+
 void SkirtSolver::SetThreads(int threads) {
   if (threads <= 1) {
     pool_.reset();

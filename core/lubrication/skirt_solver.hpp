@@ -101,6 +101,8 @@ class SkirtSolver {
   const std::vector<double>& alpha() const { return alpha_; }
   /// 1 (default): the panels one after the other; 2: side by side.
   void SetThreads(int threads);
+  /// The stop check of both panels' solves (ReynoldsFem::SetStopCheck).
+  void SetStopCheck(const StopCheck& check);
 
   /// The lubricated panels: 0 = thrust (Omega1), 1 = anti-thrust (Omega3).
   static constexpr int kPanels = 2;

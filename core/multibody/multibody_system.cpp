@@ -80,6 +80,7 @@ std::vector<int> ConcurrentElements(const std::vector<std::unique_ptr<ForceEleme
 }  // namespace
 
 Eigen::VectorXd MultibodySystem::AppliedForces(double t, const SystemState& state) {
+  ThrowIfStopRequested(stop_check_);
   const int n = NumCoordinates();
   Eigen::VectorXd q_force = Eigen::VectorXd::Zero(n);
   const std::vector<int> concurrent = ConcurrentElements(elements_, pool_.get());
@@ -183,6 +184,7 @@ void MultibodySystem::Assemble(double t, SystemState* state, double tolerance) c
 
 void MultibodySystem::AccelerationJacobian(double t, const SystemState& state,
                                            Eigen::MatrixXd* d_acc_dq, Eigen::MatrixXd* d_acc_dv) {
+  ThrowIfStopRequested(stop_check_);
   const int n = NumCoordinates();
   d_acc_dq->setZero(n, n);
   d_acc_dv->setZero(n, n);

@@ -7,7 +7,9 @@
 ///
 /// solved through the Schur complement (M is diagonal and positive). The system is constant
 /// after assembly (MuJoCo's mjModel); the evolving state is a SystemState.
+#include <functional>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -15,6 +17,7 @@
 #include "core/multibody/constraint.hpp"
 #include "core/multibody/force_element.hpp"
 #include "core/multibody/system_state.hpp"
+#include "core/base/stop.hpp"
 #include "core/base/worker_pool.hpp"
 
 namespace filmdyn::multibody {
@@ -61,6 +64,12 @@ class MultibodySystem {
   void SetThreads(int threads);
   int Threads() const;
 
+  /// Called at the start of every evaluation of the applied forces and of every Jacobian (the
+  /// expensive calls: each solves the films); when it returns true they throw
+  /// filmdyn::StopRequested (core/base/stop.hpp), so
+  /// a cancel or a time limit is honoured within one evaluation, not one output step.
+  void SetStopCheck(StopCheck check) { stop_check_ = std::move(check); }
+
   /// Sum of all applied forces Q (3n) at the state.
   Eigen::VectorXd AppliedForces(double t, const SystemState& state);
   /// eq. 39 at the state (force elements evaluated once).
@@ -92,6 +101,7 @@ class MultibodySystem {
   std::vector<double> Masses() const;
 
  private:
+  StopCheck stop_check_;
   /// Assembled Φ, Φ_q (m × 3n), Φ_t, γ.
   struct ConstraintSystem {
     Eigen::VectorXd phi, phi_t, gamma;

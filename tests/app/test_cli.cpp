@@ -8,7 +8,12 @@
 #include <QProcess>
 #include <QSet>
 #include <QTemporaryDir>
+#include <QDir>
+#include <QElapsedTimer>
 #include <QtTest>
+
+#include <csignal>
+#include <sys/types.h>
 
 #include "app/cli/command.hpp"
 #include "app/cli/dispatcher.hpp"
@@ -208,6 +213,161 @@ class TestCli : public QObject {
     const Result result = Run({"sweep", "--jobs", "0"});
     QCOMPARE(result.exit_code, 2);
     QVERIFY(result.err.contains("--jobs"));
+  }
+
+  // An --out folder holding an earlier run is refused (exit 2 naming --out) unless --overwrite,
+  // which removes FilmDyn's stale files (a fields/ file the new run does not write) and keeps
+  // the user's.
+  void runRefusesAnEarlierRunUnlessOverwrite() {
+    QTemporaryDir dir;
+    const QString out = dir.filePath("r");
+    QCOMPARE(Run({"run", "--model", "ideal", "--out", out, "--quiet"}).exit_code, 0);
+    QDir().mkpath(out + "/fields");
+    QFile(out + "/fields/bearing.h5").open(QIODevice::WriteOnly);  // stale, from a film run
+    QFile notes(out + "/notes.txt");
+    QVERIFY(notes.open(QIODevice::WriteOnly));
+    notes.close();
+    Result result = Run({"run", "--model", "ideal", "--out", out, "--quiet"});
+    QCOMPARE(result.exit_code, 2);
+    QVERIFY2(result.err.contains("--out = " + out) && result.err.contains("--overwrite"),
+             qPrintable(result.err));
+    result = Run({"run", "--model", "ideal", "--out", out, "--quiet", "--overwrite"});
+    QCOMPARE(result.exit_code, 0);
+    QVERIFY(!QFileInfo::exists(out + "/fields/bearing.h5"));
+    QVERIFY(QFileInfo::exists(out + "/notes.txt"));
+    QVERIFY(QFileInfo::exists(out + "/results.csv"));
+  }
+
+  // A running run marks its folder "running" and locks it: a second writer is refused. SIGTERM
+  // and SIGHUP stop it like Ctrl-C: partial results written, status "cancelled", exit 1 — never
+  // an earlier run's "completed" left behind. A time limit on a mesh whose every step takes
+  // seconds is honoured inside the step (it used to run on for minutes).
+  void stopSignalsAndTimeLimitsEndARunWithItsPartialResults() {
+    for (const int signal : {SIGTERM, SIGHUP}) {
+      QTemporaryDir dir;
+      const QString out = dir.filePath("r");
+      QProcess run;
+      run.start(FILMDYN_EXECUTABLE,
+                {"run", "--out", out, "--quiet", "--no-fields", "--set", "solver.max_cycles=20"});
+      QVERIFY(run.waitForStarted());
+      QString status;
+      for (int k = 0; k < 600 && status != "running"; ++k) {  // up to 60 s to start
+        QTest::qWait(100);
+        QFile summary(out + "/summary.json");
+        if (summary.open(QIODevice::ReadOnly)) {
+          status = QJsonDocument::fromJson(summary.readAll()).object().value("status").toString();
+        }
+      }
+      QCOMPARE(status, QString("running"));
+      const Result second = Run({"run", "--model", "ideal", "--out", out, "--overwrite"});
+      QCOMPARE(second.exit_code, 2);
+      QVERIFY2(second.err.contains("another FilmDyn run"), qPrintable(second.err));
+      QTest::qWait(1500);  // into the first cycle
+      QElapsedTimer stopping;
+      stopping.start();
+      ::kill(static_cast<pid_t>(run.processId()), signal);
+      QVERIFY(run.waitForFinished(60000));
+      qInfo("signal %d: exited %lld ms after the signal (results written)", signal,
+            static_cast<long long>(stopping.elapsed()));
+      QCOMPARE(run.exitStatus(), QProcess::NormalExit);
+      QCOMPARE(run.exitCode(), 1);
+      QFile summary(out + "/summary.json");
+      QVERIFY(summary.open(QIODevice::ReadOnly));
+      const QJsonObject s = QJsonDocument::fromJson(summary.readAll()).object();
+      QCOMPARE(s.value("status").toString(), QString("cancelled"));
+      QVERIFY(!s.value("complete").toBool());
+      QFile csv(out + "/results.csv");
+      QVERIFY(csv.open(QIODevice::ReadOnly));
+      QVERIFY(csv.readAll().count('\n') > 10);
+    }
+    QTemporaryDir dir;
+    QElapsedTimer timer;
+    timer.start();
+    const Result limited = Run({"run", "--out", dir.filePath("big"), "--quiet", "--no-fields",
+                                "--time-limit", "1", "--set", "big_end.mesh_theta=2000",
+                                "--set", "big_end.mesh_z=200"},
+                               QProcessEnvironment::systemEnvironment(), 120000);
+    qInfo("--time-limit 1 on a 2000 x 200 big-end mesh: exited after %lld ms",
+          static_cast<long long>(timer.elapsed()));
+    QCOMPARE(limited.exit_code, 1);
+    QVERIFY2(limited.err.contains("wall-time limit reached"), qPrintable(limited.err));
+  }
+
+  void sweepRejectsTheSamePointTwice() {
+    QTemporaryDir dir;
+    const Result result = Run({"sweep", "--models", "ideal", "--rpm", "6000,3000,6000", "--out",
+                               dir.filePath("s"), "--quiet"});
+    QCOMPARE(result.exit_code, 2);
+    QVERIFY2(result.err.contains("ideal at 6000 rpm") && result.err.contains("twice"),
+             qPrintable(result.err));
+  }
+
+  // Hostile input files and values end in a one-line error naming the field (exit 2), never a
+  // crash, a hang or an unbounded read; a case name cannot send the outputs out of results/.
+  void hostileInputsAreInputErrors() {
+    QTemporaryDir dir;
+    const QString deep = dir.filePath("deep.json");
+    {
+      QFile file(deep);
+      QVERIFY(file.open(QIODevice::WriteOnly));
+      const int depth = 100000;
+      file.write(QByteArray("{\"x\":").repeated(depth) + "1" + QByteArray("}").repeated(depth));
+    }
+    Result result = Run({"run", deep, "--model", "ideal", "--out", dir.filePath("a")});
+    QCOMPARE(result.exit_code, 2);
+    QVERIFY2(result.err.contains("nested deeper than 64"), qPrintable(result.err));
+    const QString overflow = dir.filePath("overflow.json");
+    {
+      QFile file(overflow);
+      QVERIFY(file.open(QIODevice::WriteOnly));
+      file.write(R"({"geometry": {"rod_length": 1e400}})");
+    }
+    result = Run({"run", overflow, "--model", "ideal", "--out", dir.filePath("b")});
+    QCOMPARE(result.exit_code, 2);
+    QVERIFY2(result.err.contains("1e400"), qPrintable(result.err));
+    result = Run({"run", "--model", "ideal", "--pressure-curve", "/dev/zero", "--out",
+                  dir.filePath("c")});
+    QCOMPARE(result.exit_code, 2);
+    QVERIFY2(result.err.contains("--pressure-curve = /dev/zero: is not a regular file"),
+             qPrintable(result.err));
+    result = Run({"run", "--model", "ideal", "--set", "pressure_curves.3.file=/dev/zero",
+                  "--out", dir.filePath("d")});
+    QCOMPARE(result.exit_code, 2);
+    QVERIFY2(result.err.contains("pressure_curves.3.file"), qPrintable(result.err));
+    const QString cell = dir.filePath("cell.csv");
+    {
+      QFile file(cell);
+      QVERIFY(file.open(QIODevice::WriteOnly));
+      file.write("crank_angle[deg],pressure[Pa]\n0," + QByteArray(5 << 20, '9') + "x\n");
+    }
+    result = Run({"run", "--model", "ideal", "--pressure-curve", cell, "--out", dir.filePath("e")});
+    QCOMPARE(result.exit_code, 2);
+    QVERIFY2(result.err.size() < 1000, qPrintable(result.err.left(300)));
+    // Not UTF-8: the argument goes through the native 8-bit encoding untouched.
+    QProcess latin;
+    latin.setProgram(FILMDYN_EXECUTABLE);
+    latin.setArguments({"run", "--model", "ideal", "--out", dir.filePath("g"), "--set",
+                        QString::fromLatin1("name=ab\xff")});
+    latin.start();
+    QVERIFY(latin.waitForFinished(60000));
+    const QString latin_err = QString::fromUtf8(latin.readAllStandardError());
+    if (latin_err.contains("UTF-8")) {  // the byte arrived as 0xff: refused
+      QCOMPARE(latin.exitCode(), 2);
+      QVERIFY(latin_err.contains("--set name"));
+    } else {  // the platform re-encoded it as valid UTF-8: accepted, summary complete
+      QCOMPARE(latin.exitCode(), 0);
+    }
+    // A case name with separators and "..": the default folder stays inside results/.
+    QProcess escape;
+    escape.setWorkingDirectory(dir.path());
+    escape.start(FILMDYN_EXECUTABLE,
+                 {"run", "--model", "ideal", "--quiet", "--set", "name=../../escaped"});
+    QVERIFY(escape.waitForFinished(60000));
+    QCOMPARE(escape.exitCode(), 0);
+    const QStringList made = QDir(dir.filePath("results")).entryList(QDir::Dirs | QDir::NoDotAndDotDot);
+    QCOMPARE(made.size(), 1);
+    QVERIFY2(!made.first().contains('/'), qPrintable(made.first()));
+    QVERIFY(!QFileInfo::exists(QDir(dir.path()).absoluteFilePath("../escaped-ideal-6000")));
   }
 
   void runRejectsBadThreads() {

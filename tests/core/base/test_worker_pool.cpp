@@ -22,8 +22,14 @@ namespace {
 // thread it ran on.
 class RecordingSpring final : public ForceElement {
  public:
-  RecordingSpring(BodyIndex body, double k, std::set<std::thread::id>* threads, std::mutex* mutex)
-      : ForceElement("spring"), body_(body), k_(k), threads_(threads), mutex_(mutex) {}
+  RecordingSpring(BodyIndex body, double k, std::set<std::thread::id>* threads, std::mutex* mutex,
+                  const std::atomic<bool>* rendezvous = nullptr)
+      : ForceElement("spring"),
+        body_(body),
+        k_(k),
+        threads_(threads),
+        mutex_(mutex),
+        rendezvous_(rendezvous) {}
   std::vector<BodyIndex> Bodies() const override { return {body_}; }
   bool ProvidesJacobian() const override { return true; }
   bool Concurrent() const override { return true; }
@@ -33,8 +39,21 @@ class RecordingSpring final : public ForceElement {
       std::lock_guard lock(*mutex_);
       threads_->insert(std::this_thread::get_id());
     }
-    // Long enough to overlap even on a loaded machine (a worker must wake and take the other).
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    // Side by side must be seen even on a loaded machine (a worker must wake and take another
+    // element): while `rendezvous` is set, wait until a second thread has entered (up to 10 s;
+    // a pool that runs the elements one after the other fails the test then). Otherwise a
+    // short pause, long enough for the threads to overlap in the Jacobian test.
+    if (rendezvous_ && rendezvous_->load()) {
+      for (int k = 0; k < 10000; ++k) {
+        {
+          std::lock_guard lock(*mutex_);
+          if (threads_->size() >= 2) break;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+      }
+    } else {
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
     const BodyState b = state.Body(body_);
     for (int c = 0; c < 3; ++c) {
       q_force[3 * body_ + c] += -k_ * b.q[c] * (1.0 + b.q[c] * b.q[c]) - 0.1 * k_ * b.v[c];
@@ -50,6 +69,7 @@ class RecordingSpring final : public ForceElement {
   double k_;
   std::set<std::thread::id>* threads_;
   std::mutex* mutex_;
+  const std::atomic<bool>* rendezvous_;
 };
 
 }  // namespace
@@ -119,6 +139,7 @@ class TestWorkerPool : public QObject {
   void systemResultsDoNotDependOnThreads() {
     std::mutex mutex;
     std::set<std::thread::id> ids;
+    std::atomic<bool> rendezvous{false};
     auto build = [&] {
       auto sys = std::make_unique<MultibodySystem>();
       Body a;
@@ -128,9 +149,9 @@ class TestWorkerPool : public QObject {
       b.mass = 5.0;
       sys->AddBody(a);
       sys->AddBody(b);
-      sys->AddForceElement(std::make_unique<RecordingSpring>(0, 1e3, &ids, &mutex));
-      sys->AddForceElement(std::make_unique<RecordingSpring>(1, 3e3, &ids, &mutex));
-      sys->AddForceElement(std::make_unique<RecordingSpring>(0, 7e2, &ids, &mutex));
+      sys->AddForceElement(std::make_unique<RecordingSpring>(0, 1e3, &ids, &mutex, &rendezvous));
+      sys->AddForceElement(std::make_unique<RecordingSpring>(1, 3e3, &ids, &mutex, &rendezvous));
+      sys->AddForceElement(std::make_unique<RecordingSpring>(0, 7e2, &ids, &mutex, &rendezvous));
       return sys;
     };
     auto one = build(), two = build();
@@ -144,7 +165,9 @@ class TestWorkerPool : public QObject {
     const Eigen::VectorXd q1 = one->AppliedForces(0.0, state);
     QCOMPARE(int(ids.size()), 1);
     ids.clear();
+    rendezvous = true;
     const Eigen::VectorXd q2 = two->AppliedForces(0.0, state);
+    rendezvous = false;
     QCOMPARE(int(ids.size()), 2);  // really side by side
     QVERIFY(q1 == q2);             // bit for bit
     Eigen::MatrixXd dq1, dv1, dq2, dv2;
