@@ -86,7 +86,13 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   restoreWindowState();
 }
 
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow() {
+  // The children (the document, the run controller, the views) are destroyed after this body by
+  // ~QWidget; a signal they emit while going (the undo stack's cleanChanged, a run's end) must
+  // not reach this half-destroyed window's slots.
+  disconnect(document_, nullptr, this, nullptr);
+  disconnect(run_controller_, nullptr, this, nullptr);
+}
 
 void MainWindow::createRunPage() {
   auto* page = new QWidget(workspace_);

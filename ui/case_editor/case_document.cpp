@@ -39,6 +39,13 @@ CaseDocument::CaseDocument(QObject* parent) : QObject(parent) {
   apply(case_);
 }
 
+CaseDocument::~CaseDocument() {
+  // ~QUndoStack clears the stack and emits cleanChanged; by then this document's own members
+  // are going and its parent (the main window) may be half destroyed.
+  undo_stack_.blockSignals(true);
+  blockSignals(true);
+}
+
 void CaseDocument::edit(const engine::EngineCase& new_case, const QString& description,
                         int merge_key) {
   undo_stack_.push(new CaseSnapshotCommand(this, case_, new_case, description, merge_key));

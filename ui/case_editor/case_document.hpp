@@ -16,6 +16,9 @@ class CaseDocument : public QObject {
 
  public:
   explicit CaseDocument(QObject* parent = nullptr);
+  /// Quiet: the undo stack's clearing on destruction emits no signal (listeners may already be
+  /// half destroyed, e.g. the main window that owns this document).
+  ~CaseDocument() override;
 
   const engine::EngineCase& engineCase() const { return case_; }
   QUndoStack* undoStack() { return &undo_stack_; }

@@ -110,6 +110,27 @@ class TestMainWindow : public QObject {
     QVERIFY(text.contains("4321.5") && !text.contains("1357.25"));
   }
 
+  // Destroying a window (or a document) with unsaved edits: the undo stack's clearing must not
+  // signal anyone — the window that owns the document is half destroyed by then (caught by
+  // UBSan: MainWindow::updateTitle ran on it).
+  void destructionSignalsNobody() {
+    int modified_signals = 0;
+    {
+      filmdyn::ui::CaseDocument document;
+      document.setParameter("operating.rpm", 4321.5);
+      QVERIFY(document.isModified());
+      QObject::connect(&document, &filmdyn::ui::CaseDocument::modifiedChanged,
+                       [&modified_signals](bool) { ++modified_signals; });
+    }  // ~CaseDocument: ~QUndoStack clears the stack
+    QCOMPARE(modified_signals, 0);
+    auto* window = new filmdyn::ui::MainWindow;
+    window->document()->setParameter("operating.rpm", 1234.5);
+    QObject::connect(window->document(), &filmdyn::ui::CaseDocument::modifiedChanged,
+                     [&modified_signals](bool) { ++modified_signals; });
+    delete window;  // never shown: no close event, no question
+    QCOMPARE(modified_signals, 0);
+  }
+
   void shortcutsAct() {
     filmdyn::ui::MainWindow window;
     window.show();
