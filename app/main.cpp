@@ -1,5 +1,9 @@
 // filmdyn: the desktop application when called alone, a headless command otherwise.
 #include <QApplication>
+#include <QTimer>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <cstdlib>
 #include <iostream>
 #include <string>
@@ -18,6 +22,21 @@ bool HasDisplay() {
     return value != nullptr && *value != '\0';
   };
   return set("DISPLAY") || set("WAYLAND_DISPLAY") || set("QT_QPA_PLATFORM");
+}
+
+// Headless machines (CI, batch nodes, ssh) often have no XDG_RUNTIME_DIR; Qt then falls back
+// to /tmp/runtime-<user> but prints a warning into every command's output. Do what it does,
+// without the warning: a private folder (0700) of this user.
+void EnsureRuntimeDirectory() {
+  const char* set = std::getenv("XDG_RUNTIME_DIR");
+  if (set != nullptr && *set != '\0') return;
+  const std::string dir = "/tmp/runtime-" + std::to_string(::getuid());
+  ::mkdir(dir.c_str(), 0700);
+  struct stat info {};
+  if (::stat(dir.c_str(), &info) == 0 && S_ISDIR(info.st_mode) && info.st_uid == ::getuid() &&
+      (info.st_mode & 0777) == 0700) {
+    setenv("XDG_RUNTIME_DIR", dir.c_str(), 1);
+  }
 }
 
 void SetApplicationIdentity() {
@@ -44,6 +63,7 @@ int main(int argc, char** argv) {
       if (filmdyn::cli::CommandNeedsGuiApplication(launch.command)) {
         // Plots are rendered with Qt Charts; without a screen use the offscreen platform.
         if (!HasDisplay()) setenv("QT_QPA_PLATFORM", "offscreen", 1);
+        EnsureRuntimeDirectory();
         QApplication app(argc, argv);
         SetApplicationIdentity();
         return filmdyn::cli::RunCommand(launch.command, launch.args);
@@ -63,5 +83,7 @@ int main(int argc, char** argv) {
   SetApplicationIdentity();
   filmdyn::ui::MainWindow window;
   window.show();
+  // Unsaved edits of a session that crashed: offered back once the window is up.
+  QTimer::singleShot(0, &window, &filmdyn::ui::MainWindow::offerRecovery);
   return app.exec();
 }

@@ -19,6 +19,11 @@
 #include <QTabWidget>
 #include <QToolBar>
 #include <QUndoStack>
+#include <QDateTime>
+#include <QFile>
+#include <QLocale>
+#include <QStandardPaths>
+#include <QTimer>
 #include <QVBoxLayout>
 
 #include "ui/about_info.hpp"
@@ -80,6 +85,14 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   connect(run_controller_, &RunController::runStarted, this, &MainWindow::onRunUpdated);
   connect(run_controller_, &RunController::runUpdated, this, &MainWindow::onRunUpdated);
   connect(run_controller_, &RunController::runFinished, this, &MainWindow::onRunFinished);
+  // Autosave: every minute while there are unsaved edits; gone once there are none.
+  autosave_timer_ = new QTimer(this);
+  autosave_timer_->setInterval(60 * 1000);
+  connect(autosave_timer_, &QTimer::timeout, this, [this] { autosaveNow(); });
+  autosave_timer_->start();
+  connect(document_, &CaseDocument::modifiedChanged, this, [](bool modified) {
+    if (!modified) QFile::remove(autosavePath());
+  });
   if (statusBar()->currentMessage().isEmpty()) statusBar()->showMessage(tr("Ready"));
   updateRunActions();
   updateTitle();
@@ -571,11 +584,74 @@ void MainWindow::restoreWindowState() {
   workspace_->setCurrentIndex(settings.value("main_window/tab", 0).toInt());
 }
 
+QString MainWindow::autosavePath() {
+  return QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation))
+      .filePath("autosave.json");
+}
+
+bool MainWindow::hasRecovery() { return QFileInfo::exists(autosavePath()); }
+
+bool MainWindow::autosaveNow(QString* error) {
+  if (!document_->isModified()) {
+    QFile::remove(autosavePath());
+    return true;
+  }
+  QDir().mkpath(QFileInfo(autosavePath()).absolutePath());
+  QString message;
+  if (!SaveCaseFile(document_->engineCase(), autosavePath(), &message)) {
+    if (error) *error = message;
+    statusBar()->showMessage(tr("Autosave failed: %1").arg(message), 8000);
+    return false;
+  }
+  QSettings().setValue("autosave/source", document_->filePath());
+  return true;
+}
+
+bool MainWindow::recoverAutosave(QString* error) {
+  engine::EngineCase recovered;
+  QString message;
+  if (!LoadCaseFile(autosavePath(), &recovered, &message)) {
+    if (error) *error = message;
+    return false;
+  }
+  const QString source = QSettings().value("autosave/source").toString();
+  engine::EngineCase base;
+  QString ignored;
+  if (source.isEmpty() || !LoadCaseFile(source, &base, &ignored)) {
+    if (!LoadCaseFile({}, &base, &ignored)) base = engine::EngineCase{};
+  }
+  document_->reset(base, source.isEmpty() || !QFileInfo::exists(source) ? QString() : source);
+  document_->edit(recovered, tr("Recovered unsaved edits"));
+  QFile::remove(autosavePath());
+  statusBar()->showMessage(tr("Recovered the unsaved edits of the last session"), 8000);
+  return true;
+}
+
+void MainWindow::offerRecovery() {
+  if (!hasRecovery()) return;
+  const QDateTime when = QFileInfo(autosavePath()).lastModified();
+  const auto answer = QMessageBox::question(
+      this, tr("Recover unsaved edits"),
+      tr("FilmDyn did not close normally last time. Restore the unsaved edits of the case "
+         "(saved automatically %1)?")
+          .arg(QLocale().toString(when, QLocale::ShortFormat)),
+      QMessageBox::Yes | QMessageBox::Discard, QMessageBox::Yes);
+  QString error;
+  if (answer == QMessageBox::Yes) {
+    if (!recoverAutosave(&error)) {
+      QMessageBox::warning(this, tr("Cannot recover"), error);
+    }
+  } else {
+    QFile::remove(autosavePath());
+  }
+}
+
 void MainWindow::closeEvent(QCloseEvent* event) {
   if (!maybeSave()) {
     event->ignore();
     return;
   }
+  QFile::remove(autosavePath());  // saved or discarded: nothing to recover
   if (run_controller_->isRunning()) run_controller_->cancel();
   QSettings settings;
   settings.setValue("main_window/geometry", saveGeometry());

@@ -14,6 +14,7 @@ class QMenu;
 class QProgressBar;
 class QSplitter;
 class QTabWidget;
+class QTimer;
 
 namespace filmdyn::ui {
 
@@ -52,6 +53,17 @@ class MainWindow : public QMainWindow {
   /// The run's output folder exactly as `filmdyn run --out DIR` writes it (results.csv,
   /// summary.json, fields/).
   bool exportRunFolder(const RunHandle& run, const QString& directory, QString* error = nullptr);
+  /// Unsaved edits are written every minute to autosavePath() (the case's own file path kept in
+  /// the settings) and the file is removed once they are saved or discarded or the window
+  /// closes normally; after a crash the next start offers them back (offerRecovery).
+  static QString autosavePath();
+  /// Writes the autosave now when the case has unsaved edits (removes it when it has none).
+  bool autosaveNow(QString* error = nullptr);
+  /// An autosave of an earlier session is waiting (that session did not close normally).
+  static bool hasRecovery();
+  /// Loads the waiting autosave as unsaved edits on top of its case file (or the default case),
+  /// then removes it.
+  bool recoverAutosave(QString* error = nullptr);
   /// Writes every plot as <dir>/<plot id>.<suffix> for each suffix in {png, svg, pdf}.
   bool exportAllPlots(const QString& directory, const QStringList& suffixes,
                       QString* error = nullptr);
@@ -68,6 +80,8 @@ class MainWindow : public QMainWindow {
   void exportFieldsInteractive();
   void exportRunFolderInteractive();
   void removeSelectedRun();
+  /// Asks whether to restore a waiting autosave (main() calls it once the window is shown).
+  void offerRecovery();
 
  protected:
   void closeEvent(QCloseEvent* event) override;
@@ -99,6 +113,7 @@ class MainWindow : public QMainWindow {
   QProgressBar* progress_bar_ = nullptr;
   QLabel* run_state_label_ = nullptr;
   QLabel* blocker_label_ = nullptr;
+  QTimer* autosave_timer_ = nullptr;
   std::weak_ptr<RunRecord> shown_fields_run_;  ///< the run whose fields the field page shows
 };
 

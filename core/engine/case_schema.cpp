@@ -15,6 +15,9 @@ constexpr double kPi = std::numbers::pi;
 constexpr double kMm = 1e-3, kUm = 1e-6, kDeg = kPi / 180.0, kMPa = 1e6, kGPa = 1e9;
 
 FieldRange Positive() { return {0.0, kInf, true, false}; }
+// A length of the mechanism: up to 100 m (the largest engines' strokes are ~3.5 m) — a value
+// near the double range would only fail later, inside the solver's assembly.
+FieldRange Length() { return {0.0, 100.0, true, false}; }
 FieldRange NonNegative() { return {0.0, kInf, false, false}; }
 FieldRange Between(double lo, double hi) { return {lo, hi, false, false}; }
 FieldRange Open(double lo, double hi, bool lo_open, bool hi_open) {
@@ -106,10 +109,10 @@ std::vector<CaseField> MakeSchema() {
                    {G::kCase, "Description", "", "", 1.0, {}, "free text"}));
   // Geometry and masses (Table I of Zhao & Shen).
   f.push_back(Scalar("geometry.crank_radius", geo, &CG::crank_radius,
-                     {G::kGeometry, "Crank radius L₁", "m", "mm", kMm, Positive(),
+                     {G::kGeometry, "Crank radius L₁", "m", "mm", kMm, Length(),
                       "main journal to crank pin; Table I: 39.93 mm"}));
   f.push_back(Scalar("geometry.rod_length", geo, &CG::rod_length,
-                     {G::kGeometry, "Connecting-rod length L₂", "m", "mm", kMm, Positive(),
+                     {G::kGeometry, "Connecting-rod length L₂", "m", "mm", kMm, Length(),
                       "big-end to small-end centre, > crank_radius + |pin_offset|; Table I: "
                       "129.5 mm"}));
   f.push_back(Scalar("geometry.crank_com_radius", geo, &CG::crank_com_radius,
@@ -155,7 +158,7 @@ std::vector<CaseField> MakeSchema() {
                      {G::kGeometry, "Skirt top to CoM b_p", "m", "mm", kMm, Between(-0.2, 0.2),
                       "+ toward the crank; Table I: −1.737 mm (CoM above the skirt top)"}));
   f.push_back(Scalar("geometry.liner_radius", geo, &CG::liner_radius,
-                     {G::kGeometry, "Liner (bore) radius R_l", "m", "mm", kMm, Positive(),
+                     {G::kGeometry, "Liner (bore) radius R_l", "m", "mm", kMm, Length(),
                       "> piston_radius; the gas force acts on π R_l²; Table I: 36.50 mm"}));
   f.push_back(
       Scalar("geometry.compression_ratio", geo, &CG::compression_ratio,
@@ -174,11 +177,11 @@ std::vector<CaseField> MakeSchema() {
                      {},
                      "\"ideal\" (prismatic joint) or \"lubricated\" (mixed-lubrication film)"}));
   f.push_back(Scalar("skirt.piston_radius", sk, &S::piston_radius,
-                     {G::kSkirt, "Piston radius R", "m", "mm", kMm, Positive(),
+                     {G::kSkirt, "Piston radius R", "m", "mm", kMm, Length(),
                       "< liner_radius (radial clearance R_l − R); Table I: 36.475 mm"}));
   f.push_back(
       Scalar("skirt.length", sk, &S::length,
-             {G::kSkirt, "Skirt length L_skirt", "m", "mm", kMm, Positive(), "Table I: 28 mm"}));
+             {G::kSkirt, "Skirt length L_skirt", "m", "mm", kMm, Length(), "Table I: 28 mm"}));
   f.push_back(Scalar(
       "skirt.thrust_half_width", sk, &S::thrust_half_width,
       {G::kSkirt, "Thrust panel half-width α₁", "rad", "°", kDeg, Open(0.0, kPi / 2, true, false),
@@ -248,15 +251,15 @@ std::vector<CaseField> MakeSchema() {
                      {},
                      "\"ideal\" (revolute joint) or \"lubricated\" (mixed-lubrication film)"}));
   f.push_back(Scalar("big_end.bearing_radius", be, &B::bearing_radius,
-                     {G::kBigEnd, "Bearing radius R_b", "m", "mm", kMm, Positive(),
+                     {G::kBigEnd, "Bearing radius R_b", "m", "mm", kMm, Length(),
                       "bore of the rod's big end; Table I: 15.00 mm"}));
   f.push_back(Scalar("big_end.journal_radius", be, &B::journal_radius,
-                     {G::kBigEnd, "Journal radius R_j", "m", "mm", kMm, Positive(),
+                     {G::kBigEnd, "Journal radius R_j", "m", "mm", kMm, Length(),
                       "< bearing_radius; R_b − R_j = 50 µm radial (Table I's c_b = 0.1 mm is "
                       "diametral)"}));
   f.push_back(
       Scalar("big_end.width", be, &B::width,
-             {G::kBigEnd, "Bearing width b", "m", "mm", kMm, Positive(), "Table I: 22 mm"}));
+             {G::kBigEnd, "Bearing width b", "m", "mm", kMm, Length(), "Table I: 22 mm"}));
   f.push_back(Scalar("big_end.roughness_journal", be, &B::roughness_journal,
                      {G::kBigEnd, "Journal roughness σ_j", "m", "µm", kUm, Positive(),
                       "RMS roughness; Table I: 0.308 µm"}));

@@ -28,7 +28,9 @@ PressureCurve::PressureCurve(std::vector<double> angles, std::vector<double> pre
   for (std::size_t k = 0; k < angles.size(); ++k) {
     const std::string at = field + "[" + std::to_string(k) + "]";
     RequireInRange(at + ".crank_angle", angles[k], 0.0, kCycle + 1e-9, false, false, "rad");
-    RequireNonNegative(at + ".pressure", pressures[k], "Pa");
+    // Up to 1 GPa (10 kbar): ~40x the peak of a highly loaded diesel, and far from the
+    // double range the gas force is computed in.
+    RequireInRange(at + ".pressure", pressures[k], 0.0, 1e9, false, false, "Pa");
     if (k > 0 && angles[k] <= angles[k - 1]) {
       throw InputError(at + ".crank_angle", FormatValue(angles[k] / kDeg) + " deg",
                        "crank angles must increase strictly");

@@ -66,6 +66,17 @@ bool ExportChart(QChart* chart, const QString& path, ImageFormat format, const Q
   bool ok = true;
   {
     ScopedChartView view(chart, size);
+    // Paints the chart on a vector device (SVG, PDF); false when the painter cannot start.
+    auto paint = [&view, &size](QPaintDevice* device) {
+      QPainter painter;
+      if (!painter.begin(device)) return false;
+      view.Render(&painter, QRectF(QPointF(0, 0), size));
+      return painter.end();
+    };
+    // Every format through QSaveFile: written under a temporary name, renamed into place only
+    // when complete (commit), so a failed or interrupted export never leaves a cut file.
+    QSaveFile file(path);
+    ok = file.open(QIODevice::WriteOnly);
     switch (format) {
       case ImageFormat::kPng: {
         const qreal scale = 2.0;
@@ -76,51 +87,29 @@ bool ExportChart(QChart* chart, const QString& path, ImageFormat format, const Q
         painter.setRenderHint(QPainter::Antialiasing);
         view.Render(&painter, QRectF(QPointF(0, 0), size));
         painter.end();
-        QSaveFile file(path);
-        ok = file.open(QIODevice::WriteOnly) && image.save(&file, "PNG") && file.commit();
+        ok = ok && image.save(&file, "PNG");
         break;
       }
-      // Every format through QSaveFile: written under a temporary name, renamed into place
-      // only when complete (commit), so a failed or interrupted export never leaves a cut file.
       case ImageFormat::kSvg: {
-        QSaveFile file(path);
-        ok = file.open(QIODevice::WriteOnly);
-        if (ok) {
-          QSvgGenerator generator;
-          generator.setOutputDevice(&file);
-          generator.setSize(size);
-          generator.setViewBox(QRect(QPoint(0, 0), size));
-          generator.setTitle(chart->title());
-          QPainter painter;
-          ok = painter.begin(&generator);
-          if (ok) {
-            view.Render(&painter, QRectF(QPointF(0, 0), size));
-            painter.end();
-          }
-        }
-        ok = ok && file.commit();
+        QSvgGenerator generator;
+        generator.setOutputDevice(&file);
+        generator.setSize(size);
+        generator.setViewBox(QRect(QPoint(0, 0), size));
+        generator.setTitle(chart->title());
+        ok = ok && paint(&generator);
         break;
       }
       case ImageFormat::kPdf: {
-        QSaveFile file(path);
-        ok = file.open(QIODevice::WriteOnly);
-        if (ok) {
-          QPdfWriter writer(&file);
-          writer.setPageSize(QPageSize(QSizeF(size), QPageSize::Point));
-          writer.setPageMargins(QMarginsF(0, 0, 0, 0));
-          writer.setResolution(72);
-          writer.setTitle(chart->title());
-          QPainter painter;
-          ok = painter.begin(&writer);
-          if (ok) {
-            view.Render(&painter, QRectF(QPointF(0, 0), size));
-            painter.end();
-          }
-        }
-        ok = ok && file.commit();
+        QPdfWriter writer(&file);
+        writer.setPageSize(QPageSize(QSizeF(size), QPageSize::Point));
+        writer.setPageMargins(QMarginsF(0, 0, 0, 0));
+        writer.setResolution(72);
+        writer.setTitle(chart->title());
+        ok = ok && paint(&writer);
         break;
       }
     }
+    ok = ok && file.commit();
   }
   if (old_scene != nullptr) {
     old_scene->addItem(chart);

@@ -131,6 +131,40 @@ class TestMainWindow : public QObject {
     QCOMPARE(modified_signals, 0);
   }
 
+  // Unsaved edits survive a crash: written to the autosave file (every minute; here at once),
+  // left behind by a window that never closed normally, offered back by the next one on top of
+  // the case file they belong to; saving or closing normally removes the file.
+  void autosaveIsOfferedBackAfterACrash() {
+    QTemporaryDir dir;
+    const QString path = dir.filePath("case.json");
+    QFile::remove(filmdyn::ui::MainWindow::autosavePath());
+    {
+      filmdyn::ui::MainWindow window;
+      QString error;
+      QVERIFY(window.saveProjectAs(path, &error));
+      QVERIFY(window.autosaveNow());
+      QVERIFY(!filmdyn::ui::MainWindow::hasRecovery());  // nothing unsaved: nothing written
+      window.document()->setParameter("operating.rpm", 2468.5);
+      QVERIFY2(window.autosaveNow(&error), qPrintable(error));
+      QVERIFY(filmdyn::ui::MainWindow::hasRecovery());
+    }  // "crash": destroyed without a close event
+    QVERIFY(filmdyn::ui::MainWindow::hasRecovery());
+    {
+      filmdyn::ui::MainWindow next;
+      QString error;
+      QVERIFY2(next.recoverAutosave(&error), qPrintable(error));
+      QCOMPARE(next.document()->engineCase().operating.rpm, 2468.5);
+      QVERIFY(next.document()->isModified());
+      QCOMPARE(next.document()->filePath(), path);
+      QVERIFY(!filmdyn::ui::MainWindow::hasRecovery());
+      // Undo goes back to the saved file's value; saving removes any new autosave.
+      QVERIFY(next.autosaveNow());
+      QVERIFY(filmdyn::ui::MainWindow::hasRecovery());
+      QVERIFY(next.saveProjectAs(path, &error));
+      QVERIFY(!filmdyn::ui::MainWindow::hasRecovery());
+    }
+  }
+
   void shortcutsAct() {
     filmdyn::ui::MainWindow window;
     window.show();
