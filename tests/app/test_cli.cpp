@@ -325,6 +325,24 @@ class TestCli : public QObject {
     result = Run({"run", overflow, "--model", "ideal", "--out", dir.filePath("b")});
     QCOMPARE(result.exit_code, 2);
     QVERIFY2(result.err.contains("1e400"), qPrintable(result.err));
+    // Values near the double range: errors naming the field, not failures inside the solver.
+    result = Run({"run", "--model", "ideal", "--set", "geometry.rod_length=1e300", "--out",
+                  dir.filePath("b2")});
+    QCOMPARE(result.exit_code, 2);
+    QVERIFY2(result.err.contains("geometry.rod_length = 1e+300"), qPrintable(result.err));
+    const QString huge_pressure = dir.filePath("huge.csv");
+    {
+      QFile file(huge_pressure);
+      QVERIFY(file.open(QIODevice::WriteOnly));
+      file.write("crank_angle[deg],pressure[Pa]\n");
+      for (int deg = 0; deg <= 720; deg += 60) {
+        file.write(QByteArray::number(deg) + "," + (deg == 360 ? "1e300" : "1e5") + "\n");
+      }
+    }
+    result = Run({"run", "--model", "ideal", "--pressure-curve", huge_pressure, "--out",
+                  dir.filePath("b3")});
+    QCOMPARE(result.exit_code, 2);
+    QVERIFY2(result.err.contains(".pressure = 1e+300"), qPrintable(result.err));
     result = Run({"run", "--model", "ideal", "--pressure-curve", "/dev/zero", "--out",
                   dir.filePath("c")});
     QCOMPARE(result.exit_code, 2);
