@@ -326,6 +326,12 @@ LoadedCase LoadCase(const std::filesystem::path& path, const std::vector<std::st
     loaded.directory = path.parent_path();
     loaded.source = path.string();
   }
+  loaded.value = LoadCaseText(text, loaded.source, overrides);
+  return loaded;
+}
+
+engine::EngineCase LoadCaseText(const std::string& text, const std::string& source,
+                                const std::vector<std::string>& overrides) {
   json root;
   try {
     // Nesting is bounded while parsing: a case is a few levels deep, and a value nested 10^5
@@ -338,11 +344,10 @@ LoadedCase LoadCase(const std::filesystem::path& path, const std::vector<std::st
       return true;
     });
   } catch (const json::exception& error) {  // syntax, bad UTF-8, a number out of range
-    throw InputError(loaded.source, "not a valid JSON file", error.what());
+    throw InputError(source, "not a valid JSON file", error.what());
   }
   for (const std::string& assignment : overrides) ApplyOverride(&root, assignment);
-  loaded.value = CaseFromJson(root);
-  return loaded;
+  return CaseFromJson(root);
 }
 
 namespace {

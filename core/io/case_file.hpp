@@ -34,6 +34,11 @@ struct LoadedCase {
 /// Loads a case file (or the embedded default when path is empty), applies the overrides.
 LoadedCase LoadCase(const std::filesystem::path& path,
                     const std::vector<std::string>& overrides = {});
+/// The same from the file's text (`source` names it in messages). Bad input of any kind throws
+/// InputError and nothing else (the fuzz harness tests/fuzz/fuzz_case_reader.cpp holds it to
+/// that).
+engine::EngineCase LoadCaseText(const std::string& text, const std::string& source,
+                                const std::vector<std::string>& overrides = {});
 
 /// The cylinder-pressure curve for `rpm`: the case curve at that speed, or linear interpolation
 /// between the two neighbouring speeds; InputError outside the tabulated speeds. CSV files are
