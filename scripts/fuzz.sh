@@ -8,16 +8,20 @@ set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 runs="${1:-1000000}"
 build="${FILMDYN_FUZZ_BUILD_DIR:-$root/build-fuzz}"
-# clang and its libFuzzer runtime (Debian 12: clang 14); the rest comes from install-deps.sh.
+# clang, its libFuzzer/sanitizer runtimes and its OpenMP (SUNDIALS' CMake package asks for
+# OpenMP; Debian 12: clang 14); the rest comes from install-deps.sh.
 "$root/scripts/install-deps.sh"
-if ! command -v clang++ >/dev/null ||
-   [ -z "$(ls /usr/lib/llvm-*/lib/clang/*/lib/linux/libclang_rt.fuzzer-x86_64.a 2>/dev/null)" ]; then
+missing=()
+for p in clang libclang-rt-dev libomp-dev; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
   sudo=()
   [ "$(id -u)" -eq 0 ] || sudo=(sudo)
-  echo "fuzz: installing clang and its fuzzer runtime"
+  echo "fuzz: installing ${missing[*]}"
   export DEBIAN_FRONTEND=noninteractive
   "${sudo[@]}" apt-get update -qq
-  "${sudo[@]}" apt-get install -y -qq --no-install-recommends clang libclang-rt-dev >/dev/null
+  "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 fi
 flags="-fsanitize=address,undefined,fuzzer-no-link -fno-sanitize-recover=undefined -fno-omit-frame-pointer -g -O1"
 cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
