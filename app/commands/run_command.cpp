@@ -69,11 +69,8 @@ Command MakeRunCommand() {
     const bool quiet = args.Has("quiet");
     // Locked against a second FilmDyn writer until the end; an earlier run's files are refused
     // (--out without --overwrite) or replaced (the default folder is FilmDyn's own).
-    const io::OutputFolder folder(out,
-                                  explicit_out && !args.Has("overwrite")
-                                      ? io::OutputFolder::Reuse::kRefuse
-                                      : io::OutputFolder::Reuse::kReplace,
-                                  "--out");
+    const io::OutputFolder folder(
+        out, io::OutputFolder::ReuseFor(explicit_out, args.Has("overwrite")), "--out");
     if (folder.replaced_earlier_run() && !quiet) {
       streams.err << "filmdyn run: replacing the earlier run in " << out.string() << "\n";
     }

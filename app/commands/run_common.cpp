@@ -79,7 +79,8 @@ std::unique_ptr<io::OutputFolder> PrepareBatchFolders(const std::filesystem::pat
                                                       std::vector<batch::SweepJob>& jobs,
                                                       bool explicit_out, bool overwrite,
                                                       const std::string& points_option) {
-  const bool replace = overwrite || !explicit_out;
+  const io::OutputFolder::Reuse reuse = io::OutputFolder::ReuseFor(explicit_out, overwrite);
+  const bool replace = reuse == io::OutputFolder::Reuse::kReplace;
   for (std::size_t i = 0; i < jobs.size(); ++i) {
     for (std::size_t k = 0; k < i; ++k) {
       if (jobs[k].output_folder == jobs[i].output_folder) {
@@ -90,14 +91,10 @@ std::unique_ptr<io::OutputFolder> PrepareBatchFolders(const std::filesystem::pat
       }
     }
   }
-  auto folder = std::make_unique<io::OutputFolder>(
-      out, replace ? io::OutputFolder::Reuse::kReplace : io::OutputFolder::Reuse::kRefuse,
-      "--out");
+  auto folder = std::make_unique<io::OutputFolder>(out, reuse, "--out");
   for (batch::SweepJob& job : jobs) {
     if (!replace && io::OutputFolder::HoldsEarlierRun(job.output_folder)) {
-      throw InputError("--out", job.output_folder.string(),
-                       "holds an earlier run; choose another folder, or pass --overwrite to "
-                       "replace FilmDyn's files in it");
+      io::OutputFolder::RefuseEarlierRun(job.output_folder, "--out");
     }
     job.overwrite = replace;
   }

@@ -205,10 +205,10 @@ RunResult RunSingle(const RunConfig& config, const RunMonitor& monitor,
   if (skirt) skirt->SetPanelThreads(threads);
   // A cancel or the time limit stops the integration inside an output step, at the next
   // evaluation of the films (a step on a huge mesh can take minutes).
-  const StopCheck stop = [&] {
-    return (cancel && cancel->load()) ||
-           (config.wall_time_limit > 0 && elapsed() > config.wall_time_limit);
+  auto past_time_limit = [&](double seconds) {
+    return config.wall_time_limit > 0 && seconds > config.wall_time_limit;
   };
+  const StopCheck stop = [&] { return (cancel && cancel->load()) || past_time_limit(elapsed()); };
   train.system->SetStopCheck(stop);
   if (skirt) skirt->SetStopCheck(stop);
   if (big_end) big_end->SetStopCheck(stop);
@@ -253,7 +253,7 @@ RunResult RunSingle(const RunConfig& config, const RunMonitor& monitor,
     if (!go_on || cancelled) {
       result.status = RunStatus::kCancelled;
       result.message = "cancelled" + where;
-    } else if (config.wall_time_limit > 0 && progress.elapsed > config.wall_time_limit) {
+    } else if (past_time_limit(progress.elapsed)) {
       result.status = RunStatus::kTimeLimit;
       result.message = "wall-time limit reached" + where;
     }

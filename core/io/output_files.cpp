@@ -74,6 +74,13 @@ bool IsOwnFile(const std::filesystem::path& file, const OwnFiles& own) {
 }
 }  // namespace
 
+void OutputFolder::RefuseEarlierRun(const std::filesystem::path& folder,
+                                    const std::string& option) {
+  throw InputError(option, folder.string(),
+                   "holds an earlier run (results.csv, summary.json, fields/ or plots/); choose "
+                   "another folder, or pass --overwrite to replace FilmDyn's files in it");
+}
+
 bool OutputFolder::HoldsEarlierRun(const std::filesystem::path& folder) {
   std::error_code error;
   for (const char* name : kRunFiles) {
@@ -138,12 +145,7 @@ OutputFolder::OutputFolder(const std::filesystem::path& folder, Reuse reuse,
   }
   try {
     if (HoldsEarlierRun(folder)) {
-      if (reuse == Reuse::kRefuse) {
-        throw InputError(option, folder.string(),
-                         "holds an earlier run (results.csv, summary.json, fields/ or plots/); "
-                         "choose another folder, or pass --overwrite to replace FilmDyn's files "
-                         "in it");
-      }
+      if (reuse == Reuse::kRefuse) RefuseEarlierRun(folder, option);
       RemoveEarlierRun(folder);
       replaced_ = true;
     }

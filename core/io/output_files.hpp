@@ -43,6 +43,14 @@ class OutputFolder {
     kRefuse,   ///< a folder holding an earlier run is an input error naming `option`
     kReplace,  ///< FilmDyn's own files of the earlier run are removed first
   };
+  /// The commands' rule: an --out given by the user is refused unless --overwrite; the default
+  /// folder under results/ is FilmDyn's own and is replaced.
+  static Reuse ReuseFor(bool explicit_out, bool overwrite) {
+    return explicit_out && !overwrite ? Reuse::kRefuse : Reuse::kReplace;
+  }
+  /// Throws the input error (naming `option`) for `folder` holding an earlier run.
+  [[noreturn]] static void RefuseEarlierRun(const std::filesystem::path& folder,
+                                            const std::string& option);
   /// Creates `folder`, takes its lock (an input error naming `option` when another FilmDyn
   /// process holds it) and applies `reuse` to an earlier run's files in it. Throws InputError.
   OutputFolder(const std::filesystem::path& folder, Reuse reuse, const std::string& option);
