@@ -63,6 +63,9 @@ Command MakeRunCommand() {
       }
       config.threads = static_cast<int>(*threads);
     }
+    io::FieldRecorder fields;
+    if (!args.Has("no-fields")) config.field_callback = fields.Callback();
+    engine::CheckRunMemory(config);  // before the output folder is touched
     const bool explicit_out = args.Value("out").has_value();
     const std::filesystem::path out = explicit_out ? std::filesystem::path(*args.Value("out"))
                                                    : io::DefaultOutputFolder(c.name, model, rpm);
@@ -89,8 +92,6 @@ Command MakeRunCommand() {
       }
       return true;
     };
-    io::FieldRecorder fields;
-    if (!args.Has("no-fields")) config.field_callback = fields.Callback();
     engine::RunResult result;
     {
       const InterruptGuard interrupt;

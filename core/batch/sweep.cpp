@@ -58,15 +58,17 @@ void SweepRunner::Work() {
         return true;
       };
       const SweepJob& job = jobs_[index];
+      io::FieldRecorder fields;
+      engine::RunConfig config = job.config;
+      if (job.write_fields) config.field_callback = fields.Callback();
+      // Memory for this run with what the running ones already hold, before its folder is used.
+      engine::CheckRunMemory(config);
       // Locked for the run; marked "running" until its summary is written last.
       const io::OutputFolder folder(
           job.output_folder,
           job.overwrite ? io::OutputFolder::Reuse::kReplace : io::OutputFolder::Reuse::kRefuse,
           "--out");
       io::MarkRunStarted(job.output_folder, job.case_name, job.config);
-      io::FieldRecorder fields;
-      engine::RunConfig config = job.config;
-      if (job.write_fields) config.field_callback = fields.Callback();
       outcome.result = engine::RunJob(config, monitor, cancel_);
       outcome.rows = io::WriteRunFolder(
           job.output_folder, job.case_name, job.config, outcome.result,

@@ -5,6 +5,7 @@
 #include <type_traits>
 
 #include "core/base/input_error.hpp"
+#include "core/engine/run_memory.hpp"
 
 namespace filmdyn::engine {
 
@@ -494,6 +495,7 @@ void CheckCaseConsistency(const EngineCase& c) {
                        "must increase strictly [rad]");
     }
   }
+  CheckFilmMeshSizes(c);
 }
 
 }  // namespace filmdyn::engine

@@ -61,6 +61,12 @@ std::unique_ptr<multibody::JointForceElement> MakeLubricatedSkirt(const EngineCa
                                                             mount);
 }
 
+bool BigEndSolvesSymmetricHalf(const BigEndCase& be) {
+  // An odd count has no node row on the mid-plane; 2 elements are too few for a half (it needs
+  // two of its own).
+  return be.mesh_z % 2 == 0 && be.mesh_z >= 4;
+}
+
 lubrication::BearingConfig BearingConfigFromCase(const EngineCase& c) {
   const BigEndCase& be = c.big_end;
   lubrication::BearingConfig config;
@@ -74,12 +80,8 @@ lubrication::BearingConfig BearingConfigFromCase(const EngineCase& c) {
   }
   config.viscosity = c.lubricant.viscosity;
   config.mesh.n_theta = be.mesh_theta;
-  // The planar model keeps the journal parallel to the bearing and every feed on the mid-plane,
-  // so the film is symmetric about it: with an even axial count only the half is solved (the
-  // same nodes, half the unknowns; the outputs show the whole width). An odd count has no node
-  // row on the mid-plane and is solved over the whole width, as are 2 elements (the half
-  // needs two).
-  config.mesh.symmetric_half = be.mesh_z % 2 == 0 && be.mesh_z >= 4;
+  // The half has the same nodes and half the unknowns; the outputs show the whole width.
+  config.mesh.symmetric_half = BigEndSolvesSymmetricHalf(be);
   config.mesh.n_z = config.mesh.symmetric_half ? be.mesh_z / 2 : be.mesh_z;
   config.mesh.theta_grading = be.mesh_theta_grading;
   config.mesh.z_grading = be.mesh_z_grading;

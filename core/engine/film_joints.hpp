@@ -15,6 +15,10 @@ namespace filmdyn::engine {
 /// The skirt solver configuration of a case (mesh: the case's counts). Throws InputError naming
 /// the field when the case has no skirt clearance or its surfaces are invalid.
 lubrication::SkirtConfig SkirtConfigFromCase(const EngineCase& engine_case);
+/// Whether the big end's film is solved over the symmetric half of the width: the planar model
+/// keeps the journal parallel to the bearing and every feed on the mid-plane, so the film is
+/// symmetric about it; an even axial count of at least 4 has a node row there.
+bool BigEndSolvesSymmetricHalf(const BigEndCase& big_end);
 /// The bearing solver configuration of a case (SurfaceModel from roughness, E and ν, μ_f, K).
 lubrication::BearingConfig BearingConfigFromCase(const EngineCase& engine_case);
 

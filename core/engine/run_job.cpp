@@ -19,6 +19,7 @@
 #include "core/coupling/lubricated_skirt_element.hpp"
 #include "core/coupling/steady_state.hpp"
 #include "core/engine/film_joints.hpp"
+#include "core/engine/run_memory.hpp"
 
 namespace filmdyn::engine {
 
@@ -396,8 +397,15 @@ RunResult RunSingle(const RunConfig& config, const RunMonitor& monitor,
 
 }  // namespace
 
+void CheckRunMemory(const RunConfig& config) {
+  const EngineCase& c = config.engine_case;
+  RequireMemory(c, EstimateRunMemory(c, config.field_callback ? config.field_copies : 0.0),
+                AvailableMemoryBytes());
+}
+
 RunResult RunJob(const RunConfig& config, const RunMonitor& monitor,
                  const std::atomic<bool>* cancel) {
+  CheckRunMemory(config);
   const EngineCase& c = config.engine_case;
   const bool has_films =
       c.skirt.model == JointModel::kLubricated || c.big_end.model == JointModel::kLubricated;

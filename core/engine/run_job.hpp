@@ -59,7 +59,15 @@ struct RunConfig {
   /// for bit): 1 or 2; 0 = automatic (2 on a machine with at least 2 cores).
   int threads = 0;
   FieldCallback field_callback;  ///< optional per-output-step fields of the film joints
+  /// Copies of one cycle's film fields the field callback's consumers hold in memory (the run
+  /// folder's recorder: 1; the GUI keeps its own view besides): for the memory check.
+  double field_copies = 1.0;
 };
+
+/// Refuses (InputError naming the largest film mesh) a run whose estimated memory exceeds what
+/// this machine has available (core/engine/run_memory.hpp). RunJob calls it first; callers that
+/// prepare outputs call it before they do.
+void CheckRunMemory(const RunConfig& config);
 
 /// Fills the integrator tolerances from the case's solver section.
 RunConfig MakeRunConfig(const EngineCase& engine_case, Model model, double rpm,

@@ -77,7 +77,8 @@ bool ReynoldsFem::SolveReynoldsLcp(bool unconstrained) {
     auto t1 = Clock::now();
     st.complementarity_s += Seconds(t0, t1);
     if (refactorize) {
-      const bool ok = ldlt_->Factorize(work_lower_);
+      factor_ready_ = false;  // a stop inside the factorisation leaves no usable factor
+      const bool ok = ldlt_->Factorize(work_lower_, stop_check_);
       ++st.factorizations;
       factor_ready_ = ok;
       if (!ok) {
@@ -138,9 +139,17 @@ bool ReynoldsFem::SolveReynoldsLcp(bool unconstrained) {
       continue;
     }
     // Deletions first (rows become identity), then additions against the current free set.
+    // A stop request is seen every 256 row updates; the half-modified factor is then dropped.
+    const auto stop_between_rows = [&] {
+      if ((st.row_updates & 255) == 255 && stop_check_ && stop_check_()) {
+        factor_ready_ = false;
+        throw StopRequested();
+      }
+    };
     bool ok = true;
     for (int k = 0; k < n && ok; ++k) {
       if (next_active_[k] && !active_[k]) {
+        stop_between_rows();
         ok = ldlt_->DeleteRow(k);
         active_[k] = 1;
         ++st.row_updates;
@@ -160,6 +169,7 @@ bool ReynoldsFem::SolveReynoldsLcp(bool unconstrained) {
             add_values_.push_back(kf[q]);
           }
         }
+        stop_between_rows();
         ok = ldlt_->AddRow(k, add_rows_, add_values_);
         ++st.row_updates;
       }

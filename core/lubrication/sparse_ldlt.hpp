@@ -6,6 +6,8 @@
 #include <memory>
 #include <vector>
 
+#include "core/base/stop.hpp"
+
 namespace filmdyn::lubrication {
 
 enum class LdltBackend {
@@ -25,7 +27,10 @@ class SparseLdlt {
   /// Ordering + symbolic factorisation. Call once per pattern.
   virtual void Analyze(const Eigen::SparseMatrix<double>& lower) = 0;
   /// Numeric factorisation of a matrix with the analysed pattern. False on breakdown.
-  virtual bool Factorize(const Eigen::SparseMatrix<double>& lower) = 0;
+  /// `stop` is consulted between blocks of rows of a large factor (kCholmodModify only; the
+  /// others factorise in one call): a stop request throws StopRequested and leaves no usable
+  /// factor, so the next call factorises afresh.
+  virtual bool Factorize(const Eigen::SparseMatrix<double>& lower, const StopCheck& stop = {}) = 0;
   /// x = A^-1 b with the last factorisation (x may alias nothing).
   virtual void Solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) = 0;
   /// Row/column modifications of the current factor (only when SupportsRowModify()).

@@ -120,6 +120,9 @@ RunBackend CoreRunBackend() {
     FieldCollector collector(c, steps_per_cycle);
     // The GUI's frames and core's recorder (for the run folder's fields/, as `filmdyn run`).
     auto recorder = std::make_shared<io::FieldRecorder>();
+    // The view's frames beside the recorder's: for the memory check.
+    config.field_copies =
+        1.0 + std::min(1.0, double(FieldCollector::kMaxFrames) / double(steps_per_cycle));
     if (model != engine::Model::kIdeal) {
       config.field_callback = [&collector,
                                record = recorder->Callback()](const engine::FieldFrame& f) {
