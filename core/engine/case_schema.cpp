@@ -15,11 +15,18 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kPi = std::numbers::pi;
 constexpr double kMm = 1e-3, kUm = 1e-6, kDeg = kPi / 180.0, kMPa = 1e6, kGPa = 1e9;
 
-FieldRange Positive() { return {0.0, kInf, true, false}; }
 // A length of the mechanism: up to 100 m (the largest engines' strokes are ~3.5 m) — a value
 // near the double range would only fail later, inside the solver's assembly.
 FieldRange Length() { return {0.0, 100.0, true, false}; }
-FieldRange NonNegative() { return {0.0, kInf, false, false}; }
+// Upper bounds far beyond any engine, so that a value near the double range is an input error
+// naming the field instead of a failure inside the solver.
+FieldRange Mass() { return {0.0, 1e5, true, false}; }      // [kg]; the largest marine pistons ~5 t
+FieldRange Inertia() { return {0.0, 1e5, true, false}; }   // [kg·m²]
+FieldRange Offset() { return {0.0, 100.0, false, false}; }  // a non-negative length [m]
+FieldRange Roughness() { return {0.0, 1e-4, true, false}; }  // RMS [m]; engine surfaces < 2 µm
+FieldRange Gap() { return {0.0, 0.01, false, false}; }       // profile/ovality gap [m]
+FieldRange GaugePressure() { return {0.0, 1e9, false, false}; }  // [Pa], as the pressure curves
+FieldRange Viscosity() { return {0.0, 1e3, true, false}; }  // [Pa·s]; cold engine oil ~10 Pa·s
 FieldRange Between(double lo, double hi) { return {lo, hi, false, false}; }
 FieldRange Open(double lo, double hi, bool lo_open, bool hi_open) {
   return {lo, hi, lo_open, hi_open};
@@ -117,30 +124,30 @@ std::vector<CaseField> MakeSchema() {
                       "big-end to small-end centre, > crank_radius + |pin_offset|; Table I: "
                       "129.5 mm"}));
   f.push_back(Scalar("geometry.crank_com_radius", geo, &CG::crank_com_radius,
-                     {G::kGeometry, "Crank CoM radius L_r", "m", "mm", kMm, NonNegative(),
+                     {G::kGeometry, "Crank CoM radius L_r", "m", "mm", kMm, Offset(),
                       "main journal to the crank's centre of mass; Table I: 20 mm"}));
   f.push_back(Scalar("geometry.crank_mass", geo, &CG::crank_mass,
-                     {G::kMasses, "Crank mass m₁", "kg", "kg", 1.0, Positive(),
+                     {G::kMasses, "Crank mass m₁", "kg", "kg", 1.0, Mass(),
                       "the crank speed is imposed: changes only the main-bearing force and "
                       "drive torque"}));
   f.push_back(Scalar("geometry.crank_inertia", geo, &CG::crank_inertia,
-                     {G::kMasses, "Crank inertia J₁ (CoM)", "kg*m^2", "kg·m²", 1.0, Positive(),
+                     {G::kMasses, "Crank inertia J₁ (CoM)", "kg*m^2", "kg·m²", 1.0, Inertia(),
                       "about the crank's centre of mass"}));
   f.push_back(Scalar("geometry.rod_com_from_big_end", geo, &CG::rod_com_from_big_end,
-                     {G::kGeometry, "Rod CoM from big end L_c", "m", "mm", kMm, NonNegative(),
+                     {G::kGeometry, "Rod CoM from big end L_c", "m", "mm", kMm, Offset(),
                       "on the rod, ≤ rod_length; Table I: 28.49 mm, read as from the big-end "
                       "centre"}));
   f.push_back(
       Scalar("geometry.rod_mass", geo, &CG::rod_mass,
-             {G::kMasses, "Rod mass m₂", "kg", "kg", 1.0, Positive(), "Table I: 0.345 kg"}));
+             {G::kMasses, "Rod mass m₂", "kg", "kg", 1.0, Mass(), "Table I: 0.345 kg"}));
   f.push_back(Scalar("geometry.rod_inertia", geo, &CG::rod_inertia,
-                     {G::kMasses, "Rod inertia J₂ (CoM)", "kg*m^2", "kg·m²", 1.0, Positive(),
+                     {G::kMasses, "Rod inertia J₂ (CoM)", "kg*m^2", "kg·m²", 1.0, Inertia(),
                       "about the rod's centre of mass; Table I: 9.67e-4 kg·m²"}));
   f.push_back(
       Scalar("geometry.piston_mass", geo, &CG::piston_mass,
-             {G::kMasses, "Piston mass m₃", "kg", "kg", 1.0, Positive(), "Table I: 0.264 kg"}));
+             {G::kMasses, "Piston mass m₃", "kg", "kg", 1.0, Mass(), "Table I: 0.264 kg"}));
   f.push_back(Scalar("geometry.piston_inertia", geo, &CG::piston_inertia,
-                     {G::kMasses, "Piston inertia J₃ (CoM)", "kg*m^2", "kg·m²", 1.0, Positive(),
+                     {G::kMasses, "Piston inertia J₃ (CoM)", "kg*m^2", "kg·m²", 1.0, Inertia(),
                       "about the piston's centre of mass; Table I: 1.29e-4 kg·m²"}));
   f.push_back(
       Scalar("geometry.pin_offset", geo, &CG::pin_offset,
@@ -193,10 +200,10 @@ std::vector<CaseField> MakeSchema() {
                       "half-width of the anti-thrust panel; the relief lies between α₁ and "
                       "π − α₂; Table I: 46°"}));
   f.push_back(Scalar("skirt.roughness_skirt", sk, &S::roughness_skirt,
-                     {G::kSkirt, "Skirt roughness σ_skirt", "m", "µm", kUm, Positive(),
+                     {G::kSkirt, "Skirt roughness σ_skirt", "m", "µm", kUm, Roughness(),
                       "RMS roughness; Table I: 0.615 µm"}));
   f.push_back(Scalar("skirt.roughness_liner", sk, &S::roughness_liner,
-                     {G::kSkirt, "Liner roughness σ_liner", "m", "µm", kUm, Positive(),
+                     {G::kSkirt, "Liner roughness σ_liner", "m", "µm", kUm, Roughness(),
                       "RMS roughness; Table I: 0.815 µm"}));
   f.push_back(Scalar("skirt.peklenik", sk, &S::peklenik,
                      {G::kSkirt, "Peklenik number γ", "-", "–", 1.0, Between(1.0 / 9.0, 9.0),
@@ -230,17 +237,17 @@ std::vector<CaseField> MakeSchema() {
                      {G::kSolver, "Skirt mesh: elements axially", "-", "–", 1.0, Between(2, 2000),
                       "elements along the skirt (Table II: 30, 2, 30 × 40)"}));
   f.push_back(List("skirt.profile_y", sk, &S::profile_y,
-                   {G::kSkirt, "Skirt profile: axial position y", "m", "mm", kMm, NonNegative(),
+                   {G::kSkirt, "Skirt profile: axial position y", "m", "mm", kMm, Offset(),
                     "from the skirt top, strictly increasing, within the skirt; same length as "
                     "profile_h (≥ 2)"}));
   f.push_back(List("skirt.profile_h", sk, &S::profile_h,
-                   {G::kSkirt, "Skirt profile: radial drop h", "m", "µm", kUm, NonNegative(),
+                   {G::kSkirt, "Skirt profile: radial drop h", "m", "µm", kUm, Gap(),
                     "barrel profile: extra radial gap at y, linear between rows"}));
   f.push_back(List("skirt.ovality_alpha", sk, &S::ovality_alpha,
                    {G::kSkirt, "Skirt ovality: angle α", "rad", "°", kDeg, Between(0.0, kPi),
                     "from the thrust axis, strictly increasing; empty with ovality_h = round"}));
   f.push_back(List("skirt.ovality_h", sk, &S::ovality_h,
-                   {G::kSkirt, "Skirt ovality: extra gap h", "m", "µm", kUm, NonNegative(),
+                   {G::kSkirt, "Skirt ovality: extra gap h", "m", "µm", kUm, Gap(),
                     "extra radial gap at α, linear between rows, constant beyond the ends"}));
   // Big-end bearing.
   f.push_back(Model("big_end.model", be, &B::model,
@@ -262,10 +269,10 @@ std::vector<CaseField> MakeSchema() {
       Scalar("big_end.width", be, &B::width,
              {G::kBigEnd, "Bearing width b", "m", "mm", kMm, Length(), "Table I: 22 mm"}));
   f.push_back(Scalar("big_end.roughness_journal", be, &B::roughness_journal,
-                     {G::kBigEnd, "Journal roughness σ_j", "m", "µm", kUm, Positive(),
+                     {G::kBigEnd, "Journal roughness σ_j", "m", "µm", kUm, Roughness(),
                       "RMS roughness; Table I: 0.308 µm"}));
   f.push_back(Scalar("big_end.roughness_bearing", be, &B::roughness_bearing,
-                     {G::kBigEnd, "Bearing roughness σ_b", "m", "µm", kUm, Positive(),
+                     {G::kBigEnd, "Bearing roughness σ_b", "m", "µm", kUm, Roughness(),
                       "RMS roughness; Table I: 0.408 µm"}));
   f.push_back(Scalar("big_end.peklenik", be, &B::peklenik,
                      {G::kBigEnd, "Peklenik number γ", "-", "–", 1.0, Between(1.0 / 9.0, 9.0),
@@ -302,28 +309,28 @@ std::vector<CaseField> MakeSchema() {
                       "uniform, the paper's)"}));
   f.push_back(
       Scalar("big_end.oil_feed_pressure", be, &B::oil_feed_pressure,
-             {G::kBigEnd, "Oil-feed pressure (gauge, 0 = none)", "Pa", "MPa", kMPa, NonNegative(),
+             {G::kBigEnd, "Oil-feed pressure (gauge, 0 = none)", "Pa", "MPa", kMPa, GaugePressure(),
               "0: no feed hole, the film starts at the line of centres (eq. 19)"}));
   f.push_back(Scalar("lubricant.viscosity", lub, &LubricantCase::viscosity,
-                     {G::kLubricant, "Dynamic viscosity μ", "Pa*s", "mPa·s", 1e-3, Positive(),
+                     {G::kLubricant, "Dynamic viscosity μ", "Pa*s", "mPa·s", 1e-3, Viscosity(),
                       "constant over the film; Table I: 0.02 Pa·s"}));
   f.push_back(Scalar("lubricant.greenwood_tripp_k", lub, &LubricantCase::greenwood_tripp_k,
-                     {G::kLubricant, "Greenwood–Tripp constant K", "-", "–", 1.0, Positive(),
+                     {G::kLubricant, "Greenwood–Tripp constant K", "-", "–", 1.0, Open(0.0, 1.0, true, false),
                       "asperity contact pressure K·E'·F_5/2 (eq. 29): 1.198e-4"}));
   f.push_back(Scalar("operating.rpm", op, &OperatingCase::rpm,
                      {G::kOperating, "Crank speed", "rpm", "rpm", 1.0,
                       Open(0.0, 30000.0, true, false), "imposed crank speed"}));
   f.push_back(Scalar("operating.crankcase_pressure", op, &OperatingCase::crankcase_pressure,
                      {G::kOperating, "Crankcase pressure (absolute)", "Pa", "MPa", kMPa,
-                      NonNegative(), "acts under the crown: gas force (p − p_cc) π R_l²"}));
+                      GaugePressure(), "acts under the crown: gas force (p − p_cc) π R_l²"}));
   f.push_back(Scalar("operating.start_crank_angle", op, &OperatingCase::start_crank_angle,
                      {G::kOperating, "Start crank angle", "rad", "°CA", kDeg, Between(0.0, 4 * kPi),
                       "crank angle of the assembled start"}));
   f.push_back(Scalar("solver.baumgarte_alpha", sol, &SolverCase::baumgarte_alpha,
-                     {G::kSolver, "Baumgarte 𝒢 (eq. 39)", "1/s", "1/s", 1.0, NonNegative(),
+                     {G::kSolver, "Baumgarte 𝒢 (eq. 39)", "1/s", "1/s", 1.0, Between(0.0, 1e9),
                       "constraint stabilisation; Table II: 1e4"}));
   f.push_back(Scalar("solver.baumgarte_beta", sol, &SolverCase::baumgarte_beta,
-                     {G::kSolver, "Baumgarte ζ (eq. 39)", "1/s", "1/s", 1.0, NonNegative(),
+                     {G::kSolver, "Baumgarte ζ (eq. 39)", "1/s", "1/s", 1.0, Between(0.0, 1e9),
                       "constraint stabilisation; Table II: 1e4"}));
   f.push_back(Scalar("solver.relative_tolerance", sol, &SolverCase::relative_tolerance,
                      {G::kSolver, "Relative tolerance", "-", "–", 1.0, Between(1e-14, 1e-2),
@@ -337,7 +344,7 @@ std::vector<CaseField> MakeSchema() {
                      {G::kSolver, "Output interval", "rad", "°CA", kDeg, Between(1e-4, 0.2),
                       "crank angle between output steps (1 °CA)"}));
   f.push_back(Scalar("solver.steady_state_tolerance", sol, &SolverCase::steady_state_tolerance,
-                     {G::kSolver, "Steady-state tolerance", "-", "–", 1.0, Positive(),
+                     {G::kSolver, "Steady-state tolerance", "-", "–", 1.0, Open(0.0, 1.0, true, false),
                       "cycle-to-cycle change of each monitored quantity, relative to its range"}));
   f.push_back(Scalar("solver.max_cycles", sol, &SolverCase::max_cycles,
                      {G::kSolver, "Maximum cycles", "-", "–", 1.0, Between(1, 10000),

@@ -337,6 +337,31 @@ class TestCli : public QObject {
                   dir.filePath("b2")});
     QCOMPARE(result.exit_code, 2);
     QVERIFY2(result.err.contains("geometry.rod_length = 1e+300"), qPrintable(result.err));
+    for (const char* set : {"geometry.piston_mass=1e300", "geometry.rod_inertia=1e300",
+                            "lubricant.viscosity=1e300", "big_end.roughness_journal=1e300",
+                            "big_end.oil_feed_pressure=1e300"}) {
+      result = Run({"run", "--model", "ideal", "--set", set, "--out", dir.filePath("b4")});
+      QCOMPARE(result.exit_code, 2);
+      const QString field = QString(set).section('=', 0, 0);
+      QVERIFY2(result.err.contains(field + " = 1e+300"), qPrintable(result.err));
+    }
+    // Meshes beyond the case's maximum, and a run larger than this machine's memory (one cycle
+    // of fields at 125 664 output steps on a 4000 × 998 big end: terabytes): refused before
+    // anything is written.
+    result = Run({"run", "--model", "only-lbrbe", "--set", "big_end.mesh_theta=5000", "--set",
+                  "big_end.mesh_z=2000", "--out", dir.filePath("m1")});
+    QCOMPARE(result.exit_code, 2);
+    QVERIFY2(result.err.contains("big_end.mesh_theta × big_end.mesh_z") &&
+                 result.err.contains("at most 2000000"),
+             qPrintable(result.err));
+    result = Run({"run", "--model", "only-lbrbe", "--set", "big_end.mesh_theta=4000", "--set",
+                  "big_end.mesh_z=998", "--set", "solver.output_interval=0.0001", "--out",
+                  dir.filePath("m2")});
+    QCOMPARE(result.exit_code, 2);
+    QVERIFY2(result.err.contains("big-end mesh") && result.err.contains("4000 × 998") &&
+                 result.err.contains("available"),
+             qPrintable(result.err));
+    QVERIFY(!QFileInfo::exists(dir.filePath("m2")));
     const QString huge_pressure = dir.filePath("huge.csv");
     {
       QFile file(huge_pressure);

@@ -155,6 +155,11 @@ RunBackend CoreRunBackend() {
       reported.push_back(ToRunSample(sample, model, report_start));
     }
     sink.Report(std::move(reported));
+    // A cancelled run stays in the run list with its curves and figures; its film fields (one
+    // cycle of frames, tens of MB on fine meshes) are dropped, so that runs started and cancelled
+    // again and again do not pile up memory.
+    const bool cancelled = result.status == engine::RunStatus::kCancelled;
+    if (cancelled) recorder = std::make_shared<io::FieldRecorder>();
     auto shared_config = std::make_shared<engine::RunConfig>(config);
     shared_config->field_callback = nullptr;  // refers to this call's collector
     auto shared_result = std::make_shared<engine::RunResult>(result);
@@ -163,12 +168,14 @@ RunBackend CoreRunBackend() {
     writers.folder = [shared_config, shared_result, recorder, case_name](const std::string& dir) {
       io::WriteRunFolder(dir, case_name, *shared_config, *shared_result,
                          [&](const std::vector<io::OutputRow>&) {
-                           recorder->Write(std::filesystem::path(dir) / "fields");
+                           if (recorder->skirt_frames() + recorder->bearing_frames() > 0)
+                             recorder->Write(std::filesystem::path(dir) / "fields");
                          });
     };
-    writers.fields = [recorder](const std::string& dir) {
+    writers.fields = [recorder, cancelled](const std::string& dir) {
       if (recorder->skirt_frames() + recorder->bearing_frames() == 0) {
-        throw std::runtime_error("this run has no film fields (ideal joints)");
+        throw std::runtime_error(cancelled ? "a cancelled run keeps no film fields"
+                                           : "this run has no film fields (ideal joints)");
       }
       recorder->Write(dir);
     };
@@ -182,7 +189,8 @@ RunBackend CoreRunBackend() {
       return out.str();
     };
     sink.SetWriters(std::move(writers));
-    if (auto fields = collector.Result(); fields && !fields->empty()) sink.ReportFields(fields);
+    if (auto fields = collector.Result(); !cancelled && fields && !fields->empty())
+      sink.ReportFields(fields);
     sink.Statistic("cycles", result.cycles);
     sink.Statistic("cycles to steady state", result.cycles_to_steady_state);
     sink.Statistic("cycle change", result.cycle_change);
