@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <thread>
 
 #if defined(__linux__)
@@ -195,7 +196,36 @@ RunResult RunSingle(const RunConfig& config, const RunMonitor& monitor,
   const double run_in = has_films ? c.solver.run_in_angle : 0.0;
   EngineCase start_case = c;
   start_case.operating.start_crank_angle -= run_in;
-  CrankTrain train = BuildCrankTrain(start_case, config.rpm, config.pressure, config.factories);
+  // A cancel or the time limit is honoured from the start: between the film joints' set-up
+  // (mesh, matrix pattern, fill-reducing ordering: about a second each on the largest meshes
+  // the case accepts), then inside every film evaluation and solve.
+  auto past_time_limit = [&](double seconds) {
+    return config.wall_time_limit > 0 && seconds > config.wall_time_limit;
+  };
+  const StopCheck stop = [&] { return (cancel && cancel->load()) || past_time_limit(elapsed()); };
+  auto stop_around = [&stop](const JointForceFactory& make) -> JointForceFactory {
+    if (!make) return make;
+    return [&stop, make](const EngineCase& engine_case, const CrankTrainLayout& layout) {
+      ThrowIfStopRequested(stop);
+      auto element = make(engine_case, layout);
+      ThrowIfStopRequested(stop);
+      return element;
+    };
+  };
+  const LubricatedJointFactories factories{stop_around(config.factories.skirt),
+                                           stop_around(config.factories.big_end)};
+  std::optional<CrankTrain> built;
+  try {
+    built.emplace(BuildCrankTrain(start_case, config.rpm, config.pressure, factories));
+  } catch (const StopRequested&) {
+    const bool cancelled = cancel && cancel->load();
+    result.status = cancelled ? RunStatus::kCancelled : RunStatus::kTimeLimit;
+    result.message = std::string(cancelled ? "cancelled" : "wall-time limit reached") +
+                     " while setting up the film joints";
+    result.wall_time = elapsed();
+    return result;
+  }
+  CrankTrain& train = *built;
   auto* skirt = dynamic_cast<coupling::LubricatedSkirtElement*>(train.skirt_element);
   auto* big_end = dynamic_cast<coupling::LubricatedBigEndElement*>(train.big_end_element);
   // Threads: the two film joints side by side, and the skirt's two panels side by side.
@@ -204,12 +234,8 @@ RunResult RunSingle(const RunConfig& config, const RunMonitor& monitor,
                           : std::min(2, static_cast<int>(std::thread::hardware_concurrency()));
   train.system->SetThreads(threads);
   if (skirt) skirt->SetPanelThreads(threads);
-  // A cancel or the time limit stops the integration inside an output step, at the next
-  // evaluation of the films (a step on a huge mesh can take minutes).
-  auto past_time_limit = [&](double seconds) {
-    return config.wall_time_limit > 0 && seconds > config.wall_time_limit;
-  };
-  const StopCheck stop = [&] { return (cancel && cancel->load()) || past_time_limit(elapsed()); };
+  // The integration stops inside an output step, at the next evaluation of the films (a step
+  // on a huge mesh can take minutes).
   train.system->SetStopCheck(stop);
   if (skirt) skirt->SetStopCheck(stop);
   if (big_end) big_end->SetStopCheck(stop);

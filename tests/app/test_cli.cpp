@@ -346,19 +346,19 @@ class TestCli : public QObject {
       QVERIFY2(result.err.contains(field + " = 1e+300"), qPrintable(result.err));
     }
     // Meshes beyond the case's maximum, and a run larger than this machine's memory (one cycle
-    // of fields at 125 664 output steps on a 4000 × 998 big end: terabytes): refused before
+    // of fields at 125 664 output steps on a 2000 × 498 big end: terabytes): refused before
     // anything is written.
     result = Run({"run", "--model", "only-lbrbe", "--set", "big_end.mesh_theta=5000", "--set",
                   "big_end.mesh_z=2000", "--out", dir.filePath("m1")});
     QCOMPARE(result.exit_code, 2);
     QVERIFY2(result.err.contains("big_end.mesh_theta × big_end.mesh_z") &&
-                 result.err.contains("at most 2000000"),
+                 result.err.contains("at most 500000"),
              qPrintable(result.err));
-    result = Run({"run", "--model", "only-lbrbe", "--set", "big_end.mesh_theta=4000", "--set",
-                  "big_end.mesh_z=998", "--set", "solver.output_interval=0.0001", "--out",
+    result = Run({"run", "--model", "only-lbrbe", "--set", "big_end.mesh_theta=2000", "--set",
+                  "big_end.mesh_z=498", "--set", "solver.output_interval=0.0001", "--out",
                   dir.filePath("m2")});
     QCOMPARE(result.exit_code, 2);
-    QVERIFY2(result.err.contains("big-end mesh") && result.err.contains("4000 × 998") &&
+    QVERIFY2(result.err.contains("big-end mesh") && result.err.contains("2000 × 498") &&
                  result.err.contains("available"),
              qPrintable(result.err));
     QVERIFY(!QFileInfo::exists(dir.filePath("m2")));
