@@ -219,7 +219,7 @@ class TestCaseFile : public QObject {
       QFAIL("no error");
     } catch (const InputError& e) {
       QVERIFY(std::string(e.what()).find("-0.3") != std::string::npos);
-      QVERIFY(std::string(e.what()).find("> 0") != std::string::npos);
+      QVERIFY(std::string(e.what()).find("(0, 100000]") != std::string::npos);
     }
   }
   void setOverrides() {

@@ -247,7 +247,7 @@ class TestRunStreaming : public QObject {
     c.solver.error_estimate = 0;
     window.document()->reset(c);
     QSignalSpy finished(window.runController(), &filmdyn::ui::RunController::runFinished);
-    constexpr int kRuns = 6;
+    constexpr int kRuns = 8;
     std::vector<double> resident_mb;
     for (int k = 0; k < kRuns; ++k) {
       bool cancelled = false;
@@ -271,12 +271,13 @@ class TestRunStreaming : public QObject {
       QVERIFY2(error.contains("cancelled"), qPrintable(error));
       resident_mb.push_back(ResidentMegabytes());
     }
-    // After the first run (allocator pools, plot items), later runs add little each: dropped
-    // frames were ~8 MB per run (the recorder's and the view's copies of ~150 frames).
-    const double growth = (resident_mb.back() - resident_mb[1]) / (kRuns - 2);
+    // After the first few runs (allocator pools, plot items: ~10 MB each), later runs add
+    // little each (their curves); kept frames were ~8 MB per run more (the recorder's and the
+    // view's copies of ~150 frames).
+    const double growth = (resident_mb.back() - resident_mb[3]) / (kRuns - 4);
     qInfo("resident after each cancelled run [MB]: %s; growth %.2f MB per run",
           qPrintable(JoinNumbers(resident_mb)), growth);
-    QVERIFY2(growth < 3.0, qPrintable(QString::number(growth)));
+    QVERIFY2(growth < 4.0, qPrintable(QString::number(growth)));  // before: 9.9 MB per run
     QCOMPARE(window.runTable()->rowCount(), kRuns);
   }
 
