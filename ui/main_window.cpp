@@ -42,6 +42,15 @@ namespace filmdyn::ui {
 namespace {
 constexpr int kMaxRecentFiles = 8;
 const char* kProjectFilter = QT_TRANSLATE_NOOP("MainWindow", "FilmDyn case (*.json)");
+
+// Why a run with a lubricated joint shows no film fields (empty: none of its joints has a film).
+QString NoFieldsReason(const RunRecord& run) {
+  if (run.request().model == "ideal") return {};
+  if (run.status() == RunStatus::kCancelled)
+    return MainWindow::tr("a cancelled run keeps its curves and figures, not its film fields");
+  if (run.status() == RunStatus::kRunning) return MainWindow::tr("they appear when the run ends");
+  return MainWindow::tr("the run ended before it recorded any");
+}
 }  // namespace
 
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
@@ -125,7 +134,7 @@ void MainWindow::createRunPage() {
     RunHandle run = run_table_->currentRun();
     if (run && run != shown_fields_run_.lock()) {
       shown_fields_run_ = run;
-      field_view_->setFrames(run->fields(), run->label());
+      field_view_->setFrames(run->fields(), run->label(), NoFieldsReason(*run));
     }
   });
   workspace_->addTab(page, tr("Run and results"));
@@ -308,7 +317,7 @@ void MainWindow::onRunFinished(const RunHandle& run) {
   }
   run_state_label_->setToolTip(reason);
   shown_fields_run_ = run;
-  field_view_->setFrames(run->fields(), run->label());
+  field_view_->setFrames(run->fields(), run->label(), NoFieldsReason(*run));
 }
 
 void MainWindow::removeSelectedRun() {

@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <functional>
-#include <numbers>
 #include <string>
 
 #include "core/multibody/integrator.hpp"
@@ -11,8 +10,6 @@
 namespace filmdyn::multibody {
 
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 verification::ValidationRow PendulumRow() {
   const double mass = 1.3, inertia = 0.02, arm = 0.25, theta0 = 1.2, g = 9.81;

@@ -125,7 +125,8 @@ ScalarFieldView* FieldView::jointView(int index) const {
 int FieldView::frameIndex() const { return slider_->value(); }
 bool FieldView::isPlaying() const { return timer_->isActive(); }
 
-void FieldView::setFrames(std::shared_ptr<const FieldFrames> frames, const QString& run_label) {
+void FieldView::setFrames(std::shared_ptr<const FieldFrames> frames, const QString& run_label,
+                          const QString& missing_reason) {
   setPlaying(false);
   frames_ = std::move(frames);
   const bool have = frames_ && !frames_->empty();
@@ -135,6 +136,8 @@ void FieldView::setFrames(std::shared_ptr<const FieldFrames> frames, const QStri
     placeholder_->setText(
         run_label.isEmpty()
             ? tr("Oil-film pressure fields appear here after a run with a lubricated joint.")
+        : !missing_reason.isEmpty()
+            ? tr("%1 has no film fields: %2.").arg(run_label, missing_reason)
             : tr("%1 has no film fields: only runs with a lubricated joint (Only-Skirt, "
                  "Only-LBRBE, Skirt-LBRBE) compute them.")
                   .arg(run_label));

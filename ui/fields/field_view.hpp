@@ -28,7 +28,10 @@ class FieldView : public QWidget {
   ~FieldView() override;
 
   /// Shows a run's fields (empty → the explanation of why there is nothing to show).
-  void setFrames(std::shared_ptr<const FieldFrames> frames, const QString& run_label);
+  /// `missing_reason`: why a run has no frames when it is not the model's (shown instead of the
+  /// default explanation, which names the models that compute fields).
+  void setFrames(std::shared_ptr<const FieldFrames> frames, const QString& run_label,
+                 const QString& missing_reason = {});
   const FieldFrames* frames() const { return frames_.get(); }
 
   int frameIndex() const;

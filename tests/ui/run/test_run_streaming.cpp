@@ -24,6 +24,17 @@
 #include "ui/run/run_controller.hpp"
 #include "ui/runs/run_table.hpp"
 
+#if defined(__SANITIZE_ADDRESS__)
+#define FILMDYN_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define FILMDYN_ASAN 1
+#endif
+#endif
+#ifndef FILMDYN_ASAN
+#define FILMDYN_ASAN 0
+#endif
+
 using filmdyn::ui::MainWindow;
 using filmdyn::ui::RunHandle;
 using filmdyn::ui::RunStatus;
@@ -247,7 +258,8 @@ class TestRunStreaming : public QObject {
     c.solver.error_estimate = 0;
     window.document()->reset(c);
     QSignalSpy finished(window.runController(), &filmdyn::ui::RunController::runFinished);
-    constexpr int kRuns = 8;
+    // Under AddressSanitizer the resident size says nothing (below): two runs for the rest.
+    constexpr int kRuns = FILMDYN_ASAN ? 2 : 8;
     std::vector<double> resident_mb;
     for (int k = 0; k < kRuns; ++k) {
       bool cancelled = false;
@@ -274,10 +286,13 @@ class TestRunStreaming : public QObject {
     // After the first few runs (allocator pools, plot items: ~10 MB each), later runs add
     // little each (their curves); kept frames were ~8 MB per run more (the recorder's and the
     // view's copies of ~150 frames).
-    const double growth = (resident_mb.back() - resident_mb[3]) / (kRuns - 4);
-    qInfo("resident after each cancelled run [MB]: %s; growth %.2f MB per run",
-          qPrintable(JoinNumbers(resident_mb)), growth);
-    QVERIFY2(growth < 4.0, qPrintable(QString::number(growth)));  // before: 9.9 MB per run
+    // AddressSanitizer keeps freed blocks resident in its quarantine: no resident-size bound.
+    if (!FILMDYN_ASAN) {
+      const double growth = (resident_mb.back() - resident_mb[3]) / (kRuns - 4);
+      qInfo("resident after each cancelled run [MB]: %s; growth %.2f MB per run",
+            qPrintable(JoinNumbers(resident_mb)), growth);
+      QVERIFY2(growth < 4.0, qPrintable(QString::number(growth)));  // before: 9.9 MB per run
+    }
     QCOMPARE(window.runTable()->rowCount(), kRuns);
   }
 
