@@ -3,8 +3,11 @@
 #  1. AddressSanitizer + UndefinedBehaviorSanitizer (+ LeakSanitizer) on the core, app and ui
 #     tests (build-asan/; GL tests under xvfb-run as usual). The build also holds the libFuzzer
 #     harnesses: --fuzz-runs N (default 0) fuzzes each input reader N times afterwards.
-# ThreadSanitizer is not run: Debian's oneTBB library is not instrumented, so every task handed
-# between TBB's threads is reported as a race (docs/reliability.md).
+#  2. ThreadSanitizer on the core suites that run FilmDyn's own threads: the worker pool (film
+#     joints and skirt panels side by side) and the run job with its error-estimate companion
+#     thread (build-tsan/, core only). Debian's oneTBB is not instrumented, so TSan would report
+#     every task TBB hands between its threads; this build runs the worker pool's tasks on plain
+#     std::threads instead (FILMDYN_PLAIN_THREADS), and the sweep (a TBB task group) is not in it.
 # Any sanitizer report fails the test it occurs in. Suppressions (third-party libraries only)
 # live in tests/sanitizers/. Usage: scripts/check-sanitizers.sh [--fuzz-runs N]
 # (docs/reliability.md)
@@ -38,5 +41,15 @@ echo "sanitizers: ASan + UBSan tests passed at $(( $(date +%s) - start )) s"
 if [ "$fuzz_runs" -gt 0 ]; then
   filmdyn_fuzz_readers "$fuzz_runs"
 fi
+
+tsan_build="${FILMDYN_TSAN_BUILD_DIR:-$filmdyn_root/build-tsan}"
+threaded=(test_core_worker_pool test_engine_run_job)
+filmdyn_configure_clang "$tsan_build" "$filmdyn_tsan_flags" \
+  -DFILMDYN_BUILD_UI=OFF -DFILMDYN_BUILD_TESTS=ON -DFILMDYN_BUILD_FUZZ=OFF
+cmake --build "$tsan_build" -j "$jobs" --target "${threaded[@]}"
+echo "sanitizers: TSan build done at $(( $(date +%s) - start )) s"
+(cd "$tsan_build" && ctest --output-on-failure -j 1 -R "^($(IFS='|'; echo "${threaded[*]}"))\$" \
+   --timeout 900)
+echo "sanitizers: TSan tests passed at $(( $(date +%s) - start )) s"
 
 echo "check-sanitizers: no finding in $(( $(date +%s) - start )) s"

@@ -76,7 +76,6 @@ class LubricatedSkirtElement final : public multibody::JointForceElement,
   SkirtMounting mount_;
   // Gap geometry on the two panel edges (α = 0 and π): static gap per axial node line.
   std::vector<double> edge_y_, edge_gap_thrust_, edge_gap_anti_;
-  double penalty_gap_ = 0.0;  ///< below this geometric gap a contact penalty takes over [m]
   // Cache of the last base evaluation (the integrator asks twice for the same state).
   multibody::JointForceInput cached_in_;
   multibody::JointForceOutput cached_out_;

@@ -8,6 +8,8 @@ filmdyn_root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 # FILMDYN_BUILD_FUZZ the readers' packages also get libFuzzer's coverage hooks: core/CMakeLists.txt).
 # Line tables only (enough for the reports' stack traces) keeps the build short.
 filmdyn_asan_flags="-fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer -gline-tables-only -O1"
+# ThreadSanitizer: the worker pool on plain threads (core/base/worker_pool.cpp says why).
+filmdyn_tsan_flags="-fsanitize=thread -DFILMDYN_PLAIN_THREADS -fno-omit-frame-pointer -gline-tables-only -O1"
 
 filmdyn_install_clang() {
   "$filmdyn_root/scripts/install-deps.sh"
@@ -46,6 +48,7 @@ filmdyn_sanitizer_env() {
   export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
   export ASAN_OPTIONS="detect_leaks=1:abort_on_error=0:detect_stack_use_after_return=0"
   export LSAN_OPTIONS="suppressions=$supp/lsan.supp:print_suppressions=0"
+  export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1:suppressions=$supp/tsan.supp"
 }
 
 # filmdyn_fuzz_readers RUNS: each harness RUNS executions from its seed corpus; a crash, a

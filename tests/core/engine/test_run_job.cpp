@@ -91,6 +91,36 @@ class TestRunJob : public QObject {
     QCOMPARE(engine::StatusName(result.status), std::string("cancelled"));
     QCOMPARE(calls, 10);
   }
+  void filmJointsSideBySideMatchOneThread() {
+    // Skirt-LBRBE on coarse meshes: the two film joints (and the skirt's two panels) on two
+    // threads, beside the error estimate's companion thread, give the samples of one thread bit
+    // for bit (the ThreadSanitizer build runs this on plain threads and reports any race).
+    engine::RunConfig config = DefaultConfig(6000, engine::Model::kSkirtLbrbe);
+    config.engine_case.skirt.mesh_thrust = config.engine_case.skirt.mesh_anti = 6;
+    config.engine_case.skirt.mesh_relief = 1;
+    config.engine_case.skirt.mesh_axial = 6;
+    config.engine_case.big_end.mesh_theta = 24;
+    config.engine_case.big_end.mesh_z = 6;
+    QCOMPARE(config.engine_case.solver.error_estimate, 1);
+    auto run = [&config](int threads) {
+      config.threads = threads;
+      int steps = 0;
+      return engine::RunJob(config, [&steps](const engine::RunProgress&) { return ++steps < 30; });
+    };
+    const engine::RunResult one = run(1), two = run(2);
+    QCOMPARE(engine::StatusName(two.status), std::string("cancelled"));
+    QCOMPARE(two.samples.size(), std::size_t(30));
+    QCOMPARE(one.samples.size(), two.samples.size());
+    for (std::size_t k = 0; k < one.samples.size(); ++k) {
+      const engine::CrankTrainSample &a = one.samples[k], &b = two.samples[k];
+      QCOMPARE(a.time, b.time);
+      QCOMPARE(a.piston_lateral, b.piston_lateral);
+      QCOMPARE(a.piston_tilt, b.piston_tilt);
+      QCOMPARE(a.bearing.eps, b.bearing.eps);
+      QCOMPARE(a.skirt.min_gap, b.skirt.min_gap);
+    }
+  }
+
   void filmModelsRunInBeforeTheFirstCycle() {
     // Only-LBRBE on a coarse bearing mesh: the run-in (default 360 °CA) reports progress with
     // negative crank angles rising towards the first cycle, and a cancel inside it ends the run
