@@ -10,6 +10,8 @@
 #include <QLabel>
 #include <QProgressBar>
 #include <QSettings>
+#include <QStackedWidget>
+#include <QTabWidget>
 #include <QStandardPaths>
 #include <QThread>
 #include <QTimer>
@@ -20,6 +22,7 @@
 #endif
 
 #include "ui/case_editor/case_document.hpp"
+#include "ui/fields/field_view.hpp"
 #include "ui/case_editor/case_json.hpp"
 #include "ui/case_editor/case_parameters.hpp"
 #include "ui/main_window.hpp"
@@ -300,6 +303,20 @@ class TestRunStreaming : public QObject {
       QVERIFY2(growth < 4.0, qPrintable(QString::number(growth)));
     }
     QCOMPARE(window.runTable()->rowCount(), kRuns);
+    // The field view says why the selected (cancelled) run shows no fields.
+    bool explained = false;
+    for (const QLabel* label : window.fieldView()->findChildren<QLabel*>())
+      explained = explained || label->text().contains("cancelled run keeps its curves");
+    QVERIFY(explained);
+    if (const QString dir = qEnvironmentVariable("FILMDYN_SCREENSHOT_DIR"); !dir.isEmpty()) {
+      QWidget* page = window.fieldView();  // bring its workspace tab to the front
+      while (page->parentWidget() && !qobject_cast<QStackedWidget*>(page->parentWidget()))
+        page = page->parentWidget();
+      for (QTabWidget* tabs : window.findChildren<QTabWidget*>())
+        if (tabs->indexOf(page) >= 0) tabs->setCurrentWidget(page);
+      QTest::qWait(200);
+      window.grab().save(dir + "/field-view-cancelled-run.png");
+    }
   }
 
   // Closing the main window during a run stops the run and returns promptly, also on a big end
