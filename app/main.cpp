@@ -1,8 +1,8 @@
 // filmdyn: the desktop application when called alone, a headless command otherwise.
-#include <QApplication>
-#include <QTimer>
 #include <sys/stat.h>
 #include <unistd.h>
+#include <QApplication>
+#include <QTimer>
 
 #include <cstdlib>
 #include <iostream>

@@ -20,11 +20,11 @@ constexpr double kMm = 1e-3, kUm = 1e-6, kDeg = kPi / 180.0, kMPa = 1e6, kGPa = 
 FieldRange Length() { return {0.0, 100.0, true, false}; }
 // Upper bounds far beyond any engine, so that a value near the double range is an input error
 // naming the field instead of a failure inside the solver.
-FieldRange Mass() { return {0.0, 1e5, true, false}; }      // [kg]; the largest marine pistons ~5 t
-FieldRange Inertia() { return {0.0, 1e5, true, false}; }   // [kg·m²]
+FieldRange Mass() { return {0.0, 1e5, true, false}; }       // [kg]; the largest marine pistons ~5 t
+FieldRange Inertia() { return {0.0, 1e5, true, false}; }    // [kg·m²]
 FieldRange Offset() { return {0.0, 100.0, false, false}; }  // a non-negative length [m]
-FieldRange Roughness() { return {0.0, 1e-4, true, false}; }  // RMS [m]; engine surfaces < 2 µm
-FieldRange Gap() { return {0.0, 0.01, false, false}; }       // profile/ovality gap [m]
+FieldRange Roughness() { return {0.0, 1e-4, true, false}; }      // RMS [m]; engine surfaces < 2 µm
+FieldRange Gap() { return {0.0, 0.01, false, false}; }           // profile/ovality gap [m]
 FieldRange GaugePressure() { return {0.0, 1e9, false, false}; }  // [Pa], as the pressure curves
 FieldRange Viscosity() { return {0.0, 1e3, true, false}; }  // [Pa·s]; cold engine oil ~10 Pa·s
 FieldRange Between(double lo, double hi) { return {lo, hi, false, false}; }
@@ -137,15 +137,13 @@ std::vector<CaseField> MakeSchema() {
                      {G::kGeometry, "Rod CoM from big end L_c", "m", "mm", kMm, Offset(),
                       "on the rod, ≤ rod_length; Table I: 28.49 mm, read as from the big-end "
                       "centre"}));
-  f.push_back(
-      Scalar("geometry.rod_mass", geo, &CG::rod_mass,
-             {G::kMasses, "Rod mass m₂", "kg", "kg", 1.0, Mass(), "Table I: 0.345 kg"}));
+  f.push_back(Scalar("geometry.rod_mass", geo, &CG::rod_mass,
+                     {G::kMasses, "Rod mass m₂", "kg", "kg", 1.0, Mass(), "Table I: 0.345 kg"}));
   f.push_back(Scalar("geometry.rod_inertia", geo, &CG::rod_inertia,
                      {G::kMasses, "Rod inertia J₂ (CoM)", "kg*m^2", "kg·m²", 1.0, Inertia(),
                       "about the rod's centre of mass; Table I: 9.67e-4 kg·m²"}));
-  f.push_back(
-      Scalar("geometry.piston_mass", geo, &CG::piston_mass,
-             {G::kMasses, "Piston mass m₃", "kg", "kg", 1.0, Mass(), "Table I: 0.264 kg"}));
+  f.push_back(Scalar("geometry.piston_mass", geo, &CG::piston_mass,
+                     {G::kMasses, "Piston mass m₃", "kg", "kg", 1.0, Mass(), "Table I: 0.264 kg"}));
   f.push_back(Scalar("geometry.piston_inertia", geo, &CG::piston_inertia,
                      {G::kMasses, "Piston inertia J₃ (CoM)", "kg*m^2", "kg·m²", 1.0, Inertia(),
                       "about the piston's centre of mass; Table I: 1.29e-4 kg·m²"}));
@@ -265,9 +263,8 @@ std::vector<CaseField> MakeSchema() {
                      {G::kBigEnd, "Journal radius R_j", "m", "mm", kMm, Length(),
                       "< bearing_radius; R_b − R_j = 50 µm radial (Table I's c_b = 0.1 mm is "
                       "diametral)"}));
-  f.push_back(
-      Scalar("big_end.width", be, &B::width,
-             {G::kBigEnd, "Bearing width b", "m", "mm", kMm, Length(), "Table I: 22 mm"}));
+  f.push_back(Scalar("big_end.width", be, &B::width,
+                     {G::kBigEnd, "Bearing width b", "m", "mm", kMm, Length(), "Table I: 22 mm"}));
   f.push_back(Scalar("big_end.roughness_journal", be, &B::roughness_journal,
                      {G::kBigEnd, "Journal roughness σ_j", "m", "µm", kUm, Roughness(),
                       "RMS roughness; Table I: 0.308 µm"}));
@@ -314,9 +311,10 @@ std::vector<CaseField> MakeSchema() {
   f.push_back(Scalar("lubricant.viscosity", lub, &LubricantCase::viscosity,
                      {G::kLubricant, "Dynamic viscosity μ", "Pa*s", "mPa·s", 1e-3, Viscosity(),
                       "constant over the film; Table I: 0.02 Pa·s"}));
-  f.push_back(Scalar("lubricant.greenwood_tripp_k", lub, &LubricantCase::greenwood_tripp_k,
-                     {G::kLubricant, "Greenwood–Tripp constant K", "-", "–", 1.0, Open(0.0, 1.0, true, false),
-                      "asperity contact pressure K·E'·F_5/2 (eq. 29): 1.198e-4"}));
+  f.push_back(Scalar(
+      "lubricant.greenwood_tripp_k", lub, &LubricantCase::greenwood_tripp_k,
+      {G::kLubricant, "Greenwood–Tripp constant K", "-", "–", 1.0, Open(0.0, 1.0, true, false),
+       "asperity contact pressure K·E'·F_5/2 (eq. 29): 1.198e-4"}));
   f.push_back(Scalar("operating.rpm", op, &OperatingCase::rpm,
                      {G::kOperating, "Crank speed", "rpm", "rpm", 1.0,
                       Open(0.0, 30000.0, true, false), "imposed crank speed"}));
@@ -343,9 +341,10 @@ std::vector<CaseField> MakeSchema() {
   f.push_back(Scalar("solver.output_interval", sol, &SolverCase::output_interval,
                      {G::kSolver, "Output interval", "rad", "°CA", kDeg, Between(1e-4, 0.2),
                       "crank angle between output steps (1 °CA)"}));
-  f.push_back(Scalar("solver.steady_state_tolerance", sol, &SolverCase::steady_state_tolerance,
-                     {G::kSolver, "Steady-state tolerance", "-", "–", 1.0, Open(0.0, 1.0, true, false),
-                      "cycle-to-cycle change of each monitored quantity, relative to its range"}));
+  f.push_back(
+      Scalar("solver.steady_state_tolerance", sol, &SolverCase::steady_state_tolerance,
+             {G::kSolver, "Steady-state tolerance", "-", "–", 1.0, Open(0.0, 1.0, true, false),
+              "cycle-to-cycle change of each monitored quantity, relative to its range"}));
   f.push_back(Scalar("solver.max_cycles", sol, &SolverCase::max_cycles,
                      {G::kSolver, "Maximum cycles", "-", "–", 1.0, Between(1, 10000),
                       "cycles before a run stops as not converged"}));

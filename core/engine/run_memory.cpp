@@ -29,12 +29,35 @@ constexpr double kBaseBytes = 80e6;
 // Film fields: pressure, contact pressure and film thickness per surface node, single precision.
 constexpr double kFieldBytesPerNode = 3 * sizeof(float);
 
+// Which joints of a case have a film (their models set by ApplyModel).
+struct Films {
+  bool skirt = false, big_end = false;
+};
+Films FilmsOf(const EngineCase& c) {
+  return {c.skirt.model == JointModel::kLubricated, c.big_end.model == JointModel::kLubricated};
+}
+
 double SolverBytes(const EngineCase& c) {
   const FilmMeshSizes m = FilmMeshSizesOf(c);
+  const Films films = FilmsOf(c);
   double bytes = 0.0;
-  if (c.skirt.model == JointModel::kLubricated) bytes += 2.0 * SystemBytes(m.skirt_unknowns / 2.0);
-  if (c.big_end.model == JointModel::kLubricated) bytes += SystemBytes(m.big_end_unknowns);
+  if (films.skirt) bytes += 2.0 * SystemBytes(m.skirt_unknowns / 2.0);
+  if (films.big_end) bytes += SystemBytes(m.big_end_unknowns);
   return bytes;
+}
+
+// A joint's mesh in messages: the fields that set it, and their values.
+struct MeshText {
+  std::string field, value;
+};
+MeshText SkirtMeshText(const SkirtCase& s) {
+  return {"skirt mesh (skirt.mesh_thrust + mesh_relief + mesh_anti × mesh_axial)",
+          fmt::format("{} + {} + {} × {} elements", s.mesh_thrust, s.mesh_relief, s.mesh_anti,
+                      s.mesh_axial)};
+}
+MeshText BigEndMeshText(const BigEndCase& b) {
+  return {"big-end mesh (big_end.mesh_theta × big_end.mesh_z)",
+          fmt::format("{} × {} elements", b.mesh_theta, b.mesh_z)};
 }
 
 double OutputStepsPerCycle(const EngineCase& c) {
@@ -84,24 +107,15 @@ FilmMeshSizes FilmMeshSizesOf(const EngineCase& c) {
 
 void CheckFilmMeshSizes(const EngineCase& c) {
   const FilmMeshSizes m = FilmMeshSizesOf(c);
-  const std::string allowed =
-      fmt::format("at most {} pressure unknowns per joint (a sparse factor of about {}); "
-                  "docs/reliability.md",
-                  kMaxFilmUnknowns, Gigabytes(SystemBytes(double(kMaxFilmUnknowns))));
-  if (m.skirt_unknowns > kMaxFilmUnknowns) {
-    const SkirtCase& s = c.skirt;
-    throw InputError("skirt.mesh_thrust + skirt.mesh_anti, skirt.mesh_axial",
-                     fmt::format("({} + {}) × {} elements: {} unknowns", s.mesh_thrust,
-                                 s.mesh_anti, s.mesh_axial, m.skirt_unknowns),
-                     allowed);
-  }
-  if (m.big_end_unknowns > kMaxFilmUnknowns) {
-    const BigEndCase& b = c.big_end;
-    throw InputError("big_end.mesh_theta × big_end.mesh_z",
-                     fmt::format("{} × {} elements: {} unknowns", b.mesh_theta, b.mesh_z,
-                                 m.big_end_unknowns),
-                     allowed);
-  }
+  const std::string allowed = fmt::format(
+      "at most {} pressure unknowns per joint (a sparse factor of about {}); "
+      "docs/reliability.md",
+      kMaxFilmUnknowns, Gigabytes(SystemBytes(double(kMaxFilmUnknowns))));
+  const auto refuse = [&allowed](const MeshText& mesh, long unknowns) {
+    throw InputError(mesh.field, fmt::format("{}: {} unknowns", mesh.value, unknowns), allowed);
+  };
+  if (m.skirt_unknowns > kMaxFilmUnknowns) refuse(SkirtMeshText(c.skirt), m.skirt_unknowns);
+  if (m.big_end_unknowns > kMaxFilmUnknowns) refuse(BigEndMeshText(c.big_end), m.big_end_unknowns);
 }
 
 std::string MemoryEstimate::Describe() const {
@@ -117,17 +131,16 @@ MemoryEstimate EstimateRunMemory(const EngineCase& c, double field_copies) {
   MemoryEstimate e;
   e.base_bytes = kBaseBytes;
   e.solver_bytes = SolverBytes(c);
-  const bool skirt = c.skirt.model == JointModel::kLubricated;
-  const bool big_end = c.big_end.model == JointModel::kLubricated;
+  const Films films = FilmsOf(c);
   const FilmMeshSizes m = FilmMeshSizesOf(c);
-  const double surface_nodes =
-      (skirt ? double(m.skirt_surface_nodes) : 0.0) + (big_end ? double(m.big_end_surface_nodes) : 0.0);
+  const double surface_nodes = (films.skirt ? double(m.skirt_surface_nodes) : 0.0) +
+                               (films.big_end ? double(m.big_end_surface_nodes) : 0.0);
   const double steps = OutputStepsPerCycle(c);
   e.field_bytes = field_copies * steps * surface_nodes * kFieldBytesPerNode;
   // The cycle being computed and the previous one (for the steady-state test), then the result.
   const double samples_bytes = 3.0 * steps * sizeof(CrankTrainSample);
   e.sample_bytes = samples_bytes;
-  if ((skirt || big_end) && c.solver.error_estimate != 0) {
+  if ((films.skirt || films.big_end) && c.solver.error_estimate != 0) {
     e.companion_bytes = SolverBytes(MakeCoarseCompanion(c).engine_case) + samples_bytes;
   }
   return e;
@@ -148,21 +161,15 @@ double AvailableMemoryBytes() {
 void RequireMemory(const EngineCase& c, const MemoryEstimate& estimate, double available) {
   if (!(estimate.total() > available)) return;
   const FilmMeshSizes m = FilmMeshSizesOf(c);
-  const bool skirt = c.skirt.model == JointModel::kLubricated;
-  const bool big_end = c.big_end.model == JointModel::kLubricated;
-  std::string field = "solver.output_interval";
-  std::string value = FormatValue(c.solver.output_interval);
-  if (skirt && (!big_end || m.skirt_unknowns >= m.big_end_unknowns)) {
-    field = "skirt mesh (skirt.mesh_thrust, mesh_relief, mesh_anti × mesh_axial)";
-    value = fmt::format("{} + {} + {} × {} elements", c.skirt.mesh_thrust, c.skirt.mesh_relief,
-                        c.skirt.mesh_anti, c.skirt.mesh_axial);
-  } else if (big_end) {
-    field = "big-end mesh (big_end.mesh_theta × big_end.mesh_z)";
-    value = fmt::format("{} × {} elements", c.big_end.mesh_theta, c.big_end.mesh_z);
+  const Films films = FilmsOf(c);
+  MeshText named{"solver.output_interval", FormatValue(c.solver.output_interval)};
+  if (films.skirt && (!films.big_end || m.skirt_unknowns >= m.big_end_unknowns)) {
+    named = SkirtMeshText(c.skirt);
+  } else if (films.big_end) {
+    named = BigEndMeshText(c.big_end);
   }
-  throw InputError(field, value,
-                   "the run needs " + estimate.Describe() + " of memory, " +
-                       Gigabytes(available) +
+  throw InputError(named.field, named.value,
+                   "the run needs " + estimate.Describe() + " of memory, " + Gigabytes(available) +
                        " are available: use coarser meshes, fewer output steps, no fields "
                        "(--no-fields) or no error estimate (solver.error_estimate = 0)");
 }

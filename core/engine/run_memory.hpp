@@ -16,8 +16,8 @@ namespace filmdyn::engine {
 
 /// Film-mesh sizes of a case, whether or not the joints are lubricated.
 struct FilmMeshSizes {
-  long skirt_surface_nodes = 0;  ///< nodes of the skirt's mesh (relief included)
-  long skirt_unknowns = 0;       ///< pressure unknowns of the two lubricated panels together
+  long skirt_surface_nodes = 0;    ///< nodes of the skirt's mesh (relief included)
+  long skirt_unknowns = 0;         ///< pressure unknowns of the two lubricated panels together
   long big_end_surface_nodes = 0;  ///< nodes over the whole bearing width
   long big_end_unknowns = 0;       ///< unknowns solved (the symmetric half when it applies)
 };
@@ -52,7 +52,6 @@ MemoryEstimate EstimateRunMemory(const EngineCase& engine_case, double field_cop
 double AvailableMemoryBytes();
 
 /// Throws InputError naming the largest film mesh when `estimate` exceeds `available` bytes.
-void RequireMemory(const EngineCase& engine_case, const MemoryEstimate& estimate,
-                   double available);
+void RequireMemory(const EngineCase& engine_case, const MemoryEstimate& estimate, double available);
 
 }  // namespace filmdyn::engine

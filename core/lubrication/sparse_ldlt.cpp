@@ -4,6 +4,7 @@
 #include <Eigen/CholmodSupport>
 #include <Eigen/SparseCholesky>
 #include <algorithm>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -76,9 +77,17 @@ class CholmodModifyLdlt final : public SparseLdlt {
   bool Factorize(const Eigen::SparseMatrix<double>& lower, const StopCheck& stop) override {
     cholmod_sparse a = View(lower);
     const auto n = static_cast<std::size_t>(lower.rows());
-    cholmod_sparse* s = cholmod_ptranspose(&a, 2, static_cast<int*>(factor_->Perm), nullptr, 0, &common_);
+    // S = triu(P A P^T), freed and CHOLMOD's growth setting restored however this ends.
+    const auto free_sparse = [this](cholmod_sparse* m) { cholmod_free_sparse(&m, &common_); };
+    const std::unique_ptr<cholmod_sparse, decltype(free_sparse)> s(
+        cholmod_ptranspose(&a, 2, static_cast<int*>(factor_->Perm), nullptr, 0, &common_),
+        free_sparse);
     if (!s) return false;
-    const std::size_t grow2 = common_.grow2;
+    struct RestoreGrow2 {
+      cholmod_common& common;
+      const std::size_t value;
+      ~RestoreGrow2() { common.grow2 = value; }
+    } restore_grow2{common_, common_.grow2};
     if (factor_->xtype == CHOLMOD_PATTERN && common_.final_pack) common_.grow2 = 0;
     factor_->is_ll = 0;
     if (factor_->xtype != CHOLMOD_PATTERN) {
@@ -94,19 +103,11 @@ class CholmodModifyLdlt final : public SparseLdlt {
     // each well under the stop latency for the largest meshes the case accepts.
     const std::size_t block = stop && n > kRowsInOneCall ? (n + 63) / 64 : n;
     bool ok = true;
-    try {
-      for (std::size_t k0 = 0; ok && k0 < n; k0 += block) {
-        if (k0 > 0) ThrowIfStopRequested(stop);
-        ok = cholmod_rowfac(s, nullptr, beta, k0, std::min(n, k0 + block), factor_, &common_) &&
-             common_.status == CHOLMOD_OK;
-      }
-    } catch (...) {
-      common_.grow2 = grow2;
-      cholmod_free_sparse(&s, &common_);
-      throw;
+    for (std::size_t k0 = 0; ok && k0 < n; k0 += block) {
+      if (k0 > 0) ThrowIfStopRequested(stop);
+      ok = cholmod_rowfac(s.get(), nullptr, beta, k0, std::min(n, k0 + block), factor_, &common_) &&
+           common_.status == CHOLMOD_OK;
     }
-    common_.grow2 = grow2;
-    cholmod_free_sparse(&s, &common_);
     return ok;
   }
   void Solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) override {

@@ -337,9 +337,9 @@ class TestCli : public QObject {
                   dir.filePath("b2")});
     QCOMPARE(result.exit_code, 2);
     QVERIFY2(result.err.contains("geometry.rod_length = 1e+300"), qPrintable(result.err));
-    for (const char* set : {"geometry.piston_mass=1e300", "geometry.rod_inertia=1e300",
-                            "lubricant.viscosity=1e300", "big_end.roughness_journal=1e300",
-                            "big_end.oil_feed_pressure=1e300"}) {
+    for (const char* set :
+         {"geometry.piston_mass=1e300", "geometry.rod_inertia=1e300", "lubricant.viscosity=1e300",
+          "big_end.roughness_journal=1e300", "big_end.oil_feed_pressure=1e300"}) {
       result = Run({"run", "--model", "ideal", "--set", set, "--out", dir.filePath("b4")});
       QCOMPARE(result.exit_code, 2);
       const QString field = QString(set).section('=', 0, 0);

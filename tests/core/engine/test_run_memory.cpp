@@ -62,8 +62,7 @@ class TestRunMemory : public QObject {
     const engine::FilmMeshSizes m = engine::FilmMeshSizesOf(c);
     const lubrication::SkirtSolver skirt(engine::SkirtConfigFromCase(c));
     QCOMPARE(m.skirt_surface_nodes, long(skirt.mesh().NodeCount()));
-    QCOMPARE(m.skirt_unknowns,
-             long(skirt.panel_nodes(0).size() + skirt.panel_nodes(1).size()));
+    QCOMPARE(m.skirt_unknowns, long(skirt.panel_nodes(0).size() + skirt.panel_nodes(1).size()));
   }
 
   void estimateFollowsMeshesFieldsAndCompanion() {
@@ -152,8 +151,8 @@ class TestRunMemory : public QObject {
                                                      io::PressureCurveForSpeed(loaded, 6000));
     config.field_callback = [](const engine::FieldFrame&) {};
     const auto start = std::chrono::steady_clock::now();
-    QVERIFY_THROWS_EXCEPTION(InputError,
-                             engine::RunJob(config, [](const engine::RunProgress&) { return true; }));
+    QVERIFY_THROWS_EXCEPTION(
+        InputError, engine::RunJob(config, [](const engine::RunProgress&) { return true; }));
     QVERIFY(std::chrono::steady_clock::now() - start < std::chrono::seconds(5));
   }
 
@@ -164,8 +163,7 @@ class TestRunMemory : public QObject {
     auto ldlt = lubrication::SparseLdlt::Create(lubrication::LdltBackend::kCholmodModify);
     ldlt->Analyze(lower);
     int checks = 0;
-    QVERIFY_THROWS_EXCEPTION(StopRequested,
-                             ldlt->Factorize(lower, [&] { return ++checks >= 3; }));
+    QVERIFY_THROWS_EXCEPTION(StopRequested, ldlt->Factorize(lower, [&] { return ++checks >= 3; }));
     QCOMPARE(checks, 3);  // stopped at the third block boundary, not after the whole factor
     // The next factorisation starts afresh and is exact.
     QVERIFY(ldlt->Factorize(lower, [] { return false; }));

@@ -5,14 +5,14 @@
 // promptly, and a failing run shows its reason while the inputs and earlier results stay.
 #include <QAction>
 #include <QDir>
-#include <QFile>
 #include <QElapsedTimer>
+#include <QFile>
 #include <QLabel>
 #include <QProgressBar>
 #include <QSettings>
 #include <QStackedWidget>
-#include <QTabWidget>
 #include <QStandardPaths>
+#include <QTabWidget>
 #include <QThread>
 #include <QTimer>
 #include <QtTest>
@@ -22,9 +22,9 @@
 #endif
 
 #include "ui/case_editor/case_document.hpp"
-#include "ui/fields/field_view.hpp"
 #include "ui/case_editor/case_json.hpp"
 #include "ui/case_editor/case_parameters.hpp"
+#include "ui/fields/field_view.hpp"
 #include "ui/main_window.hpp"
 #include "ui/plots/plot_panel.hpp"
 #include "ui/run/run_controller.hpp"
@@ -273,21 +273,21 @@ class TestRunStreaming : public QObject {
     std::vector<double> heap_mb;
     for (int k = 0; k < kRuns; ++k) {
       bool cancelled = false;
-      auto connection = connect(window.runController(), &filmdyn::ui::RunController::runUpdated,
-                                this, [&](const RunHandle& run) {
-                                  if (!cancelled && run->samples().size() >= 150 &&
-                                      run->progress().cycle >= 1) {
-                                    cancelled = true;
-                                    window.cancelAction()->trigger();
-                                  }
-                                });
+      auto connection =
+          connect(window.runController(), &filmdyn::ui::RunController::runUpdated, this,
+                  [&](const RunHandle& run) {
+                    if (!cancelled && run->samples().size() >= 150 && run->progress().cycle >= 1) {
+                      cancelled = true;
+                      window.cancelAction()->trigger();
+                    }
+                  });
       window.runAction()->trigger();
       QVERIFY(finished.wait(120000));
       disconnect(connection);
       const RunHandle run = finished.takeFirst().first().value<RunHandle>();
       QCOMPARE(run->status(), RunStatus::kCancelled);
       QVERIFY(window.plotPanel()->pointCount(run->id()) >= 150);  // the curves stay
-      QVERIFY(run->fields() == nullptr);                           // the frames do not
+      QVERIFY(run->fields() == nullptr);                          // the frames do not
       QString error;
       QVERIFY(!run->writeFields(QDir::tempPath() + "/filmdyn-cancelled-fields", &error));
       QVERIFY2(error.contains("cancelled"), qPrintable(error));
