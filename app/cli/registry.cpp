@@ -12,6 +12,7 @@ const std::vector<Command>& AllCommands() {
     list.push_back(MakeSweepCommand());
     list.push_back(MakeReproduceCommand());
     list.push_back(MakeBearingCommand());
+    list.push_back(MakeSkirtCommand());
     list.push_back(MakeValidateCommand());
     list.push_back(MakeCaseFieldsCommand());
     list.push_back(MakeVersionsCommand());

@@ -8,6 +8,7 @@ namespace filmdyn::cli {
 Command MakeVersionsCommand();
 Command MakeCaseFieldsCommand();
 Command MakeBearingCommand();
+Command MakeSkirtCommand();
 Command MakeRunCommand();
 Command MakeSweepCommand();
 Command MakeReproduceCommand();

@@ -21,6 +21,9 @@ struct SkirtFilmSample {
   double min_gap = 0.0;  ///< smallest geometric gap over the panels (< 0: piston in the liner) [m]
   long clamped_nodes = 0;
   double power = 0.0;  ///< power of the film forces on the piston, F ė0 + M γ̇ + F_f u_p [W] (≤ 0)
+  /// The state the film was solved at (the integrated state; the skirt solver's conventions):
+  /// e0 [m], γ = sin of the piston's rotation, their rates, u_p (+ toward the crank) [m/s].
+  double e0 = 0.0, tilt = 0.0, e0_rate = 0.0, tilt_rate = 0.0, speed = 0.0;
 };
 
 /// Film quantities of the lubricated big end at one instant (present = false when ideal).

@@ -146,6 +146,11 @@ void LubricatedSkirtElement::ReportFilm(SkirtFilmSample* skirt, BearingFilmSampl
   f.max_pressure = result_.max_pressure;
   f.min_gap = kin_.min_gap;
   f.clamped_nodes = result_.clamped_nodes;
+  f.e0 = kin_.state.e0;
+  f.tilt = kin_.state.gamma;
+  f.e0_rate = kin_.state.e0_dot;
+  f.tilt_rate = kin_.state.gamma_dot;
+  f.speed = kin_.state.piston_velocity;
   f.power = result_.lateral_force * kin_.state.e0_dot +
             result_.moment_about_pin * kin_.state.gamma_dot +
             result_.friction_force * kin_.state.piston_velocity;

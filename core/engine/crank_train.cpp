@@ -139,12 +139,19 @@ CrankTrainSample SampleCrankTrain(CrankTrain& train, const EngineCase& c, double
   s.piston_acceleration = pin_acc.y();
   // Secondary motion (zero for the ideal liner): pin lateral position relative to C_p, tilt.
   // e0 of the paper's eq. 2: the piston axis at pin height, i.e. the pin minus C_p along the
-  // tilted pin arm (= pin X − C_p to second order in the tilt).
-  s.piston_lateral = piston.q[0] + pin_arm.x() - c.geometry.pin_offset * std::cos(piston.Angle());
-  s.piston_lateral_velocity = multibody::PointVelocity(piston, lay.piston_pin_point).x() +
-                              c.geometry.pin_offset * std::sin(piston.Angle()) * wp;
-  s.piston_tilt = piston.Angle();
-  s.piston_tilt_rate = wp;
+  // tilted pin arm (= pin X − C_p to second order in the tilt). With a lubricated skirt, of the
+  // integrated state the film was solved at, so that a sample's piston state and its film
+  // forces belong together (the projected state's lateral velocity differs by the constraint
+  // drift, up to ~2e-5 m/s: a few per cent of the squeeze part of the film force).
+  const BodyState secondary = train.skirt_element != nullptr ? integrated.Body(lay.piston) : piston;
+  const Eigen::Vector2d secondary_arm = multibody::Rotation(secondary.Angle()) * lay.piston_pin_point;
+  s.piston_lateral =
+      secondary.q[0] + secondary_arm.x() - c.geometry.pin_offset * std::cos(secondary.Angle());
+  s.piston_lateral_velocity = multibody::PointVelocity(secondary, lay.piston_pin_point).x() +
+                              c.geometry.pin_offset * std::sin(secondary.Angle()) *
+                                  secondary.AngularVelocity();
+  s.piston_tilt = secondary.Angle();
+  s.piston_tilt_rate = secondary.AngularVelocity();
   const BodyState rod = state.Body(lay.rod);
   s.rod_angle = rod.Angle();
   s.rod_angular_velocity = rod.AngularVelocity();

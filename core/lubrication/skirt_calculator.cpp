@@ -1,0 +1,297 @@
+#include "core/lubrication/skirt_calculator.hpp"
+
+#include <fmt/format.h>
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "core/base/input_error.hpp"
+
+namespace filmdyn::lubrication {
+
+namespace {
+
+constexpr double kDeg = 180.0 / std::numbers::pi;
+constexpr int kMaxNewtonIterations = 60;
+constexpr double kTolerance = 1e-8;  // scaled residual: film + applied, over the load scale
+constexpr int kCapacityBisections = 12;  // the largest load carried to 2^-12 = 0.025 %
+
+// A feasible interval [lo, hi] of x from constraints a x <= b (one per node).
+struct Interval {
+  double lo = -1e300, hi = 1e300;
+  void Add(double a, double b) {
+    if (a > 1e-14) {
+      hi = std::min(hi, b / a);
+    } else if (a < -1e-14) {
+      lo = std::max(lo, b / a);
+    } else if (b < 0.0) {
+      lo = 1.0, hi = -1.0;  // no x satisfies it
+    }
+  }
+};
+
+}  // namespace
+
+SkirtCalculator::SkirtCalculator(SkirtConfig config, SkirtInputNames names)
+    : solver_(std::move(config)), names_(std::move(names)) {
+  const SkirtGeometry& g = solver_.config().geometry;
+  const TriMesh& mesh = solver_.mesh();
+  for (int p = 0; p < SkirtSolver::kPanels; ++p) {
+    for (int node : solver_.panel_nodes(p)) {
+      const double alpha = solver_.alpha()[node], y = mesh.y[node];
+      static_gap_.push_back(g.radial_clearance + g.profile(y) + g.ovality(alpha));
+      cos_.push_back(std::cos(alpha));
+      arm_.push_back(y - g.pin_position);
+      alpha_.push_back(alpha);
+      y_.push_back(y);
+    }
+  }
+}
+
+void SkirtCalculator::SetStopCheck(const StopCheck& check) {
+  stop_ = check;
+  solver_.SetStopCheck(check);
+}
+
+double SkirtCalculator::min_equilibrium_film() const {
+  return std::max(solver_.config().min_film, 1e-3 * solver_.config().geometry.radial_clearance);
+}
+
+SkirtGap SkirtCalculator::MinGap(double e0, double tilt) const {
+  SkirtGap best{1e300, 0.0, 0.0};
+  for (std::size_t k = 0; k < static_gap_.size(); ++k) {
+    const double gap = static_gap_[k] - (e0 + arm_[k] * tilt) * cos_[k];
+    if (gap < best.gap) best = {gap, alpha_[k], y_[k]};
+  }
+  return best;
+}
+
+std::pair<double, double> SkirtCalculator::E0Range(double tilt, double margin) const {
+  Interval range;  // cos e0 <= static - margin - arm tilt cos
+  for (std::size_t k = 0; k < static_gap_.size(); ++k) {
+    range.Add(cos_[k], static_gap_[k] - margin - arm_[k] * tilt * cos_[k]);
+  }
+  return {range.lo, range.hi};
+}
+
+std::pair<double, double> SkirtCalculator::TiltRange(double e0, double margin) const {
+  Interval range;  // arm cos tilt <= static - margin - e0 cos
+  for (std::size_t k = 0; k < static_gap_.size(); ++k) {
+    range.Add(arm_[k] * cos_[k], static_gap_[k] - margin - e0 * cos_[k]);
+  }
+  return {range.lo, range.hi};
+}
+
+void SkirtCalculator::CheckState(const SkirtState& s) const {
+  RequireFinite(names_.e0, s.e0, "m");
+  RequireFinite(names_.tilt, s.gamma, "rad");
+  RequireFinite(names_.speed, s.piston_velocity, "m/s");
+  RequireFinite(names_.e0_rate, s.e0_dot, "m/s");
+  RequireFinite(names_.tilt_rate, s.gamma_dot, "rad/s");
+  const SkirtGap gap = MinGap(s.e0, s.gamma);
+  if (gap.gap > 0.0) return;
+  const std::string where = fmt::format(
+      "puts the skirt into the liner at {:.1f}° from the thrust side, {:.2f} mm below the skirt "
+      "top (film {:.3g} µm)",
+      gap.alpha * kDeg, gap.y * 1e3, gap.gap * 1e6);
+  const auto [lo, hi] = E0Range(s.gamma);
+  if (lo < hi) {
+    throw InputError(names_.e0, FormatValue(s.e0),
+                     fmt::format("{}; at {} = {} rad the film is positive for {:.4g} < e0 < "
+                                 "{:.4g} [m]",
+                                 where, names_.tilt, FormatValue(s.gamma), lo, hi));
+  }
+  const auto [tlo, thi] = TiltRange(0.0);
+  throw InputError(names_.tilt, FormatValue(s.gamma),
+                   fmt::format("{}; no e0 keeps the film positive at this tilt, which must lie "
+                               "within {:.4g} < tilt < {:.4g} [rad]",
+                               where, tlo, thi));
+}
+
+SkirtPoint SkirtCalculator::Evaluate(const SkirtState& state) {
+  ThrowIfStopRequested(stop_);
+  SkirtPoint point;
+  point.state = state;
+  point.film = solver_.Solve(state);
+  point.normal_moment = point.film.moment_about_pin - point.film.friction_moment_about_pin;
+  point.min_gap = MinGap(state.e0, state.gamma);
+  return point;
+}
+
+SkirtPoint SkirtCalculator::AtState(const SkirtState& state) {
+  CheckState(state);
+  return Evaluate(state);
+}
+
+std::vector<SkirtPoint> SkirtCalculator::Map(const std::vector<double>& e0_values, double tilt,
+                                             double speed) {
+  std::vector<SkirtPoint> points;
+  for (double e0 : e0_values) {
+    SkirtState s;
+    s.e0 = e0;
+    s.gamma = tilt;
+    s.piston_velocity = speed;
+    points.push_back(AtState(s));
+  }
+  return points;
+}
+
+bool SkirtCalculator::Newton(const SkirtLoad& load, double e0, double tilt,
+                             SkirtEquilibrium* eq) {
+  const double L = solver_.config().geometry.skirt_length;
+  const double floor = min_equilibrium_film();
+  // Residuals scaled by the load (a moment by the load times the skirt length).
+  const double scale = std::max({std::abs(load.side_force), std::abs(load.moment) / L, 1e-3});
+  auto residual = [&](const SkirtPoint& p) {
+    return Eigen::Vector2d((p.film.lateral_force + load.side_force) / scale,
+                           (p.film.moment_about_pin + load.moment) / (scale * L));
+  };
+  auto evaluate = [&](const Eigen::Vector2d& x) {
+    SkirtState s;
+    s.e0 = x[0];
+    s.gamma = x[1];
+    s.piston_velocity = load.piston_velocity;
+    ++eq->reynolds_solves;
+    return Evaluate(s);
+  };
+  Eigen::Vector2d x(e0, tilt);
+  SkirtPoint point = evaluate(x);
+  Eigen::Vector2d r = residual(point);
+  eq->converged = false;
+  eq->status = "Newton's method did not converge";
+  std::vector<double> history;  // |r| after each Newton step
+  for (int it = 0;; ++it) {
+    eq->point = point;
+    eq->force_residual = r[0] * scale;
+    eq->moment_residual = r[1] * scale * L;
+    if (r.lpNorm<Eigen::Infinity>() <= kTolerance) {
+      eq->converged = true;
+      eq->status = "converged";
+      return true;
+    }
+    if (it == kMaxNewtonIterations) {
+      eq->status = fmt::format("no equilibrium within {} Newton iterations (scaled residual {:.2g})",
+                               it, r.lpNorm<Eigen::Infinity>());
+      return false;
+    }
+    eq->iterations = it + 1;
+    // Jacobian by forward differences: the film force changes on the scale of the film itself.
+    const double de = 1e-5 * std::max(point.min_gap.gap, floor);
+    Eigen::Matrix2d jac;
+    jac.col(0) = (residual(evaluate(x + Eigen::Vector2d(de, 0.0))) - r) / de;
+    jac.col(1) = (residual(evaluate(x + Eigen::Vector2d(0.0, de / L))) - r) / (de / L);
+    Eigen::Vector2d dx = jac.fullPivLu().solve(-r);
+    // Where the film force does not change (no sliding, no squeeze, no contact yet) the piston
+    // moves where the net force pushes it, up to the fraction-to-the-floor limit below.
+    const bool push = !dx.allFinite() || !(dx.norm() > 0.0) ||
+                      std::abs(jac.determinant()) < 1e-12 * jac.squaredNorm();
+    if (push) {
+      const double c = solver_.config().geometry.radial_clearance;
+      dx = Eigen::Vector2d(r[0], r[1] / L) * (c / r.norm());
+    }
+    // Fraction to the floor: every node keeps at least 10 % of its distance to the floor.
+    double t_max = 1.0;
+    for (std::size_t k = 0; k < static_gap_.size(); ++k) {
+      const double gap = static_gap_[k] - (x[0] + arm_[k] * x[1]) * cos_[k];
+      const double change = -(dx[0] + arm_[k] * dx[1]) * cos_[k];
+      if (change < 0.0) t_max = std::min(t_max, 0.9 * std::max(gap - floor, 0.0) / -change);
+    }
+    if (point.min_gap.gap - floor < 1e-3 * floor && t_max < 1e-2) {
+      eq->status = "the equilibrium needs a film thinner than the floor";
+      return false;
+    }
+    if (push) {
+      x += t_max * dx;
+      point = evaluate(x);
+      r = residual(point);
+      continue;
+    }
+    // Stalled: the residual fell by less than 1 % over the last 5 Newton steps.
+    history.push_back(r.norm());
+    if (history.size() > 5 && history.back() > 0.99 * history[history.size() - 6]) {
+      eq->status = fmt::format("Newton's method stalled (scaled residual {:.2g})",
+                               r.lpNorm<Eigen::Infinity>());
+      return false;
+    }
+    // Backtracking on |r|^2 (Armijo, sufficient decrease 1e-4).
+    double t = t_max;
+    for (;;) {
+      const Eigen::Vector2d trial_x = x + t * dx;
+      SkirtPoint trial = evaluate(trial_x);
+      const Eigen::Vector2d trial_r = residual(trial);
+      if (trial_r.squaredNorm() <= (1.0 - 2e-4 * t) * r.squaredNorm()) {
+        x = trial_x;
+        point = std::move(trial);
+        r = trial_r;
+        break;
+      }
+      t *= 0.5;
+      if (t < 1e-10) {
+        eq->status = fmt::format("the line search stalled (scaled residual {:.2g})",
+                                 r.lpNorm<Eigen::Infinity>());
+        return false;
+      }
+    }
+  }
+}
+
+SkirtEquilibrium SkirtCalculator::AtLoad(const SkirtLoad& load) {
+  RequireFinite(names_.side_force, load.side_force, "N");
+  RequireFinite(names_.moment, load.moment, "N*m");
+  RequireFinite(names_.speed, load.piston_velocity, "m/s");
+  const double floor = min_equilibrium_film();
+  // Start centred: the middle of the e0 range at zero tilt (e0 = 0 for a round skirt).
+  const auto [lo, hi] = E0Range(0.0, floor);
+  if (!(lo < hi)) {
+    throw InputError("skirt.radial_clearance", FormatValue(config().geometry.radial_clearance),
+                     "leaves no room for the piston in the liner");
+  }
+  const double start = std::clamp(0.0, lo + 0.25 * (hi - lo), hi - 0.25 * (hi - lo));
+  SkirtEquilibrium eq;
+  if (Newton(load, start, 0.0, &eq)) return eq;
+  // Failing with a film of a few per cent of the clearance: the load is (close to) beyond what
+  // the skirt carries. Elsewhere it is a numerical failure: reported, not an input error.
+  const double thin = 0.05 * config().geometry.radial_clearance;
+  if (eq.point.min_gap.gap > thin) return eq;
+
+  // Beyond the capacity: the largest fraction of the load carried, by bisection, each Newton
+  // started from the last equilibrium found.
+  int solves = eq.reynolds_solves;
+  double carried = 0.0, beyond = 1.0;
+  SkirtEquilibrium at;
+  Eigen::Vector2d from(start, 0.0);
+  for (int k = 0; k <= kCapacityBisections; ++k) {
+    const double fraction = k == 0 ? 0.0 : 0.5 * (carried + beyond);
+    const SkirtLoad scaled{fraction * load.side_force, fraction * load.moment,
+                           load.piston_velocity};
+    SkirtEquilibrium trial;
+    const bool ok = Newton(scaled, from[0], from[1], &trial);
+    solves += trial.reynolds_solves;
+    if (ok) {
+      carried = fraction;
+      from = {trial.point.state.e0, trial.point.state.gamma};
+    } else if (k == 0) {
+      break;  // not even the unloaded skirt: carries nothing
+    } else {
+      beyond = fraction;
+    }
+  }
+  const bool force_named = load.side_force != 0.0;
+  const std::string with_other =
+      force_named && load.moment != 0.0
+          ? fmt::format(" with {} = {} N*m (both scaled alike)", names_.moment,
+                        FormatValue(load.moment))
+          : "";
+  const double limit = carried * (force_named ? std::abs(load.side_force) : std::abs(load.moment));
+  throw InputError(
+      force_named ? names_.side_force : names_.moment,
+      FormatValue(force_named ? load.side_force : load.moment),
+      fmt::format("beyond what the skirt carries at {} = {} m/s{}: at most about {:.4g} {} (the "
+                  "film would have to be thinner than {:.3g} µm; {} skirt solves)",
+                  names_.speed, FormatValue(load.piston_velocity), with_other, limit,
+                  force_named ? "N" : "N*m", floor * 1e6, solves));
+}
+
+}  // namespace filmdyn::lubrication

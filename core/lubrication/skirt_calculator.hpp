@@ -1,0 +1,114 @@
+#pragma once
+/// @file Steady piston-skirt calculator behind `filmdyn skirt` and the GUI's skirt calculator:
+/// the film of one skirt (SkirtSolver) at a given secondary-motion state (mode 1), or the
+/// equilibrium state that balances a given side force and moment in steady sliding (mode 2),
+/// plus the load-capacity map (film force, moment and MOFT against e0 at a tilt and a speed).
+///
+/// Conventions are the skirt solver's: e0 > 0 moves the piston toward the thrust side (α = 0),
+/// tilt γ > 0 moves the skirt below the pin toward the thrust side, the speed u_p is the
+/// piston's velocity along the skirt axis, + toward the crank. Forces and moments act on the
+/// piston: the film's lateral force is + toward the thrust side, its moment about the pin is the
+/// generalised force on γ. The applied load of mode 2 uses the same senses: a side force > 0
+/// pushes the piston toward the thrust side, a moment > 0 turns the skirt bottom toward it.
+///
+/// Mode 2 solves F_film(e0, γ) + F = 0, M_film(e0, γ) + M = 0 (ė0 = γ̇ = 0) by Newton's method
+/// with a finite-difference Jacobian, a line search on the scaled residual and a
+/// fraction-to-the-wall rule: no step uses more than 90 % of the distance between the present
+/// film and the floor `min_equilibrium_film`, so every iterate has a positive film everywhere.
+/// A load whose equilibrium would need a thinner film than the floor is beyond what the skirt
+/// carries: the largest multiple of the load that it does carry is found by bisection and
+/// reported in the InputError (docs/skirt-calculator.md).
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/lubrication/skirt_solver.hpp"
+
+namespace filmdyn::lubrication {
+
+/// Names used in error messages for the calculator's inputs (CLI options, GUI labels).
+struct SkirtInputNames {
+  std::string e0 = "e0", tilt = "tilt", speed = "speed", e0_rate = "e0_rate",
+              tilt_rate = "tilt_rate", side_force = "side_force", moment = "moment";
+};
+
+/// Mode 2's load: what the rest of the engine applies to the piston.
+struct SkirtLoad {
+  double side_force = 0.0;       ///< + toward the thrust side [N]
+  double moment = 0.0;           ///< about the pin, + turns the skirt bottom toward thrust [N m]
+  double piston_velocity = 0.0;  ///< u_p, + toward the crank [m/s]
+};
+
+/// Smallest geometric film (before any clamping) over the lubricated panels, and where.
+struct SkirtGap {
+  double gap = 0.0;    ///< [m]; <= 0: the skirt is in the liner there
+  double alpha = 0.0;  ///< [rad] from the thrust side
+  double y = 0.0;      ///< [m] from the skirt top
+};
+
+/// The calculator's answer at one state.
+struct SkirtPoint {
+  SkirtState state;
+  SkirtResult film;
+  double normal_moment = 0.0;  ///< film pressure + asperity part of film.moment_about_pin [N m]
+  SkirtGap min_gap;
+};
+
+/// Mode 2's answer.
+struct SkirtEquilibrium {
+  SkirtPoint point;
+  bool converged = false;
+  std::string status;             ///< "converged" or why not
+  int iterations = 0;             ///< Newton iterations
+  int reynolds_solves = 0;        ///< skirt solves, Jacobian columns included
+  double force_residual = 0.0;    ///< film + applied lateral force at the answer [N]
+  double moment_residual = 0.0;   ///< film + applied moment at the answer [N m]
+};
+
+class SkirtCalculator {
+ public:
+  explicit SkirtCalculator(SkirtConfig config, SkirtInputNames names = {});
+
+  /// Mode 1: the film at a state. Throws InputError naming the e0 or tilt input (with the range
+  /// that keeps the film positive) when the skirt would be in the liner anywhere, or naming any
+  /// input that is not finite.
+  SkirtPoint AtState(const SkirtState& state);
+  /// Mode 2: the steady-sliding equilibrium under `load`. Throws InputError naming the side force
+  /// (the moment when the side force is zero) with the largest load carried when the equilibrium
+  /// would need a film thinner than min_equilibrium_film(); numerical failures are reported in
+  /// the result (converged = false).
+  SkirtEquilibrium AtLoad(const SkirtLoad& load);
+  /// The load-capacity curve: AtState at each e0 (steady sliding at `speed`, tilt fixed).
+  std::vector<SkirtPoint> Map(const std::vector<double>& e0_values, double tilt, double speed);
+
+  /// Smallest geometric film at (e0, γ) over the lubricated panels.
+  SkirtGap MinGap(double e0, double tilt) const;
+  /// The e0 for which the film is at least `margin` everywhere at this tilt: [lo, hi]; lo > hi
+  /// when there is none.
+  std::pair<double, double> E0Range(double tilt, double margin = 0.0) const;
+  /// The tilts for which the film is at least `margin` everywhere at this e0.
+  std::pair<double, double> TiltRange(double e0, double margin = 0.0) const;
+  /// The thinnest film an equilibrium may have: 0.1 % of the radial clearance, at least the
+  /// solver's clamp [m].
+  double min_equilibrium_film() const;
+
+  /// Checked before every solve (and inside them): true abandons the calculation with
+  /// StopRequested.
+  void SetStopCheck(const StopCheck& check);
+  const SkirtSolver& solver() const { return solver_; }
+  const SkirtConfig& config() const { return solver_.config(); }
+
+ private:
+  SkirtPoint Evaluate(const SkirtState& state);
+  void CheckState(const SkirtState& state) const;
+  // Newton's method from x0 = (e0, γ); returns converged and leaves the best point in *eq.
+  bool Newton(const SkirtLoad& load, double e0, double tilt, SkirtEquilibrium* eq);
+
+  SkirtSolver solver_;
+  SkirtInputNames names_;
+  StopCheck stop_;
+  // Per lubricated-panel node: static gap, cos α, arm y − a_p, α, y.
+  std::vector<double> static_gap_, cos_, arm_, alpha_, y_;
+};
+
+}  // namespace filmdyn::lubrication

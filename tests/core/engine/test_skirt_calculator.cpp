@@ -1,0 +1,183 @@
+// The steady skirt calculator on the default case's skirt (rough surfaces, barrel profile):
+// mode 2 returns the state whose film carries the load (round trip through mode 1, both sliding
+// directions, hydrodynamic and contact-only), bad states and loads beyond the capacity are input
+// errors naming the input with the allowed range or the largest load carried, the map is the
+// load-capacity curve, and the calculator at states taken from a coupled run's results reproduces
+// that run's skirt force and moment.
+#include <QtTest>
+
+#include <cmath>
+
+#include "core/base/input_error.hpp"
+#include "core/engine/film_joints.hpp"
+#include "core/engine/run_job.hpp"
+#include "core/io/case_file.hpp"
+#include "core/io/results_writer.hpp"
+#include "core/lubrication/skirt_calculator.hpp"
+
+using namespace filmdyn;
+using lubrication::SkirtCalculator;
+using lubrication::SkirtLoad;
+using lubrication::SkirtState;
+
+namespace {
+
+lubrication::SkirtConfig DefaultSkirt() {
+  return engine::SkirtConfigFromCase(io::LoadCase({}).value);
+}
+
+QString ErrorOf(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return QString::fromStdString(e.what());
+  }
+  return {};
+}
+
+}  // namespace
+
+class TestSkirtCalculator : public QObject {
+  Q_OBJECT
+ private slots:
+  void loadModeFindsTheStateThatCarriesTheLoad() {
+    SkirtCalculator calc(DefaultSkirt());
+    const double c = calc.config().geometry.radial_clearance;
+    struct Case {
+      double e0, tilt, speed;
+    };
+    // Toward the crank and toward the head, tilted both ways, thrust and anti-thrust side, and
+    // one close to the liner where asperity contact carries part of the load.
+    for (const Case k : {Case{0.4 * c, 2e-4, 10.0}, Case{-0.5 * c, -3e-4, -8.0},
+                         Case{0.2 * c, -1e-4, 3.0}, Case{0.85 * c, 0.0, 2.0}}) {
+      SkirtState s;
+      s.e0 = k.e0, s.gamma = k.tilt, s.piston_velocity = k.speed;
+      const lubrication::SkirtPoint given = calc.AtState(s);
+      const SkirtLoad load{-given.film.lateral_force, -given.film.moment_about_pin, k.speed};
+      const lubrication::SkirtEquilibrium eq = calc.AtLoad(load);
+      QVERIFY2(eq.converged, eq.status.c_str());
+      // The film balances the load to the Newton tolerance (1e-8 of the load)...
+      QVERIFY(std::abs(eq.force_residual) <= 1e-7 * std::abs(load.side_force));
+      QVERIFY(std::abs(eq.point.film.lateral_force + load.side_force) <=
+              1e-7 * std::abs(load.side_force));
+      // ... at the state that produced it (a unique equilibrium: the film is stiff).
+      QVERIFY2(std::abs(eq.point.state.e0 - k.e0) < 1e-6 * c,
+               qPrintable(QString("e0 %1 vs %2").arg(eq.point.state.e0).arg(k.e0)));
+      QVERIFY2(std::abs(eq.point.state.gamma - k.tilt) < 1e-6 * c / calc.config().geometry.skirt_length,
+               qPrintable(QString("tilt %1 vs %2").arg(eq.point.state.gamma).arg(k.tilt)));
+      QVERIFY(eq.iterations <= 20);
+    }
+  }
+
+  void contactAloneCarriesALoadWithoutSliding() {
+    SkirtCalculator calc(DefaultSkirt());
+    const lubrication::SkirtEquilibrium eq = calc.AtLoad({100.0, 0.0, 0.0});
+    QVERIFY2(eq.converged, eq.status.c_str());
+    QVERIFY(std::abs(eq.point.film.contact_lateral_force + 100.0) < 1e-5);
+    QCOMPARE(eq.point.film.max_pressure, 0.0);  // no sliding, no squeeze: no film pressure
+    // Carried where the film is thinner than the composite roughness (1.02 µm).
+    QVERIFY(eq.point.film.moft < 1.0e-6 && eq.point.film.moft > 0.1e-6);
+  }
+
+  void statesIntoTheLinerAreRefusedWithTheRange() {
+    SkirtCalculator calc(DefaultSkirt(), {.e0 = "--e0", .tilt = "--tilt", .speed = "--speed"});
+    const double c = calc.config().geometry.radial_clearance;
+    SkirtState s;
+    s.e0 = 1.5 * c;
+    s.piston_velocity = 10.0;
+    QString error = ErrorOf([&] { calc.AtState(s); });
+    QVERIFY2(error.startsWith("--e0 = ") && error.contains("into the liner") &&
+                 error.contains("film is positive for"),
+             qPrintable(error));
+    // The range stated is the one at which the film just vanishes.
+    const auto [lo, hi] = calc.E0Range(0.0);
+    QVERIFY(std::abs(calc.MinGap(hi, 0.0).gap) < 1e-15 && std::abs(calc.MinGap(lo, 0.0).gap) < 1e-15);
+    // The barrel has no drop at mid-length: the piston fits within ±c there.
+    QVERIFY(std::abs(hi - c) < 1e-15 && std::abs(lo + c) < 1e-15);
+    s.e0 = 0.0;
+    s.gamma = 0.05;  // no e0 fits a tilt of 50 mrad into a 25 µm clearance
+    error = ErrorOf([&] { calc.AtState(s); });
+    QVERIFY2(error.startsWith("--tilt = 0.05") && error.contains("must lie within"),
+             qPrintable(error));
+    s.gamma = 0.0;
+    s.piston_velocity = std::nan("");
+    error = ErrorOf([&] { calc.AtState(s); });
+    QVERIFY2(error.startsWith("--speed = nan"), qPrintable(error));
+  }
+
+  void aLoadBeyondTheCapacityNamesTheLargestLoadCarried() {
+    SkirtCalculator calc(DefaultSkirt(), {.side_force = "--side-force", .moment = "--moment"});
+    const QString error = ErrorOf([&] { calc.AtLoad({2e6, 0.0, 10.0}); });
+    QVERIFY2(error.startsWith("--side-force = 2000000: beyond what the skirt carries") &&
+                 error.contains("at most about"),
+             qPrintable(error));
+    // The limit stated is carried (at 98 % of it) and twice it is not.
+    const QRegularExpressionMatch m =
+        QRegularExpression("at most about ([0-9.e+]+) N").match(error);
+    QVERIFY(m.hasMatch());
+    const double limit = m.captured(1).toDouble();
+    QVERIFY(limit > 1e4 && limit < 2e6);
+    QVERIFY(calc.AtLoad({0.98 * limit, 0.0, 10.0}).converged);
+    QVERIFY(!ErrorOf([&] { calc.AtLoad({2.0 * limit, 0.0, 10.0}); }).isEmpty());
+    QVERIFY(ErrorOf([&] { calc.AtLoad({std::nan(""), 0.0, 10.0}); }).startsWith("--side-force"));
+  }
+
+  void mapIsTheLoadCapacityCurve() {
+    SkirtCalculator calc(DefaultSkirt());
+    const double c = calc.config().geometry.radial_clearance;
+    const auto [lo, hi] = calc.E0Range(0.0, 0.02 * c);
+    std::vector<double> e0s;
+    for (int i = 0; i <= 20; ++i) e0s.push_back(lo + (hi - lo) * i / 20.0);
+    const auto points = calc.Map(e0s, 0.0, 10.0);
+    QCOMPARE(points.size(), e0s.size());
+    for (std::size_t i = 1; i < points.size(); ++i) {
+      // Pushing the piston toward thrust, the film pushes back harder.
+      QVERIFY(points[i].film.lateral_force < points[i - 1].film.lateral_force);
+    }
+    QVERIFY(points.front().film.lateral_force > 0.0 && points.back().film.lateral_force < 0.0);
+    QVERIFY(std::abs(points.back().min_gap.gap - 0.02 * c) < 1e-12);
+  }
+
+  void reproducesTheCoupledRunsSkirtForceAndMoment() {
+    io::LoadedCase loaded = io::LoadCase({});
+    engine::EngineCase& c = loaded.value;
+    c.solver.max_cycles = 1;
+    c.solver.error_estimate = 0;
+    engine::RunConfig config = engine::MakeRunConfig(c, engine::Model::kOnlySkirt, 3000.0,
+                                                     io::PressureCurveForSpeed(loaded, 3000.0));
+    const engine::RunResult run = engine::RunJob(config);
+    QVERIFY(!run.samples.empty());
+    SkirtCalculator calc(engine::SkirtConfigFromCase(config.engine_case));
+    const double pin_offset = config.engine_case.geometry.pin_offset;
+    int compared = 0;
+    double worst_force = 0.0, worst_moment = 0.0;
+    for (std::size_t i = 0; i < run.samples.size(); i += run.samples.size() / 12) {
+      const io::OutputRow row = io::RowFromSample(run.samples[i], config.model, 0.0);
+      if (std::abs(row.skirt_normal_force.value()) < 50.0) continue;
+      SkirtState s;
+      s.e0 = row.piston_lateral.value();
+      s.gamma = std::sin(row.piston_tilt.value());  // the film's tilt is sin of the piston's rotation
+      s.e0_dot = row.piston_lateral_velocity.value();
+      s.gamma_dot = std::cos(row.piston_tilt.value()) * row.piston_tilt_rate.value();
+      // results.csv's piston velocity is the pin's, + toward the head; the skirt's speed is the
+      // axis point's at pin height, + toward the crank: C_p cos(tilt) times the tilt rate apart.
+      s.piston_velocity = -row.piston_velocity.value() +
+                          pin_offset * std::cos(row.piston_tilt.value()) * row.piston_tilt_rate.value();
+      const auto point = calc.AtState(s);
+      worst_force = std::max(worst_force, std::abs(point.film.lateral_force / row.skirt_normal_force.value() - 1));
+      worst_moment = std::max(worst_moment, std::abs(point.film.moment_about_pin - row.skirt_moment.value()) /
+                                                std::abs(row.skirt_normal_force.value() * c.skirt.length));
+      ++compared;
+    }
+    qInfo("%d states: force within %.2g, moment within %.2g of force x skirt length", compared,
+          worst_force, worst_moment);
+    QVERIFY(compared >= 6);
+    // The secondary motion in the results is the state the film was solved at; the speed is the
+    // primary motion's, taken on the constraint-projected state (drift ~1e-6 relative).
+    QVERIFY2(worst_force < 2e-5, qPrintable(QString::number(worst_force)));
+    QVERIFY2(worst_moment < 2e-5, qPrintable(QString::number(worst_moment)));
+  }
+};
+
+QTEST_GUILESS_MAIN(TestSkirtCalculator)
+#include "test_skirt_calculator.moc"
