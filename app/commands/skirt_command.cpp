@@ -91,7 +91,7 @@ Command MakeSkirtCommand() {
       {"map", "DIR",
        "the load-capacity curve: film force, moment and MOFT against e0 at --speed into "
        "DIR/skirt_map.csv and DIR/plots/"},
-      {"e0-range", "MIN:MAX", "--map: e0 range [m] (default: film at least 2 % of the clearance)"},
+      {"e0-range", "MIN:MAX", "--map: e0 range [m] (default: the film at least 10 % of the clearance)"},
       {"points", "N", "--map: e0 values per curve (default 41, 2 to 2001)"},
       {"tilts", "A,B,...", "--map: one curve per tilt [rad] (default 0)"},
       {"mesh", "T+R+AxN", "elements: thrust + relief + anti-thrust around x along the skirt "
@@ -146,10 +146,10 @@ Command MakeSkirtCommand() {
         if (const auto text = args.Value("e0-range")) {
           range = ParseRange("--e0-range", *text);
         } else {
-          range = calc.E0Range(tilt, 0.02 * config.geometry.radial_clearance);
+          range = calc.E0Range(tilt, 0.1 * config.geometry.radial_clearance);
           if (!(range.first < range.second)) {
             throw InputError("--tilts", FormatValue(tilt),
-                             "leaves no e0 with a film of 2 % of the clearance everywhere");
+                             "leaves no e0 with a film of 10 % of the clearance everywhere");
           }
         }
         std::vector<double> e0s;

@@ -17,6 +17,7 @@ namespace filmdyn::io {
 struct SkirtQuantity {
   std::string key;          ///< JSON key and CSV column stem, e.g. "normal_force"
   std::string unit;         ///< SI unit as in results.csv headers, e.g. "N", "N*m", "-"
+  std::string label;        ///< short name for axes and table headers, e.g. "Normal force"
   std::string description;  ///< words for the text table and the GUI
   std::function<double(const lubrication::SkirtPoint&)> value;
   /// Display: scale from SI and its unit (e.g. 1e6 and "µm" for a film thickness).

@@ -20,10 +20,8 @@ const io::SkirtQuantity& Quantity(const std::string& key) {
   return io::SkirtQuantities().front();
 }
 
-QString Title(const io::SkirtQuantity& q) {
-  QString words = QString::fromStdString(q.description).trimmed();
-  words[0] = words[0].toUpper();
-  return words + " [" + QString::fromStdString(q.display_unit) + "]";
+QString AxisTitle(const io::SkirtQuantity& q) {
+  return QString::fromStdString(q.label + " [" + q.display_unit + "]");
 }
 
 }  // namespace
@@ -39,11 +37,16 @@ std::unique_ptr<QChart> MakeSkirtMapChart(const std::vector<lubrication::SkirtPo
   const io::SkirtQuantity& tilt = Quantity("tilt");
   const io::SkirtQuantity& q = Quantity(key);
   auto chart = std::make_unique<QChart>();
-  chart->setTitle(Title(q) + " against e0");
+  const double speed = points.empty() ? 0.0 : points.front().state.piston_velocity;
+  chart->setTitle(QString("Skirt at %1 m/s in steady sliding: %2 against e0 (e0 > 0 toward thrust)")
+                      .arg(speed, 0, 'g', 4)
+                      .arg(QString::fromStdString(q.label)));
   auto* x_axis = new QValueAxis;
   auto* y_axis = new QValueAxis;
-  x_axis->setTitleText(Title(e0));
-  y_axis->setTitleText(Title(q));
+  x_axis->setTitleText(AxisTitle(e0));
+  y_axis->setTitleText(AxisTitle(q));
+  x_axis->setLabelFormat("%g");
+  y_axis->setLabelFormat("%g");
   chart->addAxis(x_axis, Qt::AlignBottom);
   chart->addAxis(y_axis, Qt::AlignLeft);
   double xmin = 1e300, xmax = -1e300, ymin = 1e300, ymax = -1e300;
