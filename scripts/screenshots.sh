@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# Refreshes docs/screenshots/*.png: builds the GUI test that opens the main window, performs two
-# real runs (core's run job) and saves each page, and runs it under Xvfb (xvfb-run) unless a
-# DISPLAY is already set. Usage: scripts/screenshots.sh [build-dir]  (default: build/)
+# Refreshes docs/screenshots/*.png: builds the GUI tests that open the main window — one performs
+# two real runs (core's run job) and saves each page, one drives the steady skirt calculator —
+# and runs them under Xvfb (xvfb-run) unless a DISPLAY is already set. Usage: scripts/screenshots.sh [build-dir]  (default: build/)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${1:-${FILMDYN_BUILD_DIR:-$root/build}}"
@@ -12,14 +12,16 @@ if [ ! -f "$build/CMakeCache.txt" ]; then
   command -v ninja >/dev/null 2>&1 && generator=(-G Ninja)
   cmake -S "$root" -B "$build" "${generator[@]}" -DCMAKE_BUILD_TYPE=Release
 fi
-cmake --build "$build" -j "$jobs" --target test_ui_main_window_after_run
-exe="$build/tests/ui/screenshots/test_ui_main_window_after_run"
+cmake --build "$build" -j "$jobs" --target test_ui_main_window_after_run test_ui_skirt_calculator
 mkdir -p "$out"
 export FILMDYN_SCREENSHOT_DIR="$out" QT_QPA_PLATFORM=xcb
-if [ -n "${DISPLAY:-}" ]; then
-  "$exe"
-else
-  xvfb-run -a -s "-screen 0 1920x1200x24" "$exe"
-fi
+for exe in "$build/tests/ui/screenshots/test_ui_main_window_after_run" \
+           "$build/tests/ui/case_editor/test_ui_skirt_calculator"; do
+  if [ -n "${DISPLAY:-}" ]; then
+    "$exe"
+  else
+    xvfb-run -a -s "-screen 0 1920x1200x24" "$exe"
+  fi
+done
 echo "screenshots in $out:"
 ls -1 "$out"

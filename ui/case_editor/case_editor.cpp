@@ -25,6 +25,7 @@
 #include "ui/case_editor/case_document.hpp"
 #include "ui/case_editor/parameter_table_model.hpp"
 #include "ui/case_editor/pressure_csv.hpp"
+#include "ui/case_editor/skirt_calculator_panel.hpp"
 
 namespace filmdyn::ui {
 
@@ -164,7 +165,10 @@ QWidget* CaseEditor::makeArrayBlock(const QString& title, ArrayTableModel* model
 }
 
 QWidget* CaseEditor::makeProfilePage() {
-  auto* splitter = new QSplitter(Qt::Horizontal, this);
+  // Above: the skirt's inputs; below: the steady calculator on this case's skirt.
+  auto* page = new QSplitter(Qt::Vertical, this);
+  page->setObjectName("skirt_page");
+  auto* splitter = new QSplitter(Qt::Horizontal, page);
   splitter->addWidget(makeParameterPage(CaseGroup::kSkirt));
 
   // Right: the axial profile above the ovality, each as table + chart side by side.
@@ -194,7 +198,11 @@ QWidget* CaseEditor::makeProfilePage() {
   splitter->setStretchFactor(0, 2);
   splitter->setStretchFactor(1, 3);
   splitter->setSizes({560, 840});
-  return splitter;
+  skirt_calculator_ = new SkirtCalculatorPanel(document_, page);
+  page->addWidget(skirt_calculator_);
+  page->setStretchFactor(0, 1);
+  page->setStretchFactor(1, 1);
+  return page;
 }
 
 QWidget* CaseEditor::makePressurePage() {

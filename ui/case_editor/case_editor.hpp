@@ -1,7 +1,7 @@
 #pragma once
 /// @file The case editor: one tab per group of scalar inputs (tables with units), the skirt
 /// profile and ovality (each table + chart) and the cylinder-pressure curves per speed (table +
-/// chart, CSV import and export). All edits go through the CaseDocument (undo, validation).
+/// chart, CSV import and export), with the steady skirt calculator on the skirt tab. All edits go through the CaseDocument (undo, validation).
 #include <QWidget>
 #include <map>
 
@@ -20,6 +20,7 @@ namespace filmdyn::ui {
 class CaseDocument;
 class ArrayTableModel;
 class ParameterTableModel;
+class SkirtCalculatorPanel;
 
 class CaseEditor : public QWidget {
   Q_OBJECT
@@ -37,6 +38,8 @@ class CaseEditor : public QWidget {
   QChart* profileChart() const { return profile_chart_; }
   QChart* ovalityChart() const { return ovality_chart_; }
   QChart* pressureChart() const { return pressure_chart_; }
+  /// The steady skirt calculator below the skirt's inputs.
+  SkirtCalculatorPanel* skirtCalculator() const { return skirt_calculator_; }
 
   /// Index into engineCase().pressure_curves of the curve in the table (-1: none).
   int currentCurve() const { return current_curve_; }
@@ -76,6 +79,7 @@ class CaseEditor : public QWidget {
   QTableView* pressure_table_ = nullptr;
   QChart* pressure_chart_ = nullptr;
   int current_curve_ = -1;
+  SkirtCalculatorPanel* skirt_calculator_ = nullptr;
 };
 
 }  // namespace filmdyn::ui
