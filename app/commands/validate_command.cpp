@@ -13,7 +13,11 @@ Command MakeValidateCommand() {
   Command command;
   command.name = "validate";
   command.summary = "run the built-in verification cases against published solutions";
-  command.options = {{"suite", "NAME", "only this suite (lubrication, multibody)", true},
+  std::string suites;
+  for (const std::string& name : verification::SuiteNames()) {
+    suites += (suites.empty() ? "" : ", ") + name;
+  }
+  command.options = {{"suite", "NAME", "only this suite (" + suites + ")", true},
                      {"json", "", "print the rows as one JSON array"}};
   command.details =
       "Exit status 0 when every row is within its tolerance, 1 otherwise. 'ours' is FilmDyn's\n"

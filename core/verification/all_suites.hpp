@@ -1,7 +1,8 @@
 #pragma once
 /// @file Every built-in verification suite, as run by `filmdyn validate`: each domain contributes
 /// its rows (lubrication: finite-bearing tables, Ocvirk, squeeze, pocketed slider; multibody:
-/// exact slider-crank kinematics and Newton–Euler reactions).
+/// exact slider-crank kinematics and Newton–Euler reactions; skirt: the skirt film's closed-form
+/// limits and symmetries).
 #include <string>
 #include <vector>
 
