@@ -138,6 +138,41 @@ class TestSkirtCalculator : public QObject {
     QVERIFY(std::abs(points.back().min_gap.gap - 0.02 * c) < 1e-12);
   }
 
+  void equilibriumConvergesWithTheMesh() {
+    // Under a fixed load the equilibrium state, and with it the MOFT, depends on the mesh through
+    // the film forces: four meshes, each twice as fine in both directions.
+    const SkirtLoad load{6000.0, 10.0, 10.0};
+    std::vector<lubrication::SkirtEquilibrium> eqs;
+    for (int level = 0; level < 4; ++level) {
+      lubrication::SkirtConfig config = DefaultSkirt();
+      const int f = 1 << level;
+      config.mesh = {8 * f, 2 * f, 8 * f, 10 * f};
+      SkirtCalculator calc(config);
+      eqs.push_back(calc.AtLoad(load));
+      QVERIFY(eqs.back().converged);
+      const auto& p = eqs.back().point;
+      qInfo("mesh %d+%d+%dx%d: e0 %.6g um, tilt %.6g mrad, MOFT %.6g um at y %.4g mm, friction %.6g N, "
+            "%d iterations", 8 * f, 2 * f, 8 * f, 10 * f, p.state.e0 * 1e6, p.state.gamma * 1e3,
+            p.film.moft * 1e6, p.film.moft_y * 1e3, p.film.friction_force, eqs.back().iterations);
+    }
+    auto order = [&](auto value) {
+      const double d1 = value(eqs[1]) - value(eqs[0]), d2 = value(eqs[2]) - value(eqs[1]),
+                   d3 = value(eqs[3]) - value(eqs[2]);
+      qInfo("  differences %.3g %.3g %.3g: orders %.2f %.2f", d1, d2, d3,
+            std::log2(std::abs(d1 / d2)), std::log2(std::abs(d2 / d3)));
+      return std::log2(std::abs(d2 / d3));
+    };
+    const auto moft = [](const lubrication::SkirtEquilibrium& e) { return e.point.film.moft; };
+    const auto e0 = [](const lubrication::SkirtEquilibrium& e) { return e.point.state.e0; };
+    const auto friction = [](const lubrication::SkirtEquilibrium& e) {
+      return e.point.film.friction_force;
+    };
+    // Second order like the film forces that set the equilibrium (band: 1.6 to 2.4).
+    for (const double p : {order(moft), order(e0), order(friction)}) {
+      QVERIFY2(p > 1.6 && p < 2.4, qPrintable(QString::number(p)));
+    }
+  }
+
   void reproducesTheCoupledRunsSkirtForceAndMoment() {
     io::LoadedCase loaded = io::LoadCase({});
     engine::EngineCase& c = loaded.value;
