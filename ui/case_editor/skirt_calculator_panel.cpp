@@ -170,6 +170,7 @@ SkirtCalculatorPanel::SkirtCalculatorPanel(CaseDocument* document, QWidget* pare
   table_->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
   table_->horizontalHeader()->setSectionResizeMode(1, QHeaderView::ResizeToContents);
   table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+  table_->setMinimumWidth(200);
   layout->addWidget(table_, 2);
 
   auto* right = new QWidget(this);
@@ -181,10 +182,12 @@ SkirtCalculatorPanel::SkirtCalculatorPanel(CaseDocument* document, QWidget* pare
   map_quantity_->setObjectName("skirt_calculator_map_quantity");
   map_quantity_->addItems({tr("Film pressure"), tr("Film thickness"), tr("Asperity contact pressure")});
   map_row->addWidget(map_quantity_);
-  map_row->addWidget(new QLabel(tr("— one half of the skirt, unrolled; the other half mirrors it "
-                                   "about the pin-axis plane"),
-                                right),
-                     1);
+  auto* caption = new QLabel(tr("— one half of the skirt, unrolled; the other half mirrors it "
+                                "about the pin-axis plane"),
+                             right);
+  caption->setWordWrap(true);
+  caption->setMinimumWidth(60);
+  map_row->addWidget(caption, 1);
   right_layout->addLayout(map_row);
   map_ = new FilmMapWidget(right);
   right_layout->addWidget(map_, 1);

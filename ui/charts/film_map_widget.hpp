@@ -34,7 +34,7 @@ class FilmMapWidget : public QWidget {
   /// The colour scale's range (after rounding to its ticks).
   std::pair<double, double> scaleRange() const { return {scale_lo_, scale_hi_}; }
   QSize sizeHint() const override { return {640, 360}; }
-  QSize minimumSizeHint() const override { return {320, 200}; }
+  QSize minimumSizeHint() const override { return {260, 180}; }
 
  protected:
   void paintEvent(QPaintEvent* event) override;
