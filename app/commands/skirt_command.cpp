@@ -76,7 +76,8 @@ Command MakeSkirtCommand() {
   command.max_positional = 1;
   command.needs_gui_application = true;  // --map draws its plots with Qt Charts (offscreen)
   command.options = {
-      {"e0", "M", "mode 1: lateral displacement of the piston axis at the pin [m], + toward thrust"},
+      {"e0", "M",
+       "mode 1: lateral displacement of the piston axis at the pin [m], + toward thrust"},
       {"tilt", "RAD", "mode 1: tilt [rad], + moves the skirt below the pin toward thrust"},
       {"e0-rate", "M/S", "mode 1: lateral velocity de0/dt [m/s] (default 0)"},
       {"tilt-rate", "RAD/S", "mode 1: tilt rate [rad/s] (default 0)"},
@@ -86,23 +87,27 @@ Command MakeSkirtCommand() {
       {"side-force", "N",
        "mode 2: lateral force the engine applies to the piston [N], + toward thrust; the film "
        "must balance it"},
-      {"moment", "NM", "mode 2: moment applied about the pin [N m], + turns the skirt bottom "
-                       "toward thrust (default 0)"},
+      {"moment", "NM",
+       "mode 2: moment applied about the pin [N m], + turns the skirt bottom "
+       "toward thrust (default 0)"},
       {"map", "DIR",
        "the load-capacity curve: film force, moment and MOFT against e0 at --speed into "
        "DIR/skirt_map.csv and DIR/plots/"},
-      {"e0-range", "MIN:MAX", "--map: e0 range [m] (default: the film at least 10 % of the clearance)"},
+      {"e0-range", "MIN:MAX",
+       "--map: e0 range [m] (default: the film at least 10 % of the clearance)"},
       {"points", "N", "--map: e0 values per curve (default 41, 2 to 2001)"},
       {"tilts", "A,B,...", "--map: one curve per tilt [rad] (default 0)"},
-      {"mesh", "T+R+AxN", "elements: thrust + relief + anti-thrust around x along the skirt "
-                          "(default: the case's)"},
+      {"mesh", "T+R+AxN",
+       "elements: thrust + relief + anti-thrust around x along the skirt "
+       "(default: the case's)"},
       {"fields", "DIR", "write the film fields of the state to DIR/skirt.h5 + skirt.xdmf"},
       {"set", "KEY=VALUE", "override a case field by its dotted JSON path", true},
       {"json", "", "print one JSON object"}};
   command.details =
       "Uses the case's skirt geometry, profile, ovality, surfaces and lubricant (the built-in\n"
       "default case without CASE.json). Forces and moments act on the piston, signs as in\n"
-      "results.csv (skirt_normal_force, skirt_moment). Mode 2 finds the steady-sliding e0 and tilt\n"
+      "results.csv (skirt_normal_force, skirt_moment). Mode 2 finds the steady-sliding e0 and "
+      "tilt\n"
       "(de0/dt = dtilt/dt = 0) at which the film balances the load, mixed lubrication included,\n"
       "or says that the skirt cannot carry it and what it can. Exit 2 for bad input (a state that\n"
       "puts the skirt into the liner, a load beyond what it carries), 3 when mode 2 does not\n"
@@ -118,8 +123,8 @@ Command MakeSkirtCommand() {
     if (!speed) throw InputError("--speed", "(missing)", "give the piston speed [m/s]");
     const bool load_mode = args.Has("side-force") || args.Has("moment");
     const bool map_mode = args.Has("map");
-    const bool state_given = args.Has("e0") || args.Has("tilt") || args.Has("e0-rate") ||
-                             args.Has("tilt-rate");
+    const bool state_given =
+        args.Has("e0") || args.Has("tilt") || args.Has("e0-rate") || args.Has("tilt-rate");
     if (load_mode && (state_given || map_mode)) {
       throw InputError(state_given ? "--e0/--tilt" : "--map", "(given with --side-force)",
                        "a load (mode 2) finds e0 and tilt itself: give either a state, a load or "
@@ -162,8 +167,8 @@ Command MakeSkirtCommand() {
       std::filesystem::create_directories(dir);
       io::WriteFileAtomically(dir / "skirt_map.csv", io::SkirtMapCsv(points));
       QString error;
-      const QStringList plots = ui::ExportSkirtMapPlots(
-          points, QString::fromStdString((dir / "plots").string()), &error);
+      const QStringList plots =
+          ui::ExportSkirtMapPlots(points, QString::fromStdString((dir / "plots").string()), &error);
       if (!error.isEmpty()) {
         streams.err << "filmdyn skirt: plots not written: " << error.toStdString() << "\n";
       }

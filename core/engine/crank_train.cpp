@@ -144,12 +144,13 @@ CrankTrainSample SampleCrankTrain(CrankTrain& train, const EngineCase& c, double
   // forces belong together (the projected state's lateral velocity differs by the constraint
   // drift, up to ~2e-5 m/s: a few per cent of the squeeze part of the film force).
   const BodyState secondary = train.skirt_element != nullptr ? integrated.Body(lay.piston) : piston;
-  const Eigen::Vector2d secondary_arm = multibody::Rotation(secondary.Angle()) * lay.piston_pin_point;
+  const Eigen::Vector2d secondary_arm =
+      multibody::Rotation(secondary.Angle()) * lay.piston_pin_point;
   s.piston_lateral =
       secondary.q[0] + secondary_arm.x() - c.geometry.pin_offset * std::cos(secondary.Angle());
-  s.piston_lateral_velocity = multibody::PointVelocity(secondary, lay.piston_pin_point).x() +
-                              c.geometry.pin_offset * std::sin(secondary.Angle()) *
-                                  secondary.AngularVelocity();
+  s.piston_lateral_velocity =
+      multibody::PointVelocity(secondary, lay.piston_pin_point).x() +
+      c.geometry.pin_offset * std::sin(secondary.Angle()) * secondary.AngularVelocity();
   s.piston_tilt = secondary.Angle();
   s.piston_tilt_rate = secondary.AngularVelocity();
   const BodyState rod = state.Body(lay.rod);

@@ -15,7 +15,7 @@ namespace {
 
 constexpr double kDeg = 180.0 / std::numbers::pi;
 constexpr int kMaxNewtonIterations = 60;
-constexpr double kTolerance = 1e-8;  // scaled residual: film + applied, over the load scale
+constexpr double kTolerance = 1e-8;      // scaled residual: film + applied, over the load scale
 constexpr int kCapacityBisections = 12;  // the largest load carried to 2^-12 = 0.025 %
 
 // A feasible interval [lo, hi] of x from constraints a x <= b (one per node).
@@ -138,8 +138,7 @@ std::vector<SkirtPoint> SkirtCalculator::Map(const std::vector<double>& e0_value
   return points;
 }
 
-bool SkirtCalculator::Newton(const SkirtLoad& load, double e0, double tilt,
-                             SkirtEquilibrium* eq) {
+bool SkirtCalculator::Newton(const SkirtLoad& load, double e0, double tilt, SkirtEquilibrium* eq) {
   const double L = solver_.config().geometry.skirt_length;
   const double floor = min_equilibrium_film();
   // Residuals scaled by the load (a moment by the load times the skirt length).
@@ -172,8 +171,9 @@ bool SkirtCalculator::Newton(const SkirtLoad& load, double e0, double tilt,
       return true;
     }
     if (it == kMaxNewtonIterations) {
-      eq->status = fmt::format("no equilibrium within {} Newton iterations (scaled residual {:.2g})",
-                               it, r.lpNorm<Eigen::Infinity>());
+      eq->status =
+          fmt::format("no equilibrium within {} Newton iterations (scaled residual {:.2g})", it,
+                      r.lpNorm<Eigen::Infinity>());
       return false;
     }
     eq->iterations = it + 1;
@@ -279,11 +279,10 @@ SkirtEquilibrium SkirtCalculator::AtLoad(const SkirtLoad& load) {
     }
   }
   const bool force_named = load.side_force != 0.0;
-  const std::string with_other =
-      force_named && load.moment != 0.0
-          ? fmt::format(" with {} = {} N*m (both scaled alike)", names_.moment,
-                        FormatValue(load.moment))
-          : "";
+  const std::string with_other = force_named && load.moment != 0.0
+                                     ? fmt::format(" with {} = {} N*m (both scaled alike)",
+                                                   names_.moment, FormatValue(load.moment))
+                                     : "";
   const double limit = carried * (force_named ? std::abs(load.side_force) : std::abs(load.moment));
   throw InputError(
       force_named ? names_.side_force : names_.moment,

@@ -58,11 +58,11 @@ struct SkirtPoint {
 struct SkirtEquilibrium {
   SkirtPoint point;
   bool converged = false;
-  std::string status;             ///< "converged" or why not
-  int iterations = 0;             ///< Newton iterations
-  int reynolds_solves = 0;        ///< skirt solves, Jacobian columns included
-  double force_residual = 0.0;    ///< film + applied lateral force at the answer [N]
-  double moment_residual = 0.0;   ///< film + applied moment at the answer [N m]
+  std::string status;            ///< "converged" or why not
+  int iterations = 0;            ///< Newton iterations
+  int reynolds_solves = 0;       ///< skirt solves, Jacobian columns included
+  double force_residual = 0.0;   ///< film + applied lateral force at the answer [N]
+  double moment_residual = 0.0;  ///< film + applied moment at the answer [N m]
 };
 
 class SkirtCalculator {

@@ -42,18 +42,17 @@ class TestCliSkirt : public QObject {
   void stateModePrintsEveryQuantity() {
     const Result text = Run({"--e0", "10e-6", "--tilt", "2e-4", "--speed", "12"});
     QCOMPARE(text.exit_code, 0);
-    for (const char* words : {"normal force on the piston", "moment about the pin",
-                              "of which friction", "minimum oil film thickness",
-                              "angle from the thrust side", "cavitated fraction"}) {
+    for (const char* words :
+         {"normal force on the piston", "moment about the pin", "of which friction",
+          "minimum oil film thickness", "angle from the thrust side", "cavitated fraction"}) {
       QVERIFY2(text.out.contains(words), words);
     }
     const Result json = Run({"--e0", "10e-6", "--tilt", "2e-4", "--speed", "12", "--json"});
     QCOMPARE(json.exit_code, 0);
     const QJsonObject j = Json(json);
-    for (const char* key :
-         {"normal_force", "moment_about_pin", "normal_moment", "friction_moment", "friction_force",
-          "max_pressure", "moft", "moft_alpha", "moft_y", "contact_force", "cavitated_fraction",
-          "e0", "tilt"}) {
+    for (const char* key : {"normal_force", "moment_about_pin", "normal_moment", "friction_moment",
+                            "friction_force", "max_pressure", "moft", "moft_alpha", "moft_y",
+                            "contact_force", "cavitated_fraction", "e0", "tilt"}) {
       QVERIFY2(j.contains(key), key);
     }
     QCOMPARE(j.value("mode").toString(), QString("state"));
@@ -86,8 +85,8 @@ class TestCliSkirt : public QObject {
 
   void mapWritesTheCurveAndItsPlots() {
     QTemporaryDir dir;
-    const Result r = Run({"--map", dir.path(), "--speed", "10", "--tilts", "0,5e-4", "--points",
-                          "11"});
+    const Result r =
+        Run({"--map", dir.path(), "--speed", "10", "--tilts", "0,5e-4", "--points", "11"});
     QCOMPARE(r.exit_code, 0);
     QFile csv(dir.filePath("skirt_map.csv"));
     QVERIFY(csv.open(QIODevice::ReadOnly));
@@ -104,8 +103,8 @@ class TestCliSkirt : public QObject {
 
   void fieldsOfTheStateAreWritten() {
     QTemporaryDir dir;
-    const Result r = Run({"--e0", "5e-6", "--speed", "10", "--fields", dir.path(), "--mesh",
-                          "10+2+10x12"});
+    const Result r =
+        Run({"--e0", "5e-6", "--speed", "10", "--fields", dir.path(), "--mesh", "10+2+10x12"});
     QCOMPARE(r.exit_code, 0);
     QVERIFY(r.out.contains("skirt mesh 10+2+10x12 elements"));
     QVERIFY(QFileInfo(dir.filePath("skirt.h5")).size() > 1000);
@@ -118,19 +117,24 @@ class TestCliSkirt : public QObject {
     QTest::addColumn<QStringList>("arguments");
     QTest::addColumn<QString>("starts");
     QTest::addColumn<QString>("contains");
-    QTest::newRow("into the liner") << QStringList{"--e0", "40e-6", "--speed", "10"} << "--e0 = 4e-05"
-                                    << "film is positive for";
-    QTest::newRow("tilt too large") << QStringList{"--tilt", "0.01", "--speed", "10"}
-                                    << "--tilt = 0.01" << "must lie within";
-    QTest::newRow("beyond capacity") << QStringList{"--side-force", "5e6", "--speed", "10"}
-                                     << "--side-force = 5000000" << "at most about";
+    QTest::newRow("into the liner")
+        << QStringList{"--e0", "40e-6", "--speed", "10"} << "--e0 = 4e-05"
+        << "film is positive for";
+    QTest::newRow("tilt too large")
+        << QStringList{"--tilt", "0.01", "--speed", "10"} << "--tilt = 0.01"
+        << "must lie within";
+    QTest::newRow("beyond capacity")
+        << QStringList{"--side-force", "5e6", "--speed", "10"} << "--side-force = 5000000"
+        << "at most about";
     QTest::newRow("nan speed") << QStringList{"--e0", "0", "--speed", "nan"} << "--speed = 'nan'"
                                << "finite number";
-    QTest::newRow("no speed") << QStringList{"--e0", "0"} << "--speed" << "give the piston speed";
+    QTest::newRow("no speed") << QStringList{"--e0", "0"} << "--speed"
+                              << "give the piston speed";
     QTest::newRow("bad mesh") << QStringList{"--speed", "1", "--mesh", "30x40"} << "--mesh = 30x40"
                               << "T+R+AxN";
-    QTest::newRow("state and load") << QStringList{"--e0", "0", "--side-force", "1", "--speed", "1"}
-                                    << "--e0/--tilt" << "either a state, a load or --map";
+    QTest::newRow("state and load")
+        << QStringList{"--e0", "0", "--side-force", "1", "--speed", "1"} << "--e0/--tilt"
+        << "either a state, a load or --map";
   }
   void badInputNamesTheOption() {
     QFETCH(QStringList, arguments);

@@ -1,7 +1,8 @@
 #pragma once
 /// @file The case editor: one tab per group of scalar inputs (tables with units), the skirt
 /// profile and ovality (each table + chart) and the cylinder-pressure curves per speed (table +
-/// chart, CSV import and export), with the steady skirt calculator on the skirt tab. All edits go through the CaseDocument (undo, validation).
+/// chart, CSV import and export), with the steady skirt calculator on the skirt tab. All edits go
+/// through the CaseDocument (undo, validation).
 #include <QWidget>
 #include <map>
 

@@ -134,8 +134,9 @@ SkirtCalculatorPanel::SkirtCalculatorPanel(CaseDocument* document, QWidget* pare
   mode_->setObjectName("skirt_calculator_mode");
   mode_->addItem(tr("Given state: e0, tilt, rates"), int(Mode::kState));
   mode_->addItem(tr("Given load: side force and moment"), int(Mode::kLoad));
-  mode_->setToolTip(tr("Given state: the film force and moment at that position. Given load: "
-                       "the position at which the film balances the load in steady sliding."));
+  mode_->setToolTip(
+      tr("Given state: the film force and moment at that position. Given load: "
+         "the position at which the film balances the load in steady sliding."));
   form->addRow(tr("Mode"), mode_);
   for (const InputSpec& spec : InputSpecs()) {
     auto* box = new QDoubleSpinBox(left);
@@ -180,7 +181,8 @@ SkirtCalculatorPanel::SkirtCalculatorPanel(CaseDocument* document, QWidget* pare
   map_row->addWidget(new QLabel(tr("Map of"), right));
   map_quantity_ = new QComboBox(right);
   map_quantity_->setObjectName("skirt_calculator_map_quantity");
-  map_quantity_->addItems({tr("Film pressure"), tr("Film thickness"), tr("Asperity contact pressure")});
+  map_quantity_->addItems(
+      {tr("Film pressure"), tr("Film thickness"), tr("Asperity contact pressure")});
   map_row->addWidget(map_quantity_);
   auto* caption = new QLabel(tr("— one half of the skirt, unrolled; the other half mirrors it "
                                 "about the pin-axis plane"),
@@ -214,9 +216,7 @@ SkirtCalculatorPanel::~SkirtCalculatorPanel() {
   watcher_.waitForFinished();  // stops at the next film solve
 }
 
-bool SkirtCalculatorPanel::busy() const {
-  return debounce_->isActive() || running_ || pending_;
-}
+bool SkirtCalculatorPanel::busy() const { return debounce_->isActive() || running_ || pending_; }
 
 void SkirtCalculatorPanel::updateModeInputs() {
   const bool state = Mode(mode_->currentData().toInt()) == Mode::kState;
@@ -242,7 +242,8 @@ void SkirtCalculatorPanel::start() {
   running_ = true;
   cancel_ = std::make_shared<std::atomic<bool>>(false);
   std::map<std::string, double> si;
-  for (const InputSpec& spec : InputSpecs()) si[spec.key] = inputs_.at(spec.key)->value() * spec.scale;
+  for (const InputSpec& spec : InputSpecs())
+    si[spec.key] = inputs_.at(spec.key)->value() * spec.scale;
   status_->setText(tr("Computing…"));
   watcher_.setFuture(QtConcurrent::run(Calculate, document_->engineCase(),
                                        Mode(mode_->currentData().toInt()), si, cancel_));
@@ -270,12 +271,13 @@ void SkirtCalculatorPanel::finished() {
       // Parts ("  of which ...") indented under their whole, the wholes capitalised.
       const bool part = q.description.starts_with("  ");
       const QString words = QString::fromStdString(q.description).trimmed();
-      auto* name = new QTableWidgetItem(
-          QString("%1%2 [%3]")
-              .arg(part ? "      " : "")
-              .arg(part ? words : words.left(1).toUpper() + words.mid(1))
-              .arg(QString::fromStdString(q.display_unit)));
-      auto* value = new QTableWidgetItem(QString::number(q.value(result.point) * q.display_scale, 'g', 5));
+      auto* name =
+          new QTableWidgetItem(QString("%1%2 [%3]")
+                                   .arg(part ? "      " : "")
+                                   .arg(part ? words : words.left(1).toUpper() + words.mid(1))
+                                   .arg(QString::fromStdString(q.display_unit)));
+      auto* value =
+          new QTableWidgetItem(QString::number(q.value(result.point) * q.display_scale, 'g', 5));
       value->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
       value->setData(Qt::UserRole, q.value(result.point));  // SI, for copying and tests
       name->setData(Qt::UserRole, QString::fromStdString(q.key));

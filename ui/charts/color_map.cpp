@@ -25,7 +25,8 @@ QColor Viridis(double t) {
   const int i = std::min(static_cast<int>(x), 9);
   const double f = x - i;
   auto mix = [&](int c) {
-    return static_cast<int>(std::lround(kSamples[i][c] + f * (kSamples[i + 1][c] - kSamples[i][c])));
+    return static_cast<int>(
+        std::lround(kSamples[i][c] + f * (kSamples[i + 1][c] - kSamples[i][c])));
   };
   return QColor(mix(0), mix(1), mix(2));
 }

@@ -32,8 +32,8 @@ namespace {
 // Index of the interval of `lines` holding v and the fraction within it.
 std::pair<int, double> Locate(const std::vector<double>& lines, double v) {
   const auto it = std::upper_bound(lines.begin(), lines.end(), v);
-  const int i = std::clamp(static_cast<int>(it - lines.begin()) - 1, 0,
-                           static_cast<int>(lines.size()) - 2);
+  const int i =
+      std::clamp(static_cast<int>(it - lines.begin()) - 1, 0, static_cast<int>(lines.size()) - 2);
   const double w = lines[i + 1] - lines[i];
   return {i, w > 0 ? std::clamp((v - lines[i]) / w, 0.0, 1.0) : 0.0};
 }
@@ -42,9 +42,7 @@ QString TickText(double v) { return QString::number(v, 'g', 6); }
 
 }  // namespace
 
-FilmMapWidget::FilmMapWidget(QWidget* parent) : QWidget(parent) {
-  setObjectName("film_map");
-}
+FilmMapWidget::FilmMapWidget(QWidget* parent) : QWidget(parent) { setObjectName("film_map"); }
 
 void FilmMapWidget::setData(FilmMapData data) {
   data_ = std::move(data);
@@ -138,8 +136,8 @@ void FilmMapWidget::paintEvent(QPaintEvent*) {
   painter.save();
   painter.translate(line / 2.0 + 2, plot.center().y());
   painter.rotate(-90);
-  painter.drawText(QRectF(-plot.height() / 2.0, -line / 2.0, plot.height(), line),
-                   Qt::AlignCenter, d.y_title);
+  painter.drawText(QRectF(-plot.height() / 2.0, -line / 2.0, plot.height(), line), Qt::AlignCenter,
+                   d.y_title);
   painter.restore();
   // Edge cues.
   QFont bold = font();

@@ -63,8 +63,9 @@ class TestSkirtCalculator : public QObject {
       // ... at the state that produced it (a unique equilibrium: the film is stiff).
       QVERIFY2(std::abs(eq.point.state.e0 - k.e0) < 1e-6 * c,
                qPrintable(QString("e0 %1 vs %2").arg(eq.point.state.e0).arg(k.e0)));
-      QVERIFY2(std::abs(eq.point.state.gamma - k.tilt) < 1e-6 * c / calc.config().geometry.skirt_length,
-               qPrintable(QString("tilt %1 vs %2").arg(eq.point.state.gamma).arg(k.tilt)));
+      QVERIFY2(
+          std::abs(eq.point.state.gamma - k.tilt) < 1e-6 * c / calc.config().geometry.skirt_length,
+          qPrintable(QString("tilt %1 vs %2").arg(eq.point.state.gamma).arg(k.tilt)));
       QVERIFY(eq.iterations <= 20);
     }
   }
@@ -91,7 +92,8 @@ class TestSkirtCalculator : public QObject {
              qPrintable(error));
     // The range stated is the one at which the film just vanishes.
     const auto [lo, hi] = calc.E0Range(0.0);
-    QVERIFY(std::abs(calc.MinGap(hi, 0.0).gap) < 1e-15 && std::abs(calc.MinGap(lo, 0.0).gap) < 1e-15);
+    QVERIFY(std::abs(calc.MinGap(hi, 0.0).gap) < 1e-15 &&
+            std::abs(calc.MinGap(lo, 0.0).gap) < 1e-15);
     // The barrel has no drop at mid-length: the piston fits within ±c there.
     QVERIFY(std::abs(hi - c) < 1e-15 && std::abs(lo + c) < 1e-15);
     s.e0 = 0.0;
@@ -151,9 +153,12 @@ class TestSkirtCalculator : public QObject {
       eqs.push_back(calc.AtLoad(load));
       QVERIFY(eqs.back().converged);
       const auto& p = eqs.back().point;
-      qInfo("mesh %d+%d+%dx%d: e0 %.6g um, tilt %.6g mrad, MOFT %.6g um at y %.4g mm, friction %.6g N, "
-            "%d iterations", 8 * f, 2 * f, 8 * f, 10 * f, p.state.e0 * 1e6, p.state.gamma * 1e3,
-            p.film.moft * 1e6, p.film.moft_y * 1e3, p.film.friction_force, eqs.back().iterations);
+      qInfo(
+          "mesh %d+%d+%dx%d: e0 %.6g um, tilt %.6g mrad, MOFT %.6g um at y %.4g mm, friction %.6g "
+          "N, "
+          "%d iterations",
+          8 * f, 2 * f, 8 * f, 10 * f, p.state.e0 * 1e6, p.state.gamma * 1e3, p.film.moft * 1e6,
+          p.film.moft_y * 1e3, p.film.friction_force, eqs.back().iterations);
     }
     auto order = [&](auto value) {
       const double d1 = value(eqs[1]) - value(eqs[0]), d2 = value(eqs[2]) - value(eqs[1]),
@@ -191,17 +196,21 @@ class TestSkirtCalculator : public QObject {
       if (std::abs(row.skirt_normal_force.value()) < 50.0) continue;
       SkirtState s;
       s.e0 = row.piston_lateral.value();
-      s.gamma = std::sin(row.piston_tilt.value());  // the film's tilt is sin of the piston's rotation
+      s.gamma =
+          std::sin(row.piston_tilt.value());  // the film's tilt is sin of the piston's rotation
       s.e0_dot = row.piston_lateral_velocity.value();
       s.gamma_dot = std::cos(row.piston_tilt.value()) * row.piston_tilt_rate.value();
       // results.csv's piston velocity is the pin's, + toward the head; the skirt's speed is the
       // axis point's at pin height, + toward the crank: C_p cos(tilt) times the tilt rate apart.
-      s.piston_velocity = -row.piston_velocity.value() +
-                          pin_offset * std::cos(row.piston_tilt.value()) * row.piston_tilt_rate.value();
+      s.piston_velocity = -row.piston_velocity.value() + pin_offset *
+                                                             std::cos(row.piston_tilt.value()) *
+                                                             row.piston_tilt_rate.value();
       const auto point = calc.AtState(s);
-      worst_force = std::max(worst_force, std::abs(point.film.lateral_force / row.skirt_normal_force.value() - 1));
-      worst_moment = std::max(worst_moment, std::abs(point.film.moment_about_pin - row.skirt_moment.value()) /
-                                                std::abs(row.skirt_normal_force.value() * c.skirt.length));
+      worst_force = std::max(
+          worst_force, std::abs(point.film.lateral_force / row.skirt_normal_force.value() - 1));
+      worst_moment =
+          std::max(worst_moment, std::abs(point.film.moment_about_pin - row.skirt_moment.value()) /
+                                     std::abs(row.skirt_normal_force.value() * c.skirt.length));
       ++compared;
     }
     qInfo("%d states: force within %.2g, moment within %.2g of force x skirt length", compared,

@@ -80,8 +80,7 @@ class TestSkirtCalculatorPanel : public QObject {
     Type(panel, "speed", "-9");
     WaitForResult(panel);
     QVERIFY2(panel->last()->ok, qPrintable(panel->statusLabel()->text()));
-    lubrication::SkirtCalculator calc(
-        engine::SkirtConfigFromCase(window.document()->engineCase()));
+    lubrication::SkirtCalculator calc(engine::SkirtConfigFromCase(window.document()->engineCase()));
     lubrication::SkirtState s;
     s.e0 = 12e-6, s.gamma = -0.3e-3, s.piston_velocity = -9.0;
     const lubrication::SkirtPoint direct = calc.AtState(s);
@@ -98,7 +97,8 @@ class TestSkirtCalculatorPanel : public QObject {
     Type(panel, "moment", QString::number(-direct.film.moment_about_pin, 'f', 3));
     WaitForResult(panel);
     QVERIFY2(panel->last()->ok, qPrintable(panel->statusLabel()->text()));
-    QVERIFY2(panel->statusLabel()->text().startsWith("Equilibrium found"), qPrintable(panel->statusLabel()->text()));
+    QVERIFY2(panel->statusLabel()->text().startsWith("Equilibrium found"),
+             qPrintable(panel->statusLabel()->text()));
     QVERIFY2(std::abs(Shown(panel, "e0") - 12e-6) < 0.01e-6,
              qPrintable(QString::number(Shown(panel, "e0"))));
 
@@ -135,8 +135,8 @@ class TestSkirtCalculatorPanel : public QObject {
     panel->mapSelector()->setCurrentIndex(1);
     const auto& values = panel->filmMap()->data().values;
     QVERIFY(!values.empty());
-    QVERIFY(std::abs(*std::min_element(values.begin(), values.end()) -
-                     Shown(panel, "moft") * 1e6) < 1e-9);
+    QVERIFY(std::abs(*std::min_element(values.begin(), values.end()) - Shown(panel, "moft") * 1e6) <
+            1e-9);
     QVERIFY(panel->filmMap()->data().value_title.contains("thickness"));
     panel->mapSelector()->setCurrentIndex(0);
 
