@@ -158,8 +158,7 @@ bool SkirtCalculator::Newton(const SkirtLoad& load, double e0, double tilt, Skir
   Eigen::Vector2d x(e0, tilt);
   SkirtPoint point = evaluate(x);
   Eigen::Vector2d r = residual(point);
-  eq->converged = false;
-  eq->status = "Newton's method did not converge";
+  eq->converged = false;  // every way out of the loop below sets the status
   std::vector<double> history;  // |r| after each Newton step
   for (int it = 0;; ++it) {
     eq->point = point;

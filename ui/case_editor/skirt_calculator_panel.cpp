@@ -76,7 +76,7 @@ SkirtCalculation Calculate(const engine::EngineCase& engine_case, SkirtCalculato
       s.piston_velocity = si["speed"];
       out.point = calc.AtState(s);
       out.ok = true;
-      out.message = QString("Film at the given state (%1 skirt solve)").arg(1);
+      out.message = QString("Film at the given state (one skirt solve)");
     } else {
       const lubrication::SkirtEquilibrium eq =
           calc.AtLoad({si["side_force"], si["moment"], si["speed"]});
