@@ -17,7 +17,17 @@ struct SkirtFilmSample {
   double moment_about_pin = 0.0;      ///< [N·m]
   double moft = 0.0;                  ///< [m]
   double fpl = 0.0;                   ///< friction power loss [W]
-  double max_pressure = 0.0;          ///< [Pa]
+  double max_pressure = 0.0;          ///< peak hydrodynamic film pressure [Pa]
+  double max_contact_pressure = 0.0;  ///< peak asperity contact pressure [Pa]
+  /// Asperity (boundary-friction) part of friction_force [N]; the hydrodynamic part is
+  /// friction_force − contact_friction_force.
+  double contact_friction_force = 0.0;
+  /// Asperity part of fpl: fpl · contact_friction_force / friction_force (0 without friction),
+  /// so that the two parts of the loss add up to fpl exactly [W].
+  double contact_fpl = 0.0;
+  /// Where the minimum film is: angle from the thrust axis [rad] and distance from the skirt
+  /// top [m] (the solver's skirt coordinates).
+  double moft_alpha = 0.0, moft_y = 0.0;
   double min_gap = 0.0;  ///< smallest geometric gap over the panels (< 0: piston in the liner) [m]
   long clamped_nodes = 0;
   double power = 0.0;  ///< power of the film forces on the piston, F ė0 + M γ̇ + F_f u_p [W] (≤ 0)
@@ -36,7 +46,15 @@ struct BearingFilmSample {
   double eps_dot = 0.0;                                          ///< [1/s]
   double moft = 0.0;                                             ///< [m]
   double fpl = 0.0;                                              ///< [W]
-  double max_pressure = 0.0;                                     ///< [Pa]
+  double max_pressure = 0.0;          ///< peak hydrodynamic film pressure [Pa]
+  double max_contact_pressure = 0.0;  ///< peak asperity contact pressure [Pa]
+  /// Circumferential friction force on the journal surface (friction_torque_journal / R_j),
+  /// + counter-clockwise [N], and its asperity (boundary-friction) part [N].
+  double friction_force = 0.0;
+  double contact_friction_force = 0.0;
+  /// Asperity part of fpl: fpl · contact_friction_force / friction_force (0 without friction),
+  /// so that the two parts of the loss add up to fpl exactly [W].
+  double contact_fpl = 0.0;
   Eigen::Vector2d force_on_rod = Eigen::Vector2d::Zero();        ///< film (crank pin) → rod [N]
   double friction_torque_journal = 0.0;                          ///< on the crank [N·m]
   double friction_torque_bearing = 0.0;                          ///< on the rod [N·m]

@@ -181,6 +181,11 @@ void LubricatedBigEndElement::ReportFilm(SkirtFilmSample*, BearingFilmSample* be
   b.moft = result_.moft;
   b.fpl = result_.friction_power_loss;
   b.max_pressure = result_.max_pressure;
+  b.max_contact_pressure = result_.max_contact_pressure;
+  b.friction_force = result_.friction_force_journal;
+  b.contact_friction_force = result_.contact_friction_force_journal;
+  b.contact_fpl =
+      b.friction_force != 0.0 ? b.fpl * (b.contact_friction_force / b.friction_force) : 0.0;
   b.force_on_rod = -loads_.head<2>();
   b.friction_torque_journal = loads_[2];
   b.friction_torque_bearing = loads_[3];

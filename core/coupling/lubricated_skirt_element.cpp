@@ -144,6 +144,12 @@ void LubricatedSkirtElement::ReportFilm(SkirtFilmSample* skirt, BearingFilmSampl
   f.moft = result_.moft;
   f.fpl = result_.friction_power_loss;
   f.max_pressure = result_.max_pressure;
+  f.max_contact_pressure = result_.max_contact_pressure;
+  f.contact_friction_force = result_.contact_friction_force;
+  f.contact_fpl =
+      f.friction_force != 0.0 ? f.fpl * (f.contact_friction_force / f.friction_force) : 0.0;
+  f.moft_alpha = result_.moft_alpha;
+  f.moft_y = result_.moft_y;
   f.min_gap = kin_.min_gap;
   f.clamped_nodes = result_.clamped_nodes;
   f.e0 = kin_.state.e0;

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <numbers>
@@ -121,7 +122,7 @@ Tracked TrackedFor(const EngineCase& c) {
     };
     return t;
   }
-  const double c_p = c.geometry.liner_radius - c.skirt.piston_radius;
+  const double c_p = SkirtClearance(c);
   const double c_b = c.big_end.bearing_radius - c.big_end.journal_radius;
   if (skirt) {
     t.quantities.push_back({"piston_lateral[m]", 0.01 * c_p});
@@ -177,6 +178,70 @@ std::string AtAngle(int cycle, double crank_deg) {
   if (cycle < 1) return fmt::format(" (run-in, {:.1f} °CA before the first cycle)", -crank_deg);
   return fmt::format(" (cycle {}, {:.1f} °CA)", cycle, crank_deg);
 }
+
+// Overall progress and time left for the monitor. Work is counted in cycles (the run-in as its
+// share of a cycle). The expected total is the typical cycle count until the run gets there,
+// then one cycle more than the current one (at most max_cycles). When the expected total grows,
+// the fraction is not recomputed from scratch (that made it fall back, e.g. from 60 % to 44 %
+// when cycle 2 started): the share still missing, 1 − f, is spread over the new remaining work,
+// so the fraction is continuous and never decreases. The time left is extrapolated from the
+// wall time per cycle of work so far (the film joints' set-up excluded); from
+// kRemainingSmoothedFrom of the work on it is smoothed: it counts down with the wall clock and
+// moves toward the extrapolation with a time constant of max(1 s, 20 % of the elapsed time), by
+// at most kRemainingMaxStep of the estimated whole run time per update.
+class ProgressClock {
+ public:
+  ProgressClock(int typical, int max_cycles, double run_in_cycles, double setup_time)
+      : typical_(typical),
+        max_cycles_(max_cycles),
+        run_in_cycles_(run_in_cycles),
+        setup_time_(setup_time) {}
+
+  /// `cycle`: 1-based cycle being computed (0 in the run-in); `work`: cycles done (with the
+  /// run-in's share); `elapsed`: wall time since the run started [s].
+  void Update(int cycle, double work, double elapsed, RunProgress* progress) {
+    const double total = run_in_cycles_ + std::min(max_cycles_, std::max(typical_, cycle + 1.0));
+    if (total > total_) {  // more work than expected: keep the fraction reached
+      anchor_fraction_ = total_ > 0.0 ? std::clamp(FractionAt(work), fraction_, 1.0) : 0.0;
+      anchor_work_ = total_ > 0.0 ? work : 0.0;
+      total_ = total;
+    }
+    fraction_ = std::clamp(FractionAt(work), fraction_, 1.0);
+    const double busy = std::max(0.0, elapsed - setup_time_);
+    // The first steps (the stiff start from rest) are slow: a rate from under 2 % of the
+    // expected work would overestimate the rest many times over.
+    const double raw = busy / std::max(work, 0.02 * total_) * std::max(0.0, total_ - work);
+    if (fraction_ < kRemainingSmoothedFrom) {
+      remaining_ = raw;  // too little done to smooth from: follow the extrapolation
+    } else {
+      const double dt = std::max(0.0, elapsed - last_elapsed_);
+      const double countdown = std::max(0.0, remaining_ - dt);
+      const double weight = 1.0 - std::exp(-dt / std::max(1.0, 0.2 * elapsed));
+      const double limit = kRemainingMaxStep * (elapsed + countdown);
+      remaining_ = countdown + std::clamp(weight * (raw - countdown), -limit, limit);
+    }
+    last_elapsed_ = elapsed;
+    progress->fraction = fraction_;
+    progress->remaining = remaining_;
+  }
+  /// The run's last output step: all done.
+  void Finish(RunProgress* progress) {
+    fraction_ = 1.0;
+    remaining_ = 0.0;
+    progress->fraction = 1.0;
+    progress->remaining = 0.0;
+  }
+
+ private:
+  double FractionAt(double work) const {
+    return anchor_fraction_ + (1.0 - anchor_fraction_) * (work - anchor_work_) /
+                                  std::max(total_ - anchor_work_, 1e-12);
+  }
+
+  const double typical_, max_cycles_, run_in_cycles_, setup_time_;
+  double total_ = 0.0, anchor_fraction_ = 0.0, anchor_work_ = 0.0;
+  double fraction_ = 0.0, remaining_ = -1.0, last_elapsed_ = 0.0;
+};
 
 // One run of the model as configured (no error estimate).
 RunResult RunSingle(const RunConfig& config, const RunMonitor& monitor,
@@ -264,15 +329,17 @@ RunResult RunSingle(const RunConfig& config, const RunMonitor& monitor,
   // 4 for film models without one. The run-in counts as its share of a cycle.
   const int typical = !has_films || run_in >= 1.5 * std::numbers::pi - 1e-9 ? 2 : 4;
   const double run_in_cycles = run_in / (4.0 * std::numbers::pi);
-  auto fraction_done = [&](double cycles_done) {
-    const double expected = std::max(typical, std::min(max_cycles, cycle + 1)) + run_in_cycles;
-    return (run_in_cycles + cycles_done) / expected;
-  };
-  // Fills the common progress fields, calls the monitor and sets a cancel/time-limit status.
-  auto report = [&](RunProgress& progress, const std::string& where) {
+  ProgressClock clock(typical, max_cycles, run_in_cycles, elapsed());
+  // Fills the common progress fields (`work`: cycles done, with the run-in's share; `last`: the
+  // run's last output step), calls the monitor and sets a cancel/time-limit status.
+  auto report = [&](RunProgress& progress, double work, bool last, const std::string& where) {
     progress.max_cycles = max_cycles;
     progress.elapsed = elapsed();
-    progress.remaining = progress.elapsed * (1.0 / std::max(progress.fraction, 1e-9) - 1.0);
+    if (last) {
+      clock.Finish(&progress);
+    } else {
+      clock.Update(progress.cycle, work, progress.elapsed, &progress);
+    }
     progress.steps = result.stats.steps;
     progress.reynolds_solves = result.reynolds_solves;
     const bool go_on = !monitor || monitor(progress);
@@ -313,9 +380,8 @@ RunResult RunSingle(const RunConfig& config, const RunMonitor& monitor,
         RunProgress progress;
         progress.run_in = true;
         progress.crank_angle_deg = crank_deg;
-        progress.fraction = fraction_done(0.0) * j / chunks;
         progress.sample = &current.back();
-        if (report(progress, where)) {
+        if (report(progress, run_in_cycles * j / chunks, false, where)) {
           result.samples = std::move(current);
           result.wall_time = elapsed();
           return result;
@@ -325,6 +391,7 @@ RunResult RunSingle(const RunConfig& config, const RunMonitor& monitor,
       integrator.SetTolerances(config.integrator);
       current.clear();
     }
+    coupling::CycleVerdict verdict;
     for (cycle = 1; cycle <= max_cycles; ++cycle) {
       current.clear();
       for (int k = 0; k < steps_per_cycle; ++k) {
@@ -361,13 +428,18 @@ RunResult RunSingle(const RunConfig& config, const RunMonitor& monitor,
           config.field_callback(frame);
           result.reynolds_solves = solves();
         }
+        // The cycle's verdict before its last step is reported, so that the monitor sees the
+        // run's last step as such (fraction 1).
+        const bool cycle_end = k == steps_per_cycle - 1;
+        if (cycle_end) verdict = steady.EndCycle();
         RunProgress progress;
         progress.cycle = cycle;
         progress.crank_angle_deg = crank_deg;
         progress.cycle_start_time = t_start + (cycle - 1) * cycle_time;
-        progress.fraction = fraction_done((cycle - 1) + (k + 1.0) / steps_per_cycle);
         progress.sample = &current.back();
-        if (report(progress, AtAngle(cycle, crank_deg))) {
+        const double work = run_in_cycles + (cycle - 1) + (k + 1.0) / steps_per_cycle;
+        const bool last = cycle_end && (verdict.converged || cycle == max_cycles);
+        if (report(progress, work, last, AtAngle(cycle, crank_deg))) {
           result.cycles = cycle;
           result.samples = previous.empty() ? current : previous;
           result.wall_time = elapsed();
@@ -375,7 +447,6 @@ RunResult RunSingle(const RunConfig& config, const RunMonitor& monitor,
         }
       }
       result.cycles = cycle;
-      const coupling::CycleVerdict verdict = steady.EndCycle();
       if (verdict.compared) {
         result.cycle_change = verdict.worst_relative_change;
         result.worst_quantity = verdict.worst_quantity;

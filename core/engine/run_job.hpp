@@ -80,13 +80,27 @@ struct RunProgress {
   bool run_in = false;            ///< the run-in before the first cycle (SolverCase::run_in_angle)
   double crank_angle_deg = 0.0;   ///< within the cycle, [0, 720); run-in: to the first cycle, < 0
   double cycle_start_time = 0.0;  ///< time of the cycle's first sample [s] (run time, not crank)
-  double fraction = 0.0;          ///< rough overall progress [0, 1]
-  double elapsed = 0.0;           ///< wall time so far [s]
-  double remaining = 0.0;         ///< estimate [s]
+  /// Overall progress [0, 1]: never decreases during a run (also from the run-in into cycle 1
+  /// and from cycle to cycle when more cycles turn out to be needed), 1 at the last output step
+  /// of a run that reached the steady state or max_cycles.
+  double fraction = 0.0;
+  double elapsed = 0.0;  ///< wall time so far [s]
+  /// Estimated wall time left [s]. From a fraction of kRemainingSmoothedFrom on it is smoothed:
+  /// between two updates it differs from the previous estimate minus the wall time in between by
+  /// at most kRemainingMaxStep × (elapsed + that count-down), so it counts down steadily instead
+  /// of jumping when a cycle starts.
+  double remaining = 0.0;
   long steps = 0;                 ///< integrator steps so far
   long reynolds_solves = 0;       ///< film solves so far (both joints)
   const CrankTrainSample* sample = nullptr;  ///< the step just computed
 };
+
+/// Largest change of RunProgress::remaining between two updates beyond the count-down of the
+/// wall time in between, as a share of the estimated whole run time (elapsed + remaining).
+inline constexpr double kRemainingMaxStep = 0.01;
+/// Fraction of the run from which RunProgress::remaining is smoothed (before it, it follows the
+/// extrapolation from the first steps).
+inline constexpr double kRemainingSmoothedFrom = 0.1;
 
 /// Return false to stop the run (it then ends as kCancelled with the rows so far).
 using RunMonitor = std::function<bool(const RunProgress&)>;

@@ -4,9 +4,11 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <numbers>
+#include <sstream>
 #include <stdexcept>
 
 #include "core/base/input_error.hpp"
@@ -17,40 +19,105 @@ namespace filmdyn::io {
 // The one list of columns: the documented core columns first, then the crank-train extras.
 const std::vector<ResultColumn>& ResultColumns() {
   static const std::vector<ResultColumn> columns = {
-      {"crank_angle[deg]", &OutputRow::crank_angle_deg},
-      {"time[s]", &OutputRow::time},
-      {"piston_lateral[m]", &OutputRow::piston_lateral},
-      {"piston_tilt[rad]", &OutputRow::piston_tilt},
-      {"piston_lateral_velocity[m/s]", &OutputRow::piston_lateral_velocity},
-      {"piston_tilt_rate[rad/s]", &OutputRow::piston_tilt_rate},
-      {"skirt_normal_force[N]", &OutputRow::skirt_normal_force},
-      {"skirt_friction_force[N]", &OutputRow::skirt_friction_force},
-      {"skirt_moment[N*m]", &OutputRow::skirt_moment},
-      {"skirt_moft[m]", &OutputRow::skirt_moft},
-      {"skirt_fpl[W]", &OutputRow::skirt_fpl},
-      {"journal_ecc_x[m]", &OutputRow::journal_ecc_x},
-      {"journal_ecc_y[m]", &OutputRow::journal_ecc_y},
-      {"bearing_eps[-]", &OutputRow::bearing_eps},
-      {"bearing_moft[m]", &OutputRow::bearing_moft},
-      {"bearing_fpl[W]", &OutputRow::bearing_fpl},
-      {"bigend_force_x[N]", &OutputRow::bigend_force_x},
-      {"bigend_force_y[N]", &OutputRow::bigend_force_y},
-      {"gas_force[N]", &OutputRow::gas_force},
-      {"piston_position[m]", &OutputRow::piston_position},
-      {"piston_velocity[m/s]", &OutputRow::piston_velocity},
-      {"piston_acceleration[m/s^2]", &OutputRow::piston_acceleration},
-      {"rod_angle[rad]", &OutputRow::rod_angle},
-      {"rod_angular_velocity[rad/s]", &OutputRow::rod_angular_velocity},
-      {"rod_angular_acceleration[rad/s^2]", &OutputRow::rod_angular_acceleration},
-      {"pin_force_x[N]", &OutputRow::pin_force_x},
-      {"pin_force_y[N]", &OutputRow::pin_force_y},
-      {"main_bearing_force_x[N]", &OutputRow::main_bearing_force_x},
-      {"main_bearing_force_y[N]", &OutputRow::main_bearing_force_y},
-      {"crank_torque[N*m]", &OutputRow::crank_torque},
-      {"cylinder_pressure[Pa]", &OutputRow::cylinder_pressure},
-      {"constraint_violation[-]", &OutputRow::constraint_violation},
+      {"crank_angle[deg]", &OutputRow::crank_angle_deg, "deg", 1.0},
+      {"time[s]", &OutputRow::time, "ms", 1e3},
+      {"piston_lateral[m]", &OutputRow::piston_lateral, "um", 1e6},
+      {"piston_tilt[rad]", &OutputRow::piston_tilt, "mrad", 1e3},
+      {"piston_lateral_velocity[m/s]", &OutputRow::piston_lateral_velocity, "mm/s", 1e3},
+      {"piston_tilt_rate[rad/s]", &OutputRow::piston_tilt_rate, "rad/s", 1.0},
+      {"skirt_normal_force[N]", &OutputRow::skirt_normal_force, "N", 1.0},
+      {"skirt_friction_force[N]", &OutputRow::skirt_friction_force, "N", 1.0},
+      {"skirt_moment[N*m]", &OutputRow::skirt_moment, "N*m", 1.0},
+      {"skirt_moft[m]", &OutputRow::skirt_moft, "um", 1e6},
+      {"skirt_fpl[W]", &OutputRow::skirt_fpl, "W", 1.0},
+      {"journal_ecc_x[m]", &OutputRow::journal_ecc_x, "um", 1e6},
+      {"journal_ecc_y[m]", &OutputRow::journal_ecc_y, "um", 1e6},
+      {"bearing_eps[-]", &OutputRow::bearing_eps, "-", 1.0},
+      {"bearing_moft[m]", &OutputRow::bearing_moft, "um", 1e6},
+      {"bearing_fpl[W]", &OutputRow::bearing_fpl, "W", 1.0},
+      {"bigend_force_x[N]", &OutputRow::bigend_force_x, "kN", 1e-3},
+      {"bigend_force_y[N]", &OutputRow::bigend_force_y, "kN", 1e-3},
+      {"gas_force[N]", &OutputRow::gas_force, "kN", 1e-3},
+      {"skirt_peak_pressure[Pa]", &OutputRow::skirt_peak_pressure, "MPa", 1e-6},
+      {"skirt_peak_contact_pressure[Pa]", &OutputRow::skirt_peak_contact_pressure, "MPa", 1e-6},
+      {"skirt_contact_friction_force[N]", &OutputRow::skirt_contact_friction_force, "N", 1.0},
+      {"skirt_contact_fpl[W]", &OutputRow::skirt_contact_fpl, "W", 1.0},
+      {"bearing_peak_pressure[Pa]", &OutputRow::bearing_peak_pressure, "MPa", 1e-6},
+      {"bearing_peak_contact_pressure[Pa]", &OutputRow::bearing_peak_contact_pressure, "MPa", 1e-6},
+      {"bearing_friction_force[N]", &OutputRow::bearing_friction_force, "N", 1.0},
+      {"bearing_contact_friction_force[N]", &OutputRow::bearing_contact_friction_force, "N", 1.0},
+      {"bearing_contact_fpl[W]", &OutputRow::bearing_contact_fpl, "W", 1.0},
+      {"bigend_force_rod_x[N]", &OutputRow::bigend_force_rod_x, "kN", 1e-3},
+      {"bigend_force_rod_y[N]", &OutputRow::bigend_force_rod_y, "kN", 1e-3},
+      {"piston_position[m]", &OutputRow::piston_position, "mm", 1e3},
+      {"piston_velocity[m/s]", &OutputRow::piston_velocity, "m/s", 1.0},
+      {"piston_acceleration[m/s^2]", &OutputRow::piston_acceleration, "m/s^2", 1.0},
+      {"rod_angle[rad]", &OutputRow::rod_angle, "deg", 180 / std::numbers::pi},
+      {"rod_angular_velocity[rad/s]", &OutputRow::rod_angular_velocity, "rad/s", 1.0},
+      {"rod_angular_acceleration[rad/s^2]", &OutputRow::rod_angular_acceleration, "rad/s^2", 1.0},
+      {"pin_force_x[N]", &OutputRow::pin_force_x, "kN", 1e-3},
+      {"pin_force_y[N]", &OutputRow::pin_force_y, "kN", 1e-3},
+      {"main_bearing_force_x[N]", &OutputRow::main_bearing_force_x, "kN", 1e-3},
+      {"main_bearing_force_y[N]", &OutputRow::main_bearing_force_y, "kN", 1e-3},
+      {"crank_torque[N*m]", &OutputRow::crank_torque, "N*m", 1.0},
+      {"cylinder_pressure[Pa]", &OutputRow::cylinder_pressure, "bar", 1e-5},
+      {"constraint_violation[-]", &OutputRow::constraint_violation, "-", 1.0},
   };
   return columns;
+}
+
+std::string ResultsCsvInDisplayUnits(const std::string& si_csv) {
+  std::istringstream in(si_csv);
+  std::string line;
+  if (!std::getline(in, line))
+    throw InputError("results.csv header", "(empty)", "a header line of results.csv columns");
+  // The header's columns, each with its display scale.
+  std::vector<double> scales;
+  std::string header;
+  std::istringstream names(line);
+  for (std::string name; std::getline(names, name, ',');) {
+    const auto& columns = ResultColumns();
+    const auto it = std::find_if(columns.begin(), columns.end(),
+                                 [&name](const ResultColumn& c) { return name == c.header; });
+    if (it == columns.end()) {
+      throw InputError("results.csv header", "'" + name + "'",
+                       "a results.csv column (docs/outputs.md)");
+    }
+    const std::string base = name.substr(0, name.find('['));
+    header += (header.empty() ? "" : ",") + base + "[" + it->display_unit + "]";
+    scales.push_back(it->display_scale);
+  }
+  std::string out = header + "\n";
+  for (int row = 2; std::getline(in, line); ++row) {
+    if (line.empty()) continue;
+    std::istringstream cells(line);
+    std::size_t c = 0;
+    std::string converted;
+    for (std::string cell; std::getline(cells, cell, ','); ++c) {
+      if (c >= scales.size()) {
+        throw InputError("results.csv row " + std::to_string(row), line,
+                         "at most one cell per header column");
+      }
+      if (c > 0) converted += ",";
+      if (cell.empty()) continue;  // the model lacks the quantity: stays empty
+      std::size_t used = 0;
+      double value = 0.0;
+      try {
+        value = std::stod(cell, &used);
+      } catch (const std::exception&) {
+        used = 0;
+      }
+      if (used != cell.size()) {
+        throw InputError(
+            "results.csv row " + std::to_string(row) + ", column " + std::to_string(c + 1),
+            "'" + cell + "'", "a number or an empty cell");
+      }
+      converted += fmt::format("{:.10g}", value * scales[c]);
+    }
+    for (; c < scales.size(); ++c) converted += ",";  // trailing empty cells
+    out += converted + "\n";
+  }
+  return out;
 }
 
 std::vector<std::string> ResultsHeader() {
@@ -82,6 +149,8 @@ OutputRow RowFromSample(const engine::CrankTrainSample& s, engine::Model model,
     r.skirt_friction_force = 0.0;
     r.skirt_moment = s.liner_moment_about_pin;
     r.skirt_fpl = 0.0;
+    r.skirt_contact_friction_force = 0.0;
+    r.skirt_contact_fpl = 0.0;
   }
   if (skirt_lubricated && s.skirt.present) {  // film of the lubricated skirt (on the piston)
     r.skirt_normal_force = s.skirt.normal_force;
@@ -89,6 +158,10 @@ OutputRow RowFromSample(const engine::CrankTrainSample& s, engine::Model model,
     r.skirt_moment = s.skirt.moment_about_pin;
     r.skirt_moft = s.skirt.moft;
     r.skirt_fpl = s.skirt.fpl;
+    r.skirt_peak_pressure = s.skirt.max_pressure;
+    r.skirt_peak_contact_pressure = s.skirt.max_contact_pressure;
+    r.skirt_contact_friction_force = s.skirt.contact_friction_force;
+    r.skirt_contact_fpl = s.skirt.contact_fpl;
   }
   if (big_end_lubricated && s.bearing.present) {  // journal orbit in the rod-fixed frame
     r.journal_ecc_x = s.bearing.journal_ecc_rod.x();
@@ -98,14 +171,29 @@ OutputRow RowFromSample(const engine::CrankTrainSample& s, engine::Model model,
     r.bearing_fpl = s.bearing.fpl;
     r.bigend_force_x = s.bearing.force_on_rod.x();
     r.bigend_force_y = s.bearing.force_on_rod.y();
+    r.bearing_peak_pressure = s.bearing.max_pressure;
+    r.bearing_peak_contact_pressure = s.bearing.max_contact_pressure;
+    r.bearing_friction_force = s.bearing.friction_force;
+    r.bearing_contact_friction_force = s.bearing.contact_friction_force;
+    r.bearing_contact_fpl = s.bearing.contact_fpl;
   }
   if (!big_end_lubricated) {  // ideal pin joint: centred journal, frictionless
     r.journal_ecc_x = 0.0;
     r.journal_ecc_y = 0.0;
     r.bearing_eps = 0.0;
     r.bearing_fpl = 0.0;
+    r.bearing_friction_force = 0.0;
+    r.bearing_contact_friction_force = 0.0;
+    r.bearing_contact_fpl = 0.0;
     r.bigend_force_x = s.big_end_force_on_rod.x();
     r.bigend_force_y = s.big_end_force_on_rod.y();
+  }
+  if (r.bigend_force_x && r.bigend_force_y) {
+    // The same force in the rod frame (x ⟂ rod, y along the rod toward the small end): the
+    // global axes turned by the rod angle, as the journal orbit is given.
+    const double c = std::cos(s.rod_angle), sn = std::sin(s.rod_angle);
+    r.bigend_force_rod_x = c * *r.bigend_force_x + sn * *r.bigend_force_y;
+    r.bigend_force_rod_y = -sn * *r.bigend_force_x + c * *r.bigend_force_y;
   }
   r.gas_force = s.gas_force;
   r.piston_position = s.piston_position;

@@ -19,19 +19,34 @@ struct OutputRow {
       piston_tilt_rate, skirt_normal_force, skirt_friction_force, skirt_moment, skirt_moft,
       skirt_fpl, journal_ecc_x, journal_ecc_y, bearing_eps, bearing_moft, bearing_fpl,
       bigend_force_x, bigend_force_y, gas_force,
+      // Film peaks and the friction split of each joint (documented block, after the 19):
+      skirt_peak_pressure, skirt_peak_contact_pressure, skirt_contact_friction_force,
+      skirt_contact_fpl, bearing_peak_pressure, bearing_peak_contact_pressure,
+      bearing_friction_force, bearing_contact_friction_force, bearing_contact_fpl,
+      bigend_force_rod_x, bigend_force_rod_y,
       // Extras (after the core columns):
       piston_position, piston_velocity, piston_acceleration, rod_angle, rod_angular_velocity,
       rod_angular_acceleration, pin_force_x, pin_force_y, main_bearing_force_x,
       main_bearing_force_y, crank_torque, cylinder_pressure, constraint_violation;
 };
 
-/// One results.csv column: its header (name[unit]) and the row member holding it.
+/// One results.csv column: its header (name[unit], SI), the row member holding it, and the unit
+/// a person reads it in (the GUI's display units, ASCII: "um", "kN", "MPa") with the factor from
+/// SI to it.
 struct ResultColumn {
   const char* header;
   std::optional<double> OutputRow::*member;
+  const char* display_unit;
+  double display_scale;
 };
 /// Every column, in file order: the one definition of results.csv's columns.
 const std::vector<ResultColumn>& ResultColumns();
+
+/// results.csv text (SI, as written by WriteResultsCsv) converted to display units: each header
+/// `name[SI unit]` becomes `name[display unit]`, each value is multiplied by the column's
+/// display_scale (`%.10g`), empty cells stay empty. Throws InputError naming the column or row
+/// for a header it does not know or a cell that is not a number.
+std::string ResultsCsvInDisplayUnits(const std::string& si_csv);
 
 /// Header names with units, in column order.
 std::vector<std::string> ResultsHeader();

@@ -48,6 +48,7 @@ RunSummary SummarizeRun(const std::string& case_name, const engine::RunConfig& c
     if (f.key == "bearing_fpl_mean[W]") s.mean_fpl_bearing_w = f.value;
   }
   s.error_estimate = result.error_estimate;
+  s.warnings = RunWarnings(config, result);
   SolverSummary& v = s.solver;
   v.integrator = "CVODE BDF (SUNDIALS), dense Newton";
   v.steps = result.stats.steps;
@@ -164,6 +165,20 @@ json SummaryToJson(const RunSummary& s) {
         {"wall_time_s", e.coarse_wall_time},
         {"steps", e.coarse_steps}}},
       {"figures", figures}};
+  json warnings = json::array();
+  for (const RunWarning& w : s.warnings) {
+    json o = {{"code", w.code},       {"joint", w.joint},
+              {"message", w.message}, {"value", w.value},
+              {"limit", w.limit},     {"crank_angle_deg", Optional(w.crank_angle_deg)}};
+    json ranges = json::array();
+    for (const auto& [from, to] : w.crank_angle_ranges_deg) ranges.push_back({from, to});
+    o["crank_angle_ranges_deg"] = ranges;
+    o["position_angle_deg"] = Optional(w.position_angle_deg);
+    o["position_axial_m"] = Optional(w.position_axial_m);
+    o["fields"] = w.fields;
+    warnings.push_back(o);
+  }
+  j["warnings"] = warnings;
   return j;
 }
 
@@ -250,6 +265,34 @@ RunSummary FromJson(const json& j) {
     fe.relative = Get<double>(f, "relative", at);
     Read(f, "order", at, &fe.figure.order);
     e.figures.push_back(fe);
+  }
+  json warnings = json::array();
+  Read(j, "warnings", "", &warnings);
+  if (!warnings.is_array()) throw std::runtime_error("\"warnings\" is not an array");
+  for (std::size_t k = 0; k < warnings.size(); ++k) {
+    const json& o = warnings[k];
+    const std::string at = "warnings." + std::to_string(k);
+    RunWarning w;
+    w.code = Get<std::string>(o, "code", at);
+    Read(o, "joint", at, &w.joint);
+    Read(o, "message", at, &w.message);
+    Read(o, "value", at, &w.value);
+    Read(o, "limit", at, &w.limit);
+    w.crank_angle_deg = GetOptional(o, "crank_angle_deg", at);
+    json ranges = json::array();
+    Read(o, "crank_angle_ranges_deg", at, &ranges);
+    if (!ranges.is_array())
+      throw std::runtime_error("\"" + at + ".crank_angle_ranges_deg\" is not an array");
+    for (const json& r : ranges) {
+      if (!r.is_array() || r.size() != 2 || !r[0].is_number() || !r[1].is_number()) {
+        throw std::runtime_error("\"" + at + ".crank_angle_ranges_deg\" holds no [from, to] pair");
+      }
+      w.crank_angle_ranges_deg.push_back({r[0].get<double>(), r[1].get<double>()});
+    }
+    w.position_angle_deg = GetOptional(o, "position_angle_deg", at);
+    w.position_axial_m = GetOptional(o, "position_axial_m", at);
+    Read(o, "fields", at, &w.fields);
+    s.warnings.push_back(std::move(w));
   }
   return s;
 }

@@ -10,6 +10,7 @@
 
 #include "core/engine/run_job.hpp"
 #include "core/io/results_writer.hpp"
+#include "core/io/run_warnings.hpp"
 
 namespace filmdyn::io {
 
@@ -63,6 +64,8 @@ struct RunSummary {
   std::vector<engine::HeadlineFigure> headline;
   /// Their estimated discretisation error ("discretisation_error").
   engine::ErrorEstimate error_estimate;
+  /// The engineering warnings of the run (io::RunWarnings; "warnings").
+  std::vector<RunWarning> warnings;
 };
 
 /// The summary of a finished (or stopped) run from its configuration, result and the rows

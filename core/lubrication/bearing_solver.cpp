@@ -224,6 +224,11 @@ const BearingResult& BearingSolver::Solve(const BearingState& s) {
   r.friction_torque_journal = R * fi.friction.surface1;
   r.friction_torque_bearing = R * fi.friction.surface2;
   r.friction_power_loss = std::abs(r.friction_torque_journal * (s.omega_journal - s.omega_bearing));
+  // The asperity part of surface1 = -mu u couette1 - poiseuille - sgn(u) mu_f int p_c dA.
+  r.friction_force_journal = fi.friction.surface1;
+  const double mu_f = params.film ? params.film->boundary_friction() : 0.0;
+  const double sgn = (params.u_diff > 0) - (params.u_diff < 0);
+  r.contact_friction_force_journal = -sgn * mu_f * fi.friction.contact;
 
   r.moft = fi.moft;
   if (fi.moft_node >= 0) {

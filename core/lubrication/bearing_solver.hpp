@@ -97,6 +97,10 @@ struct BearingResult {
   double friction_torque_journal = 0.0;   ///< torque on the journal about its centre [N m]
   double friction_torque_bearing = 0.0;   ///< torque on the bearing about its centre [N m]
   double friction_power_loss = 0.0;       ///< |T_journal (omega_j - omega_b)| [W]
+  /// Friction force on the journal surface along +theta: T_journal / R [N], and its asperity
+  /// (boundary-friction, mu_f p_c) part [N]; the rest is the hydrodynamic shear.
+  double friction_force_journal = 0.0;
+  double contact_friction_force_journal = 0.0;
   double moft = 0.0;                      ///< minimum film thickness [m]
   double moft_theta = 0.0, moft_z = 0.0;  ///< where (theta from max film [rad], z from edge [m])
   double max_pressure = 0.0, max_pressure_theta = 0.0;  ///< [Pa], [rad]

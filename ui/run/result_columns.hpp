@@ -28,6 +28,17 @@ enum class Column {
   kBigEndForceX,
   kBigEndForceY,
   kGasForce,
+  kSkirtPeakPressure,
+  kSkirtPeakContactPressure,
+  kSkirtContactFrictionForce,
+  kSkirtContactFpl,
+  kBearingPeakPressure,
+  kBearingPeakContactPressure,
+  kBearingFrictionForce,
+  kBearingContactFrictionForce,
+  kBearingContactFpl,
+  kBigEndForceRodX,
+  kBigEndForceRodY,
   kCount
 };
 constexpr int kColumnCount = int(Column::kCount);

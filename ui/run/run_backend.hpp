@@ -12,6 +12,7 @@
 
 #include "core/engine/engine_case.hpp"
 #include "core/engine/error_estimate.hpp"
+#include "core/io/run_warnings.hpp"
 #include "ui/fields/field_frames.hpp"
 #include "ui/run/result_columns.hpp"
 
@@ -62,6 +63,8 @@ class RunSink {
   virtual void ReportErrorEstimate(const engine::ErrorEstimate& estimate) { (void)estimate; }
   /// The film fields of the reported cycle (lubricated joints only).
   virtual void ReportFields(std::shared_ptr<const FieldFrames> fields) { (void)fields; }
+  /// The engineering warnings of the finished run (io::RunWarnings: what summary.json lists).
+  virtual void ReportWarnings(std::vector<io::RunWarning> warnings) { (void)warnings; }
 };
 
 using RunBackend =

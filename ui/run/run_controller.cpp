@@ -38,6 +38,9 @@ class NotifyingSink : public RunSink {
   void ReportErrorEstimate(const engine::ErrorEstimate& estimate) override {
     record_->ReportErrorEstimate(estimate);
   }
+  void ReportWarnings(std::vector<io::RunWarning> warnings) override {
+    record_->ReportWarnings(std::move(warnings));
+  }
   void Report(std::vector<RunSample> reported_cycle) override {
     record_->Report(std::move(reported_cycle));
     Notify();

@@ -85,8 +85,7 @@ class TestCoupledRun : public QObject {
     QVERIFY(fields_ok);
     QVERIFY(r.reynolds_solves > r.stats.steps);
     // (d) inside the clearances at every output step of the reported cycle.
-    const double cp =
-        config.engine_case.geometry.liner_radius - config.engine_case.skirt.piston_radius;
+    const double cp = engine::SkirtClearance(config.engine_case);
     double min_gap = 1.0, max_eps = 0.0, max_e0 = 0.0;
     for (const auto& s : r.samples) {
       min_gap = std::min(min_gap, s.skirt.min_gap);
@@ -159,8 +158,7 @@ class TestCoupledRun : public QObject {
       const double d_be = RmsDifference(rb.samples, ideal.samples, big_end, &ref);
       engine::RunConfig sk = CoarseConfig(engine::Model::kOnlySkirt);
       engine::EngineCase& c = sk.engine_case;
-      c.skirt.piston_radius =
-          c.geometry.liner_radius - scale * (c.geometry.liner_radius - c.skirt.piston_radius);
+      c.skirt.cold_clearance *= scale;
       for (double& h : c.skirt.profile_h) h *= scale;
       c.lubricant.viscosity /= scale;
       if (scale < 0.3) {

@@ -140,7 +140,7 @@ class TestFilmElements : public QObject {
     QVERIFY(std::abs((k2.state.gamma - k.state.gamma) / dt - k.state.gamma_dot) < 1e-6);
     // Smallest gap: the thrust edge at the barrel's waist (y = 14 mm, no profile drop; a mesh
     // line), c_p − (e0 + (y − a_p) γ).
-    const double cp = c.geometry.liner_radius - c.skirt.piston_radius;
+    const double cp = engine::SkirtClearance(c);
     const double expected = cp - (6e-6 + (0.014 - c.geometry.skirt_top_to_pin) * std::sin(4e-4));
     QVERIFY(std::abs(k.min_gap - expected) < 1e-12);
   }

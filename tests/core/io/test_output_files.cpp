@@ -17,6 +17,7 @@
 
 #include "core/base/input_error.hpp"
 #include "core/io/output_files.hpp"
+#include "core/io/results_writer.hpp"
 
 using namespace filmdyn;
 namespace fs = std::filesystem;
@@ -157,6 +158,37 @@ class TestOutputFiles : public QObject {
       QCOMPARE(folder.lexically_normal().begin()->string(), std::string("results"));
       QVERIFY(std::distance(folder.begin(), folder.end()) == 2);
     }
+  }
+
+  void resultsConvertToDisplayUnitsOrNameTheBadCell() {
+    namespace io = filmdyn::io;
+    // Every column has a display unit and a positive factor.
+    for (const io::ResultColumn& c : io::ResultColumns()) {
+      QVERIFY2(c.display_unit != nullptr && *c.display_unit != 0 && c.display_scale > 0, c.header);
+    }
+    const std::string si =
+        "crank_angle[deg],skirt_moft[m],gas_force[N],cylinder_pressure[Pa]\n"
+        "10,2.5e-05,-1500,5000000\n"
+        "11,,0,100000\n";
+    const std::string display = io::ResultsCsvInDisplayUnits(si);
+    QCOMPARE(QString::fromStdString(display),
+             QString("crank_angle[deg],skirt_moft[um],gas_force[kN],cylinder_pressure[bar]\n"
+                     "10,25,-1.5,50\n"
+                     "11,,0,1\n"));
+    auto error_of = [](const std::string& text) {
+      try {
+        io::ResultsCsvInDisplayUnits(text);
+      } catch (const filmdyn::InputError& e) {
+        return std::string(e.what());
+      }
+      return std::string();
+    };
+    QVERIFY(error_of("crank_angle[deg],speed[rpm]\n1,2\n").find("'speed[rpm]'") !=
+            std::string::npos);
+    const std::string bad = error_of("crank_angle[deg],gas_force[N]\n1,abc\n");
+    QVERIFY2(bad.find("row 2") != std::string::npos && bad.find("'abc'") != std::string::npos,
+             bad.c_str());
+    QVERIFY(error_of("").find("empty") != std::string::npos);
   }
 };
 

@@ -15,30 +15,30 @@ using namespace filmdyn;
 namespace {
 
 io::RunSummary Full() {
-  io::RunSummary s{.filmdyn_version = "9.9.9",
-                   .case_name = "c",
-                   .model = "skirt-lbrbe",
-                   .rpm = 4500.5,
-                   .status = "not converged",
-                   .complete = false,
-                   .message = "cycle-to-cycle change 0.02 above 0.01",
-                   .cycles = 7,
-                   .cycles_to_steady_state = 0,
-                   .cycle_to_cycle_change = 0.02,
-                   .cycle_to_cycle_worst_quantity = "bearing_moft",
-                   .wall_time_s = 12.25,
-                   .max_constraint_violation = 3e-12,
-                   .extremes = {{"bearing_moft[m]", {1.1e-6, 2.5e-5}},
-                                {"gas_force[N]", {-300.0, 41000.0}}},
-                   .mean_fpl_skirt_w = 659.75,
-                   .mean_fpl_bearing_w = std::nullopt,
-                   .solver = {"integrator", 5276, 12, 9000, 220, 12000, 300, 60000, 20.0, 30.0,
-                              1e-4},
-                   .pressure_peak_pa = 6.1e6,
-                   .pressure_peak_crank_angle_deg = 372.0,
-                   .headline = {{"skirt_fpl_mean[W]", "mean skirt FPL", 659.75, false},
-                                {"bearing_moft_min[m]", "min big-end MOFT", 1.1e-6, true}},
-                   .error_estimate = {}};
+  io::RunSummary s{
+      .filmdyn_version = "9.9.9",
+      .case_name = "c",
+      .model = "skirt-lbrbe",
+      .rpm = 4500.5,
+      .status = "not converged",
+      .complete = false,
+      .message = "cycle-to-cycle change 0.02 above 0.01",
+      .cycles = 7,
+      .cycles_to_steady_state = 0,
+      .cycle_to_cycle_change = 0.02,
+      .cycle_to_cycle_worst_quantity = "bearing_moft",
+      .wall_time_s = 12.25,
+      .max_constraint_violation = 3e-12,
+      .extremes = {{"bearing_moft[m]", {1.1e-6, 2.5e-5}}, {"gas_force[N]", {-300.0, 41000.0}}},
+      .mean_fpl_skirt_w = 659.75,
+      .mean_fpl_bearing_w = std::nullopt,
+      .solver = {"integrator", 5276, 12, 9000, 220, 12000, 300, 60000, 20.0, 30.0, 1e-4},
+      .pressure_peak_pa = 6.1e6,
+      .pressure_peak_crank_angle_deg = 372.0,
+      .headline = {{"skirt_fpl_mean[W]", "mean skirt FPL", 659.75, false},
+                   {"bearing_moft_min[m]", "min big-end MOFT", 1.1e-6, true}},
+      .error_estimate = {},
+      .warnings = {}};
   engine::ErrorEstimate& e = s.error_estimate;
   e.status = "estimated";
   e.figures = {{{"bearing_moft_min[m]", "min big-end MOFT", 1.1e-6, true}, 1.0e-6, 3.3e-8, 0.03}};
@@ -49,6 +49,21 @@ io::RunSummary Full() {
   e.tolerance_factor = 4.0;
   e.coarse_wall_time = 3.5;
   e.coarse_steps = 4000;
+  io::RunWarning contact;
+  contact.code = "asperity_contact";
+  contact.joint = "big_end";
+  contact.message = "big-end film thickness ratio h/σ = 0.72";
+  contact.value = 0.72;
+  contact.limit = 1.0;
+  contact.crank_angle_deg = 372.0;
+  contact.crank_angle_ranges_deg = {{355.0, 390.0}, {716.0, 4.0}};
+  contact.position_angle_deg = 181.5;
+  io::RunWarning assumed;
+  assumed.code = "assumed_inputs";
+  assumed.message = "2 inputs are still at the value the default case assumes";
+  assumed.value = 2.0;
+  assumed.fields = {"skirt.peklenik", "big_end.peklenik"};
+  s.warnings = {contact, assumed};
   return s;
 }
 
@@ -79,14 +94,29 @@ class TestRunSummary : public QObject {
     CompareSummaries(s, io::ReadSummaryJson(path));
     // The file's keys are the documented ones (docs/outputs.md).
     const nlohmann::json j = io::SummaryToJson(s);
-    for (const char* key :
-         {"filmdyn_version", "case", "model", "rpm", "status", "complete", "message", "cycles",
-          "cycles_to_steady_state", "cycle_to_cycle_change", "cycle_to_cycle_worst_quantity",
-          "wall_time_s", "max_constraint_violation", "extremes", "mean_fpl_w", "solver",
-          "pressure_curve", "headline", "discretisation_error"}) {
+    for (const char* key : {"filmdyn_version",
+                            "case",
+                            "model",
+                            "rpm",
+                            "status",
+                            "complete",
+                            "message",
+                            "cycles",
+                            "cycles_to_steady_state",
+                            "cycle_to_cycle_change",
+                            "cycle_to_cycle_worst_quantity",
+                            "wall_time_s",
+                            "max_constraint_violation",
+                            "extremes",
+                            "mean_fpl_w",
+                            "solver",
+                            "pressure_curve",
+                            "headline",
+                            "discretisation_error",
+                            "warnings"}) {
       QVERIFY2(j.contains(key), key);
     }
-    QCOMPARE(j.size(), std::size_t(19));
+    QCOMPARE(j.size(), std::size_t(20));
     QCOMPARE(j["discretisation_error"]["figures"]["bearing_moft_min[m]"]["relative"].get<double>(),
              0.03);
     QVERIFY(j["discretisation_error"]["warning"].get<bool>());  // 3 % > 1 %

@@ -1,0 +1,291 @@
+#include "core/io/run_warnings.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "core/base/input_error.hpp"
+#include "core/engine/case_schema.hpp"
+#include "core/io/case_file.hpp"
+#include "core/io/results_writer.hpp"
+
+namespace filmdyn::io {
+
+namespace {
+
+constexpr double kDeg = 180.0 / std::numbers::pi;
+
+// The crank angle of a sample within the reported cycle [°CA] (results.csv's first column).
+double CrankAngleDeg(const engine::CrankTrainSample& s) {
+  return RowFromSample(s, engine::Model::kIdeal, 0.0).crank_angle_deg.value_or(0.0);
+}
+
+// "355–390 °CA" pieces of the intervals where `crossed` holds, one per run of consecutive
+// samples; the first and last merge into one interval wrapping past 720 °CA when the samples
+// are a whole cycle.
+std::vector<std::pair<double, double>> Ranges(const std::vector<double>& angles,
+                                              const std::vector<bool>& crossed, bool whole_cycle) {
+  std::vector<std::pair<double, double>> ranges;
+  for (std::size_t i = 0; i < crossed.size(); ++i) {
+    if (!crossed[i]) continue;
+    if (i > 0 && crossed[i - 1] && !ranges.empty()) {
+      ranges.back().second = angles[i];
+    } else {
+      ranges.push_back({angles[i], angles[i]});
+    }
+  }
+  if (whole_cycle && ranges.size() > 1 && crossed.front() && crossed.back()) {
+    ranges.front().first = ranges.back().first;  // from > to: wraps
+    ranges.pop_back();
+  }
+  return ranges;
+}
+
+std::string RangesText(const std::vector<std::pair<double, double>>& ranges) {
+  std::string text;
+  for (std::size_t k = 0; k < ranges.size(); ++k) {
+    if (k) text += ", ";
+    text += ranges[k].first == ranges[k].second
+                ? fmt::format("{:.0f}", ranges[k].first)
+                : fmt::format("{:.0f}–{:.0f}", ranges[k].first, ranges[k].second);
+  }
+  return text + " °CA";
+}
+
+// The film-ratio warning of one joint (the worse of the two limits), if any.
+void FilmRatioWarning(const std::vector<engine::CrankTrainSample>& samples, bool skirt,
+                      double sigma, bool whole_cycle, std::vector<RunWarning>* out) {
+  if (samples.empty() || !(sigma > 0.0)) return;
+  std::vector<double> angles, ratios;
+  for (const engine::CrankTrainSample& s : samples) {
+    const bool present = skirt ? s.skirt.present : s.bearing.present;
+    const double moft = skirt ? s.skirt.moft : s.bearing.moft;
+    angles.push_back(CrankAngleDeg(s));
+    ratios.push_back(present && std::isfinite(moft) ? moft / sigma : INFINITY);
+  }
+  const auto worst = std::min_element(ratios.begin(), ratios.end()) - ratios.begin();
+  const double lambda = ratios[std::size_t(worst)];
+  if (!(lambda < kMixedLubricationRatio)) return;
+  const bool contact = lambda < kAsperityContactRatio;
+  RunWarning w;
+  w.code = contact ? "asperity_contact" : "mixed_lubrication";
+  w.joint = skirt ? "skirt" : "big_end";
+  w.value = lambda;
+  w.limit = contact ? kAsperityContactRatio : kMixedLubricationRatio;
+  w.crank_angle_deg = angles[std::size_t(worst)];
+  std::vector<bool> crossed;
+  for (double r : ratios) crossed.push_back(r < w.limit);
+  w.crank_angle_ranges_deg = Ranges(angles, crossed, whole_cycle);
+  const engine::CrankTrainSample& s = samples[std::size_t(worst)];
+  std::string where;
+  if (skirt) {
+    w.position_angle_deg = s.skirt.moft_alpha * kDeg;
+    w.position_axial_m = s.skirt.moft_y;
+    where = fmt::format("{:.0f}° from the thrust axis, {:.1f} mm below the skirt top",
+                        *w.position_angle_deg, *w.position_axial_m * 1e3);
+  } else {
+    const Eigen::Vector2d& e = s.bearing.journal_ecc_rod;
+    double angle = std::atan2(e.y(), e.x()) * kDeg;
+    if (angle < 0.0) angle += 360.0;
+    w.position_angle_deg = angle;
+    where = fmt::format("{:.0f}° around the big-end eye in the rod frame", angle);
+  }
+  const double moft = lambda * sigma;
+  w.message = fmt::format(
+      "{} film thickness ratio h/σ = {:.2f} (minimum film {:.3g} µm, composite roughness σ = "
+      "{:.3g} µm) at {:.0f} °CA, at {}; below {:g} over {}: {}",
+      skirt ? "skirt" : "big-end", lambda, moft * 1e6, sigma * 1e6, *w.crank_angle_deg, where,
+      w.limit, RangesText(w.crank_angle_ranges_deg),
+      contact ? "the surface asperities carry part of the load (asperity contact, boundary "
+                "friction and wear)"
+              : "mixed lubrication, the film is only a few roughness heights thick");
+  out->push_back(std::move(w));
+}
+
+// The embedded default case, read once.
+const LoadedCase* DefaultCase() {
+  static const std::optional<LoadedCase> loaded = []() -> std::optional<LoadedCase> {
+    try {
+      return LoadCase("");
+    } catch (const std::exception&) {
+      return std::nullopt;
+    }
+  }();
+  return loaded ? &*loaded : nullptr;
+}
+
+// Whether field `f` has the same value in both cases (the schema's list and text accessors
+// take a mutable case; nothing is changed).
+bool SameValue(const engine::CaseField& f, engine::EngineCase& a, engine::EngineCase& b) {
+  auto same = [](double x, double y) {
+    return x == y || std::abs(x - y) <= 1e-12 * std::max(std::abs(x), std::abs(y));
+  };
+  switch (f.kind) {
+    case engine::FieldKind::kNumber:
+    case engine::FieldKind::kInteger:
+      return f.get && same(f.get(a), f.get(b));
+    case engine::FieldKind::kNumberList: {
+      if (!f.list) return false;
+      const std::vector<double>& x = f.list(a);
+      const std::vector<double>& y = f.list(b);
+      if (x.size() != y.size()) return false;
+      for (std::size_t k = 0; k < x.size(); ++k) {
+        if (!same(x[k], y[k])) return false;
+      }
+      return true;
+    }
+    case engine::FieldKind::kText:
+      return f.text && f.text(a) == f.text(b);
+    case engine::FieldKind::kJointModel:
+      return false;  // the model is chosen per run, never an assumption
+  }
+  return false;
+}
+
+// The physical inputs the default case marks as assumed and this run still uses at that value.
+// Numerical settings (solver group: meshes, tolerances) are left out: the discretisation-error
+// estimate judges those. Fields of a joint that is ideal in this run do not count.
+void AssumedInputsWarning(const engine::EngineCase& c, std::vector<RunWarning>* out) {
+  const LoadedCase* reference = DefaultCase();
+  if (!reference) return;
+  const bool skirt = c.skirt.model == engine::JointModel::kLubricated;
+  const bool big_end = c.big_end.model == engine::JointModel::kLubricated;
+  engine::EngineCase run_case = c, assumed_case = reference->value;
+  RunWarning w;
+  for (const auto& [path, reason] : assumed_case.assumed) {
+    const engine::CaseField* f = engine::FindCaseField(path);
+    if (!f || f->group == engine::FieldGroup::kSolver) continue;
+    if (!skirt && path.rfind("skirt.", 0) == 0) continue;
+    if (!big_end && path.rfind("big_end.", 0) == 0) continue;
+    if (SameValue(*f, run_case, assumed_case)) w.fields.push_back(path);
+  }
+  if (w.fields.empty()) return;
+  w.code = "assumed_inputs";
+  w.value = static_cast<double>(w.fields.size());
+  std::string names;
+  for (std::size_t k = 0; k < w.fields.size(); ++k) names += (k ? ", " : "") + w.fields[k];
+  w.message = fmt::format(
+      "{} input{} still at the value the default case assumes because the paper does not give "
+      "it (docs/case-file.md gives each reason): {}",
+      w.fields.size(), w.fields.size() == 1 ? " is" : "s are", names);
+  out->push_back(std::move(w));
+}
+
+// The run's cylinder pressure is the default case's synthetic curve at this speed.
+void SyntheticPressureWarning(const engine::RunConfig& config, std::vector<RunWarning>* out) {
+  const LoadedCase* reference = DefaultCase();
+  if (!reference || config.pressure.Empty()) return;
+  engine::PressureCurve synthetic;
+  try {
+    synthetic = PressureCurveForSpeed(*reference, config.rpm);
+  } catch (const std::exception&) {
+    return;  // a speed the synthetic curves do not cover: the run's curve is another one
+  }
+  const double peak = synthetic.PeakPressure();
+  for (int k = 0; k < 720; ++k) {
+    const double phi = k * std::numbers::pi / 180.0;
+    if (std::abs(config.pressure.Pressure(phi) - synthetic.Pressure(phi)) > 1e-9 * peak) return;
+  }
+  RunWarning w;
+  w.code = "synthetic_pressure";
+  w.value = config.pressure.PeakPressure();
+  w.crank_angle_deg = config.pressure.PeakAngle() * kDeg;
+  w.message = fmt::format(
+      "the cylinder pressure is the synthetic single-zone curve at {:g} rpm (peak {:.1f} bar at "
+      "{:.0f} °CA), not a measured one (docs/pressure-model.md); give a measured curve with "
+      "--pressure-curve or the case's pressure_curves",
+      config.rpm, w.value * 1e-5, *w.crank_angle_deg);
+  out->push_back(std::move(w));
+}
+
+}  // namespace
+
+std::vector<RunWarning> RunWarnings(const engine::RunConfig& config,
+                                    const engine::RunResult& result) {
+  std::vector<RunWarning> out;
+  const engine::EngineCase& c = config.engine_case;
+  const auto& samples = result.samples;
+  const bool whole_cycle = result.status == engine::RunStatus::kCompleted ||
+                           result.status == engine::RunStatus::kNotConverged;
+  const bool skirt = c.skirt.model == engine::JointModel::kLubricated;
+  const bool big_end = c.big_end.model == engine::JointModel::kLubricated;
+  if (skirt) {
+    FilmRatioWarning(samples, true, std::hypot(c.skirt.roughness_skirt, c.skirt.roughness_liner),
+                     whole_cycle, &out);
+  }
+  if (big_end) {
+    FilmRatioWarning(samples, false,
+                     std::hypot(c.big_end.roughness_journal, c.big_end.roughness_bearing),
+                     whole_cycle, &out);
+    double eps = -1.0;
+    std::size_t at = 0;
+    for (std::size_t k = 0; k < samples.size(); ++k) {
+      if (samples[k].bearing.present && samples[k].bearing.eps > eps) {
+        eps = samples[k].bearing.eps;
+        at = k;
+      }
+    }
+    if (eps > kHighEccentricity) {
+      RunWarning w;
+      w.code = "high_eccentricity";
+      w.joint = "big_end";
+      w.value = eps;
+      w.limit = kHighEccentricity;
+      w.crank_angle_deg = CrankAngleDeg(samples[at]);
+      std::vector<double> angles;
+      std::vector<bool> crossed;
+      for (const engine::CrankTrainSample& s : samples) {
+        angles.push_back(CrankAngleDeg(s));
+        crossed.push_back(s.bearing.present && s.bearing.eps > kHighEccentricity);
+      }
+      w.crank_angle_ranges_deg = Ranges(angles, crossed, whole_cycle);
+      w.message = fmt::format(
+          "big-end eccentricity ratio ε = {:.3f} at {:.0f} °CA, above {:g} over {}: the journal "
+          "runs within {:.1f} µm of the bearing wall",
+          eps, *w.crank_angle_deg, kHighEccentricity, RangesText(w.crank_angle_ranges_deg),
+          (1.0 - eps) * (c.big_end.bearing_radius - c.big_end.journal_radius) * 1e6);
+      out.push_back(std::move(w));
+    }
+  }
+  if (result.status == engine::RunStatus::kNotConverged) {
+    RunWarning w;
+    w.code = "not_periodic";
+    // A non-finite change (a diverging quantity) as the largest double: summary.json keeps it.
+    w.value = std::isfinite(result.cycle_change) ? result.cycle_change
+                                                 : std::numeric_limits<double>::max();
+    w.limit = c.solver.steady_state_tolerance;
+    w.message =
+        result.cycles < 2
+            ? fmt::format(
+                  "no periodic steady state: solver.max_cycles = {} allows no second cycle to "
+                  "compare the first with, so the start-up transient may still be in the results",
+                  result.cycles)
+            : fmt::format(
+                  "no periodic steady state after {} cycles (solver.max_cycles): the last "
+                  "cycle-to-cycle change is {:.3g} % of the range of {}, above the tolerance of "
+                  "{:g} %; the reported cycle is the last one computed",
+                  result.cycles, 100.0 * result.cycle_change, result.worst_quantity,
+                  100.0 * w.limit);
+    out.push_back(std::move(w));
+  }
+  AssumedInputsWarning(c, &out);
+  SyntheticPressureWarning(config, &out);
+  return out;
+}
+
+std::string WarningShortText(const RunWarning& w) {
+  if (w.code == "asperity_contact" || w.code == "mixed_lubrication") {
+    return fmt::format("h/σ {:.2f} < {:g} {}", w.value, w.limit,
+                       w.joint == "skirt" ? "skirt" : "big end");
+  }
+  if (w.code == "high_eccentricity") return fmt::format("ε {:.3f} > {:g}", w.value, w.limit);
+  if (w.code == "not_periodic") return fmt::format("not periodic ({:.2g} %)", 100.0 * w.value);
+  if (w.code == "assumed_inputs") return fmt::format("{:.0f} assumed inputs", w.value);
+  if (w.code == "synthetic_pressure") return "synthetic pressure";
+  return w.code;
+}
+
+}  // namespace filmdyn::io

@@ -1,0 +1,55 @@
+#pragma once
+/// @file Engineering warnings about a finished run: the one definition of what FilmDyn warns
+/// about once a run has ended — a film thinner than three times or than the surface roughness,
+/// a big-end journal close to the bearing wall, no periodic steady state, inputs still at the
+/// values the default case assumes, the synthetic cylinder pressure. summary.json ("warnings"),
+/// the CLI and the GUI's run table show the same list. Codes and keys: docs/outputs.md.
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/engine/run_job.hpp"
+
+namespace filmdyn::io {
+
+/// Film thickness ratio λ = h_min / σ (σ = composite RMS roughness) below which the film is in
+/// mixed lubrication, and below which the asperities carry load.
+inline constexpr double kMixedLubricationRatio = 3.0;
+inline constexpr double kAsperityContactRatio = 1.0;
+/// Big-end eccentricity ratio above which the journal runs close to the bearing wall.
+inline constexpr double kHighEccentricity = 0.95;
+
+/// One warning. Stable codes: "asperity_contact", "mixed_lubrication" (film ratios; the worse
+/// of the two per joint), "high_eccentricity", "not_periodic", "assumed_inputs",
+/// "synthetic_pressure".
+struct RunWarning {
+  std::string code;
+  std::string joint;    ///< "skirt", "big_end", or empty (the whole run)
+  std::string message;  ///< one sentence with the numbers, for people
+  double value = 0.0;   ///< the worst value: λ, ε, the cycle-to-cycle change, a count of inputs
+  double limit = 0.0;   ///< the limit it crosses (0 when there is none)
+  /// Where in the reported cycle the worst value occurs [°CA].
+  std::optional<double> crank_angle_deg;
+  /// Intervals of the reported cycle [from, to] [°CA] where the limit is crossed (output steps
+  /// that cross it); from > to: the interval wraps past 720 °CA into the next cycle.
+  std::vector<std::pair<double, double>> crank_angle_ranges_deg;
+  /// Where the minimum film is at crank_angle_deg. Skirt: angle from the thrust axis [deg] and
+  /// distance below the skirt top [m]. Big end: direction of the journal's eccentricity in the
+  /// rod-fixed frame (counter-clockwise from the rod-frame x axis; 90° = toward the small end)
+  /// [deg], no axial position (the film is uniform across an aligned bearing).
+  std::optional<double> position_angle_deg;
+  std::optional<double> position_axial_m;
+  /// assumed_inputs: the dotted case paths still at their assumed values.
+  std::vector<std::string> fields;
+};
+
+/// The warnings of a run from its configuration and result (the reported cycle's samples; a
+/// run that stopped early is judged on what it computed). Never throws for a run's numbers.
+std::vector<RunWarning> RunWarnings(const engine::RunConfig& config,
+                                    const engine::RunResult& result);
+
+/// A few characters for a table cell, e.g. "h/σ 0.72 < 1", "ε 0.97 > 0.95".
+std::string WarningShortText(const RunWarning& warning);
+
+}  // namespace filmdyn::io

@@ -1,0 +1,316 @@
+// Engineering warnings, the per-step film peaks and friction split, and the run's progress, on
+// real runs of the default case (coarse skirt mesh, 2 °CA outputs, no error estimate):
+// - Skirt-LBRBE at 6000 rpm with a rough big end: its film falls below the composite roughness;
+//   the warning names the big end, a crank angle where results.csv's MOFT / σ is indeed below 1 and
+//   the minimum ratio; the peak film and contact pressures of each row equal the largest nodal
+//   values of the field frame of that step; the asperity friction equals μ_f ∫p_c dA of the field;
+//   the asperity and hydrodynamic parts of each joint's friction power add up to its FPL; progress
+//   never decreases from the run-in through cycles 1 and 2, ends at 1, and the time left never
+//   moves by more than the stated bound between updates; summary.json lists the warnings.
+// - Four times the viscosity (films far thicker than the roughness) and the Ideal model: none of
+//   the film or eccentricity warnings.
+// - A run stopped at max_cycles before it is periodic: the not-periodic warning with the last
+//   cycle-to-cycle change; progress still ends at 1.
+#include <QtTest>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <nlohmann/json.hpp>
+
+#include "core/engine/run_job.hpp"
+#include "core/io/case_file.hpp"
+#include "core/io/results_writer.hpp"
+#include "core/io/run_summary.hpp"
+#include "core/io/run_warnings.hpp"
+#include "core/lubrication/bearing_solver.hpp"
+#include "core/lubrication/skirt_solver.hpp"
+
+using namespace filmdyn;
+
+namespace {
+
+const io::LoadedCase& Loaded() {
+  static const io::LoadedCase loaded = io::LoadCase({});
+  return loaded;
+}
+
+engine::EngineCase CoarseCase() {
+  engine::EngineCase c = Loaded().value;
+  c.skirt.mesh_thrust = c.skirt.mesh_anti = 10;
+  c.skirt.mesh_axial = 12;
+  c.solver.output_interval = 2.0 * M_PI / 180.0;  // 2 °CA
+  c.solver.error_estimate = 0;
+  return c;
+}
+
+engine::RunConfig Config(const engine::EngineCase& c, engine::Model model, double rpm) {
+  return engine::MakeRunConfig(c, model, rpm, io::PressureCurveForSpeed(Loaded(), rpm));
+}
+
+// What the monitor saw.
+struct ProgressTrace {
+  std::vector<double> fraction, remaining, elapsed;
+  std::vector<int> cycle;
+  engine::RunMonitor Monitor() {
+    return [this](const engine::RunProgress& p) {
+      fraction.push_back(p.fraction);
+      remaining.push_back(p.remaining);
+      elapsed.push_back(p.elapsed);
+      cycle.push_back(p.cycle);
+      return true;
+    };
+  }
+};
+
+// Progress never decreases and ends at 1 with nothing left; after the first 10 % the time left
+// differs from the previous estimate counted down by the wall time in between by at most
+// kRemainingMaxStep of the estimated whole run time.
+void CheckProgress(const ProgressTrace& t) {
+  QVERIFY(t.fraction.size() > 10);
+  for (std::size_t k = 1; k < t.fraction.size(); ++k) {
+    QVERIFY2(t.fraction[k] >= t.fraction[k - 1],
+             qPrintable(QString("fraction fell from %1 to %2 at update %3 (cycle %4)")
+                            .arg(t.fraction[k - 1])
+                            .arg(t.fraction[k])
+                            .arg(k)
+                            .arg(t.cycle[k])));
+    QVERIFY(t.fraction[k] >= 0.0 && t.fraction[k] <= 1.0);
+  }
+  QCOMPARE(t.fraction.back(), 1.0);
+  QCOMPARE(t.remaining.back(), 0.0);
+  int checked = 0;
+  for (std::size_t k = 1; k + 1 < t.remaining.size(); ++k) {  // the last update is "done"
+    if (t.fraction[k - 1] < engine::kRemainingSmoothedFrom) continue;
+    const double countdown = std::max(0.0, t.remaining[k - 1] - (t.elapsed[k] - t.elapsed[k - 1]));
+    const double bound = engine::kRemainingMaxStep * (t.elapsed[k] + countdown) + 1e-12;
+    QVERIFY2(std::abs(t.remaining[k] - countdown) <= bound,
+             qPrintable(QString("time left jumped from %1 s to %2 s at update %3 (bound %4 s)")
+                            .arg(t.remaining[k - 1])
+                            .arg(t.remaining[k])
+                            .arg(k)
+                            .arg(bound)));
+    QVERIFY(t.remaining[k] >= 0.0);
+    ++checked;
+  }
+  QVERIFY(checked > 100);
+}
+
+// Largest nodal values of one step's field frame.
+struct FramePeaks {
+  double skirt_p = 0, skirt_pc = 0, bearing_p = 0, bearing_pc = 0;
+  double bearing_contact_integral = 0;  ///< ∫ p_c dA over the whole bearing film [N]
+};
+
+double MaxOf(const Eigen::VectorXd& v) { return std::max(0.0, v.maxCoeff()); }
+
+bool Near(double a, double b, double relative, double absolute) {
+  return std::abs(a - b) <= relative * std::max(std::abs(a), std::abs(b)) + absolute;
+}
+
+}  // namespace
+
+class TestRunWarnings : public QObject {
+  Q_OBJECT
+ private slots:
+  void coupledRunWithRoughBigEnd() {
+    // The default big end at 6000 rpm runs at h/σ ≥ 2.6 (mixed lubrication); with surfaces
+    // three to five times rougher (σ = 2.1 µm) its film of ~1.7 µm falls below σ.
+    engine::EngineCase rough = CoarseCase();
+    rough.big_end.roughness_journal = rough.big_end.roughness_bearing = 1.5e-6;
+    engine::RunConfig config = Config(rough, engine::Model::kSkirtLbrbe, 6000.0);
+    std::map<int, FramePeaks> peaks;  // by output step, newest cycle
+    int frame_cycle = 0;
+    config.field_callback = [&](const engine::FieldFrame& f) {
+      if (f.cycle != frame_cycle) peaks.clear(), frame_cycle = f.cycle;
+      FramePeaks p;
+      QVERIFY(f.skirt && f.bearing);
+      p.skirt_p = MaxOf(f.skirt->fields().pressure);
+      p.skirt_pc = MaxOf(f.skirt->fields().contact_pressure);
+      p.bearing_p = MaxOf(f.bearing->fields().pressure);
+      p.bearing_pc = MaxOf(f.bearing->fields().contact_pressure);
+      // A P1 field integrates exactly with the lumped (row-sum) areas.
+      const auto& area = f.bearing->fem().lumped_area();
+      const Eigen::VectorXd& pc = f.bearing->fields().contact_pressure;
+      for (std::size_t k = 0; k < area.size(); ++k) p.bearing_contact_integral += area[k] * pc[k];
+      if (f.bearing->config().mesh.symmetric_half) p.bearing_contact_integral *= 2.0;
+      peaks[f.step] = p;
+    };
+    ProgressTrace trace;
+    const engine::RunResult result = engine::RunJob(config, trace.Monitor());
+    QCOMPARE(engine::StatusName(result.status), std::string("completed"));
+    QVERIFY(result.cycles >= 2);  // run-in → cycle 1 → cycle 2: where the fraction used to fall
+    CheckProgress(trace);
+
+    const engine::EngineCase& c = config.engine_case;
+    const double omega = 6000.0 * 2.0 * M_PI / 60.0;
+    QCOMPARE(peaks.size(), result.samples.size());
+    double largest_contact_friction = 0.0;
+    for (std::size_t k = 0; k < result.samples.size(); ++k) {
+      const engine::CrankTrainSample& s = result.samples[k];
+      const io::OutputRow r = io::RowFromSample(s, config.model, 0.0);
+      const FramePeaks& p = peaks.at(int(k));
+      // Peaks: at least every nodal value of the step's frame, and attained.
+      for (const auto& [peak, nodal] : {std::pair{*r.skirt_peak_pressure, p.skirt_p},
+                                        {*r.skirt_peak_contact_pressure, p.skirt_pc},
+                                        {*r.bearing_peak_pressure, p.bearing_p},
+                                        {*r.bearing_peak_contact_pressure, p.bearing_pc}}) {
+        QVERIFY2(peak >= nodal * (1.0 - 1e-9),
+                 qPrintable(QString("step %1: %2 < %3").arg(k).arg(peak).arg(nodal)));
+        QVERIFY(Near(peak, nodal, 1e-6, 1e-3));
+      }
+      // Skirt: friction power split at the sliding speed the film was solved at.
+      const double u = s.skirt.speed;
+      const double F = *r.skirt_friction_force, Fc = *r.skirt_contact_friction_force;
+      const double sign = F * u < 0.0 ? -1.0 : 1.0;
+      const double contact = sign * Fc * u, hydrodynamic = sign * (F - Fc) * u;
+      QVERIFY(Near(*r.skirt_contact_fpl, contact, 1e-9, 1e-12));
+      QVERIFY(Near(contact + hydrodynamic, *r.skirt_fpl, 1e-9, 1e-12));
+      QVERIFY(*r.skirt_contact_fpl >= -1e-12);  // asperity friction only ever dissipates
+      // Big end: the asperity friction is μ_f ∫ p_c dA of the field, against the sliding.
+      const double Fb = *r.bearing_friction_force, Fbc = *r.bearing_contact_friction_force;
+      QVERIFY2(
+          Near(std::abs(Fbc), c.big_end.boundary_friction * p.bearing_contact_integral, 1e-6, 1e-9),
+          qPrintable(QString("step %1: %2 vs %3")
+                         .arg(k)
+                         .arg(Fbc)
+                         .arg(c.big_end.boundary_friction * p.bearing_contact_integral)));
+      const double ub = c.big_end.journal_radius * (omega - s.rod_angular_velocity);
+      QVERIFY(Fbc * ub <= 0.0);
+      const double sign_b = Fb * ub < 0.0 ? -1.0 : 1.0;
+      const double contact_b = sign_b * Fbc * ub, hydrodynamic_b = sign_b * (Fb - Fbc) * ub;
+      QVERIFY(Near(*r.bearing_contact_fpl, contact_b, 1e-6, 1e-9));
+      QVERIFY(Near(contact_b + hydrodynamic_b, *r.bearing_fpl, 1e-6, 1e-9));
+      largest_contact_friction = std::max(largest_contact_friction, std::abs(Fbc));
+    }
+    QVERIFY(largest_contact_friction > 0.0);  // the split is exercised: the asperities touch
+
+    // The big end's film falls below its composite roughness: asperity contact, where and when.
+    const double sigma = std::hypot(c.big_end.roughness_journal, c.big_end.roughness_bearing);
+    const std::vector<io::RunWarning> warnings = io::RunWarnings(config, result);
+    auto find = [&](const std::string& code, const std::string& joint) {
+      return std::find_if(warnings.begin(), warnings.end(), [&](const io::RunWarning& w) {
+        return w.code == code && w.joint == joint;
+      });
+    };
+    for (const io::RunWarning& w : warnings) qInfo("%s: %s", w.code.c_str(), w.message.c_str());
+    const auto contact = find("asperity_contact", "big_end");
+    QVERIFY(contact != warnings.end());
+    QVERIFY(find("mixed_lubrication", "big_end") == warnings.end());  // the worse one only
+    QVERIFY(contact->value < 1.0);
+    QVERIFY(contact->crank_angle_deg.has_value());
+    QVERIFY(contact->position_angle_deg.has_value());
+    double min_ratio = INFINITY;
+    bool found = false;
+    for (const engine::CrankTrainSample& s : result.samples) {
+      const io::OutputRow r = io::RowFromSample(s, config.model, 0.0);
+      const double ratio = *r.bearing_moft / sigma;
+      min_ratio = std::min(min_ratio, ratio);
+      if (std::abs(*r.crank_angle_deg - *contact->crank_angle_deg) < 1e-9) {
+        QVERIFY2(ratio < 1.0,
+                 qPrintable(QString("MOFT/σ = %1 at %2 °CA").arg(ratio).arg(*r.crank_angle_deg)));
+        QCOMPARE(ratio, contact->value);
+        found = true;
+      }
+      // Every step below 1 lies in one of the warning's intervals.
+      if (ratio < 1.0) {
+        const double a = *r.crank_angle_deg;
+        const bool inside = std::any_of(
+            contact->crank_angle_ranges_deg.begin(), contact->crank_angle_ranges_deg.end(),
+            [a](const auto& range) {
+              return range.first <= range.second ? a >= range.first && a <= range.second
+                                                 : a >= range.first || a <= range.second;
+            });
+        QVERIFY2(inside, qPrintable(QString("%1 °CA is below 1 but in no interval").arg(a)));
+      }
+    }
+    QVERIFY(found);
+    QCOMPARE(contact->value, min_ratio);
+    QVERIFY(!contact->crank_angle_ranges_deg.empty());
+    QVERIFY(QString::fromStdString(contact->message).contains("big-end"));
+    // Inputs: the synthetic pressure curve, the assumed elastic constants.
+    QVERIFY(find("synthetic_pressure", "") != warnings.end());
+    const auto assumed = find("assumed_inputs", "");
+    QVERIFY(assumed != warnings.end());
+    QVERIFY(std::count(assumed->fields.begin(), assumed->fields.end(), "big_end.modulus_bearing"));
+    QVERIFY(!std::count(assumed->fields.begin(), assumed->fields.end(), "solver.max_cycles"));
+    QVERIFY(find("not_periodic", "") == warnings.end());
+
+    // summary.json lists the same warnings and reads them back.
+    const io::RunSummary summary = io::SummarizeRun("default", config, result, {});
+    const nlohmann::json j = io::SummaryToJson(summary);
+    QCOMPARE(j["warnings"].size(), warnings.size());
+    const io::RunSummary back = io::SummaryFromJson(j);
+    QCOMPARE(back.warnings.size(), warnings.size());
+    for (std::size_t k = 0; k < warnings.size(); ++k) {
+      QCOMPARE(back.warnings[k].code, warnings[k].code);
+      QCOMPARE(back.warnings[k].joint, warnings[k].joint);
+      QCOMPARE(back.warnings[k].value, warnings[k].value);
+      QCOMPARE(back.warnings[k].crank_angle_deg, warnings[k].crank_angle_deg);
+      QCOMPARE(back.warnings[k].crank_angle_ranges_deg, warnings[k].crank_angle_ranges_deg);
+      QCOMPARE(back.warnings[k].fields, warnings[k].fields);
+    }
+  }
+
+  void thickFilmsGiveNoFilmWarnings() {
+    engine::EngineCase c = CoarseCase();
+    c.lubricant.viscosity = 0.08;  // 4 x the default: films far thicker than the roughness
+    const engine::RunConfig config = Config(c, engine::Model::kSkirtLbrbe, 6000.0);
+    ProgressTrace trace;
+    const engine::RunResult result = engine::RunJob(config, trace.Monitor());
+    QCOMPARE(engine::StatusName(result.status), std::string("completed"));
+    CheckProgress(trace);
+    const double sigma = std::hypot(c.big_end.roughness_journal, c.big_end.roughness_bearing);
+    double min_ratio = INFINITY;
+    for (const engine::CrankTrainSample& s : result.samples) {
+      min_ratio = std::min(min_ratio, s.bearing.moft / sigma);
+    }
+    QVERIFY2(min_ratio >= io::kMixedLubricationRatio, qPrintable(QString::number(min_ratio)));
+    for (const io::RunWarning& w : io::RunWarnings(config, result)) {
+      QVERIFY2(w.code != "asperity_contact" && w.code != "mixed_lubrication" &&
+                   w.code != "high_eccentricity" && w.code != "not_periodic",
+               w.message.c_str());
+    }
+  }
+
+  void idealJointsGiveNoFilmWarnings() {
+    const engine::RunConfig config = Config(CoarseCase(), engine::Model::kIdeal, 6000.0);
+    ProgressTrace trace;
+    const engine::RunResult result = engine::RunJob(config, trace.Monitor());
+    QCOMPARE(engine::StatusName(result.status), std::string("completed"));
+    CheckProgress(trace);
+    for (const io::RunWarning& w : io::RunWarnings(config, result)) {
+      QVERIFY2(w.code != "asperity_contact" && w.code != "mixed_lubrication" &&
+                   w.code != "high_eccentricity" && w.code != "not_periodic",
+               w.message.c_str());
+      QVERIFY(w.joint.empty());
+    }
+    // Ideal joints: empty film peaks, zero friction parts.
+    const io::OutputRow r = io::RowFromSample(result.samples.at(100), config.model, 0.0);
+    QVERIFY(!r.skirt_peak_pressure && !r.bearing_peak_pressure && !r.bearing_peak_contact_pressure);
+    QCOMPARE(*r.skirt_contact_fpl, 0.0);
+    QCOMPARE(*r.bearing_contact_friction_force, 0.0);
+  }
+
+  void stoppedBeforePeriodicWarns() {
+    engine::EngineCase c = CoarseCase();
+    c.solver.run_in_angle = 0.0;  // the start-up transient is still in cycle 2
+    c.solver.max_cycles = 2;
+    const engine::RunConfig config = Config(c, engine::Model::kOnlyLbrbe, 6000.0);
+    ProgressTrace trace;
+    const engine::RunResult result = engine::RunJob(config, trace.Monitor());
+    QCOMPARE(engine::StatusName(result.status), std::string("not-converged"));
+    CheckProgress(trace);
+    const std::vector<io::RunWarning> warnings = io::RunWarnings(config, result);
+    const auto w = std::find_if(warnings.begin(), warnings.end(),
+                                [](const io::RunWarning& x) { return x.code == "not_periodic"; });
+    QVERIFY(w != warnings.end());
+    QCOMPARE(w->value, result.cycle_change);
+    QVERIFY(w->value > c.solver.steady_state_tolerance);
+    QCOMPARE(w->limit, c.solver.steady_state_tolerance);
+    QVERIFY(QString::fromStdString(w->message).contains("2 cycles"));
+  }
+};
+
+QTEST_GUILESS_MAIN(TestRunWarnings)
+#include "test_run_warnings.moc"

@@ -1,0 +1,76 @@
+// The run table's Warnings column on a real run: core's run job through the GUI's backend into a
+// run record (as the worker thread does it), then the table row. A big end with rough surfaces
+// runs below h/σ = 1 at 6000 rpm: the cell names the film ratio in red and its tooltip holds
+// every warning's message; a run without warnings shows "–".
+#include <QDir>
+#include <QtTest>
+#include <atomic>
+
+#include "core/io/case_file.hpp"
+#include "ui/run/run_backend.hpp"
+#include "ui/run/run_record.hpp"
+#include "ui/runs/run_table.hpp"
+
+using namespace filmdyn;
+
+namespace {
+
+ui::RunRequest RoughBigEnd() {
+  ui::RunRequest request;
+  request.engine_case =
+      io::LoadCase({}, {"big_end.roughness_journal=1.5e-6", "big_end.roughness_bearing=1.5e-6",
+                        "solver.error_estimate=0", "solver.output_interval=0.0349065850398866"})
+          .value;
+  request.model = "only-lbrbe";
+  request.rpm = 6000.0;
+  return request;
+}
+
+}  // namespace
+
+class TestRunWarningsColumn : public QObject {
+  Q_OBJECT
+ private slots:
+  void tableShowsTheRunsWarnings() {
+    auto run = std::make_shared<ui::RunRecord>(1, RoughBigEnd());
+    const std::atomic<bool> cancel{false};
+    ui::CoreRunBackend()(run->request(), cancel, *run);
+    run->finish(ui::RunStatus::kFinished, {});
+    const std::vector<io::RunWarning> warnings = run->engineeringWarnings();
+    QVERIFY(!warnings.empty());
+    QCOMPARE(warnings.front().code, std::string("asperity_contact"));
+
+    ui::RunTable table;
+    table.updateRun(run);
+    const QTableWidgetItem* cell = table.item(0, ui::RunTable::kWarnings);
+    QVERIFY(cell);
+    QVERIFY2(cell->text().startsWith("⚠ h/σ 0.") && cell->text().contains("< 1 big end"),
+             qPrintable(cell->text()));
+    QVERIFY(cell->text().contains(QString("+%1").arg(warnings.size() - 1)));
+    QCOMPARE(cell->foreground().color(), QColor(180, 0, 0));
+    for (const io::RunWarning& w : warnings) {
+      QVERIFY(cell->toolTip().contains(QString::fromStdString(w.message).toHtmlEscaped()));
+    }
+    QCOMPARE(table.horizontalHeaderItem(ui::RunTable::kWarnings)->text(), QString("Warnings"));
+
+    // A run that reported none.
+    auto quiet = std::make_shared<ui::RunRecord>(2, RoughBigEnd());
+    quiet->finish(ui::RunStatus::kFinished, {});
+    table.updateRun(quiet);
+    QCOMPARE(table.item(1, ui::RunTable::kWarnings)->text(), QString("–"));
+    QVERIFY(table.item(1, ui::RunTable::kWarnings)->toolTip().isEmpty());
+
+    // With FILMDYN_SCREENSHOT_DIR set: the table around the column, for review.
+    if (const QString dir = qEnvironmentVariable("FILMDYN_SCREENSHOT_DIR"); !dir.isEmpty()) {
+      table.resize(1500, 120);
+      table.show();
+      table.scrollToItem(table.item(0, ui::RunTable::kWarnings),
+                         QAbstractItemView::PositionAtCenter);
+      QDir().mkpath(dir);
+      QVERIFY(table.grab().toImage().save(QDir(dir).filePath("run_table_warnings.png")));
+    }
+  }
+};
+
+QTEST_MAIN(TestRunWarningsColumn)
+#include "test_run_warnings_column.moc"
