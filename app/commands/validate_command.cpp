@@ -20,9 +20,10 @@ Command MakeValidateCommand() {
   command.options = {{"suite", "NAME", "only this suite (" + suites + ")", true},
                      {"json", "", "print the rows as one JSON array"}};
   command.details =
-      "Exit status 0 when every row is within its tolerance, 1 otherwise. 'ours' is FilmDyn's\n"
-      "value, 'reference' the published value or closed form it is compared with.\n"
-      "Error is relative (|ours - reference| / |reference|) unless the row says 'abs'.";
+      "Exit status 0 when every row is within its tolerance, 1 otherwise. 'computed' is FilmDyn's\n"
+      "value, 'reference' the published value or closed form it is compared with (in --json:\n"
+      "'ours' and 'reference'). Error is relative (|computed - reference| / |reference|) unless\n"
+      "the row says 'abs'.";
   command.run = [](const Args& args, Streams& streams) {
     const auto rows = verification::RunSuites(args.Values("suite"));
     int failed = 0;
@@ -43,7 +44,7 @@ Command MakeValidateCommand() {
       streams.out << array.dump(2) << "\n";
     } else {
       streams.out << fmt::format("{:<12} {:<66} {:>14} {:>14} {:>11} {:>11}  {}\n", "suite", "case",
-                                 "ours", "reference", "error", "tolerance", "pass");
+                                 "computed", "reference", "error", "tolerance", "pass");
       for (const auto& row : rows) {
         streams.out << fmt::format("{:<12} {:<66} {:>14.6g} {:>14.6g} {:>11.3g} {:>11.3g}{}  {}\n",
                                    row.suite, row.name, row.ours, row.reference, row.Error(),

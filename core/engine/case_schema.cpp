@@ -1,6 +1,7 @@
 #include "core/engine/case_schema.hpp"
 
 #include <cmath>
+#include <map>
 #include <numbers>
 #include <type_traits>
 
@@ -25,6 +26,9 @@ FieldRange Inertia() { return {0.0, 1e5, true, false}; }    // [kg·m²]
 FieldRange Offset() { return {0.0, 100.0, false, false}; }  // a non-negative length [m]
 FieldRange Roughness() { return {0.0, 1e-4, true, false}; }      // RMS [m]; engine surfaces < 2 µm
 FieldRange Gap() { return {0.0, 0.01, false, false}; }           // profile/ovality gap [m]
+// A radial clearance [m]: > 0, at most 10 mm (large marine pistons run about 1 mm); the
+// cross-field rule adds < liner radius.
+FieldRange Clearance() { return {0.0, 0.01, true, false}; }
 FieldRange GaugePressure() { return {0.0, 1e9, false, false}; }  // [Pa], as the pressure curves
 FieldRange Viscosity() { return {0.0, 1e3, true, false}; }  // [Pa·s]; cold engine oil ~10 Pa·s
 FieldRange Between(double lo, double hi) { return {lo, hi, false, false}; }
@@ -99,6 +103,247 @@ CaseField Text(std::string path, std::string EngineCase::*member, const Info& in
   return f;
 }
 
+// The short label of every field (CaseField::symbol): the paper's symbol where it has one, a
+// few words otherwise; those of the two joints say which joint where the symbol alone does not.
+void SetSymbols(std::vector<CaseField>& fields) {
+  static const std::map<std::string_view, const char*> kSymbols = {
+      {"name", "name"},
+      {"description", "description"},
+      {"geometry.crank_radius", "L₁"},
+      {"geometry.rod_length", "L₂"},
+      {"geometry.crank_com_radius", "L_r"},
+      {"geometry.crank_mass", "m₁"},
+      {"geometry.crank_inertia", "J₁"},
+      {"geometry.rod_com_from_big_end", "L_c"},
+      {"geometry.rod_mass", "m₂"},
+      {"geometry.rod_inertia", "J₂"},
+      {"geometry.piston_mass", "m₃"},
+      {"geometry.piston_inertia", "J₃"},
+      {"geometry.pin_offset", "C_p"},
+      {"geometry.piston_com_lateral_offset", "c_g"},
+      {"geometry.skirt_top_to_pin", "a_p"},
+      {"geometry.skirt_top_to_com", "b_p"},
+      {"geometry.liner_radius", "R_l"},
+      {"geometry.compression_ratio", "compression ratio"},
+      {"geometry.gravity", "g"},
+      {"skirt.model", "skirt joint"},
+      {"skirt.cold_clearance", "c_skirt"},
+      {"skirt.length", "L_skirt"},
+      {"skirt.thrust_half_width", "α₁"},
+      {"skirt.anti_thrust_half_width", "α₂"},
+      {"skirt.roughness_skirt", "σ_skirt"},
+      {"skirt.roughness_liner", "σ_liner"},
+      {"skirt.peklenik", "γ skirt"},
+      {"skirt.modulus_skirt", "E_skirt"},
+      {"skirt.poisson_skirt", "ν_skirt"},
+      {"skirt.modulus_liner", "E_liner"},
+      {"skirt.poisson_liner", "ν_liner"},
+      {"skirt.boundary_friction", "μ_f skirt"},
+      {"skirt.mesh_thrust", "skirt mesh Ω₁"},
+      {"skirt.mesh_relief", "skirt mesh Ω₂"},
+      {"skirt.mesh_anti", "skirt mesh Ω₃"},
+      {"skirt.mesh_axial", "skirt mesh axial"},
+      {"skirt.profile_y", "skirt profile"},
+      {"skirt.profile_h", "skirt profile"},
+      {"skirt.ovality_alpha", "skirt ovality"},
+      {"skirt.ovality_h", "skirt ovality"},
+      {"big_end.model", "big-end joint"},
+      {"big_end.bearing_radius", "R_b"},
+      {"big_end.journal_radius", "R_j"},
+      {"big_end.width", "b"},
+      {"big_end.roughness_journal", "σ_j"},
+      {"big_end.roughness_bearing", "σ_b"},
+      {"big_end.peklenik", "γ big end"},
+      {"big_end.modulus_journal", "E_j"},
+      {"big_end.poisson_journal", "ν_j"},
+      {"big_end.modulus_bearing", "E_b"},
+      {"big_end.poisson_bearing", "ν_b"},
+      {"big_end.boundary_friction", "μ_f big end"},
+      {"big_end.mesh_theta", "big-end mesh around"},
+      {"big_end.mesh_theta_grading", "big-end grading around"},
+      {"big_end.mesh_z", "big-end mesh across"},
+      {"big_end.mesh_z_grading", "big-end grading across"},
+      {"big_end.oil_feed_pressure", "p_feed"},
+      {"lubricant.viscosity", "μ"},
+      {"lubricant.greenwood_tripp_k", "K"},
+      {"operating.rpm", ""},
+      {"operating.crankcase_pressure", "p_cc"},
+      {"operating.start_crank_angle", "start angle"},
+      {"solver.baumgarte_alpha", "𝒢"},
+      {"solver.baumgarte_beta", "ζ"},
+      {"solver.relative_tolerance", "rel. tolerance"},
+      {"solver.position_tolerance", "position tolerance"},
+      {"solver.output_interval", "output interval"},
+      {"solver.steady_state_tolerance", "steady-state tolerance"},
+      {"solver.max_cycles", "max cycles"},
+      {"solver.run_in_angle", "run-in"},
+      {"solver.error_estimate", "error estimate"},
+  };
+  for (CaseField& field : fields) {
+    const auto found = kSymbols.find(field.path);
+    // A new field without a short label still reads sensibly: its full label.
+    field.symbol = found != kSymbols.end() ? found->second : field.label;
+  }
+}
+
+// What every field is, in plain words (CaseField::description): the first line of the case
+// editor's tooltip. A test requires one for every field.
+void SetDescriptions(std::vector<CaseField>& fields) {
+  static const std::map<std::string_view, const char*> kDescriptions = {
+      {"name",
+       "A short name for this case; it names the folders that runs write their results to."},
+      {"description", "Free text about the case: where its values come from, what was changed."},
+      {"geometry.crank_radius",
+       "Distance from the main-bearing axis to the crank-pin axis: half the stroke."},
+      {"geometry.rod_length",
+       "Distance between the big-end and small-end (piston pin) centres of the connecting rod."},
+      {"geometry.crank_com_radius",
+       "Distance from the main-bearing axis to the crank's centre of mass."},
+      {"geometry.crank_mass",
+       "Mass of the crank. The crank turns at an imposed speed, so it only changes the "
+       "main-bearing force and the drive torque."},
+      {"geometry.crank_inertia",
+       "Moment of inertia of the crank about its centre of mass; it only changes the drive "
+       "torque."},
+      {"geometry.rod_com_from_big_end",
+       "Where the connecting rod's centre of mass lies, measured along the rod from the big-end "
+       "centre."},
+      {"geometry.rod_mass", "Mass of the connecting rod."},
+      {"geometry.rod_inertia", "Moment of inertia of the connecting rod about its centre of mass."},
+      {"geometry.piston_mass",
+       "Mass of the piston with its pin and rings: what the skirt film has to guide."},
+      {"geometry.piston_inertia",
+       "Moment of inertia of the piston about its centre of mass: resists the piston's tilt."},
+      {"geometry.pin_offset",
+       "Sideways offset of the piston-pin axis from the bore axis, positive toward the major "
+       "thrust side."},
+      {"geometry.piston_com_lateral_offset",
+       "Sideways offset of the piston's centre of mass from the bore axis, positive toward the "
+       "major thrust side."},
+      {"geometry.skirt_top_to_pin",
+       "Axial distance from the top of the skirt down to the piston-pin axis."},
+      {"geometry.skirt_top_to_com",
+       "Axial distance from the top of the skirt down to the piston's centre of mass (negative: "
+       "above the skirt top)."},
+      {"geometry.liner_radius",
+       "Radius of the cylinder bore. The gas pressure acts on the piston crown over this "
+       "circle."},
+      {"geometry.compression_ratio",
+       "Compression ratio; used only to build the synthetic cylinder-pressure curves."},
+      {"geometry.gravity", "Acceleration of gravity, along the cylinder axis toward the crank."},
+      {"skirt.model",
+       "How the piston is guided in the bore: ideally (no clearance) or on a lubricated oil "
+       "film with asperity contact."},
+      {"skirt.cold_clearance",
+       "Radial gap between the piston skirt and the bore at the skirt's largest diameter, "
+       "measured cold. The piston radius is the bore radius minus this gap; the barrel profile "
+       "and ovality add to it."},
+      {"skirt.length", "Axial length of the piston skirt, the part that carries the oil film."},
+      {"skirt.thrust_half_width",
+       "Half the angle that the skirt panel on the major thrust side covers around the bore."},
+      {"skirt.anti_thrust_half_width",
+       "Half the angle that the skirt panel on the anti-thrust side covers; between the panels "
+       "lies the pin-boss relief, which carries no film."},
+      {"skirt.roughness_skirt",
+       "Root-mean-square surface roughness of the skirt; with the liner's it sets when "
+       "asperities touch."},
+      {"skirt.roughness_liner", "Root-mean-square surface roughness of the liner (bore)."},
+      {"skirt.peklenik",
+       "Orientation of the roughness pattern: 1 for isotropic surfaces, below 1 for grooves "
+       "along the sliding direction, above 1 across it."},
+      {"skirt.modulus_skirt",
+       "Young's modulus of the skirt material; with the liner's it sets how hard touching "
+       "asperities press."},
+      {"skirt.poisson_skirt", "Poisson ratio of the skirt material."},
+      {"skirt.modulus_liner", "Young's modulus of the liner material."},
+      {"skirt.poisson_liner", "Poisson ratio of the liner material."},
+      {"skirt.boundary_friction",
+       "Friction coefficient where skirt and liner asperities touch (boundary lubrication)."},
+      {"skirt.mesh_thrust",
+       "Number of elements around the thrust panel in the film calculation; more is finer and "
+       "slower."},
+      {"skirt.mesh_relief", "Number of elements around the pin-boss relief between the panels."},
+      {"skirt.mesh_anti",
+       "Number of elements around the anti-thrust panel in the film calculation."},
+      {"skirt.mesh_axial", "Number of elements along the skirt in the film calculation."},
+      {"skirt.profile_y",
+       "Positions down the skirt, from its top, at which the barrel profile is given."},
+      {"skirt.profile_h",
+       "Barrel profile: how much the skirt radius drops below its largest diameter at each "
+       "position, adding to the clearance."},
+      {"skirt.ovality_alpha",
+       "Angles from the thrust axis at which the skirt's ovality is given (leave empty for a "
+       "round skirt)."},
+      {"skirt.ovality_h", "Ovality: the extra radial gap at each angle, adding to the clearance."},
+      {"big_end.model",
+       "How the connecting rod's big end turns on the crank pin: ideally (no clearance) or on a "
+       "lubricated oil film with asperity contact."},
+      {"big_end.bearing_radius", "Inner radius of the big-end bearing shells."},
+      {"big_end.journal_radius",
+       "Radius of the crank-pin journal; the bearing radius minus this is the radial clearance."},
+      {"big_end.width", "Axial width of the big-end bearing, the length of the oil film."},
+      {"big_end.roughness_journal", "Root-mean-square surface roughness of the crank-pin journal."},
+      {"big_end.roughness_bearing", "Root-mean-square surface roughness of the bearing lining."},
+      {"big_end.peklenik",
+       "Orientation of the roughness pattern in the big end: 1 for isotropic surfaces."},
+      {"big_end.modulus_journal", "Young's modulus of the crank-pin journal material."},
+      {"big_end.poisson_journal", "Poisson ratio of the crank-pin journal material."},
+      {"big_end.modulus_bearing", "Young's modulus of the bearing lining material."},
+      {"big_end.poisson_bearing", "Poisson ratio of the bearing lining material."},
+      {"big_end.boundary_friction",
+       "Friction coefficient where journal and bearing asperities touch (boundary lubrication)."},
+      {"big_end.mesh_theta",
+       "Number of elements around the bearing in the film calculation; more is finer and "
+       "slower."},
+      {"big_end.mesh_theta_grading",
+       "How much finer the elements are where the film is thinnest than elsewhere around the "
+       "bearing (1: all equal)."},
+      {"big_end.mesh_z", "Number of elements across the bearing width in the film calculation."},
+      {"big_end.mesh_z_grading",
+       "How much finer the elements are at the bearing edges than at its middle (1: all equal)."},
+      {"big_end.oil_feed_pressure",
+       "Gauge pressure of the oil supplied to the bearing; 0 means no feed hole."},
+      {"lubricant.viscosity",
+       "Dynamic viscosity of the oil at its running temperature, the same everywhere in both "
+       "films."},
+      {"lubricant.greenwood_tripp_k",
+       "Constant of the asperity contact model: scales the contact pressure of touching rough "
+       "surfaces."},
+      {"operating.rpm", "Crank speed of the run; the crank turns at this constant speed."},
+      {"operating.crankcase_pressure",
+       "Absolute gas pressure below the piston; the gas force is the cylinder pressure minus "
+       "this, times the bore area."},
+      {"operating.start_crank_angle", "Crank angle at which the simulation starts."},
+      {"solver.baumgarte_alpha",
+       "Stabilisation of the joint constraints against drift: how strongly position errors are "
+       "pulled back."},
+      {"solver.baumgarte_beta",
+       "Stabilisation of the joint constraints against drift: how strongly velocity errors are "
+       "damped."},
+      {"solver.relative_tolerance",
+       "Accuracy of the time integration, relative to each quantity's size; smaller is more "
+       "accurate and slower."},
+      {"solver.position_tolerance",
+       "Accuracy of the time integration for positions, as an absolute length."},
+      {"solver.output_interval", "Crank angle between two rows of results."},
+      {"solver.steady_state_tolerance",
+       "A run is steady when no monitored quantity changes from one cycle to the next by more "
+       "than this fraction of its range."},
+      {"solver.max_cycles",
+       "Most engine cycles computed before a run stops without a steady state."},
+      {"solver.run_in_angle",
+       "Crank angle computed before the first monitored cycle, so that the start from rest has "
+       "died out."},
+      {"solver.error_estimate",
+       "1: a second run on meshes with half the elements estimates how accurate the main "
+       "figures are; 0: off."},
+  };
+  for (CaseField& field : fields) {
+    const auto found = kDescriptions.find(field.path);
+    if (found != kDescriptions.end()) field.description = found->second;
+  }
+}
+
 std::vector<CaseField> MakeSchema() {
   using G = FieldGroup;
   const auto geo = &EngineCase::geometry;
@@ -165,7 +410,7 @@ std::vector<CaseField> MakeSchema() {
                       "+ toward the crank; Table I: −1.737 mm (CoM above the skirt top)"}));
   f.push_back(Scalar("geometry.liner_radius", geo, &CG::liner_radius,
                      {G::kGeometry, "Liner (bore) radius R_l", "m", "mm", kMm, Length(),
-                      "> piston_radius; the gas force acts on π R_l²; Table I: 36.50 mm"}));
+                      "> skirt.cold_clearance; the gas force acts on π R_l²; Table I: 36.50 mm"}));
   f.push_back(
       Scalar("geometry.compression_ratio", geo, &CG::compression_ratio,
              {G::kOperating, "Compression ratio (synthetic pressure model)", "-", "–", 1.0,
@@ -182,9 +427,10 @@ std::vector<CaseField> MakeSchema() {
                      1.0,
                      {},
                      "\"ideal\" (prismatic joint) or \"lubricated\" (mixed-lubrication film)"}));
-  f.push_back(Scalar("skirt.piston_radius", sk, &S::piston_radius,
-                     {G::kSkirt, "Piston radius R", "m", "mm", kMm, Length(),
-                      "< liner_radius (radial clearance R_l − R); Table I: 36.475 mm"}));
+  f.push_back(Scalar("skirt.cold_clearance", sk, &S::cold_clearance,
+                     {G::kSkirt, "Cold skirt clearance c (radial)", "m", "µm", kUm, Clearance(),
+                      "< liner_radius; piston radius R = R_l − c; Table I: 25 µm "
+                      "(R_l − R = 36.50 − 36.475 mm)"}));
   f.push_back(
       Scalar("skirt.length", sk, &S::length,
              {G::kSkirt, "Skirt length L_skirt", "m", "mm", kMm, Length(), "Table I: 28 mm"}));
@@ -304,17 +550,16 @@ std::vector<CaseField> MakeSchema() {
                      {G::kSolver, "Big-end mesh: axial grading", "-", "–", 1.0, Between(1.0, 100.0),
                       "largest (mid-plane) / smallest (edges) element across the width (1 = "
                       "uniform, the paper's)"}));
-  f.push_back(
-      Scalar("big_end.oil_feed_pressure", be, &B::oil_feed_pressure,
-             {G::kBigEnd, "Oil-feed pressure (gauge, 0 = none)", "Pa", "MPa", kMPa, GaugePressure(),
-              "0: no feed hole, the film starts at the line of centres (eq. 19)"}));
+  f.push_back(Scalar("big_end.oil_feed_pressure", be, &B::oil_feed_pressure,
+                     {G::kBigEnd, "Oil-feed pressure (gauge, 0 = none)", "Pa", "MPa", kMPa,
+                      GaugePressure(), "0: no feed hole, the film starts at the line of centres"}));
   f.push_back(Scalar("lubricant.viscosity", lub, &LubricantCase::viscosity,
                      {G::kLubricant, "Dynamic viscosity μ", "Pa*s", "mPa·s", 1e-3, Viscosity(),
                       "constant over the film; Table I: 0.02 Pa·s"}));
   f.push_back(Scalar(
       "lubricant.greenwood_tripp_k", lub, &LubricantCase::greenwood_tripp_k,
       {G::kLubricant, "Greenwood–Tripp constant K", "-", "–", 1.0, Open(0.0, 1.0, true, false),
-       "asperity contact pressure K·E'·F_5/2 (eq. 29): 1.198e-4"}));
+       "Greenwood–Tripp asperity contact pressure K·E'·F_5/2: 1.198e-4"}));
   f.push_back(Scalar("operating.rpm", op, &OperatingCase::rpm,
                      {G::kOperating, "Crank speed", "rpm", "rpm", 1.0,
                       Open(0.0, 30000.0, true, false), "imposed crank speed"}));
@@ -325,10 +570,10 @@ std::vector<CaseField> MakeSchema() {
                      {G::kOperating, "Start crank angle", "rad", "°CA", kDeg, Between(0.0, 4 * kPi),
                       "crank angle of the assembled start"}));
   f.push_back(Scalar("solver.baumgarte_alpha", sol, &SolverCase::baumgarte_alpha,
-                     {G::kSolver, "Baumgarte 𝒢 (eq. 39)", "1/s", "1/s", 1.0, Between(0.0, 1e9),
+                     {G::kSolver, "Baumgarte stabilisation 𝒢", "1/s", "1/s", 1.0, Between(0.0, 1e9),
                       "constraint stabilisation; Table II: 1e4"}));
   f.push_back(Scalar("solver.baumgarte_beta", sol, &SolverCase::baumgarte_beta,
-                     {G::kSolver, "Baumgarte ζ (eq. 39)", "1/s", "1/s", 1.0, Between(0.0, 1e9),
+                     {G::kSolver, "Baumgarte stabilisation ζ", "1/s", "1/s", 1.0, Between(0.0, 1e9),
                       "constraint stabilisation; Table II: 1e4"}));
   f.push_back(Scalar("solver.relative_tolerance", sol, &SolverCase::relative_tolerance,
                      {G::kSolver, "Relative tolerance", "-", "–", 1.0, Between(1e-14, 1e-2),
@@ -357,6 +602,8 @@ std::vector<CaseField> MakeSchema() {
                       Between(0, 1),
                       "1: a companion run on meshes with half the elements estimates the error "
                       "of the headline figures; 0: off"}));
+  SetSymbols(f);
+  SetDescriptions(f);
   return f;
 }
 
@@ -464,10 +711,11 @@ void CheckCaseConsistency(const EngineCase& c) {
     throw InputError("geometry.rod_com_from_big_end", FormatValue(g.rod_com_from_big_end),
                      "must lie on the rod: <= geometry.rod_length [m]");
   }
-  if (c.skirt.piston_radius >= g.liner_radius) {
+  if (!(c.skirt.cold_clearance < g.liner_radius)) {
     throw InputError(
-        "skirt.piston_radius", FormatValue(c.skirt.piston_radius),
-        "must be smaller than geometry.liner_radius = " + FormatValue(g.liner_radius) + " [m]");
+        "skirt.cold_clearance", FormatValue(c.skirt.cold_clearance),
+        "must be > 0 and smaller than geometry.liner_radius = " + FormatValue(g.liner_radius) +
+            " [m] (the piston radius is their difference)");
   }
   if (c.big_end.journal_radius >= c.big_end.bearing_radius) {
     throw InputError("big_end.journal_radius", FormatValue(c.big_end.journal_radius),

@@ -40,7 +40,13 @@ struct CaseField {
   FieldKind kind = FieldKind::kNumber;
   FieldGroup group = FieldGroup::kCase;
   std::string label;             ///< with the paper's symbol, e.g. "Journal radius R_j"
+  /// Short label for compact text such as a run's differences ("μ", "R_j", "skirt profile");
+  /// empty for the crank speed, whose unit ("rpm") names it.
+  std::string symbol;
   std::string help;              ///< one line: what it is, where the default comes from
+  /// What the input is and what it changes, in plain words for someone who knows engines but
+  /// not this program (the case editor's tooltips).
+  std::string description;
   std::string unit;              ///< SI unit as the file uses it: "m", "Pa*s", "-", "rpm", ...
   std::string display_unit;      ///< unit the GUI shows: "mm", "µm", "°", "MPa", ...
   double display_scale = 1.0;    ///< SI value = display value × display_scale

@@ -15,13 +15,13 @@ lubrication::SkirtConfig SkirtConfigFromCase(const EngineCase& c) {
   const SkirtCase& sk = c.skirt;
   lubrication::SkirtConfig config;
   lubrication::SkirtGeometry& g = config.geometry;
-  g.radius = sk.piston_radius;
+  g.radius = PistonRadius(c);
   g.skirt_length = sk.length;
-  g.radial_clearance = c.geometry.liner_radius - sk.piston_radius;
-  if (!(g.radial_clearance > 0.0)) {
-    throw InputError("skirt.piston_radius", FormatValue(sk.piston_radius),
-                     "must be smaller than geometry.liner_radius = " +
-                         FormatValue(c.geometry.liner_radius) + " [m] (no skirt clearance)");
+  g.radial_clearance = SkirtClearance(c);
+  if (!(g.radial_clearance > 0.0) || !(g.radius > 0.0)) {
+    throw InputError("skirt.cold_clearance", FormatValue(sk.cold_clearance),
+                     "must be > 0 and smaller than geometry.liner_radius = " +
+                         FormatValue(c.geometry.liner_radius) + " [m]");
   }
   g.pin_position = c.geometry.skirt_top_to_pin;
   g.alpha1 = sk.thrust_half_width;

@@ -194,14 +194,54 @@ engine::PressureCurveSource CurveFromJson(const json& j, const std::string& path
   return source;
 }
 
+// The piston radius was the skirt's size input before the cold skirt clearance
+// (docs/case-file.md, "Older case files").
+constexpr const char* kOldPistonRadius = "skirt.piston_radius";
+constexpr const char* kColdClearance = "skirt.cold_clearance";
+
+// Reads an older file's piston radius as the cold skirt clearance it implies, R_l − R; the radius
+// derived back from it (engine::PistonRadius) is the file's to the last bit. Errors name the old
+// key, which is the one the user sees in the file.
+void ReadOldPistonRadius(const json& root, Reader& reader, EngineCase& c,
+                         std::vector<std::string>* notes) {
+  const json* old = reader.Get(kOldPistonRadius);
+  if (!old) return;
+  if (Find(root, kColdClearance)) {
+    throw InputError(kOldPistonRadius, Dump(*old),
+                     "replaced by skirt.cold_clearance; give only skirt.cold_clearance (the cold "
+                     "radial skirt clearance; docs/case-file.md)");
+  }
+  const double radius = reader.ToNumber(kOldPistonRadius, *old);
+  RequirePositive(kOldPistonRadius, radius, "m");
+  const double liner = c.geometry.liner_radius;
+  const double clearance = liner - radius;
+  const engine::CaseField& field = *engine::FindCaseField(kColdClearance);
+  try {
+    field.Check(clearance);
+  } catch (const InputError& error) {
+    throw InputError(kOldPistonRadius, FormatValue(radius),
+                     "gives the cold skirt clearance geometry.liner_radius − piston_radius = " +
+                         FormatValue(clearance) + " [m], which " + error.allowed() +
+                         "; the piston must be smaller than geometry.liner_radius = " +
+                         FormatValue(liner) + " [m]");
+  }
+  field.set(c, clearance);
+  if (notes) {
+    notes->push_back("the case file gives skirt.piston_radius = " + FormatValue(radius) +
+                     " m (an older key): read as skirt.cold_clearance = " + FormatValue(clearance) +
+                     " m; saving the case writes the new key");
+  }
+}
+
 }  // namespace
 
-EngineCase CaseFromJson(const json& root) {
+EngineCase CaseFromJson(const json& root, std::vector<std::string>* notes) {
   if (!root.is_object())
     throw InputError("case", Dump(root).substr(0, 40), "must be a JSON object");
   EngineCase c;
   Reader reader{root, {}};
   VisitCase(reader, c);
+  ReadOldPistonRadius(root, reader, c, notes);
   reader.seen.insert("pressure_curves");
   reader.seen.insert("assumed");
   reader.seen.insert("filmdyn_case_version");
@@ -235,7 +275,8 @@ EngineCase CaseFromJson(const json& root) {
         throw InputError("assumed." + it.key(), Dump(*it), "names no field of the case");
       }
       if (!it->is_string()) throw InputError("assumed." + it.key(), Dump(*it), "must be a reason");
-      c.assumed[it.key()] = it->get<std::string>();
+      // An older file's note on the piston radius belongs to the clearance that replaces it.
+      c.assumed[it.key() == kOldPistonRadius ? kColdClearance : it.key()] = it->get<std::string>();
     }
   }
   engine::CheckCaseConsistency(c);
@@ -284,6 +325,10 @@ void ApplyOverride(json* root, const std::string& assignment) {
       node = &(*node)[index];
     } else if (node->is_object() && node->contains(key)) {
       node = &(*node)[key];
+    } else if (path == kOldPistonRadius) {
+      throw InputError("--set " + path, text,
+                       "replaced by skirt.cold_clearance, the cold radial skirt clearance "
+                       "(piston radius = geometry.liner_radius − skirt.cold_clearance)");
     } else {
       throw InputError("--set " + path, text, "no such field in the case (see docs/case-file.md)");
     }
@@ -326,12 +371,13 @@ LoadedCase LoadCase(const std::filesystem::path& path, const std::vector<std::st
     loaded.directory = path.parent_path();
     loaded.source = path.string();
   }
-  loaded.value = LoadCaseText(text, loaded.source, overrides);
+  loaded.value = LoadCaseText(text, loaded.source, overrides, &loaded.notes);
   return loaded;
 }
 
 engine::EngineCase LoadCaseText(const std::string& text, const std::string& source,
-                                const std::vector<std::string>& overrides) {
+                                const std::vector<std::string>& overrides,
+                                std::vector<std::string>* notes) {
   json root;
   try {
     // Nesting is bounded while parsing: a case is a few levels deep, and a value nested 10^5
@@ -347,7 +393,7 @@ engine::EngineCase LoadCaseText(const std::string& text, const std::string& sour
     throw InputError(source, "not a valid JSON file", error.what());
   }
   for (const std::string& assignment : overrides) ApplyOverride(&root, assignment);
-  return CaseFromJson(root);
+  return CaseFromJson(root, notes);
 }
 
 namespace {

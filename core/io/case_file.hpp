@@ -14,8 +14,12 @@ namespace filmdyn::io {
 
 /// Reads and checks a case from JSON. Missing fields keep their defaults; unknown fields, wrong
 /// types, values out of range, NaN and inconsistent geometry throw InputError naming the dotted
-/// path (e.g. "geometry.rod_length").
-engine::EngineCase CaseFromJson(const nlohmann::json& json);
+/// path (e.g. "geometry.rod_length"). A file written before the cold skirt clearance became the
+/// input gives `skirt.piston_radius` instead: it is read as skirt.cold_clearance =
+/// geometry.liner_radius − piston_radius (the same radius to the last bit), and a one-line note
+/// saying so is appended to *notes when given.
+engine::EngineCase CaseFromJson(const nlohmann::json& json,
+                                std::vector<std::string>* notes = nullptr);
 /// Writes every field (and the "assumed" notes).
 nlohmann::json CaseToJson(const engine::EngineCase& engine_case);
 
@@ -29,6 +33,9 @@ struct LoadedCase {
   engine::EngineCase value;
   std::filesystem::path directory;  ///< empty for the embedded default case
   std::string source;               ///< file path or "embedded:cases/default.json"
+  /// One line each: what the reader did beyond reading (an older key read as its replacement);
+  /// the CLI prints them, the GUI shows them in the status bar.
+  std::vector<std::string> notes;
 };
 
 /// Loads a case file (or the embedded default when path is empty), applies the overrides.
@@ -38,7 +45,8 @@ LoadedCase LoadCase(const std::filesystem::path& path,
 /// InputError and nothing else (the fuzz harness tests/fuzz/fuzz_case_reader.cpp holds it to
 /// that).
 engine::EngineCase LoadCaseText(const std::string& text, const std::string& source,
-                                const std::vector<std::string>& overrides = {});
+                                const std::vector<std::string>& overrides = {},
+                                std::vector<std::string>* notes = nullptr);
 
 /// The cylinder-pressure curve for `rpm`: the case curve at that speed, or linear interpolation
 /// between the two neighbouring speeds; InputError outside the tabulated speeds. CSV files are

@@ -4,7 +4,9 @@
 #include <QColor>
 #include <cmath>
 
+#include "core/engine/case_schema.hpp"
 #include "ui/case_editor/case_document.hpp"
+#include "ui/case_editor/field_tooltip.hpp"
 #include "ui/case_editor/parameter_table_model.hpp"
 
 namespace filmdyn::ui {
@@ -62,7 +64,10 @@ QVariant ArrayTableModel::data(const QModelIndex& index, int role) const {
     return FormatDisplayNumber((*values)[size_t(index.row())] /
                                columns_[size_t(index.column())].to_si);
   }
-  if (role == Qt::ToolTipRole && bad) return QString::fromStdString(issue->second);
+  if (role == Qt::ToolTipRole) {
+    if (bad) return QString::fromStdString(issue->second);
+    return columnToolTip(index.column());
+  }
   if (role == Qt::BackgroundRole && bad) return QBrush(QColor(255, 225, 225));
   if (role == Qt::TextAlignmentRole) return int(Qt::AlignRight | Qt::AlignVCenter);
   return {};
@@ -83,7 +88,16 @@ Qt::ItemFlags ArrayTableModel::flags(const QModelIndex& index) const {
   return QAbstractTableModel::flags(index) | Qt::ItemIsEditable;
 }
 
+QString ArrayTableModel::columnToolTip(int col) const {
+  const ArrayColumn& c = columns_[size_t(col)];
+  if (const engine::CaseField* field = engine::FindCaseField(c.field_path)) {
+    return FieldToolTip(*field);
+  }
+  return c.tip;
+}
+
 QVariant ArrayTableModel::headerData(int section, Qt::Orientation orientation, int role) const {
+  if (role == Qt::ToolTipRole && orientation == Qt::Horizontal) return columnToolTip(section);
   if (role != Qt::DisplayRole) return {};
   if (orientation == Qt::Horizontal) return columns_[size_t(section)].header;
   return section + 1;

@@ -19,6 +19,10 @@ struct ArrayColumn {
   double to_si = 1.0;
   /// The array in the case (nullptr when the table has no rows now, e.g. no curve selected).
   std::function<std::vector<double>*(engine::EngineCase&)> array;
+  /// The schema field behind the column ("skirt.profile_y"): its tooltip explains the column;
+  /// empty for arrays outside the schema (the pressure curves), which use `tip`.
+  std::string field_path = {};
+  QString tip = {};
 };
 
 class ArrayTableModel : public QAbstractTableModel {
@@ -46,6 +50,8 @@ class ArrayTableModel : public QAbstractTableModel {
  private:
   std::vector<double>* column(engine::EngineCase& c, int col) const;
   const std::vector<double>* column(int col) const;
+  /// The column's tooltip: its schema field's (FieldToolTip) or its own `tip`.
+  QString columnToolTip(int col) const;
 
   CaseDocument* document_;
   std::vector<ArrayColumn> columns_;

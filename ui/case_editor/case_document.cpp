@@ -92,7 +92,7 @@ bool CaseDocument::save(const QString& path, QString* error) {
 
 bool CaseDocument::load(const QString& path, QString* error) {
   engine::EngineCase loaded;
-  if (!LoadCaseFile(path, &loaded, error)) return false;
+  if (!LoadCaseFile(path, &loaded, error, &load_notes_)) return false;
   reset(loaded, path);
   return true;
 }

@@ -4,6 +4,7 @@
 /// (a case is a few kB), so undo/redo is exact for scalars, tables and curves alike.
 #include <QObject>
 #include <QString>
+#include <QStringList>
 #include <QUndoStack>
 
 #include "core/engine/engine_case.hpp"
@@ -39,6 +40,8 @@ class CaseDocument : public QObject {
   void reset(const engine::EngineCase& engine_case, const QString& file_path = {});
   bool save(const QString& path, QString* error);
   bool load(const QString& path, QString* error);
+  /// The case reader's notes on the last load (e.g. an older key read as its replacement).
+  QStringList loadNotes() const { return load_notes_; }
 
  signals:
   void caseChanged();
@@ -55,6 +58,7 @@ class CaseDocument : public QObject {
   CaseIssues issues_;
   QString run_blocker_;
   QString file_path_;
+  QStringList load_notes_;
 };
 
 }  // namespace filmdyn::ui

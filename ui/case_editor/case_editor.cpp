@@ -103,8 +103,10 @@ QWidget* CaseEditor::makeParameterPage(CaseGroup group) {
     for (const RunModel& m : RunModels()) model_combo_->addItem(m.title, m.key);
     model_combo_->setCurrentIndex(model_combo_->findData(RunModelKey(document_->engineCase())));
     model_combo_->setToolTip(
-        tr("Which joints are lubricated: Skirt-LBRBE both, "
-           "Only-Skirt, Only-LBRBE, or Ideal kinematics"));
+        tr("<qt>Which joints run on an oil film: <b>Skirt-LBRBE</b> the piston skirt and the "
+           "big-end bearing (LBRBE: lubricated big-end bearing); <b>Only-Skirt</b> the skirt "
+           "only; <b>Only-LBRBE</b> the big end only; <b>Ideal</b> neither (pure kinematics, "
+           "no clearances).</qt>"));
     connect(model_combo_, &QComboBox::activated, this, [this](int index) {
       engine::EngineCase next = document_->engineCase();
       ApplyRunModel(next, model_combo_->itemData(index).toString());
@@ -175,8 +177,10 @@ QWidget* CaseEditor::makeProfilePage() {
   auto* right = new QSplitter(Qt::Vertical, splitter);
   profile_model_ = new ArrayTableModel(
       document_,
-      {{tr("y [mm]"), 1e-3, [](engine::EngineCase& c) { return &c.skirt.profile_y; }},
-       {tr("h [µm]"), 1e-6, [](engine::EngineCase& c) { return &c.skirt.profile_h; }}},
+      {{tr("y [mm]"), 1e-3, [](engine::EngineCase& c) { return &c.skirt.profile_y; },
+        "skirt.profile_y"},
+       {tr("h [µm]"), 1e-6, [](engine::EngineCase& c) { return &c.skirt.profile_h; },
+        "skirt.profile_h"}},
       [] { return std::string("skirt.profile"); }, tr("skirt profile"), this);
   profile_chart_ = MakeChart(tr("y from skirt top [mm]"), tr("profile drop h [µm]"));
   right->addWidget(makeArrayBlock(tr("<b>Skirt profile</b> (barrel drop h_skirt vs. distance "
@@ -186,8 +190,9 @@ QWidget* CaseEditor::makeProfilePage() {
   ovality_model_ = new ArrayTableModel(
       document_,
       {{tr("α [°]"), std::numbers::pi / 180.0,
-        [](engine::EngineCase& c) { return &c.skirt.ovality_alpha; }},
-       {tr("h [µm]"), 1e-6, [](engine::EngineCase& c) { return &c.skirt.ovality_h; }}},
+        [](engine::EngineCase& c) { return &c.skirt.ovality_alpha; }, "skirt.ovality_alpha"},
+       {tr("h [µm]"), 1e-6, [](engine::EngineCase& c) { return &c.skirt.ovality_h; },
+        "skirt.ovality_h"}},
       [] { return std::string("skirt.ovality"); }, tr("skirt ovality"), this);
   ovality_chart_ = MakeChart(tr("α from the thrust axis [°]"), tr("ovality gap h [µm]"));
   right->addWidget(makeArrayBlock(tr("<b>Skirt ovality</b> (extra radial gap vs. angle from the "
@@ -244,8 +249,23 @@ QWidget* CaseEditor::makePressurePage() {
   };
   pressure_model_ = new ArrayTableModel(
       document_,
-      {{tr("crank angle [°CA]"), 1.0, curve_array(true)},
-       {tr("p_cyl absolute [MPa]"), 1e6, curve_array(false)}},
+      {{tr("crank angle [°CA]"),
+        1.0,
+        curve_array(true),
+        {},
+        tr("<qt><b>Crank angle</b><p>Where in the four-stroke cycle this pressure is measured: "
+           "0 to 720 °CA, 360 = firing top dead centre; strictly increasing.</p>"
+           "<p style='color:#666666'>In the case file: pressure_curves[k].crank_angle_deg</p>"
+           "</qt>")},
+       {tr("p_cyl absolute [MPa]"),
+        1e6,
+        curve_array(false),
+        {},
+        tr("<qt><b>Cylinder pressure (absolute)</b><p>Gas pressure above the piston at this "
+           "crank angle; the gas force on the piston is this minus the crankcase pressure, "
+           "times the bore area.</p><p>Unit: MPa &nbsp;·&nbsp; Allowed: ≥ 0</p>"
+           "<p style='color:#666666'>In the case file: pressure_curves[k].pressure (Pa)</p>"
+           "</qt>")}},
       [this] { return "pressure_curves[" + std::to_string(current_curve_) + "]"; },
       tr("pressure curve"), this);
   pressure_table_ = MakeTable(pressure_model_, splitter);

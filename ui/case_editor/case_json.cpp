@@ -33,9 +33,13 @@ bool SaveCaseFile(const engine::EngineCase& c, const QString& path, QString* err
   return true;
 }
 
-bool LoadCaseFile(const QString& path, engine::EngineCase* c, QString* error) {
+bool LoadCaseFile(const QString& path, engine::EngineCase* c, QString* error, QStringList* notes) {
   try {
     const io::LoadedCase loaded = io::LoadCase(path.toStdString());
+    if (notes) {
+      notes->clear();
+      for (const std::string& note : loaded.notes) *notes << QString::fromStdString(note);
+    }
     engine::EngineCase value = loaded.value;
     for (auto& source : value.pressure_curves) {
       if (source.file.empty()) continue;

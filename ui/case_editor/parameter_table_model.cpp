@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "ui/case_editor/case_document.hpp"
+#include "ui/case_editor/field_tooltip.hpp"
 
 namespace filmdyn::ui {
 
@@ -76,15 +77,10 @@ QVariant ParameterTableModel::data(const QModelIndex& index, int role) const {
           return {};
       }
       break;
-    case Qt::ToolTipRole: {
+    case Qt::ToolTipRole:
+      // A bad cell: core's reason (also shown in the status bar); otherwise what the input is.
       if (bad) return QString::fromStdString(issue->second);
-      const engine::CaseField& field = *p.field;
-      const bool dimensionless = field.unit.empty() || field.unit == "-";
-      return tr("%1\nAllowed: %2%3\nCase file: %4")
-          .arg(QString::fromStdString(field.help), QString::fromStdString(field.RangeText()),
-               dimensionless ? QString() : QString::fromStdString(" " + field.unit),
-               QString::fromStdString(p.path));
-    }
+      return FieldToolTip(*p.field);
     case Qt::BackgroundRole:
       if (bad) return QBrush(QColor(255, 205, 205));
       break;

@@ -222,6 +222,91 @@ class TestCaseFile : public QObject {
       QVERIFY(std::string(e.what()).find("(0, 100000]") != std::string::npos);
     }
   }
+  void coldSkirtClearanceIsTheInput() {
+    // The default case gives the clearance; the piston radius derived from it is Table I's
+    // 36.475 mm to the last bit, and the film's clearance is R_l − R as before.
+    const engine::EngineCase c = io::CaseFromJson(DefaultJson());
+    QVERIFY(!DefaultJson()["skirt"].contains("piston_radius"));
+    QCOMPARE(c.skirt.cold_clearance, 25e-6);
+    QVERIFY(engine::PistonRadius(c) == 0.036475);
+    QVERIFY(engine::SkirtClearance(c) == 0.0365 - 0.036475);
+    QCOMPARE(engine::SkirtConfigFromCase(c).geometry.radius, 0.036475);
+    QCOMPARE(io::CaseToJson(c)["skirt"]["cold_clearance"].get<double>(), 25e-6);
+    QVERIFY(!io::CaseToJson(c)["skirt"].contains("piston_radius"));
+    // --set changes it, the piston radius follows.
+    const io::LoadedCase set = io::LoadCase("", {"skirt.cold_clearance=4e-05"});
+    QCOMPARE(set.value.skirt.cold_clearance, 40e-6);
+    QCOMPARE(engine::PistonRadius(set.value), 0.0365 - 40e-6);
+    QVERIFY(set.notes.empty());
+
+    // An older file with the piston radius: read as the clearance it implies, with a note; the
+    // radius and the film's clearance are bit for bit those of the older reader.
+    json old = DefaultJson();
+    old["skirt"].erase("cold_clearance");
+    old["skirt"]["piston_radius"] = 0.0364;
+    old["assumed"]["skirt.piston_radius"] = "a note on the radius";
+    std::vector<std::string> notes;
+    const engine::EngineCase migrated = io::CaseFromJson(old, &notes);
+    QVERIFY(engine::PistonRadius(migrated) == 0.0364);
+    QVERIFY(engine::SkirtClearance(migrated) == 0.0365 - 0.0364);
+    QCOMPARE(notes.size(), std::size_t(1));
+    QVERIFY2(notes[0].find("skirt.piston_radius = 0.0364") != std::string::npos &&
+                 notes[0].find("skirt.cold_clearance = 0.0001") != std::string::npos,
+             notes[0].c_str());
+    QCOMPARE(migrated.assumed.count("skirt.cold_clearance"), std::size_t(1));
+    // Saved, it has the new key only, and reads back to the same case.
+    const json saved = io::CaseToJson(migrated);
+    QVERIFY(!saved["skirt"].contains("piston_radius"));
+    QCOMPARE(io::CaseToJson(io::CaseFromJson(saved)), saved);
+    // The old key through LoadCaseText: the note reaches LoadedCase's caller.
+    std::vector<std::string> text_notes;
+    io::LoadCaseText(old.dump(), "old.json", {}, &text_notes);
+    QCOMPARE(text_notes.size(), std::size_t(1));
+
+    auto message = [](const json& j) -> std::string {
+      try {
+        io::CaseFromJson(j);
+      } catch (const InputError& e) {
+        return e.what();
+      }
+      return "loads";
+    };
+    // Both keys: the old one is named with its replacement.
+    json both = DefaultJson();
+    both["skirt"]["piston_radius"] = 0.036475;
+    QCOMPARE(ErrorField(both), std::string("skirt.piston_radius"));
+    QVERIFY2(message(both).find("skirt.cold_clearance") != std::string::npos,
+             message(both).c_str());
+    // An old radius at or beyond the liner radius: named, with the liner radius.
+    json too_big = old;
+    too_big["skirt"]["piston_radius"] = 0.0366;
+    QCOMPARE(ErrorField(too_big), std::string("skirt.piston_radius"));
+    QVERIFY2(message(too_big).find("0.0366") != std::string::npos &&
+                 message(too_big).find("geometry.liner_radius = 0.0365") != std::string::npos,
+             message(too_big).c_str());
+    // A clearance of zero or less, or not smaller than the liner radius.
+    for (const double bad : {0.0, -1e-6}) {
+      json j = DefaultJson();
+      j["skirt"]["cold_clearance"] = bad;
+      QCOMPARE(ErrorField(j), std::string("skirt.cold_clearance"));
+      QVERIFY2(message(j).find("(0, 0.01]") != std::string::npos, message(j).c_str());
+    }
+    json small_bore = DefaultJson();
+    small_bore["geometry"]["liner_radius"] = 0.004;
+    small_bore["skirt"]["cold_clearance"] = 0.005;
+    QCOMPARE(ErrorField(small_bore), std::string("skirt.cold_clearance"));
+    QVERIFY2(message(small_bore).find("0.005") != std::string::npos &&
+                 message(small_bore).find("geometry.liner_radius = 0.004") != std::string::npos,
+             message(small_bore).c_str());
+    // --set of the old key on a new file names the replacement.
+    try {
+      io::LoadCase("", {"skirt.piston_radius=0.0364"});
+      QFAIL("no error");
+    } catch (const InputError& e) {
+      QCOMPARE(e.field(), std::string("--set skirt.piston_radius"));
+      QVERIFY2(std::string(e.what()).find("skirt.cold_clearance") != std::string::npos, e.what());
+    }
+  }
   void setOverrides() {
     json j = DefaultJson();
     io::ApplyOverride(&j, "geometry.rod_length=0.14");
@@ -268,7 +353,7 @@ class TestCaseFile : public QObject {
     // A curve file that does not exist names the field.
     json j = DefaultJson();
     j["pressure_curves"][0]["file"] = "missing.csv";
-    io::LoadedCase broken{io::CaseFromJson(j), "/nonexistent", "test"};
+    io::LoadedCase broken{io::CaseFromJson(j), "/nonexistent", "test", {}};
     try {
       io::PressureCurveForSpeed(broken, 1000);
       QFAIL("no error");

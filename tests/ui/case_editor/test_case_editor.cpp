@@ -13,12 +13,15 @@
 #include <QLineSeries>
 #include <QSettings>
 #include <QStandardPaths>
+#include <QStatusBar>
 #include <QTableView>
 #include <QTemporaryDir>
+#include <QToolTip>
 #include <QUndoStack>
 #include <QtTest>
 #include <cmath>
 
+#include "core/engine/case_schema.hpp"
 #include "core/io/case_file.hpp"
 #include "ui/case_editor/array_table_model.hpp"
 #include "ui/case_editor/case_document.hpp"
@@ -291,6 +294,107 @@ class TestCaseEditor : public QObject {
     QVERIFY2(status.first().first().toString().contains("bad.csv"),
              qPrintable(status.first().first().toString()));
     QCOMPARE(window.document()->engineCase().pressure_curves.size(), before.size());
+  }
+
+  void tooltipsExplainEachInputFromTheSchema() {
+    MainWindow window;
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    // A scalar: what it is in words, display unit, allowed range and default in display units,
+    // and the case-file path as the last line — all from core's schema row.
+    const QModelIndex clearance = ValueCell(window, CaseGroup::kSkirt, "skirt.cold_clearance");
+    QVERIFY(clearance.isValid());
+    QCOMPARE(clearance.data().toString(), QString("25"));  // µm
+    const QString tip = clearance.data(Qt::ToolTipRole).toString();
+    const filmdyn::engine::CaseField* field =
+        filmdyn::engine::FindCaseField("skirt.cold_clearance");
+    QVERIFY(field != nullptr && !field->description.empty());
+    QVERIFY2(tip.contains(QString::fromStdString(field->description).toHtmlEscaped()),
+             qPrintable(tip));
+    QVERIFY2(tip.contains("Unit: µm"), qPrintable(tip));
+    QVERIFY2(tip.contains("Allowed: (0, 10000] µm"), qPrintable(tip));
+    QVERIFY2(tip.contains("Default: 25 µm"), qPrintable(tip));
+    QVERIFY2(tip.contains("In the case file: skirt.cold_clearance"), qPrintable(tip));
+    QVERIFY(tip.indexOf("In the case file") > tip.indexOf("Default"));
+    // scripts/screenshots.sh-style runs keep a picture of the tooltip as a user sees it.
+    if (const QString dir = qEnvironmentVariable("FILMDYN_SCREENSHOT_DIR"); !dir.isEmpty()) {
+      QTableView* table = window.caseEditor()->parameterTable(CaseGroup::kSkirt);
+      window.caseEditor()->findChild<QTabWidget*>("case_tabs")->setCurrentIndex(3);
+      const QPoint at = table->viewport()->mapToGlobal(table->visualRect(clearance).center());
+      QToolTip::showText(at, tip, table->viewport());
+      QWidget* label = nullptr;
+      QTRY_VERIFY((label = [] {
+                    for (QWidget* w : QApplication::topLevelWidgets()) {
+                      if (w->inherits("QTipLabel") && w->isVisible()) return w;
+                    }
+                    return static_cast<QWidget*>(nullptr);
+                  }()) != nullptr);
+      QVERIFY(label->grab().save(dir + "/case_tooltip.png"));
+      QToolTip::hideText();
+    }
+    // Every row of every tab explains itself in words; none is just a path.
+    for (CaseGroup group :
+         {CaseGroup::kGeometry, CaseGroup::kMasses, CaseGroup::kSkirt, CaseGroup::kBigEnd,
+          CaseGroup::kLubricant, CaseGroup::kOperating, CaseGroup::kSolver}) {
+      ParameterTableModel* model = window.caseEditor()->parameterModel(group);
+      QVERIFY(model != nullptr);
+      for (int row = 0; row < model->rowCount(); ++row) {
+        const filmdyn::engine::CaseField& f = *model->parameter(row).field;
+        const QString row_tip = model->index(row, 0).data(Qt::ToolTipRole).toString();
+        QVERIFY2(!f.description.empty(), f.path.c_str());
+        QVERIFY2(row_tip.contains(QString::fromStdString(f.description).toHtmlEscaped()),
+                 f.path.c_str());
+        QVERIFY2(row_tip.contains("Default: "), f.path.c_str());
+      }
+    }
+    // Degrees shown for angles: the panel half-width is (0, 90] °, default 46 °.
+    const QString angle = ValueCell(window, CaseGroup::kSkirt, "skirt.thrust_half_width")
+                              .data(Qt::ToolTipRole)
+                              .toString();
+    QVERIFY2(angle.contains("Allowed: (0, 90] °") && angle.contains("Default: 46 °"),
+             qPrintable(angle));
+    // The array tables: the skirt profile's columns explain themselves from the schema too.
+    ArrayTableModel* profile = window.caseEditor()->profileModel();
+    const QString h_tip = profile->headerData(1, Qt::Horizontal, Qt::ToolTipRole).toString();
+    QVERIFY2(h_tip.contains("In the case file: skirt.profile_h") && h_tip.contains("Unit: µm"),
+             qPrintable(h_tip));
+    QCOMPARE(profile->index(0, 1).data(Qt::ToolTipRole).toString(), h_tip);
+    // A bad value: the tooltip is core's reason instead (field, value, allowed values).
+    auto c = window.document()->engineCase();
+    c.skirt.cold_clearance = 0.04;  // more than the bore radius
+    window.document()->edit(c, "clearance too large");
+    const QString reason = clearance.data(Qt::ToolTipRole).toString();
+    QVERIFY2(reason.contains("skirt.cold_clearance") && reason.contains("0.04"),
+             qPrintable(reason));
+    QVERIFY(!window.runAction()->isEnabled());
+  }
+
+  void olderCaseFileWithThePistonRadiusOpens() {
+    // A project saved before the clearance was the input: it opens with the clearance the radius
+    // implies, the status bar says the file used the older key, and saving writes the new one.
+    QTemporaryDir dir;
+    const QString path = dir.filePath("old.json");
+    nlohmann::json old = filmdyn::io::CaseToJson(filmdyn::io::LoadCase({}).value);
+    old["skirt"].erase("cold_clearance");
+    old["skirt"]["piston_radius"] = 0.03647;
+    {
+      QFile file(path);
+      QVERIFY(file.open(QIODevice::WriteOnly));
+      file.write(QByteArray::fromStdString(old.dump(2)));
+    }
+    MainWindow window;
+    QString error;
+    QVERIFY2(window.openProject(path, &error), qPrintable(error));
+    QVERIFY(std::abs(window.document()->engineCase().skirt.cold_clearance - 30e-6) < 1e-15);
+    QCOMPARE(ValueCell(window, CaseGroup::kSkirt, "skirt.cold_clearance").data().toString(),
+             QString("30"));
+    const QString status = window.statusBar()->currentMessage();
+    QVERIFY2(status.contains("skirt.piston_radius") && status.contains("skirt.cold_clearance"),
+             qPrintable(status));
+    QVERIFY2(window.saveProjectAs(path, &error), qPrintable(error));
+    const auto saved = filmdyn::io::LoadCase(path.toStdString());
+    QVERIFY(saved.notes.empty());
+    QCOMPARE(filmdyn::engine::PistonRadius(saved.value), 0.03647);
   }
 
   void projectRoundTripsThroughSaveAndLoad() {

@@ -1,0 +1,118 @@
+#include "ui/case_editor/field_tooltip.hpp"
+
+#include <QCoreApplication>
+#include <QLocale>
+#include <QStringList>
+#include <cmath>
+#include <exception>
+
+#include "core/io/case_file.hpp"
+
+namespace filmdyn::ui {
+
+namespace {
+
+QString Tr(const char* text) { return QCoreApplication::translate("FieldToolTip", text); }
+
+// The display unit as shown after a number ("" for dimensionless values, shown as "–").
+QString UnitSuffix(const engine::CaseField& field) {
+  const QString unit = QString::fromStdString(field.display_unit);
+  return unit.isEmpty() || unit == QStringLiteral("–") ? QString() : " " + unit;
+}
+
+QString DisplayNumber(double si, const engine::CaseField& field) {
+  return QLocale::c().toString(si / field.display_scale, 'g', 6);
+}
+
+// The default case as File → New opens it: the embedded default.json (both joints lubricated),
+// read once; the built-in struct defaults if it cannot be read.
+const engine::EngineCase& DefaultCase() {
+  static const engine::EngineCase c = [] {
+    try {
+      return io::LoadCase({}).value;
+    } catch (const std::exception&) {
+      return engine::EngineCase{};
+    }
+  }();
+  return c;
+}
+
+}  // namespace
+
+QString DisplayRangeText(const engine::CaseField& field) {
+  using engine::FieldKind;
+  switch (field.kind) {
+    case FieldKind::kText:
+      return Tr("any text");
+    case FieldKind::kJointModel:
+      return Tr("\"ideal\" or \"lubricated\"");
+    case FieldKind::kInteger:
+      return Tr("whole number from %1 to %2")
+          .arg(QLocale::c().toString(field.range.lo, 'g', 10),
+               QLocale::c().toString(field.range.hi, 'g', 10));
+    case FieldKind::kNumber:
+    case FieldKind::kNumberList:
+      break;
+  }
+  const engine::FieldRange& r = field.range;
+  const QString unit = UnitSuffix(field);
+  QString text;
+  if (std::isinf(r.lo) && std::isinf(r.hi)) {
+    text = Tr("any finite number");
+  } else if (std::isinf(r.hi)) {
+    text = (r.lo_open ? "> " : "≥ ") + DisplayNumber(r.lo, field) + unit;
+  } else {
+    text = QString("%1%2, %3%4%5")
+               .arg(r.lo_open ? "(" : "[", DisplayNumber(r.lo, field), DisplayNumber(r.hi, field),
+                    r.hi_open ? ")" : "]", unit);
+  }
+  return field.kind == FieldKind::kNumberList ? Tr("each %1").arg(text) : text;
+}
+
+QString DisplayDefaultText(const engine::CaseField& field) {
+  using engine::FieldKind;
+  auto& c = const_cast<engine::EngineCase&>(DefaultCase());  // the accessors only locate members
+  switch (field.kind) {
+    case FieldKind::kText: {
+      const QString text = QString::fromStdString(field.text(c));
+      return text.size() > 40 ? QString() : "\"" + text + "\"";
+    }
+    case FieldKind::kJointModel:
+      return QString::fromLatin1(engine::JointModelName(field.model(c)));
+    case FieldKind::kNumber:
+    case FieldKind::kInteger:
+      return DisplayNumber(field.get(c), field) + UnitSuffix(field);
+    case FieldKind::kNumberList: {
+      const std::vector<double>& values = field.list(c);
+      if (values.empty()) return Tr("none");
+      QStringList parts;
+      for (double v : values) parts << DisplayNumber(v, field);
+      return parts.join(", ") + UnitSuffix(field);
+    }
+  }
+  return {};
+}
+
+QString FieldToolTip(const engine::CaseField& field) {
+  QStringList facts;
+  const QString unit = QString::fromStdString(field.display_unit);
+  if (!unit.isEmpty()) facts << Tr("Unit: %1").arg(unit.toHtmlEscaped());
+  facts << Tr("Allowed: %1").arg(DisplayRangeText(field).toHtmlEscaped());
+  if (const QString value = DisplayDefaultText(field); !value.isEmpty()) {
+    facts << Tr("Default: %1").arg(value.toHtmlEscaped());
+  }
+  QString tip = "<qt><b>" + QString::fromStdString(field.label).toHtmlEscaped() + "</b>";
+  if (!field.description.empty()) {
+    tip += "<p>" + QString::fromStdString(field.description).toHtmlEscaped() + "</p>";
+  }
+  tip += "<p>" + facts.join(" &nbsp;·&nbsp; ") + "</p>";
+  if (!field.help.empty()) {
+    tip += "<p>" + Tr("Note: %1").arg(QString::fromStdString(field.help).toHtmlEscaped()) + "</p>";
+  }
+  tip += "<p style='color:#666666'>" +
+         Tr("In the case file: %1").arg(QString::fromStdString(field.path).toHtmlEscaped()) +
+         "</p></qt>";
+  return tip;
+}
+
+}  // namespace filmdyn::ui

@@ -1,0 +1,22 @@
+#pragma once
+/// @file The case editor's tooltips, from core's case schema alone (core/engine/case_schema.hpp):
+/// what an input is in plain words, its display unit, allowed range and default, and — as a
+/// secondary line — where it sits in the case file. A field added to the schema gets its tooltip
+/// with no change here.
+#include <QString>
+
+#include "core/engine/case_schema.hpp"
+
+namespace filmdyn::ui {
+
+/// The allowed values in display units: "(0, 10000] µm", "[-10, 10] mm", "integer in [8, 5000]",
+/// "each [0, 180] °", "\"ideal\" or \"lubricated\"".
+QString DisplayRangeText(const engine::CaseField& field);
+/// The value of the default case (File → New) in display units with the unit: "25 µm",
+/// "0, 7, 14, 21, 28 mm", "lubricated"; empty for long text.
+QString DisplayDefaultText(const engine::CaseField& field);
+/// Rich-text tooltip: the label, the plain-words description, "Unit · Allowed · Default", the
+/// schema's note (source of the default), and "In the case file: <path>" in grey.
+QString FieldToolTip(const engine::CaseField& field);
+
+}  // namespace filmdyn::ui
