@@ -26,6 +26,7 @@
 #include <QUndoStack>
 #include <QVBoxLayout>
 
+#include "core/io/results_writer.hpp"
 #include "ui/about_info.hpp"
 #include "ui/case_editor/case_document.hpp"
 #include "ui/case_editor/case_editor.hpp"
@@ -33,8 +34,10 @@
 #include "ui/case_editor/case_parameters.hpp"
 #include "ui/charts/chart_export.hpp"
 #include "ui/fields/field_view.hpp"
+#include "ui/help/help_browser.hpp"
 #include "ui/plots/plot_panel.hpp"
 #include "ui/run/run_controller.hpp"
+#include "ui/runs/run_store.hpp"
 #include "ui/runs/run_table.hpp"
 
 namespace filmdyn::ui {
@@ -50,6 +53,13 @@ QString NoFieldsReason(const RunRecord& run) {
     return MainWindow::tr("a cancelled run keeps its curves and figures, not its film fields");
   if (run.status() == RunStatus::kRunning) return MainWindow::tr("they appear when the run ends");
   return MainWindow::tr("the run ended before it recorded any");
+}
+
+// The film fields of every run in the table, for the field view's "Same scale for all runs".
+std::vector<std::shared_ptr<const FieldFrames>> AllRunFields(const std::vector<RunHandle>& runs) {
+  std::vector<std::shared_ptr<const FieldFrames>> fields;
+  for (const RunHandle& run : runs) fields.push_back(run->fields());
+  return fields;
 }
 }  // namespace
 
@@ -130,6 +140,21 @@ void MainWindow::createRunPage() {
   run_splitter_->setStretchFactor(1, 1);
   layout->addWidget(run_splitter_);
   connect(run_table_, &RunTable::visibilityToggled, plot_panel_, &PlotPanel::setRunVisible);
+  // One label per run (RunRecord::label) in the table, every legend and the field view.
+  connect(run_table_, &RunTable::labelsChanged, this, [this](const QList<int>& ids) {
+    for (const RunHandle& run : run_table_->runs()) {
+      if (!ids.contains(run->id())) continue;
+      plot_panel_->setRunLabel(run->id(), run->label());
+      if (run == shown_fields_run_.lock())
+        field_view_->setFrames(run->fields(), run->label(), NoFieldsReason(*run));
+    }
+  });
+  connect(run_table_, &RunTable::orderChanged, this, [this](const QList<int>& ids) {
+    plot_panel_->setRunOrder(std::vector<int>(ids.begin(), ids.end()));
+  });
+  connect(run_table_, &RunTable::removeRequested, this, &MainWindow::removeRun);
+  connect(run_table_, &RunTable::statusMessage, this,
+          [this](const QString& m) { statusBar()->showMessage(m, 8000); });
   connect(run_table_, &QTableWidget::currentCellChanged, this, [this] {
     RunHandle run = run_table_->currentRun();
     if (run && run != shown_fields_run_.lock()) {
@@ -207,7 +232,30 @@ void MainWindow::createMenus() {
     a->setShortcut(QKeySequence(QString("Ctrl+%1").arg(i + 1)));
   }
 
+  // The bundled documentation, shown inside the application (ui/help/help_browser).
   QMenu* help_menu = menuBar()->addMenu(tr("&Help"));
+  const struct {
+    const char* name;
+    const char* text;
+    const char* page;
+  } help_pages[] = {
+      {"help_getting_started", QT_TR_NOOP("&Getting started"), "getting-started.md"},
+      {"help_user_guide", QT_TR_NOOP("&User guide"), "gui.md"},
+      {"help_conventions", QT_TR_NOOP("&Sign conventions"), "conventions.md"},
+      {"help_case_fields", QT_TR_NOOP("&Case fields"), "case-file.md"},
+      {"help_outputs", QT_TR_NOOP("&Outputs"), "outputs.md"},
+  };
+  for (const auto& entry : help_pages) {
+    const QString page = entry.page;
+    QAction* a = help_menu->addAction(tr(entry.text), this, [this, page] { ShowHelp(this, page); });
+    a->setObjectName(entry.name);
+    if (page == "getting-started.md") a->setShortcut(QKeySequence::HelpContents);
+  }
+  help_menu
+      ->addAction(tr("&All documentation…"), this,
+                  [this] { ShowHelp(this, HelpBrowser::kIndexPage); })
+      ->setObjectName("help_all");
+  help_menu->addSeparator();
   help_menu->addAction(tr("&About FilmDyn"), this, &MainWindow::showAbout);
 
   QToolBar* toolbar = addToolBar(tr("Main"));
@@ -276,8 +324,8 @@ void MainWindow::startRun() {
 }
 
 void MainWindow::onRunUpdated(const RunHandle& run) {
+  run_table_->updateRun(run);  // first: a new run's label says what differs from the base run
   plot_panel_->updateRun(run);
-  run_table_->updateRun(run);
   if (run->status() != RunStatus::kRunning) return;
   const RunProgress p = run->progress();
   const double fraction = p.fraction >= 0 ? p.fraction : p.cycle_fraction;
@@ -317,14 +365,64 @@ void MainWindow::onRunFinished(const RunHandle& run) {
   }
   run_state_label_->setToolTip(reason);
   shown_fields_run_ = run;
+  field_view_->setScaleFrames(AllRunFields(run_table_->runs()));
   field_view_->setFrames(run->fields(), run->label(), NoFieldsReason(*run));
 }
 
 void MainWindow::removeSelectedRun() {
   RunHandle run = run_table_->currentRun();
   if (!run || run == run_controller_->current()) return;
-  plot_panel_->removeRun(run->id());
-  run_table_->removeRun(run->id());
+  removeRun(run->id());
+}
+
+void MainWindow::removeRun(int run_id) {
+  if (run_controller_->current() && run_controller_->current()->id() == run_id) return;
+  plot_panel_->removeRun(run_id);
+  run_table_->removeRun(run_id);
+  field_view_->setScaleFrames(AllRunFields(run_table_->runs()));
+}
+
+void MainWindow::clearRuns() {
+  for (const RunHandle& run : std::vector<RunHandle>(run_table_->runs())) {
+    if (run != run_controller_->current()) plot_panel_->removeRun(run->id());
+  }
+  run_table_->removeFinishedRuns();
+  field_view_->setScaleFrames(AllRunFields(run_table_->runs()));
+  shown_fields_run_.reset();
+  field_view_->setFrames(nullptr, QString(), QString());
+}
+
+QStringList MainWindow::restoreRuns(const QString& project_path) {
+  LoadedRuns loaded = LoadProjectRuns(project_path, [this] { return run_controller_->takeId(); });
+  for (const ProjectRun& entry : loaded.runs) {
+    run_table_->updateRun(entry.run);
+    plot_panel_->updateRun(entry.run);
+    if (!entry.visible) run_table_->setRunVisible(entry.run->id(), false);
+  }
+  if (loaded.base_id >= 0) run_table_->setBaseRun(loaded.base_id);
+  field_view_->setScaleFrames(AllRunFields(run_table_->runs()));
+  return loaded.problems;
+}
+
+bool MainWindow::saveRuns(const QString& project_path, QString* message) {
+  std::vector<ProjectRun> runs;
+  for (const RunHandle& run : run_table_->runs()) {
+    runs.push_back({run, run_table_->isRunVisible(run->id())});
+  }
+  SaveRunsReport report;
+  QString error;
+  const bool ok = SaveProjectRuns(project_path, runs, run_table_->baseRunId(), &report, &error);
+  QStringList parts;
+  parts << tr("Saved %1 with %n run(s)", nullptr, report.saved).arg(project_path);
+  if (report.skipped_running > 0)
+    parts << tr("the running run is not saved (save again once it ends)");
+  if (report.skipped_unrestored > 0)
+    parts << tr("%n run(s) that could not be restored kept as files only", nullptr,
+                report.skipped_unrestored);
+  if (!ok)
+    parts = QStringList{tr("Saved the case %1, but not its runs: %2").arg(project_path, error)};
+  *message = parts.join("; ");
+  return ok;
 }
 
 // ---- Projects ----
@@ -335,6 +433,7 @@ void MainWindow::newProject() {
   QString error;
   if (!LoadCaseFile({}, &initial, &error)) statusBar()->showMessage(error);
   document_->reset(initial);
+  clearRuns();  // the runs belong to the project they were saved with
 }
 
 bool MainWindow::openProject(const QString& path, QString* error) {
@@ -345,7 +444,17 @@ bool MainWindow::openProject(const QString& path, QString* error) {
     return false;
   }
   addRecentFile(path);
-  statusBar()->showMessage(tr("Opened %1").arg(path), 5000);
+  const QStringList notes = document_->loadNotes();
+  if (notes.isEmpty()) {
+    statusBar()->showMessage(tr("Opened %1").arg(path), 5000);
+  } else {  // e.g. an older key read as its replacement: stays until the next message
+    statusBar()->showMessage(tr("Opened %1. Note: %2").arg(path, notes.join(" ")));
+  }
+  // The project's saved runs replace those of the session; a run that cannot be read back is
+  // listed with the reason (the case is open either way).
+  clearRuns();
+  const QStringList problems = restoreRuns(path);
+  if (!problems.isEmpty()) statusBar()->showMessage(problems.join("; "));
   return true;
 }
 
@@ -368,8 +477,10 @@ bool MainWindow::saveProjectAs(const QString& path, QString* error) {
                   .arg(QString::fromStdString(document_->issues().begin()->second));
   } else if (document_->save(path, &message)) {
     addRecentFile(path);
-    statusBar()->showMessage(tr("Saved %1").arg(path), 5000);
-    return true;
+    // The finished runs beside the case (ui/runs/run_store.hpp); running ones are not saved.
+    const bool runs_saved = saveRuns(path, &message);
+    statusBar()->showMessage(message, runs_saved ? 8000 : 0);
+    if (runs_saved) return true;
   }
   if (error) *error = message;
   statusBar()->showMessage(message);
@@ -442,15 +553,24 @@ void MainWindow::rebuildRecentMenu() {
 
 // ---- Export ----
 
-bool MainWindow::exportResultsCsv(const RunHandle& run, const QString& path, QString* error) {
+bool MainWindow::exportResultsCsv(const RunHandle& run, const QString& path, QString* error,
+                                  bool display_units) {
   if (!run) {
     if (error) *error = tr("no run to export");
     return false;
   }
-  const QByteArray core_csv = run->resultsCsv();
+  QByteArray core_csv = run->resultsCsv();
   if (core_csv.isEmpty()) {
     if (error) *error = tr("this run has no results to export yet");
     return false;
+  }
+  if (display_units) {
+    try {
+      core_csv = QByteArray::fromStdString(io::ResultsCsvInDisplayUnits(core_csv.toStdString()));
+    } catch (const std::exception& e) {
+      if (error) *error = QString::fromStdString(e.what());
+      return false;
+    }
   }
   QSaveFile file(path);
   if (!file.open(QIODevice::WriteOnly) || file.write(core_csv) != core_csv.size() ||
@@ -503,7 +623,7 @@ bool MainWindow::exportAllPlots(const QString& directory, const QStringList& suf
         if (error) *error = tr("unknown image format: %1").arg(suffix);
         return false;
       }
-      if (!ExportChart(plot_panel_->chart(i), path, format, QSize(960, 600), error)) return false;
+      if (!plot_panel_->exportChart(i, path, format, QSize(960, 600), error)) return false;
     }
   }
   return true;
@@ -539,14 +659,18 @@ void MainWindow::exportResultsInteractive() {
     return;
   }
   QSettings settings;
+  const QString si = tr("CSV in SI units, as results.csv (*.csv)");
+  const QString display = tr("CSV in display units: µm, mrad, kN, MPa, bar (*.csv)");
+  QString filter = settings.value("paths/results_units").toString() == "display" ? display : si;
   const QString path = QFileDialog::getSaveFileName(
       this, tr("Export results"),
       QDir(settings.value("paths/export_dir").toString()).filePath("results.csv"),
-      tr("CSV (*.csv)"));
+      si + ";;" + display, &filter);
   if (path.isEmpty()) return;
   settings.setValue("paths/export_dir", QFileInfo(path).absolutePath());
+  settings.setValue("paths/results_units", filter == display ? "display" : "si");
   QString error;
-  if (exportResultsCsv(run, path, &error)) {
+  if (exportResultsCsv(run, path, &error, filter == display)) {
     statusBar()->showMessage(tr("Wrote %1").arg(path), 8000);
   } else {
     QMessageBox::warning(this, tr("Export failed"), error);

@@ -49,7 +49,10 @@ class MainWindow : public QMainWindow {
   bool openProject(const QString& path, QString* error = nullptr);
   bool saveProjectAs(const QString& path, QString* error = nullptr);
   /// results.csv in core's format (as `filmdyn run` writes it; columns as in docs/outputs.md).
-  bool exportResultsCsv(const RunHandle& run, const QString& path, QString* error = nullptr);
+  /// results.csv of a run, in SI (byte for byte core's file) or in display units (µm, kN, MPa, ...:
+  /// the units of the plots and the run table, ASCII in the header, e.g. "skirt_moft[um]").
+  bool exportResultsCsv(const RunHandle& run, const QString& path, QString* error = nullptr,
+                        bool display_units = false);
   /// The run's output folder exactly as `filmdyn run --out DIR` writes it (results.csv,
   /// summary.json, fields/).
   bool exportRunFolder(const RunHandle& run, const QString& directory, QString* error = nullptr);
@@ -80,6 +83,8 @@ class MainWindow : public QMainWindow {
   void exportFieldsInteractive();
   void exportRunFolderInteractive();
   void removeSelectedRun();
+  /// Removes a run from the table and the plots (not the one running).
+  void removeRun(int run_id);
   /// Asks whether to restore a waiting autosave (main() calls it once the window is shown).
   void offerRecovery();
 
@@ -97,6 +102,12 @@ class MainWindow : public QMainWindow {
   /// Asks to save unsaved edits; false when the user cancels.
   bool maybeSave();
   void onRunUpdated(const RunHandle& run);
+  /// Project runs (ui/runs/run_store.hpp): drops the session's finished runs; reads back those
+  /// saved beside `project_path` (returns what could not be restored); saves the finished runs
+  /// beside it (*message says what was saved and what not).
+  void clearRuns();
+  QStringList restoreRuns(const QString& project_path);
+  bool saveRuns(const QString& project_path, QString* message);
   void onRunFinished(const RunHandle& run);
 
   QTabWidget* workspace_ = nullptr;

@@ -78,20 +78,22 @@ std::string FiguresIndex(const std::string& models_dir, const std::string& speed
   t += "| paper figure | what | our file(s) |\n|---|---|---|\n";
   t += "| Fig. 5 | cylinder pressure at the four speeds | `figures/cylinder_pressure.png` |\n";
   t += "| Fig. 6 | piston and rod kinematics, models | `" + m + "piston_lateral.png`, `" + m +
-       "piston_tilt.png`, `" + m +
-       "secondary_rates.png` (displacements and rates; accelerations are not an output) |\n";
+       "piston_tilt.png`, `" + m + "piston_lateral_velocity.png`, `" + m +
+       "piston_tilt_rate.png` (displacements and rates; accelerations are not an output) |\n";
   t += "| Fig. 7 | film forces on the skirt and at the LBRBE, models | `" + m +
        "liner_forces.png`, `" + m + "bigend_forces.png` |\n";
   t += "| Fig. 8 | MOFT and FPL of both joints, models | `" + m + "moft.png`, `" + m +
        "fpl.png` |\n";
-  t += "| Fig. 9 | journal centre trajectory, models | `" + m + "journal_orbit.png` |\n";
+  t += "| Fig. 9 | journal centre trajectory, models | `" + m +
+       "journal_orbit.png` (the load diagram beside it: `" + m + "bigend_load_polar.png`) |\n";
   t += "| Fig. 10 | asperity contact pressure and friction stresses of the LBRBE at 62 and 562 "
        "°CA | contact pressure field: `runs/" +
        skirt_lbrbe_6000 +
        "/fields/` (`bearing.xdmf` with `bearing.h5`, one frame per output step: open the XDMF in ParaView and go to 62 and 562 °CA); the friction-stress "
        "fields are not an output |\n";
   t += "| Fig. 11 | piston secondary motion, speeds | `" + s + "piston_lateral.png`, `" + s +
-       "piston_tilt.png`, `" + s + "secondary_rates.png` |\n";
+       "piston_tilt.png`, `" + s + "piston_lateral_velocity.png`, `" + s +
+       "piston_tilt_rate.png` |\n";
   t += "| Fig. 12 | skirt thrust force, MOFT, friction force, FPL, speeds | `" + s +
        "liner_forces.png`, `" + s + "moft.png`, `" + s + "fpl.png` |\n";
   t += "| Fig. 13 | inertia forces of piston and rod, speeds | not drawn: inertia forces are not "
@@ -149,6 +151,7 @@ Command MakeReproduceCommand() {
     for (const std::string& set : args.Values("set")) sets.push_back(set);  // the user's last
     const std::string case_path = args.positional().empty() ? "" : args.positional()[0];
     const io::LoadedCase loaded = io::LoadCase(case_path, sets);
+    for (const std::string& note : loaded.notes) streams.err << "reproduce: note: " << note << "\n";
     const engine::EngineCase& c = loaded.value;
     const std::string meshes = engine::DescribeMeshes(c);
     if (!args.Has("quiet")) streams.err << "reproduce: meshes: " << meshes << "\n";

@@ -40,8 +40,11 @@ Command MakeRunCommand() {
       "paper;\n"
       "docs/case-file.md) is used.\n"
       "Film runs also compute a companion run on meshes with half the elements and report the\n"
-      "estimated discretisation error of the headline figures (last line, summary.json; warns\n"
-      "above 1 %; --set solver.error_estimate=0 turns it off; docs/validation/errors.md).\n"
+      "estimated discretisation error of the headline figures (after the status line,\n"
+      "summary.json; warns above 1 %; --set solver.error_estimate=0 turns it off;\n"
+      "docs/validation/errors.md). Then the engineering warnings, one line each (film thinner\n"
+      "than 3 or 1 roughness heights, big-end eccentricity above 0.95, no periodic steady state,\n"
+      "assumed inputs, synthetic pressure; summary.json \"warnings\", docs/outputs.md).\n"
       "Outputs: summary.json says \"running\" until every other file is written, then comes last;\n"
       "each file is written whole or not at all. An --out folder holding an earlier run is\n"
       "refused without --overwrite; the default folder's earlier run is replaced. Ctrl-C,\n"
@@ -49,7 +52,7 @@ Command MakeRunCommand() {
       "Examples:\n  filmdyn run --model ideal --rpm 4000\n"
       "  filmdyn run my.json --set geometry.pin_offset=0.001 --out /tmp/r1";
   command.run = [](const Args& args, Streams& streams) {
-    const io::LoadedCase loaded = LoadCaseArgument(args);
+    const io::LoadedCase loaded = LoadCaseArgument(args, &streams.err);
     const engine::EngineCase& c = loaded.value;
     const engine::Model model =
         args.Value("model") ? engine::ParseModel(*args.Value("model")) : ModelFromCase(c);
@@ -109,6 +112,7 @@ Command MakeRunCommand() {
                 << " cycles, " << result.stats.steps << " steps, " << result.wall_time
                 << " s; results in " << out.string() << "\n";
     streams.err << "filmdyn run: " << result.error_estimate.Summary() << "\n";
+    PrintRunWarnings(config, result, "filmdyn run", streams.err);
     if (result.status != engine::RunStatus::kCompleted) {
       streams.err << "filmdyn run: incomplete: " << result.message << "\n";
       return 1;

@@ -12,6 +12,7 @@
 #include "core/base/input_error.hpp"
 #include "core/io/pressure_csv.hpp"
 #include "core/io/run_comparison.hpp"
+#include "core/io/run_warnings.hpp"
 #include "ui/plots/plot_export.hpp"
 
 namespace filmdyn::cli {
@@ -53,9 +54,20 @@ std::string WriteRunPlots(const std::filesystem::path& folder, const engine::Run
   return error.toStdString();
 }
 
-io::LoadedCase LoadCaseArgument(const Args& args) {
+void PrintRunWarnings(const engine::RunConfig& config, const engine::RunResult& result,
+                      const std::string& prefix, std::ostream& out) {
+  for (const io::RunWarning& w : io::RunWarnings(config, result)) {
+    out << prefix << ": warning: " << w.message << "\n";
+  }
+}
+
+io::LoadedCase LoadCaseArgument(const Args& args, std::ostream* notes) {
   const std::string case_path = args.positional().empty() ? "" : args.positional()[0];
-  return io::LoadCase(case_path, args.Values("set"));
+  io::LoadedCase loaded = io::LoadCase(case_path, args.Values("set"));
+  if (notes) {
+    for (const std::string& note : loaded.notes) *notes << "filmdyn: note: " << note << "\n";
+  }
+  return loaded;
 }
 
 batch::SweepJob SweepJobFor(const io::LoadedCase& loaded, engine::Model model, double rpm,
@@ -158,6 +170,7 @@ BatchOutcome RunBatch(std::vector<batch::SweepJob> jobs, int parallel, bool quie
                 << ", " << outcome.result.cycles << " cycles, " << outcome.result.wall_time << " s"
                 << (complete ? "" : " — " + outcome.result.message) << "; "
                 << outcome.result.error_estimate.Summary() << "\n";
+    PrintRunWarnings(job.config, outcome.result, prefix + ": " + label, streams.err);
   }
   return batch;
 }

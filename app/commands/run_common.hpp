@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -33,9 +34,15 @@ engine::RunConfig BuildRunConfig(const io::LoadedCase& loaded, engine::Model mod
 std::string WriteRunPlots(const std::filesystem::path& folder, const engine::RunConfig& config,
                           const std::vector<io::OutputRow>& rows);
 
+/// Prints the engineering warnings of a finished run (io::RunWarnings, the list summary.json
+/// holds), one line each: "<prefix>: warning: <message>".
+void PrintRunWarnings(const engine::RunConfig& config, const engine::RunResult& result,
+                      const std::string& prefix, std::ostream& out);
+
 /// The case named by the command's optional CASE.json positional (the embedded default case
-/// without one), with the --set overrides applied. Throws InputError naming the file or field.
-io::LoadedCase LoadCaseArgument(const Args& args);
+/// without one), with the --set overrides applied; the reader's notes (an older key read as its
+/// replacement) go to *notes, one line each. Throws InputError naming the file or field.
+io::LoadedCase LoadCaseArgument(const Args& args, std::ostream* notes = nullptr);
 
 /// One run of a sweep or of `reproduce`: its configuration (checked now), written to
 /// `parent / <case>-<model>-<rpm>` (the folder name `filmdyn run` uses).

@@ -116,7 +116,7 @@ Command MakeSkirtCommand() {
       "  filmdyn skirt --side-force 1500 --moment 5 --speed -8 --json\n"
       "  filmdyn skirt --map /tmp/map --speed 10 --tilts -5e-4,0,5e-4";
   command.run = [](const Args& args, Streams& streams) {
-    const io::LoadedCase loaded = LoadCaseArgument(args);
+    const io::LoadedCase loaded = LoadCaseArgument(args, &streams.err);
     lubrication::SkirtConfig config = engine::SkirtConfigFromCase(loaded.value);
     if (const auto mesh = args.Value("mesh")) config.mesh = ParseSkirtMesh(*mesh);
     const auto speed = args.Double("speed");

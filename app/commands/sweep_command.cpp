@@ -48,7 +48,7 @@ Command MakeSweepCommand() {
       "same speed and model given twice is refused.\n"
       "Example:\n  filmdyn sweep --rpm 1000,2000,4000,6000 --models skirt-lbrbe --jobs 2";
   command.run = [](const Args& args, Streams& streams) {
-    const io::LoadedCase loaded = LoadCaseArgument(args);
+    const io::LoadedCase loaded = LoadCaseArgument(args, &streams.err);
     const engine::EngineCase& c = loaded.value;
 
     const std::vector<double> speeds =

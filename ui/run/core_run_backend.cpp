@@ -11,8 +11,10 @@
 #include "core/io/case_file.hpp"
 #include "core/io/field_output.hpp"
 #include "core/io/results_writer.hpp"
+#include "core/io/run_warnings.hpp"
 #include "core/lubrication/bearing_solver.hpp"
 #include "core/lubrication/skirt_solver.hpp"
+#include "ui/fields/field_collector.hpp"
 #include "ui/run/run_backend.hpp"
 #include "ui/run/sample_conversion.hpp"
 
@@ -26,77 +28,6 @@ RunSample ToRunSample(const engine::CrankTrainSample& cs, engine::Model model,
                       double cycle_start_time) {
   return RunSampleFromRow(io::RowFromSample(cs, model, cycle_start_time));
 }
-
-// Collects the film fields of the cycle being computed (a new cycle starts afresh), keeping at
-// most kMaxFrames per cycle so a 1 °CA run does not hold 720 copies in memory.
-class FieldCollector {
- public:
-  static constexpr int kMaxFrames = 240;
-
-  FieldCollector(const engine::EngineCase& c, int steps_per_cycle)
-      : skirt_radius_(c.skirt.piston_radius),
-        bearing_radius_(c.big_end.bearing_radius),
-        stride_(std::max(1, (steps_per_cycle + kMaxFrames - 1) / kMaxFrames)) {}
-
-  void Add(const engine::FieldFrame& frame) {
-    if (frame.cycle != cycle_) {
-      cycle_ = frame.cycle;
-      frames_ = std::make_shared<FieldFrames>();
-    }
-    if (frame.step % stride_ != 0) return;
-    if (frames_->joints.empty()) {
-      if (frame.skirt)
-        frames_->joints.push_back(MakeJoint("skirt", frame.skirt->mesh(), skirt_radius_, M_PI));
-      if (frame.bearing)  // the whole width, also when the solver computes the symmetric half
-        frames_->joints.push_back(MakeJoint("big_end", frame.bearing->full_width().mesh,
-                                            bearing_radius_, 2 * M_PI));
-    }
-    frames_->crank_angle_deg.push_back(frame.crank_angle_deg);
-    frames_->time.push_back(frame.time);
-    size_t j = 0;
-    if (frame.skirt)
-      Append(frames_->joints[j++], frame.skirt->fields(), frame.skirt->film_thickness());
-    if (frame.bearing)
-      Append(frames_->joints[j++], frame.bearing->fields(), frame.bearing->film_thickness(),
-             &frame.bearing->full_width().source);
-  }
-
-  std::shared_ptr<const FieldFrames> Result() const { return frames_; }
-
- private:
-  // Unrolls the film plane (x = R·angle, y axial) onto the cylinder of radius R.
-  static JointFieldFrames MakeJoint(const std::string& name, const lubrication::TriMesh& mesh,
-                                    double radius, double max_angle) {
-    JointFieldFrames joint;
-    joint.name = name;
-    for (int n = 0; n < mesh.NodeCount(); ++n) {
-      const double angle = std::min(mesh.x[size_t(n)] / radius, max_angle);
-      joint.mesh.points.push_back(
-          {radius * std::cos(angle), radius * std::sin(angle), mesh.y[size_t(n)]});
-    }
-    joint.mesh.triangles = mesh.triangles;
-    return joint;
-  }
-
-  // `source`: the solver node of each displayed node (nullptr = the same numbering).
-  static void Append(JointFieldFrames& joint, const lubrication::ReynoldsSolution& fields,
-                     const Eigen::VectorXd& film, const std::vector<int>* source = nullptr) {
-    auto vec = [source](const Eigen::VectorXd& v) {
-      if (!source) return std::vector<double>(v.data(), v.data() + v.size());
-      std::vector<double> out(source->size());
-      for (std::size_t k = 0; k < source->size(); ++k) out[k] = v[(*source)[k]];
-      return out;
-    };
-    joint.frames.push_back({{"pressure", vec(fields.pressure)},
-                            {"contact_pressure", vec(fields.contact_pressure)},
-                            {"film_thickness", vec(film)}});
-  }
-
-  double skirt_radius_, bearing_radius_;
-  int stride_;
-  int cycle_ = 0;
-  std::shared_ptr<FieldFrames> frames_;
-};
 
 engine::PressureCurve CurveForSpeed(const engine::EngineCase& c, double rpm) {
   // Core's rule: the curve at that speed or a blend of the two neighbouring speeds; the editor
@@ -117,7 +48,7 @@ RunBackend CoreRunBackend() {
     engine::RunConfig config =
         engine::MakeRunConfig(c, model, request.rpm, CurveForSpeed(c, request.rpm));
     const int steps_per_cycle = std::max(1, int(std::lround(4 * M_PI / c.solver.output_interval)));
-    FieldCollector collector(c, steps_per_cycle);
+    FieldCollector collector(steps_per_cycle);
     // The GUI's frames and core's recorder (for the run folder's fields/, as `filmdyn run`).
     auto recorder = std::make_shared<io::FieldRecorder>();
     // The view's frames beside the recorder's: for the memory check.
@@ -199,6 +130,7 @@ RunBackend CoreRunBackend() {
     sink.Statistic("max constraint violation", result.max_constraint_violation);
     sink.Statistic("Reynolds solves", double(result.reynolds_solves));
     sink.ReportErrorEstimate(result.error_estimate);
+    sink.ReportWarnings(io::RunWarnings(config, result));
     switch (result.status) {
       case engine::RunStatus::kCompleted:
       case engine::RunStatus::kCancelled:

@@ -27,6 +27,9 @@ class RunController : public QObject {
   /// Starts a run; returns its record (nullptr if one is already running).
   RunHandle start(RunRequest request);
 
+  /// A run id no run of this controller has or will get (for runs read back from a project).
+  int takeId() { return next_id_++; }
+
   /// Coalescing interval [ms].
   static constexpr int kRedrawIntervalMs = 40;
 

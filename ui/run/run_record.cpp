@@ -34,7 +34,77 @@ QString RunLabel(const QString& model_key, double rpm) {
 }
 
 QString RunRecord::label() const {
+  std::lock_guard lock(mutex_);
+  if (!name_.isEmpty()) return name_;
+  if (!automatic_label_.isEmpty()) return automatic_label_;
   return RunLabel(QString::fromStdString(request_.model), request_.rpm);
+}
+
+QString RunRecord::name() const {
+  std::lock_guard lock(mutex_);
+  return name_;
+}
+
+void RunRecord::setName(const QString& name) {
+  std::lock_guard lock(mutex_);
+  name_ = name.trimmed();
+  ++version_;
+}
+
+QString RunRecord::automaticLabel() const {
+  std::lock_guard lock(mutex_);
+  return automatic_label_;
+}
+
+void RunRecord::setAutomaticLabel(const QString& label) {
+  std::lock_guard lock(mutex_);
+  automatic_label_ = label;
+}
+
+QString RunRecord::differences() const {
+  std::lock_guard lock(mutex_);
+  return differences_;
+}
+
+void RunRecord::setDifferences(const QString& differences) {
+  std::lock_guard lock(mutex_);
+  differences_ = differences;
+}
+
+QString RunRecord::notes() const {
+  std::lock_guard lock(mutex_);
+  return notes_;
+}
+
+void RunRecord::setNotes(const QString& notes) {
+  std::lock_guard lock(mutex_);
+  notes_ = notes;
+}
+
+QString RunRecord::storedFolder() const {
+  std::lock_guard lock(mutex_);
+  return stored_folder_;
+}
+
+void RunRecord::setStoredFolder(const QString& folder) {
+  std::lock_guard lock(mutex_);
+  stored_folder_ = folder;
+}
+
+QString RunRecord::restoreError() const {
+  std::lock_guard lock(mutex_);
+  return restore_error_;
+}
+
+void RunRecord::setRestoreError(const QString& error) {
+  std::lock_guard lock(mutex_);
+  restore_error_ = error;
+  ++version_;
+}
+
+void RunRecord::setWallSeconds(double seconds) {
+  std::lock_guard lock(mutex_);
+  wall_seconds_ = seconds;
 }
 
 void RunRecord::BeginCycle(int cycle) {
@@ -89,6 +159,17 @@ void RunRecord::ReportErrorEstimate(const engine::ErrorEstimate& estimate) {
 engine::ErrorEstimate RunRecord::errorEstimate() const {
   std::lock_guard lock(mutex_);
   return error_estimate_;
+}
+
+void RunRecord::ReportWarnings(std::vector<io::RunWarning> warnings) {
+  std::lock_guard lock(mutex_);
+  engineering_warnings_ = std::move(warnings);
+  ++version_;
+}
+
+std::vector<io::RunWarning> RunRecord::engineeringWarnings() const {
+  std::lock_guard lock(mutex_);
+  return engineering_warnings_;
 }
 
 void RunRecord::SetWriters(RunWriters writers) {

@@ -26,8 +26,32 @@ class RunRecord : public RunSink {
 
   int id() const { return id_; }
   const RunRequest& request() const { return request_; }
-  /// "Skirt-LBRBE 6000 rpm" (+ " #id" suffix added by the run list when names repeat).
+  /// The one label of the run in every legend, table and view: the name the user gave it, else
+  /// the automatic label (what differs from the base run), else model and speed ("Skirt-LBRBE
+  /// 6000 rpm"). The run table keeps labels unique among its runs.
   QString label() const;
+  /// The user's name for the run; empty = the automatic label.
+  QString name() const;
+  void setName(const QString& name);
+  /// The automatic label, set by the run table ("μ 10 mPa·s · 4000 rpm"; the base run's model
+  /// and speed), unique among the runs.
+  QString automaticLabel() const;
+  void setAutomaticLabel(const QString& label);
+  /// What differs from the base run ("" for none; the table shows "base run" for the base).
+  QString differences() const;
+  void setDifferences(const QString& differences);
+  /// Free text of the user about the run.
+  QString notes() const;
+  void setNotes(const QString& notes);
+  /// A run read back from a saved project: the folder holding its files (results.csv,
+  /// summary.json, fields/), which its writers copy from; empty for a run of this session.
+  QString storedFolder() const;
+  void setStoredFolder(const QString& folder);
+  /// Why a saved run could not be read back (empty when it was, or for a run of this session).
+  QString restoreError() const;
+  void setRestoreError(const QString& error);
+  /// The wall time a restored run took when it ran [s] (its summary.json).
+  void setWallSeconds(double seconds);
 
   // RunSink (worker thread).
   void BeginCycle(int cycle) override;
@@ -39,6 +63,9 @@ class RunRecord : public RunSink {
   void Warn(const std::string& message) override;
   void SetWriters(RunWriters writers) override;
   void ReportErrorEstimate(const engine::ErrorEstimate& estimate) override;
+  void ReportWarnings(std::vector<io::RunWarning> warnings) override;
+  /// The engineering warnings of the finished run (empty until it is reported).
+  std::vector<io::RunWarning> engineeringWarnings() const;
   /// The estimate of the finished run (status "off" until one is reported).
   engine::ErrorEstimate errorEstimate() const;
   /// Writes the run folder as `filmdyn run` does; false with *error when it cannot (or when
@@ -80,11 +107,18 @@ class RunRecord : public RunSink {
   std::shared_ptr<const FieldFrames> fields_;
   QString warning_;
   engine::ErrorEstimate error_estimate_;
+  std::vector<io::RunWarning> engineering_warnings_;
   RunWriters writers_;
   RunProgress progress_;
   std::map<std::string, double> statistics_;
   RunStatus status_ = RunStatus::kRunning;
   QString reason_;
+  QString name_;
+  QString automatic_label_;
+  QString differences_;
+  QString notes_;
+  QString stored_folder_;
+  QString restore_error_;
   QElapsedTimer clock_;
   double wall_seconds_ = -1;
   std::atomic<long> version_{0};

@@ -1,0 +1,528 @@
+#include "ui/runs/run_store.hpp"
+
+#include <QDir>
+#include <QFileInfo>
+#include <QObject>
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <numbers>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+#include "core/io/case_file.hpp"
+#include "core/io/field_series.hpp"
+#include "core/io/output_files.hpp"
+#include "core/io/run_summary.hpp"
+
+namespace filmdyn::ui {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr char kFormat[] = "FilmDyn runs";
+constexpr int kFormatVersion = 1;
+constexpr char kIndex[] = "runs.json";
+constexpr char kSamplesSuffix[] = ".samples.csv";
+constexpr char kKeyPrefix[] = "run-";
+constexpr double kPi = std::numbers::pi;
+
+fs::path PathOf(const QString& path) { return fs::path(path.toStdString()); }
+QString QPath(const fs::path& path) { return QString::fromStdString(path.string()); }
+
+std::string ReadBytes(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error("cannot read " + path.string() + ": missing or unreadable");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// The samples as CSV: results.csv's leading column names, every double in its shortest exact
+// form (std::to_chars), NaN as an empty cell.
+std::string SamplesCsv(const std::vector<RunSample>& samples) {
+  std::string out;
+  for (int c = 0; c < kColumnCount; ++c) {
+    if (c > 0) out += ',';
+    out += kColumnHeaders[size_t(c)];
+  }
+  out += '\n';
+  char buffer[64];
+  for (const RunSample& s : samples) {
+    for (int c = 0; c < kColumnCount; ++c) {
+      if (c > 0) out += ',';
+      const double v = s.values[size_t(c)];
+      if (std::isnan(v)) continue;
+      const auto result = std::to_chars(buffer, buffer + sizeof buffer, v);
+      out.append(buffer, result.ptr);
+    }
+    out += '\n';
+  }
+  return out;
+}
+
+std::vector<RunSample> ParseSamplesCsv(const std::string& text, const fs::path& path) {
+  std::istringstream in(text);
+  std::string line;
+  std::getline(in, line);
+  std::string header;
+  for (int c = 0; c < kColumnCount; ++c) {
+    if (c > 0) header += ',';
+    header += kColumnHeaders[size_t(c)];
+  }
+  if (line != header) {
+    throw std::runtime_error(path.string() + ": the header is not the columns this version shows");
+  }
+  std::vector<RunSample> samples;
+  int row = 1;
+  while (std::getline(in, line)) {
+    ++row;
+    RunSample sample;
+    std::size_t start = 0;
+    for (int c = 0; c < kColumnCount; ++c) {
+      const std::size_t end = std::min(line.find(',', start), line.size());
+      if (end > start) {
+        double v = 0;
+        const auto result = std::from_chars(line.data() + start, line.data() + end, v);
+        if (result.ec != std::errc() || result.ptr != line.data() + end) {
+          throw std::runtime_error(path.string() + ": row " + std::to_string(row) + ", column " +
+                                   kColumnHeaders[size_t(c)] + " is not a number");
+        }
+        sample.values[size_t(c)] = v;
+      }
+      if (c + 1 < kColumnCount && end >= line.size()) {
+        throw std::runtime_error(path.string() + ": row " + std::to_string(row) + " has " +
+                                 std::to_string(c + 1) + " of " + std::to_string(kColumnCount) +
+                                 " columns");
+      }
+      start = end + 1;
+    }
+    samples.push_back(sample);
+  }
+  return samples;
+}
+
+// Copies a stored run folder's files (results.csv, summary.json, fields/) into `to`, each
+// atomically.
+void CopyFieldFiles(const fs::path& fields, const fs::path& to) {
+  if (!fs::is_directory(fields)) throw std::runtime_error("this run has no film fields");
+  bool any = false;
+  for (const auto& entry : fs::directory_iterator(fields)) {
+    const std::string ext = entry.path().extension().string();
+    if (ext != ".h5" && ext != ".xdmf") continue;
+    fs::create_directories(to);
+    io::WriteFileAtomically(to / entry.path().filename(), ReadBytes(entry.path()));
+    any = true;
+  }
+  if (!any) throw std::runtime_error("this run has no film fields");
+}
+
+RunWriters CopyingWriters(const fs::path& folder) {
+  RunWriters writers;
+  writers.folder = [folder](const std::string& dir) {
+    const fs::path to(dir);
+    fs::create_directories(to);
+    io::WriteFileAtomically(to / "results.csv", ReadBytes(folder / "results.csv"));
+    if (fs::is_directory(folder / "fields")) CopyFieldFiles(folder / "fields", to / "fields");
+    io::WriteFileAtomically(to / "summary.json", ReadBytes(folder / "summary.json"));
+  };
+  writers.csv = [folder] { return ReadBytes(folder / "results.csv"); };
+  writers.fields = [folder](const std::string& dir) { CopyFieldFiles(folder / "fields", dir); };
+  return writers;
+}
+
+const char* StatusKey(RunStatus status) {
+  switch (status) {
+    case RunStatus::kRunning:
+      return "running";
+    case RunStatus::kFinished:
+      return "finished";
+    case RunStatus::kFailed:
+      return "failed";
+    case RunStatus::kCancelled:
+      return "cancelled";
+  }
+  return "failed";
+}
+
+RunStatus StatusFromKey(const std::string& key) {
+  if (key == "finished") return RunStatus::kFinished;
+  if (key == "cancelled") return RunStatus::kCancelled;
+  if (key == "failed") return RunStatus::kFailed;
+  throw std::runtime_error("status \"" + key + "\" is not finished, failed or cancelled");
+}
+
+// Whether `name` is a key of this layout (a run folder, its samples or their temporaries).
+bool OwnEntry(const std::string& name) { return name.rfind(kKeyPrefix, 0) == 0; }
+
+std::string KeyOfEntry(std::string name) {
+  for (const std::string& suffix : {std::string(kSamplesSuffix), std::string(".tmp")}) {
+    if (name.size() > suffix.size() && name.ends_with(suffix)) {
+      name.resize(name.size() - suffix.size());
+    }
+  }
+  return name;
+}
+
+void AddBigEndLoads(const fs::path& results_csv, FieldFrames* frames);
+
+// Fills a run from its stored files; throws std::runtime_error naming the file and the problem.
+void Restore(RunRecord& run, const fs::path& dir, const std::string& key, bool has_folder) {
+  run.Report(
+      ParseSamplesCsv(ReadBytes(dir / (key + kSamplesSuffix)), dir / (key + kSamplesSuffix)));
+  const fs::path folder = dir / key;
+  if (has_folder) {
+    const io::RunSummary summary = io::ReadSummaryJson(folder / "summary.json");
+    run.Statistic("cycles", summary.cycles);
+    run.Statistic("cycles to steady state", summary.cycles_to_steady_state);
+    run.Statistic("cycle change", summary.cycle_to_cycle_change);
+    run.Statistic("steps", double(summary.solver.steps));
+    run.Statistic("rejected steps", double(summary.solver.rejected_steps));
+    run.Statistic("max constraint violation", summary.max_constraint_violation);
+    run.Statistic("Reynolds solves", double(summary.solver.reynolds_solves));
+    run.ReportErrorEstimate(summary.error_estimate);
+    if (!fs::exists(folder / "results.csv")) {
+      throw std::runtime_error("cannot read " + (folder / "results.csv").string() + ": missing");
+    }
+    if (fs::is_directory(folder / "fields")) {
+      auto fields =
+          ReadFieldFrames(QPath(folder / "fields"), run.request().engine_case, run.request().rpm);
+      if (fields) {
+        auto with_loads = std::make_shared<FieldFrames>(*fields);
+        AddBigEndLoads(folder / "results.csv", with_loads.get());
+        fields = with_loads;
+      }
+      run.ReportFields(fields);
+    }
+    run.SetWriters(CopyingWriters(folder));
+  }
+  run.setStoredFolder(QPath(folder));
+}
+
+// The big end's load per field frame (crank pin on the rod, rod frame, as the live view records
+// it) from results.csv: the global force turned by the rod angle of the row at the frame's crank
+// angle. Left empty when a frame has no row.
+void AddBigEndLoads(const fs::path& results_csv, FieldFrames* frames) {
+  JointFieldFrames* big_end = nullptr;
+  for (JointFieldFrames& joint : frames->joints) {
+    if (joint.name == "big_end") big_end = &joint;
+  }
+  if (big_end == nullptr) return;
+  auto split = [](const std::string& line) {
+    std::vector<std::string> cells;
+    for (std::size_t start = 0; start <= line.size();) {
+      const std::size_t end = std::min(line.find(',', start), line.size());
+      cells.push_back(line.substr(start, end - start));
+      start = end + 1;
+    }
+    return cells;
+  };
+  std::istringstream in(ReadBytes(results_csv));
+  std::string line;
+  std::getline(in, line);
+  const std::vector<std::string> header = split(line);
+  auto column = [&header](const std::string& name) {
+    return std::size_t(std::find(header.begin(), header.end(), name) - header.begin());
+  };
+  const std::size_t rod = column("rod_angle[rad]"), fx = column("bigend_force_x[N]"),
+                    fy = column("bigend_force_y[N]");
+  if (rod >= header.size() || fx >= header.size() || fy >= header.size()) return;
+  std::vector<std::array<double, 4>> rows;  // crank angle, rod angle, fx, fy
+  while (std::getline(in, line)) {
+    const std::vector<std::string> cells = split(line);
+    if (cells.size() != header.size()) continue;
+    std::array<double, 4> row;
+    const std::size_t from[] = {0, rod, fx, fy};
+    for (int k = 0; k < 4; ++k) {
+      const std::string& cell = cells[from[k]];
+      row[size_t(k)] = std::numeric_limits<double>::quiet_NaN();
+      std::from_chars(cell.data(), cell.data() + cell.size(), row[size_t(k)]);
+    }
+    rows.push_back(row);
+  }
+  std::vector<std::array<double, 2>> loads;
+  for (double frame_angle : frames->crank_angle_deg) {
+    const auto row = std::find_if(rows.begin(), rows.end(), [frame_angle](const auto& r) {
+      return std::abs(r[0] - frame_angle) < 1e-6;
+    });
+    if (row == rows.end() || !std::isfinite((*row)[2])) return;
+    const double c = std::cos((*row)[1]), sn = std::sin((*row)[1]);
+    loads.push_back({c * (*row)[2] + sn * (*row)[3], -sn * (*row)[2] + c * (*row)[3]});
+  }
+  big_end->load = std::move(loads);
+}
+
+// One joint of the view from core's field series.
+JointFieldFrames JointFromSeries(const io::FieldSeries& series, bool big_end,
+                                 const engine::EngineCase& engine_case,
+                                 const std::vector<std::size_t>& kept) {
+  JointFieldFrames joint;
+  joint.name = big_end ? "big_end" : "skirt";
+  joint.mesh.triangles = series.triangles;
+  for (const auto& p : series.points) {
+    // The big end's reference position has the film angle θ at π + θ (core's field files):
+    // the view's points put θ at θ and turn each frame by its own angle instead.
+    joint.mesh.points.push_back(big_end ? std::array<double, 3>{-p[0], -p[1], p[2]} : p);
+  }
+  const auto& points = joint.mesh.points;
+  joint.radius = std::hypot(points.front()[0], points.front()[1]);
+  joint.periodic = big_end;
+  // The tensor grid: the first row's nodes share the axial position of node 0.
+  std::size_t columns = 0;
+  while (columns < points.size() && points[columns][2] == points.front()[2]) ++columns;
+  if (columns > 0 && points.size() % columns == 0) {
+    for (std::size_t i = 0; i < columns; ++i) {
+      double angle = std::atan2(points[i][1], points[i][0]);
+      if (big_end && angle < -1e-9) angle += 2 * kPi;
+      joint.angle_lines.push_back(std::abs(angle) < 1e-12 ? 0.0 : angle);
+    }
+    for (std::size_t j = 0; j < points.size() / columns; ++j) {
+      const double z = points[j * columns][2];
+      joint.axial_lines.push_back(big_end ? z : -z);
+    }
+  }
+  if (!big_end) {
+    const double a1 = engine_case.skirt.thrust_half_width;
+    const double a2 = engine_case.skirt.anti_thrust_half_width;
+    if (kPi - a2 > a1) joint.no_film.push_back({a1, kPi - a2});
+  }
+  static const char* const kArrays[] = {"pressure", "contact_pressure", "film_thickness"};
+  std::vector<int> index;
+  for (const char* name : kArrays) {
+    int found = -1;
+    for (std::size_t a = 0; a < series.array_names.size(); ++a) {
+      if (series.array_names[a].substr(0, series.array_names[a].find('[')) == name) found = int(a);
+    }
+    if (found < 0) {
+      throw std::runtime_error(series.name + " field series: no array " + name);
+    }
+    index.push_back(found);
+  }
+  for (std::size_t k : kept) {
+    const io::SeriesFrame& frame = series.frames[k];
+    std::vector<std::pair<std::string, std::vector<double>>> arrays;
+    for (std::size_t a = 0; a < index.size(); ++a) {
+      const std::vector<float>& values = frame.arrays[size_t(index[a])];
+      arrays.push_back({kArrays[a], std::vector<double>(values.begin(), values.end())});
+    }
+    joint.frames.push_back(std::move(arrays));
+    if (big_end) joint.frame_rotation.push_back(std::remainder(frame.rotation_z + kPi, 2 * kPi));
+  }
+  return joint;
+}
+
+}  // namespace
+
+QString RunsFolderFor(const QString& project_path) {
+  const QFileInfo info(project_path);
+  return info.absoluteDir().filePath(info.completeBaseName() + ".runs");
+}
+
+std::shared_ptr<const FieldFrames> ReadFieldFrames(const QString& fields_folder,
+                                                   const engine::EngineCase& engine_case,
+                                                   double rpm) {
+  const fs::path folder = PathOf(fields_folder);
+  auto frames = std::make_shared<FieldFrames>();
+  // Every stride-th output step, as the live view keeps them (ui/fields/field_collector).
+  const int steps_per_cycle =
+      std::max(1, int(std::lround(4 * kPi / engine_case.solver.output_interval)));
+  constexpr int kMaxFrames = 240;
+  const std::size_t stride =
+      std::size_t(std::max(1, (steps_per_cycle + kMaxFrames - 1) / kMaxFrames));
+  for (const auto& [file, big_end] :
+       {std::pair{"skirt.h5", false}, std::pair{"bearing.h5", true}}) {
+    if (!fs::exists(folder / file)) continue;
+    const io::FieldSeries series = io::ReadFieldSeries(folder / file);
+    std::vector<std::size_t> kept;
+    for (std::size_t k = 0; k < series.frames.size(); k += stride) kept.push_back(k);
+    if (frames->joints.empty()) {
+      for (std::size_t k : kept) {
+        const double angle = series.frames[k].crank_angle_deg;
+        frames->crank_angle_deg.push_back(angle);
+        frames->time.push_back(rpm > 0 ? angle / (6.0 * rpm) : 0.0);  // within the cycle
+      }
+    } else if (kept.size() != frames->crank_angle_deg.size()) {
+      throw std::runtime_error((folder / file).string() + ": " +
+                               std::to_string(series.frames.size()) +
+                               " frames, the other joint has a different number");
+    }
+    frames->joints.push_back(JointFromSeries(series, big_end, engine_case, kept));
+  }
+  if (frames->joints.empty()) return nullptr;
+  return frames;
+}
+
+bool SaveProjectRuns(const QString& project_path, const std::vector<ProjectRun>& runs, int base_id,
+                     SaveRunsReport* report, QString* error) {
+  SaveRunsReport done;
+  const fs::path dir = PathOf(RunsFolderFor(project_path));
+  try {
+    fs::create_directories(dir);
+    std::set<std::string> keep;
+    nlohmann::json list = nlohmann::json::array();
+    std::string base_key;
+    int next = 1;
+    for (const ProjectRun& entry : runs) {
+      const RunHandle& run = entry.run;
+      const fs::path stored = PathOf(run->storedFolder());
+      const bool stored_here = !run->storedFolder().isEmpty() && stored.parent_path() == dir;
+      if (run->status() == RunStatus::kRunning) {
+        ++done.skipped_running;
+        continue;
+      }
+      if (!run->restoreError().isEmpty()) {
+        // Its files stay for a later version or a repair; it is not listed again.
+        if (stored_here) keep.insert(stored.filename().string());
+        ++done.skipped_unrestored;
+        continue;
+      }
+      std::string key;
+      if (stored_here && fs::exists(dir / (stored.filename().string() + kSamplesSuffix))) {
+        key = stored.filename().string();  // written by an earlier save: files unchanged
+      } else {
+        do {
+          key = kKeyPrefix + std::to_string(next++);
+        } while (fs::exists(dir / key) || fs::exists(dir / (key + kSamplesSuffix)) ||
+                 keep.count(key));
+        const fs::path tmp = dir / (key + ".tmp");
+        fs::remove_all(tmp);
+        if (!run->resultsCsv().isEmpty()) {  // a run with core's writers: its run folder
+          QString message;
+          if (!run->writeRunFolder(QPath(tmp), &message)) {
+            fs::remove_all(tmp);
+            throw std::runtime_error(message.toStdString());
+          }
+          fs::rename(tmp, dir / key);
+        }
+        io::WriteFileAtomically(dir / (key + kSamplesSuffix), SamplesCsv(run->samples()));
+        run->setStoredFolder(QPath(dir / key));
+      }
+      keep.insert(key);
+      const RunRequest& request = run->request();
+      list.push_back({{"key", key},
+                      {"name", run->name().toStdString()},
+                      {"notes", run->notes().toStdString()},
+                      {"hidden", !entry.visible},
+                      {"model", request.model},
+                      {"rpm", request.rpm},
+                      {"status", StatusKey(run->status())},
+                      {"reason", run->reason().toStdString()},
+                      {"wall_time_s", run->elapsedSeconds()},
+                      {"has_folder", fs::exists(dir / key / "summary.json")},
+                      {"case", io::CaseToJson(request.engine_case)}});
+      if (run->id() == base_id) base_key = key;
+      ++done.saved;
+    }
+    const nlohmann::json index = {{"format", kFormat},
+                                  {"format_version", kFormatVersion},
+                                  {"base", base_key},
+                                  {"runs", list}};
+    io::WriteFileAtomically(dir / kIndex, index.dump(2) + "\n");
+    // Folders and samples no longer listed (removed runs, interrupted saves) go.
+    for (const auto& item : fs::directory_iterator(dir)) {
+      const std::string name = item.path().filename().string();
+      if (OwnEntry(name) && !keep.count(KeyOfEntry(name))) fs::remove_all(item.path());
+    }
+  } catch (const std::exception& e) {
+    if (error) *error = QObject::tr("Runs not saved: %1").arg(QString::fromUtf8(e.what()));
+    if (report) *report = done;
+    return false;
+  }
+  if (report) *report = done;
+  return true;
+}
+
+LoadedRuns LoadProjectRuns(const QString& project_path, const std::function<int()>& take_id) {
+  LoadedRuns loaded;
+  const fs::path dir = PathOf(RunsFolderFor(project_path));
+  if (!fs::exists(dir)) return loaded;
+  nlohmann::json index;
+  try {
+    index = nlohmann::json::parse(ReadBytes(dir / kIndex));
+    if (!index.is_object() || index.value("format", "") != kFormat) {
+      throw std::runtime_error("not a FilmDyn runs index (\"format\" is not \"" +
+                               std::string(kFormat) + "\")");
+    }
+    if (!index.contains("format_version") || !index["format_version"].is_number_integer() ||
+        index["format_version"].get<int>() > kFormatVersion) {
+      throw std::runtime_error("format_version must be an integer ≤ " +
+                               std::to_string(kFormatVersion) + " (saved by a newer FilmDyn?)");
+    }
+    if (!index.contains("runs") || !index["runs"].is_array()) {
+      throw std::runtime_error("\"runs\" must be a list");
+    }
+  } catch (const std::exception& e) {
+    loaded.problems << QObject::tr("No runs restored from %1: %2")
+                           .arg(QPath(dir / kIndex), QString::fromUtf8(e.what()));
+    return loaded;
+  }
+  const std::string base_key = index.value("base", "");
+  int position = 0;
+  for (const nlohmann::json& entry : index["runs"]) {
+    ++position;
+    const int id = take_id();
+    RunRequest request;
+    std::string key;
+    QString problem;
+    try {
+      if (!entry.is_object()) throw std::runtime_error("the entry is not an object");
+      key = entry.at("key").get<std::string>();
+      if (!OwnEntry(key) || key.find('/') != std::string::npos ||
+          key.find("..") != std::string::npos) {
+        throw std::runtime_error("key \"" + key + "\" is not a run folder name");
+      }
+      request.model = entry.at("model").get<std::string>();
+      request.rpm = entry.at("rpm").get<double>();
+      request.engine_case = io::CaseFromJson(entry.at("case"));
+    } catch (const std::exception& e) {
+      problem = QString::fromUtf8(e.what());
+    }
+    auto run = std::make_shared<RunRecord>(id, request);
+    ProjectRun restored{run, true};
+    if (entry.is_object()) {
+      run->setName(QString::fromStdString(entry.value("name", "")));
+      run->setNotes(QString::fromStdString(entry.value("notes", "")));
+      restored.visible = !entry.value("hidden", false);
+    }
+    if (problem.isEmpty()) {
+      try {
+        Restore(*run, dir, key, entry.value("has_folder", false));
+        const RunStatus status = StatusFromKey(entry.value("status", ""));
+        const QString reason = QString::fromStdString(entry.value("reason", ""));
+        if (status == RunStatus::kFinished && !reason.isEmpty()) run->Warn(reason.toStdString());
+        run->finish(status, reason);
+        run->setWallSeconds(entry.value("wall_time_s", 0.0));
+      } catch (const std::exception& e) {
+        problem = QString::fromUtf8(e.what());
+        // Nothing half restored: a fresh record carries the inputs and the reason.
+        run = std::make_shared<RunRecord>(id, request);
+        run->setName(QString::fromStdString(entry.value("name", "")));
+        run->setNotes(QString::fromStdString(entry.value("notes", "")));
+        run->setStoredFolder(QPath(dir / key));
+        restored.run = run;
+      }
+    }
+    if (!problem.isEmpty()) {
+      const QString which =
+          run->name().isEmpty()
+              ? QObject::tr("run %1 (%2)").arg(position).arg(QString::fromStdString(key))
+              : QObject::tr("run %1 “%2”").arg(position).arg(run->name());
+      const QString message = QObject::tr("not restored: %1").arg(problem);
+      run->setRestoreError(problem);
+      run->finish(RunStatus::kFailed, message);
+      run->setWallSeconds(0);
+      loaded.problems << QObject::tr("%1 %2").arg(which, message);
+    }
+    if (!key.empty() && key == base_key) loaded.base_id = id;
+    loaded.runs.push_back(restored);
+  }
+  return loaded;
+}
+
+}  // namespace filmdyn::ui
