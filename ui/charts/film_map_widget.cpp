@@ -4,28 +4,12 @@
 #include <QPainter>
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 #include "ui/charts/color_map.hpp"
+#include "ui/charts/round_ticks.hpp"
 
 namespace filmdyn::ui {
-
-std::vector<double> RoundTicks(double lo, double hi, int target) {
-  std::vector<double> ticks;
-  if (!(hi > lo) || !std::isfinite(lo) || !std::isfinite(hi)) return ticks;
-  const double raw = (hi - lo) / std::max(target, 1);
-  const double decade = std::pow(10.0, std::floor(std::log10(raw)));
-  double step = 10.0 * decade;
-  for (double m : {1.0, 2.0, 2.5, 5.0}) {
-    if (m * decade >= raw) {
-      step = m * decade;
-      break;
-    }
-  }
-  for (double t = std::ceil(lo / step - 1e-9) * step; t <= hi + 1e-9 * step; t += step) {
-    ticks.push_back(std::abs(t) < 1e-12 * step ? 0.0 : t);
-  }
-  return ticks;
-}
 
 namespace {
 
@@ -50,15 +34,16 @@ void FilmMapWidget::setData(FilmMapData data) {
   for (double v : data_.values) {
     if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
   }
-  if (data_.values_from_zero) lo = std::min(lo, 0.0);
-  if (!(hi > lo)) hi = lo + 1.0;
-  const std::vector<double> ticks = RoundTicks(lo, hi, 5);
-  scale_lo_ = lo, scale_hi_ = hi;
-  if (ticks.size() >= 2) {  // round the bar's ends out to whole ticks
-    const double step = ticks[1] - ticks[0];
-    scale_lo_ = std::floor(lo / step + 1e-9) * step;
-    scale_hi_ = std::ceil(hi / step - 1e-9) * step;
+  if (std::isfinite(data_.scale_lo) && std::isfinite(data_.scale_hi)) {
+    lo = data_.scale_lo, hi = data_.scale_hi;
   }
+  if (data_.values_from_zero) lo = std::min(lo, 0.0);
+  std::tie(scale_lo_, scale_hi_) = RoundedRange(lo, hi, 5);
+  update();
+}
+
+void FilmMapWidget::setYLine(double y) {
+  data_.y_line = y;
   update();
 }
 
@@ -115,6 +100,47 @@ void FilmMapWidget::paintEvent(QPaintEvent*) {
                      Qt::AlignCenter, text);
     painter.restore();
   }
+  // Marker lines: black under white, visible on every colour of the map.
+  auto marker = [&](QPointF a, QPointF b) {
+    painter.setPen(QPen(Qt::black, 3));
+    painter.drawLine(a, b);
+    painter.setPen(QPen(Qt::white, 1));
+    painter.drawLine(a, b);
+  };
+  if (std::isfinite(d.x_line) && d.x_line >= x0 && d.x_line <= x1) {
+    const double x = px(d.x_line);
+    marker(QPointF(x, plot.top()), QPointF(x, plot.bottom()));
+    if (!d.x_line_label.isEmpty()) {
+      const int w = fm.horizontalAdvance(d.x_line_label) + 6;
+      const QRectF box(std::clamp(x + 3, double(plot.left()), double(plot.right() - w)),
+                       plot.top() + 3, w, line);
+      painter.fillRect(box, QColor(255, 255, 255, 210));
+      painter.setPen(Qt::black);
+      painter.drawText(box, Qt::AlignCenter, d.x_line_label);
+    }
+  }
+  if (!d.points.empty()) {
+    painter.save();
+    painter.setRenderHint(QPainter::Antialiasing);
+    painter.setPen(QPen(Qt::black, 1));
+    painter.setBrush(QColor(255, 110, 80));
+    painter.setClipRect(plot);
+    for (const auto& [x, y] : d.points) painter.drawEllipse(QPointF(px(x), py(y)), 2.0, 2.0);
+    painter.setClipping(false);
+    if (!d.points_label.isEmpty()) {
+      const int w = fm.horizontalAdvance(d.points_label) + 20;
+      const QRectF box(plot.right() - w - 4, plot.bottom() - line - 4, w, line);
+      painter.fillRect(box, QColor(255, 255, 255, 210));
+      painter.drawEllipse(QPointF(box.left() + 8, box.center().y()), 2.5, 2.5);
+      painter.setPen(Qt::black);
+      painter.drawText(box.adjusted(16, 0, 0, 0), Qt::AlignLeft | Qt::AlignVCenter, d.points_label);
+    }
+    painter.restore();
+  }
+  if (std::isfinite(d.y_line) && d.y_line >= y0 && d.y_line <= y1) {
+    const double y = py(d.y_line);
+    marker(QPointF(plot.left(), y), QPointF(plot.right(), y));
+  }
   painter.setPen(palette().color(QPalette::Text));
   painter.drawRect(plot.adjusted(0, 0, -1, -1));
 
@@ -125,7 +151,8 @@ void FilmMapWidget::paintEvent(QPaintEvent*) {
     painter.drawText(QRectF(x - 40, plot.bottom() + 5, 80, line), Qt::AlignHCenter | Qt::AlignTop,
                      TickText(t));
   }
-  for (double t : RoundTicks(y0, y1, 6)) {
+  for (double t : d.y_ticks.empty() ? RoundTicks(y0, y1, 6) : d.y_ticks) {
+    if (t < y0 || t > y1) continue;
     const double y = py(t);
     painter.drawLine(QPointF(plot.left() - 4, y), QPointF(plot.left(), y));
     painter.drawText(QRectF(0, y - line / 2.0, plot.left() - 6, line),
@@ -149,6 +176,12 @@ void FilmMapWidget::paintEvent(QPaintEvent*) {
   painter.drawText(above, Qt::AlignHCenter | Qt::AlignVCenter, d.top);
   painter.drawText(QRectF(plot.left(), plot.bottom() + 2 * line + 8, plot.width(), line),
                    Qt::AlignHCenter, d.bottom);
+  for (const auto& [x, text] : d.x_marks) {
+    if (x < x0 || x > x1) continue;
+    const double w = fm.horizontalAdvance(text) * 1.2 + 4;
+    const double left = std::clamp(px(x) - w / 2, double(plot.left()), plot.right() - w);
+    painter.drawText(QRectF(left, 2, w, line + 2), Qt::AlignCenter, text);
+  }
   painter.setFont(font());
 
   // Colour bar beside the map, its numbers whole.

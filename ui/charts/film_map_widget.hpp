@@ -5,8 +5,11 @@
 /// without film (the pin-boss relief) are drawn grey and named.
 #include <QString>
 #include <QWidget>
+#include <cmath>
 #include <utility>
 #include <vector>
+
+#include "ui/charts/round_ticks.hpp"
 
 namespace filmdyn::ui {
 
@@ -19,10 +22,22 @@ struct FilmMapData {
   std::vector<std::pair<double, double>> no_film_x;  ///< x intervals without film
   QString no_film_label;
   bool values_from_zero = true;  ///< the colour scale starts at 0 (pressures, thicknesses)
+  /// A fixed colour range (e.g. over a whole cycle, so frames compare); NaN: from the values.
+  double scale_lo = NAN, scale_hi = NAN;
+  /// Named positions along x, written above the map (e.g. "rod side" at 90°).
+  std::vector<std::pair<double, QString>> x_marks;
+  /// A vertical line across the map at this x, named (e.g. the load line); NaN: none.
+  double x_line = NAN;
+  QString x_line_label;
+  /// A horizontal line across the map at this y (e.g. the crank angle shown); NaN: none.
+  double y_line = NAN;
+  /// The y axis' numbered ticks (e.g. every 90 °CA); empty: round numbers (RoundTicks).
+  std::vector<double> y_ticks;
+  /// Points (x, y) marked on the map as dots, e.g. the load's direction at every crank angle,
+  /// named in a small legend.
+  std::vector<std::pair<double, double>> points;
+  QString points_label;
 };
-
-/// Round tick positions covering [lo, hi]: steps of 1, 2, 2.5 or 5 × 10ⁿ, about `target` of them.
-std::vector<double> RoundTicks(double lo, double hi, int target = 6);
 
 class FilmMapWidget : public QWidget {
   Q_OBJECT
@@ -30,6 +45,8 @@ class FilmMapWidget : public QWidget {
  public:
   explicit FilmMapWidget(QWidget* parent = nullptr);
   void setData(FilmMapData data);
+  /// Moves the horizontal line (FilmMapData::y_line) without replacing the data.
+  void setYLine(double y);
   const FilmMapData& data() const { return data_; }
   /// The colour scale's range (after rounding to its ticks).
   std::pair<double, double> scaleRange() const { return {scale_lo_, scale_hi_}; }

@@ -8,9 +8,10 @@ namespace filmdyn::ui {
 
 const std::vector<FieldArrayInfo>& FieldArrays() {
   static const std::vector<FieldArrayInfo> arrays = {
-      {"pressure", "p [MPa]", 1e-6},
-      {"contact_pressure", "p_c [MPa]", 1e-6},
-      {"film_thickness", "h [µm]", 1e6},
+      {"pressure", "Film pressure [MPa]", 1e-6, "film pressure", "MPa", false},
+      {"contact_pressure", "Asperity contact pressure [MPa]", 1e-6, "asperity contact pressure",
+       "MPa", false},
+      {"film_thickness", "Film thickness [µm]", 1e6, "film thickness", "µm", true},
   };
   return arrays;
 }

@@ -5,6 +5,7 @@
 /// this; the ideal model has no fields. The GUI's exports are core's files
 /// (the run's writers), not these frames.
 #include <QString>
+#include <array>
 #include <string>
 #include <vector>
 
@@ -14,12 +15,42 @@ namespace filmdyn::ui {
 
 /// One joint: the surface (points [m], triangles; fixed over the run) and per frame the nodal
 /// arrays (name, values) in SI.
+///
+/// The film mesh is a tensor grid: node (i, j) of `mesh` is node i + angle_lines.size() · j, at
+/// the circumferential angle angle_lines[i] and the axial position axial_lines[j] (core's
+/// lubrication::TriMesh numbering). Skirt: α from the thrust side (0) to the anti-thrust side
+/// (π), y below the skirt top, points (R cos α, R sin α, −y). Big end: θ from the maximum film
+/// (the line-of-centres frame, turning with the journal), z across the width, points
+/// (R cos θ, R sin θ, z); frame k is drawn turned by frame_rotation[k] about the bearing axis,
+/// which places it in the rod frame (x ⟂ rod, y along the rod toward the small end).
 struct JointFieldFrames {
   std::string name;       ///< "skirt", "big_end"
   io::SurfaceField mesh;  ///< point_data unused
   std::vector<std::vector<std::pair<std::string, std::vector<double>>>> frames;
+  std::vector<double> angle_lines;  ///< circumferential angle of each node column [rad]
+  std::vector<double> axial_lines;  ///< axial position of each node row [m]
+  bool periodic = false;            ///< the angle wraps at 2π (the last column meets the first)
+  /// The film is symmetric about the plane y = 0 (the skirt about its pin-axis plane): the
+  /// 3D view draws the mirror image too, so the whole part is seen.
+  bool mirrored = false;
+  double radius = 0.0;  ///< [m]
+  /// Angle intervals without film [rad], e.g. the skirt's pin-boss relief: not drawn as surface.
+  std::vector<std::pair<double, double>> no_film;
+  /// Per frame: the angle from the film's own frame to the body frame it is drawn in [rad]
+  /// (big end: ψ = θ + frame_rotation, ψ in the rod frame). Empty: 0 for every frame.
+  std::vector<double> frame_rotation;
+  /// Per frame: the force on the bearing in the body frame (big end: crank pin on the rod, rod
+  /// frame) [N]. Empty when not recorded (the skirt).
+  std::vector<std::array<double, 2>> load;
   /// Frame k as a complete surface with its arrays.
   io::SurfaceField Frame(size_t k) const;
+  /// The rotation of frame k [rad] (0 when none is recorded).
+  double Rotation(size_t k) const { return k < frame_rotation.size() ? frame_rotation[k] : 0.0; }
+  /// True when the grid is known and matches the mesh (node count = columns × rows).
+  bool HasGrid() const {
+    return !angle_lines.empty() && !axial_lines.empty() &&
+           angle_lines.size() * axial_lines.size() == mesh.points.size();
+  }
 };
 
 struct FieldFrames {
@@ -29,11 +60,16 @@ struct FieldFrames {
   bool empty() const { return crank_angle_deg.empty() || joints.empty(); }
 };
 
-/// The arrays the views offer: (array name, title with display unit, display scale).
+/// The arrays the views offer: array name, title with display unit, display scale, the
+/// quantity in words (for titles), the unit alone (for the colour bar), and whether the
+/// crank-angle map shows its minimum along the axis (film thickness) rather than its maximum.
 struct FieldArrayInfo {
   const char* name;
   const char* title;
   double scale;
+  const char* words;
+  const char* unit;
+  bool minimum_matters;
 };
 const std::vector<FieldArrayInfo>& FieldArrays();
 

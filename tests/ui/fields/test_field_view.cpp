@@ -1,22 +1,46 @@
 // The pressure-field view under a real X server (xvfb-run): skirt and bearing surfaces built from
 // FieldFrames render a non-blank, colour-mapped image; the crank-angle slider and play/pause
-// change the frame and move the plot cursor.
-// The frames here are SYNTHETIC test data (analytic pressure bumps), never shown to users.
+// change the frame and move the plot cursor. With the frames of a real short coupled run
+// (core's run job through the GUI's field collector): the 3D views are viridis, unlit, their
+// scalar bar beside the surface with round numbers, the sides named, the relief not drawn, the
+// big end's load line along the crank pin's force; the unrolled map holds the nodal values, the
+// crank-angle map the extremes along the axial lines; switching runs keeps the crank angle and
+// "Same scale for all runs" gives them one colour range.
+// SyntheticFrames are analytic test data (pressure bumps), never shown to users.
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLUnstructuredGridReader.h>
 
+#include <vtkActor.h>
+#include <vtkCellArray.h>
+#include <vtkLookupTable.h>
+#include <vtkMapper.h>
+#include <vtkPolyData.h>
+#include <vtkProperty.h>
+#include <vtkRenderer.h>
+#include <vtkScalarBarActor.h>
+
+#include <QCheckBox>
 #include <QComboBox>
+#include <QDir>
 #include <QImage>
 #include <QSet>
 #include <QSlider>
+#include <QTabWidget>
 #include <QTemporaryDir>
+#include <QToolButton>
 #include <QtTest>
 #include <cmath>
 #include <memory>
 
+#include "core/engine/run_job.hpp"
+#include "core/io/case_file.hpp"
+#include "ui/charts/color_map.hpp"
+#include "ui/charts/film_map_widget.hpp"
+#include "ui/fields/field_collector.hpp"
 #include "ui/fields/field_frames.hpp"
+#include "ui/fields/field_maps.hpp"
 #include "ui/fields/field_view.hpp"
 #include "ui/plots/plot_panel.hpp"
 #include "ui/vtk/scalar_field_view.hpp"
@@ -69,6 +93,12 @@ std::shared_ptr<filmdyn::ui::FieldFrames> SyntheticFrames(int count) {
   bearing.name = "big_end";
   skirt.mesh = Surface(36.5e-3, M_PI, 28e-3, 40, 16);
   bearing.mesh = Surface(15e-3, 2 * M_PI, 22e-3, 60, 12);
+  for (int i = 0; i < 40; ++i) skirt.angle_lines.push_back(M_PI * i / 39);
+  for (int j = 0; j < 16; ++j) skirt.axial_lines.push_back(28e-3 * j / 15);
+  skirt.radius = 36.5e-3;
+  for (int i = 0; i < 60; ++i) bearing.angle_lines.push_back(2 * M_PI * i / 59);
+  for (int j = 0; j < 12; ++j) bearing.axial_lines.push_back(22e-3 * j / 11);
+  bearing.radius = 15e-3;
   for (int k = 0; k < count; ++k) {
     frames->crank_angle_deg.push_back(720.0 * k / count);
     frames->time.push_back(1e-4 * k);
@@ -78,6 +108,79 @@ std::shared_ptr<filmdyn::ui::FieldFrames> SyntheticFrames(int count) {
   }
   frames->joints = {skirt, bearing};
   return frames;
+}
+
+// The frames of a real coupled run (default case, Skirt-LBRBE, 6000 rpm, 4 °CA output, one
+// cycle after the run-in), collected as the GUI collects them.
+std::shared_ptr<const filmdyn::ui::FieldFrames> RealRunFrames() {
+  using namespace filmdyn;
+  const io::LoadedCase loaded = io::LoadCase({});
+  engine::EngineCase c = loaded.value;
+  c.solver.output_interval = 4.0 * M_PI / 180.0;
+  c.solver.max_cycles = 1;
+  c.solver.error_estimate = 0;
+  engine::ApplyModel(engine::Model::kSkirtLbrbe, &c);
+  engine::RunConfig config = engine::MakeRunConfig(c, engine::Model::kSkirtLbrbe, 6000.0,
+                                                   io::PressureCurveForSpeed(loaded, 6000.0));
+  ui::FieldCollector collector(180);
+  config.field_callback = [&collector](const engine::FieldFrame& f) { collector.Add(f); };
+  const engine::RunResult result = engine::RunJob(config);
+  qInfo("real run: %s, %zu samples, %.1f s", engine::StatusName(result.status).c_str(),
+        result.samples.size(), result.wall_time);
+  return collector.Result();
+}
+
+// A copy of a run's frames with every pressure multiplied by `factor` (a "second run").
+std::shared_ptr<filmdyn::ui::FieldFrames> ScaledCopy(const filmdyn::ui::FieldFrames& frames,
+                                                     double factor, double angle_shift) {
+  auto copy = std::make_shared<filmdyn::ui::FieldFrames>(frames);
+  for (double& a : copy->crank_angle_deg) a = std::fmod(a + angle_shift, 720.0);
+  for (auto& joint : copy->joints) {
+    for (auto& frame : joint.frames) {
+      for (auto& [name, values] : frame) {
+        if (name == "pressure")
+          for (double& v : values) v *= factor;
+      }
+    }
+  }
+  return copy;
+}
+
+const filmdyn::ui::FieldArrayInfo& Array(const char* name) {
+  for (const auto& info : filmdyn::ui::FieldArrays())
+    if (std::string(info.name) == name) return info;
+  qFatal("no array %s", name);
+}
+
+// The value of `name` at node (i, j) of frame k, in display units.
+double NodeValue(const filmdyn::ui::JointFieldFrames& joint, size_t k, size_t i, size_t j,
+                 const char* name) {
+  for (const auto& [array, values] : joint.frames[k]) {
+    if (array == name) return values[i + joint.angle_lines.size() * j] * Array(name).scale;
+  }
+  return NAN;
+}
+
+// Index of x in sorted lines (exact up to rounding), -1 when absent.
+int LineIndex(const std::vector<double>& lines, double x) {
+  for (size_t i = 0; i < lines.size(); ++i)
+    if (std::abs(lines[i] - x) < 1e-9) return int(i);
+  return -1;
+}
+
+// Round: a whole multiple of a step of 1, 2, 2.5 or 5 × 10ⁿ that the ticks share.
+bool RoundNumbers(const std::vector<double>& ticks) {
+  if (ticks.size() < 2) return false;
+  const double step = ticks[1] - ticks[0];
+  const double decade = std::pow(10.0, std::floor(std::log10(step)));
+  const double m = step / decade;
+  if (!(std::abs(m - 1) < 1e-9 || std::abs(m - 2) < 1e-9 || std::abs(m - 2.5) < 1e-9 ||
+        std::abs(m - 5) < 1e-9 || std::abs(m - 10) < 1e-9))
+    return false;
+  for (double t : ticks) {
+    if (std::abs(t / step - std::round(t / step)) > 1e-9) return false;
+  }
+  return true;
 }
 
 int DistinctColours(const QImage& image) {
@@ -147,7 +250,309 @@ class TestFieldView : public QObject {
     view.setFrames(nullptr, "Ideal 6000 rpm");
     QVERIFY(view.jointView(0) == nullptr);
     QVERIFY(!view.slider()->isEnabled());
+    // Nothing to show: nothing to choose or play either.
+    QVERIFY(!view.arraySelector()->isEnabled());
+    QVERIFY(!view.playButton()->isEnabled());
+    QVERIFY(!view.sameScaleBox()->isEnabled());
+    view.setFrames(SyntheticFrames(4), "test");
+    QVERIFY(view.arraySelector()->isEnabled() && view.playButton()->isEnabled());
+    view.setFrames(nullptr, "Ideal 4000 rpm");
+    QVERIFY(!view.arraySelector()->isEnabled() && !view.playButton()->isEnabled());
   }
+
+  void initTestCase() {
+    real_ = RealRunFrames();
+    QVERIFY(real_ && !real_->empty());
+    QCOMPARE(int(real_->joints.size()), 2);
+  }
+
+  // What core knows reaches the frames: the tensor grid, the relief, the big end's turn into the
+  // rod frame and the load, and they agree with the fields.
+  void realFramesCarryTheGridTheReliefAndTheLoad() {
+    const auto& skirt = real_->joints[0];
+    const auto& big_end = real_->joints[1];
+    QCOMPARE(skirt.name, std::string("skirt"));
+    QVERIFY(skirt.HasGrid() && !skirt.periodic);
+    QCOMPARE(int(skirt.no_film.size()), 1);
+    // Table I: both panels 46° half-widths, so the relief spans 46° … 134°.
+    QVERIFY(std::abs(skirt.no_film[0].first * 180 / M_PI - 46.0) < 1e-6);
+    QVERIFY(std::abs(skirt.no_film[0].second * 180 / M_PI - 134.0) < 1e-6);
+    const size_t nx = skirt.angle_lines.size();
+    for (size_t k = 0; k < skirt.frames.size(); k += 7) {
+      for (size_t n = 0; n < skirt.mesh.points.size(); ++n) {
+        const double a = skirt.angle_lines[n % nx];
+        if (a > skirt.no_film[0].first + 1e-9 && a < skirt.no_film[0].second - 1e-9)
+          QCOMPARE(NodeValue(skirt, k, n % nx, n / nx, "pressure"), 0.0);
+      }
+    }
+    QCOMPARE(big_end.name, std::string("big_end"));
+    QVERIFY(big_end.HasGrid() && big_end.periodic);
+    QCOMPARE(big_end.frame_rotation.size(), big_end.frames.size());
+    QCOMPARE(big_end.load.size(), big_end.frames.size());
+    // The load line points at the pressure lobe: at the frame of the largest load the node of
+    // highest film pressure lies near the load's direction (both in the rod frame).
+    size_t heaviest = 0;
+    for (size_t k = 0; k < big_end.load.size(); ++k) {
+      if (std::hypot(big_end.load[k][0], big_end.load[k][1]) >
+          std::hypot(big_end.load[heaviest][0], big_end.load[heaviest][1]))
+        heaviest = k;
+    }
+    const size_t bx = big_end.angle_lines.size();
+    size_t peak = 0;
+    for (size_t n = 0; n < big_end.mesh.points.size(); ++n) {
+      if (NodeValue(big_end, heaviest, n % bx, n / bx, "pressure") >
+          NodeValue(big_end, heaviest, peak % bx, peak / bx, "pressure"))
+        peak = n;
+    }
+    const double peak_angle = filmdyn::ui::ColumnAngleDeg(big_end, peak % bx, heaviest);
+    const auto& f = big_end.load[heaviest];
+    const double load_angle = std::atan2(f[1], f[0]) * 180 / M_PI;
+    const double off = std::abs(std::remainder(peak_angle - load_angle, 360.0));
+    qInfo("largest load %.0f N at %.0f °CA toward %.1f° (rod frame); pressure peak at %.1f°",
+          std::hypot(f[0], f[1]), real_->crank_angle_deg[heaviest], load_angle, peak_angle);
+    QVERIFY2(off < 45.0, qPrintable(QString::number(off)));
+  }
+
+  void unrolledMapHoldsTheNodalValues() {
+    filmdyn::ui::FieldView view;
+    view.resize(1200, 700);
+    view.setFrames(real_, "Skirt-LBRBE 6000 rpm");
+    view.setCrankAngle(380.0);
+    const size_t k = size_t(view.frameIndex());
+    QVERIFY(std::abs(real_->crank_angle_deg[k] - 380.0) < 1e-6);
+    QCOMPARE(view.title(), QString("Skirt-LBRBE 6000 rpm — film pressure at 380 °CA"));
+    for (int jj = 0; jj < 2; ++jj) {
+      const auto& joint = real_->joints[size_t(jj)];
+      const filmdyn::ui::FilmMapData& d = view.unrolledMap(jj)->data();
+      const size_t nx = joint.angle_lines.size(), ny = joint.axial_lines.size();
+      QCOMPARE(d.y.size(), ny);
+      int checked = 0;
+      for (size_t i = 0; i < nx; i += 3) {
+        for (size_t j = 0; j < ny; j += 2) {
+          const int ix = LineIndex(d.x, filmdyn::ui::ColumnAngleDeg(joint, i, k));
+          QVERIFY(ix >= 0);
+          QCOMPARE(d.y[j], joint.axial_lines[j] * 1e3);
+          QCOMPARE(d.values[size_t(ix) + d.x.size() * j], NodeValue(joint, k, i, j, "pressure"));
+          ++checked;
+        }
+      }
+      QVERIFY(checked > 50);
+      // The colour scale is the 3D view's.
+      QCOMPARE(view.unrolledMap(jj)->scaleRange(), view.colourRange(jj));
+    }
+    // The big end's map is in the rod frame, with the load line at the force's direction.
+    const filmdyn::ui::FilmMapData& big = view.unrolledMap(1)->data();
+    QCOMPARE(big.x.front(), 0.0);
+    QCOMPARE(big.x.back(), 360.0);
+    const auto& f = real_->joints[1].load[k];
+    double load_angle = std::atan2(f[1], f[0]) * 180 / M_PI;
+    if (load_angle < 0) load_angle += 360;
+    QVERIFY(std::abs(big.x_line - load_angle) < 1e-9);
+    QVERIFY(big.x_line_label.startsWith("load"));
+    QVERIFY(big.x_title.contains("rod frame"));
+    // The skirt's relief is named on the map.
+    QCOMPARE(int(view.unrolledMap(0)->data().no_film_x.size()), 1);
+  }
+
+  void crankAngleMapRowsAreTheExtremesAlongTheAxis() {
+    filmdyn::ui::FieldView view;
+    view.resize(1200, 700);
+    view.setFrames(real_, "Skirt-LBRBE 6000 rpm");
+    view.setCrankAngle(380.0);
+    const auto& skirt = real_->joints[0];
+    const size_t nx = skirt.angle_lines.size(), ny = skirt.axial_lines.size();
+    for (const char* array : {"pressure", "film_thickness"}) {
+      const bool minimum = std::string(array) == "film_thickness";
+      view.arraySelector()->setCurrentIndex(minimum ? 2 : 0);
+      const filmdyn::ui::FilmMapData& d = view.crankAngleMap(0)->data();
+      QCOMPARE(d.x.size(), nx);
+      QCOMPARE(d.y.size(), real_->crank_angle_deg.size());
+      QCOMPARE(d.y_line, real_->crank_angle_deg[size_t(view.frameIndex())]);
+      for (size_t k : {size_t(0), size_t(17), size_t(95), real_->crank_angle_deg.size() - 1}) {
+        const int row = LineIndex(d.y, real_->crank_angle_deg[k]);
+        QVERIFY(row >= 0);
+        for (size_t i = 0; i < nx; ++i) {
+          double expected = minimum ? INFINITY : -INFINITY;
+          for (size_t j = 0; j < ny; ++j) {
+            const double v = NodeValue(skirt, k, i, j, array);
+            expected = minimum ? std::min(expected, v) : std::max(expected, v);
+          }
+          QCOMPARE(d.values[i + nx * size_t(row)], expected);
+        }
+      }
+    }
+    // The big end turns with the journal: its rows are resampled on the rod frame's angles and
+    // keep the frame's peak (within the resampling between columns).
+    view.arraySelector()->setCurrentIndex(0);
+    const auto& big_end = real_->joints[1];
+    const filmdyn::ui::FilmMapData& d = view.crankAngleMap(1)->data();
+    QCOMPARE(d.x.front(), 0.0);
+    QCOMPARE(d.x.back(), 360.0);
+    const size_t k = 95;
+    const int row = LineIndex(d.y, real_->crank_angle_deg[k]);
+    double map_max = 0, frame_max = 0;
+    for (size_t i = 0; i < d.x.size(); ++i)
+      map_max = std::max(map_max, d.values[i + d.x.size() * size_t(row)]);
+    for (size_t n = 0; n < big_end.mesh.points.size(); ++n)
+      frame_max = std::max(frame_max, NodeValue(big_end, k, n % big_end.angle_lines.size(),
+                                                n / big_end.angle_lines.size(), "pressure"));
+    qInfo("big end at %.0f °CA: frame peak %.2f MPa, crank-angle map row peak %.2f MPa",
+          real_->crank_angle_deg[k], frame_max, map_max);
+    QVERIFY(map_max <= frame_max * (1 + 1e-12));
+    QVERIFY(map_max >= 0.8 * frame_max);
+    // The load's direction is marked on every row: at row k the force's angle in the rod frame.
+    QCOMPARE(d.points.size(), d.y.size());
+    const auto& f = big_end.load[k];
+    double load_angle = std::atan2(f[1], f[0]) * 180 / M_PI;
+    if (load_angle < 0) load_angle += 360;
+    QCOMPARE(d.points[size_t(row)].first, load_angle);
+    QCOMPARE(d.points[size_t(row)].second, real_->crank_angle_deg[k]);
+  }
+
+  void threeDViewsAreViridisUnlitWithTheBarBeside() {
+    filmdyn::ui::FieldView view;
+    view.resize(1400, 820);
+    view.setFrames(real_, "Skirt-LBRBE 6000 rpm");
+    view.setCrankAngle(380.0);
+    view.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&view));
+    for (int jj = 0; jj < 2; ++jj) {
+      filmdyn::ui::ScalarFieldView* v = view.jointView(jj);
+      QVERIFY(v != nullptr);
+      QTRY_VERIFY_WITH_TIMEOUT(v->renderedFrames() > 0, 10000);
+      // The lookup table is the application's viridis.
+      for (int i : {0, 40, 128, 200, 255}) {
+        double rgba[4];
+        v->lookupTable()->GetTableValue(i, rgba);
+        const QColor expected = filmdyn::ui::Viridis(i / 255.0);
+        QCOMPARE(int(std::lround(rgba[0] * 255)), expected.red());
+        QCOMPARE(int(std::lround(rgba[1] * 255)), expected.green());
+        QCOMPARE(int(std::lround(rgba[2] * 255)), expected.blue());
+      }
+      // Unlit: the colour is the value's wherever the surface faces.
+      vtkProperty* property = v->surfaceActor()->GetProperty();
+      QVERIFY(!property->GetLighting());
+      QCOMPARE(property->GetAmbient(), 1.0);
+      QCOMPARE(property->GetDiffuse(), 0.0);
+      // The bar: round numbers from end to end of the shared range, in its own strip.
+      const std::vector<double> labels = v->barLabels();
+      QVERIFY2(RoundNumbers(labels), "bar labels are not round");
+      QCOMPARE(labels.front(), view.colourRange(jj).first);
+      QCOMPARE(labels.back(), view.colourRange(jj).second);
+      QCOMPARE(v->scalarRange()[1], view.colourRange(jj).second);
+      const double* surface = v->renderer()->GetViewport();
+      const double* bar = v->scalarBarRenderer()->GetViewport();
+      QVERIFY(surface[2] <= bar[0]);
+      QVERIFY(v->scalarBarRenderer()->HasViewProp(v->scalarBar()));
+      QVERIFY(!v->renderer()->HasViewProp(v->scalarBar()));
+      // No rainbow red left (viridis has none): the old blue-to-red map is gone.
+      const QImage image = v->grabFramebuffer();
+      int reddish = 0;
+      for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x) {
+          const QRgb c = image.pixel(x, y);
+          if (qRed(c) > 180 && qGreen(c) < 90 && qBlue(c) < 90) ++reddish;
+        }
+      QVERIFY(DistinctColours(image) > 100);
+      if (!v->arrowVisible()) QCOMPARE(reddish, 0);  // the load arrow is the only red
+    }
+    // The sides are named; the skirt's relief carries no surface; the big end shows its load.
+    const auto skirt_labels = view.jointView(0)->labelTexts();
+    for (const char* text : {"thrust side", "anti-thrust side", "skirt top",
+                             "skirt bottom (crank side)", "pin-boss relief: no film"}) {
+      QVERIFY2(
+          std::find(skirt_labels.begin(), skirt_labels.end(), QString(text)) != skirt_labels.end(),
+          text);
+    }
+    const auto big_labels = view.jointView(1)->labelTexts();
+    QVERIFY(std::find(big_labels.begin(), big_labels.end(), QString("rod side")) !=
+            big_labels.end());
+    QVERIFY(std::find(big_labels.begin(), big_labels.end(), QString("cap side")) !=
+            big_labels.end());
+    QVERIFY(view.jointView(1)->arrowVisible());
+    QVERIFY(big_labels.back().startsWith("load ") && big_labels.back().endsWith(" kN"));
+    QVERIFY(!view.jointView(0)->arrowVisible());
+    const auto& skirt = real_->joints[0];
+    auto* drawn =
+        vtkPolyData::SafeDownCast(view.jointView(0)->surfaceActor()->GetMapper()->GetInput());
+    QVERIFY(drawn != nullptr);
+    size_t relief = 0;
+    const size_t nx = skirt.angle_lines.size();
+    for (const auto& t : skirt.mesh.triangles) {
+      bool inside = true;
+      for (int n : t) {
+        const double a = skirt.angle_lines[size_t(n) % nx];
+        inside =
+            inside && a >= skirt.no_film[0].first - 1e-9 && a <= skirt.no_film[0].second + 1e-9;
+      }
+      relief += inside;
+    }
+    QVERIFY(relief > 0);
+    // Both halves of the skirt (mirrored about the pin-axis plane), each without its relief.
+    QVERIFY(skirt.mirrored);
+    QCOMPARE(size_t(drawn->GetNumberOfPolys()), 2 * (skirt.mesh.triangles.size() - relief));
+
+    if (const QString dir = qEnvironmentVariable("FILMDYN_SCREENSHOT_DIR"); !dir.isEmpty()) {
+      QDir().mkpath(dir);
+      const char* names[] = {"field_view_3d.png", "field_view_unrolled.png",
+                             "field_view_crank_angle.png"};
+      for (int tab = 0; tab < 3; ++tab) {
+        for (int jj = 0; jj < 2; ++jj) view.jointTabs(jj)->setCurrentIndex(tab);
+        QTest::qWait(400);
+        view.grab().save(dir + "/" + names[tab]);
+      }
+      view.resize(1011, 620);  // the page inside the main window at its smallest size
+      QTest::qWait(400);
+      view.grab().save(dir + "/field_view_crank_angle_small.png");
+      for (int jj = 0; jj < 2; ++jj) view.jointTabs(jj)->setCurrentIndex(0);
+      QTest::qWait(400);
+      view.grab().save(dir + "/field_view_3d_small.png");
+    }
+  }
+
+  void switchingRunsKeepsTheCrankAngleAndSameScaleSharesTheRange() {
+    // A second run: the same fields at 1.6 × the pressure, its frames 1 °CA later.
+    const auto second = ScaledCopy(*real_, 1.6, 1.0);
+    filmdyn::ui::FieldView view;
+    view.resize(1200, 700);
+    view.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&view));
+    view.setFrames(real_, "A");
+    view.setCrankAngle(380.0);
+    QVERIFY(std::abs(real_->crank_angle_deg[size_t(view.frameIndex())] - 380.0) < 1e-6);
+    const auto range_a = view.colourRange(0);
+    view.setFrames(second, "B");
+    // The nearest frame of the new run.
+    QVERIFY(std::abs(second->crank_angle_deg[size_t(view.frameIndex())] - 381.0) < 1e-6);
+    QVERIFY(view.title().endsWith("at 381 °CA"));
+    const auto range_b = view.colourRange(0);
+    qInfo("own ranges: A %g–%g MPa, B %g–%g MPa", range_a.first, range_a.second, range_b.first,
+          range_b.second);
+    QVERIFY(range_b.second > range_a.second);
+    // Back to A: the frame nearest to 381 °CA.
+    view.setFrames(real_, "A");
+    QVERIFY(std::abs(real_->crank_angle_deg[size_t(view.frameIndex())] - 380.0) < 1e-6);
+
+    // One scale over both runs, in every view.
+    view.setScaleFrames({real_, second, nullptr});
+    view.sameScaleBox()->setChecked(true);
+    const auto shared_a = view.colourRange(0);
+    QCOMPARE(shared_a, range_b);
+    QCOMPARE(view.jointView(0)->scalarRange()[1], shared_a.second);
+    QCOMPARE(view.unrolledMap(0)->scaleRange(), shared_a);
+    QCOMPARE(view.crankAngleMap(0)->scaleRange(), shared_a);
+    view.setFrames(second, "B");
+    QCOMPARE(view.colourRange(0), shared_a);
+    view.setFrames(real_, "A");
+    const auto big_a = view.colourRange(1);
+    view.setFrames(second, "B");
+    QCOMPARE(view.colourRange(1), big_a);
+    view.sameScaleBox()->setChecked(false);
+    QCOMPARE(view.colourRange(0), range_b);
+  }
+
+ private:
+  std::shared_ptr<const filmdyn::ui::FieldFrames> real_;
 };
 
 int main(int argc, char** argv) {

@@ -1,8 +1,14 @@
 // The VTK-in-Qt-6 bridge really draws: a coloured scalar field with a scalar bar is rendered in a
-// real window (under xvfb-run) and the grabbed framebuffer is checked by pixel statistics.
+// real window (under xvfb-run) and the grabbed framebuffer is checked by pixel statistics. The
+// colours are the application's viridis, unlit; the bar sits in its own strip beside the surface
+// with round numbers; scene labels and the arrow are drawn.
+#include <vtkActor.h>
 #include <vtkDoubleArray.h>
+#include <vtkLookupTable.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
+#include <vtkProperty.h>
+#include <vtkRenderer.h>
 #include <vtkScalarBarActor.h>
 #include <vtkSmartPointer.h>
 #include <vtkStructuredGrid.h>
@@ -12,6 +18,7 @@
 #include <QtTest>
 #include <cmath>
 
+#include "ui/charts/color_map.hpp"
 #include "ui/vtk/scalar_field_view.hpp"
 
 namespace {
@@ -41,8 +48,9 @@ vtkSmartPointer<vtkStructuredGrid> MakeField(double peak_position) {
 struct PixelStats {
   int distinct_colours = 0;
   double non_background_fraction = 0.0;
-  int reddish = 0;
-  int bluish = 0;
+  int dark_violet = 0;  ///< viridis' low end
+  int yellow = 0;       ///< viridis' high end
+  int reddish = 0;      ///< the old rainbow's high end: none in viridis
 };
 
 PixelStats Analyse(const QImage& image, QRgb background) {
@@ -58,7 +66,8 @@ PixelStats Analyse(const QImage& image, QRgb background) {
       const int db = std::abs(qBlue(c) - qBlue(background));
       if (dr + dg + db > 30) ++non_background;
       if (qRed(c) > 180 && qGreen(c) < 90 && qBlue(c) < 90) ++stats.reddish;
-      if (qBlue(c) > 180 && qRed(c) < 90 && qGreen(c) < 120) ++stats.bluish;
+      if (qRed(c) < 90 && qGreen(c) < 40 && qBlue(c) > 70 && qBlue(c) < 130) ++stats.dark_violet;
+      if (qRed(c) > 200 && qGreen(c) > 200 && qBlue(c) < 80) ++stats.yellow;
     }
   }
   stats.distinct_colours = colours.size();
@@ -88,15 +97,61 @@ class TestScalarFieldView : public QObject {
     // Background colour of the renderer (0.13, 0.14, 0.16).
     const QRgb background = qRgb(33, 36, 41);
     const PixelStats stats = Analyse(image, background);
-    qInfo("distinct colours %d, covered %.3f, red %d, blue %d", stats.distinct_colours,
-          stats.non_background_fraction, stats.reddish, stats.bluish);
+    qInfo("distinct colours %d, covered %.3f, violet %d, yellow %d, red %d", stats.distinct_colours,
+          stats.non_background_fraction, stats.dark_violet, stats.yellow, stats.reddish);
     // A blank or black frame has 1-2 colours; the shaded colour map plus bar has hundreds.
     QVERIFY2(stats.distinct_colours > 100, "image has too few colours: blank render?");
     QVERIFY2(stats.non_background_fraction > 0.10, "almost nothing drawn");
     QVERIFY2(stats.non_background_fraction < 0.95, "the whole frame is one colour block");
-    // Both ends of the blue-to-red map must appear (field and scalar bar).
-    QVERIFY(stats.reddish > 200);
-    QVERIFY(stats.bluish > 200);
+    // Both ends of viridis appear (field and scalar bar), no red.
+    QVERIFY(stats.dark_violet > 200);
+    QVERIFY(stats.yellow > 100);
+    QCOMPARE(stats.reddish, 0);
+    // The lookup table is ui::Viridis, sampled; the surface unlit.
+    for (int i = 0; i < 256; i += 15) {
+      double rgba[4];
+      view.lookupTable()->GetTableValue(i, rgba);
+      const QColor c = filmdyn::ui::Viridis(i / 255.0);
+      QCOMPARE(int(std::lround(rgba[0] * 255)), c.red());
+      QCOMPARE(int(std::lround(rgba[1] * 255)), c.green());
+      QCOMPARE(int(std::lround(rgba[2] * 255)), c.blue());
+    }
+    QVERIFY(!view.surfaceActor()->GetProperty()->GetLighting());
+    // The bar's strip lies beside the surface's viewport, not over it.
+    const double* surface = view.renderer()->GetViewport();
+    const double* bar = view.scalarBarRenderer()->GetViewport();
+    QVERIFY(surface[2] <= bar[0] && bar[2] <= 1.0);
+    QVERIFY(bar[2] - bar[0] > 0.05 && bar[2] - bar[0] < 0.3);
+  }
+
+  void barNumbersAreRoundAndLabelsDrawn() {
+    filmdyn::ui::ScalarFieldView view;
+    view.resize(500, 400);
+    // An odd range: the bar widens it to round ends and writes round ticks.
+    view.setScalarRange(0.0, 79.3);
+    view.showField(MakeField(0.5), "pressure", "MPa");
+    QCOMPARE(view.scalarRange()[0], 0.0);
+    QCOMPARE(view.scalarRange()[1], 80.0);
+    const std::vector<double> expected = {0, 20, 40, 60, 80};
+    QCOMPARE(view.barLabels(), expected);
+    view.setScalarRange(0.0, 5.44);
+    QCOMPARE(view.scalarRange()[1], 6.0);
+    QCOMPARE(view.barLabels().front(), 0.0);
+    QCOMPARE(view.barLabels().back(), 6.0);
+    for (double t : view.barLabels()) QCOMPARE(t, std::round(t));  // whole numbers
+    // Labels in the scene and the arrow change the picture.
+    view.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&view));
+    QTRY_VERIFY_WITH_TIMEOUT(view.renderedFrames() > 0, 10000);
+    const QImage plain = view.grabFramebuffer();
+    view.setLabels({{"thrust side", {1.2, 0.0, 0.75}}});
+    view.showArrow({0, 0, 0.75}, {0, 1.3, 0.75}, "load 20.0 kN");
+    const int frames = view.renderedFrames();
+    QTRY_VERIFY_WITH_TIMEOUT(view.renderedFrames() > frames, 10000);
+    QVERIFY(view.grabFramebuffer() != plain);
+    QCOMPARE(view.labelTexts(), (std::vector<QString>{"thrust side", "load 20.0 kN"}));
+    view.hideArrow();
+    QCOMPARE(view.labelTexts(), (std::vector<QString>{"thrust side"}));
   }
 
   void updatingTheFieldChangesThePicture() {

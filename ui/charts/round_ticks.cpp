@@ -1,0 +1,71 @@
+#include "ui/charts/round_ticks.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace filmdyn::ui {
+
+double RoundStep(double span, int target) {
+  const double raw = span / std::max(target, 1);
+  if (!(raw > 0) || !std::isfinite(raw)) return 1.0;
+  const double decade = std::pow(10.0, std::floor(std::log10(raw)));
+  for (double m : {1.0, 2.0, 2.5, 5.0}) {
+    if (m * decade >= raw * (1 - 1e-12)) return m * decade;
+  }
+  return 10.0 * decade;
+}
+
+int DecimalsFor(double step) {
+  for (int d = 0; d < 12; ++d) {
+    const double scaled = step * std::pow(10.0, d);
+    if (std::abs(scaled - std::round(scaled)) < 1e-6 * std::max(1.0, scaled)) return d;
+  }
+  return 12;
+}
+
+RoundRange RoundRangeCovering(double lo, double hi, int target) {
+  if (!std::isfinite(lo) || !std::isfinite(hi)) lo = 0, hi = 1;
+  if (hi < lo) std::swap(lo, hi);
+  if (hi - lo <= 1e-12 * std::max(std::abs(lo), std::abs(hi))) {
+    // A constant: a range one round step either side of it (0 ± 1 for zero).
+    const double half = hi == 0 ? 1.0 : RoundStep(std::abs(hi), 2);
+    lo -= half;
+    hi += half;
+  }
+  RoundRange range;
+  range.step = RoundStep(hi - lo, target);
+  range.min = std::floor(lo / range.step + 1e-9) * range.step;
+  range.max = std::ceil(hi / range.step - 1e-9) * range.step;
+  if (std::abs(range.min) < 1e-12 * range.step) range.min = 0.0;
+  if (std::abs(range.max) < 1e-12 * range.step) range.max = 0.0;
+  range.decimals = DecimalsFor(range.step);
+  return range;
+}
+
+std::vector<double> RoundTicks(double lo, double hi, int target) {
+  std::vector<double> ticks;
+  if (!(hi > lo) || !std::isfinite(lo) || !std::isfinite(hi)) return ticks;
+  const double step = RoundStep(hi - lo, target);
+  for (double t = std::ceil(lo / step - 1e-9) * step; t <= hi + 1e-9 * step; t += step) {
+    ticks.push_back(std::abs(t) < 1e-12 * step ? 0.0 : t);
+  }
+  return ticks;
+}
+
+std::pair<double, double> RoundedRange(double lo, double hi, int target) {
+  if (!std::isfinite(lo) || !std::isfinite(hi)) return {0.0, 1.0};
+  if (!(hi > lo)) hi = lo + 1.0;
+  const std::vector<double> ticks = RoundTicks(lo, hi, target);
+  if (ticks.size() < 2) return {lo, hi};
+  const double step = ticks[1] - ticks[0];  // round the ends out to whole ticks
+  return {std::floor(lo / step + 1e-9) * step, std::ceil(hi / step - 1e-9) * step};
+}
+
+QString FormatReadout(double value, const QString& unit) {
+  if (!std::isfinite(value)) return QStringLiteral("–");
+  QString text = QString::number(value, 'g', 4);
+  return unit.isEmpty() ? text : text + QChar(0x202F) + unit;
+}
+
+}  // namespace filmdyn::ui

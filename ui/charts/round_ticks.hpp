@@ -1,0 +1,37 @@
+#pragma once
+/// @file Round axis steps: 1, 2, 2.5 or 5 × 10ⁿ, the steps people read without effort. One
+/// definition for the result plots' axes and the film maps' colour bars.
+#include <QString>
+#include <utility>
+#include <vector>
+
+namespace filmdyn::ui {
+
+/// The smallest round step (1, 2, 2.5 or 5 × 10ⁿ) not below span / target; 1 for a bad span.
+double RoundStep(double span, int target);
+
+/// An axis range on whole steps.
+struct RoundRange {
+  double min = 0.0, max = 1.0, step = 0.2;
+  int decimals = 1;  ///< digits after the point that show every tick exactly
+};
+/// [lo, hi] widened outwards to whole round steps, with about `target` intervals. A zero or
+/// invalid span gets a unit-sized range around the value.
+RoundRange RoundRangeCovering(double lo, double hi, int target);
+
+/// Digits after the point needed to write multiples of `step` exactly (0 for 10, 1 for 0.5 and
+/// 2.5, 2 for 0.25).
+int DecimalsFor(double step);
+
+/// Round tick positions covering [lo, hi]: steps of 1, 2, 2.5 or 5 × 10ⁿ, about `target` of them.
+std::vector<double> RoundTicks(double lo, double hi, int target = 6);
+
+/// [lo, hi] widened to whole ticks of RoundTicks(lo, hi, target): the range of a colour bar
+/// whose end numbers are round (a constant or empty range becomes [lo, lo + 1]).
+std::pair<double, double> RoundedRange(double lo, double hi, int target = 5);
+
+/// A value for a readout, with about 4 significant digits and no trailing zeros ("12.35", "0.5",
+/// "1.2e-05"), followed by the unit when one is given.
+QString FormatReadout(double value, const QString& unit = {});
+
+}  // namespace filmdyn::ui

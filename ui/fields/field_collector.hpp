@@ -1,0 +1,34 @@
+#pragma once
+/// @file Fills the field view's FieldFrames from core's per-step field callback
+/// (engine::RunConfig::field_callback): per joint the film surface, its tensor grid (angle and
+/// axial lines, the skirt's pin-boss relief as an interval without film) and per frame the nodal
+/// arrays; for the big end also the frame's turn into the rod frame and the crank pin's force on
+/// the rod in that frame. Keeps the newest cycle only (the one a run reports) and at most
+/// kMaxFrames frames of it, so that a 1 °CA run does not hold 720 copies in memory.
+#include <memory>
+
+#include "core/engine/engine_case.hpp"
+#include "core/engine/run_job.hpp"
+#include "ui/fields/field_frames.hpp"
+
+namespace filmdyn::ui {
+
+class FieldCollector {
+ public:
+  static constexpr int kMaxFrames = 240;
+
+  /// `steps_per_cycle`: output steps per cycle of the run (every stride-th step is kept).
+  explicit FieldCollector(int steps_per_cycle);
+
+  /// Records one output step (called from the run's field callback, on the run's thread).
+  void Add(const engine::FieldFrame& frame);
+  /// The frames of the newest cycle recorded (nullptr before the first step).
+  std::shared_ptr<const FieldFrames> Result() const { return frames_; }
+
+ private:
+  int stride_;
+  int cycle_ = 0;
+  std::shared_ptr<FieldFrames> frames_;
+};
+
+}  // namespace filmdyn::ui
