@@ -25,17 +25,18 @@ QStringList ExportStandardPlots(const std::vector<PlotRun>& runs, const QString&
     return written;
   }
   PlotPanel panel;  // never shown: the same charts as on screen, laid out at export size
+  panel.setRunsInChartLegends(true);  // each file stands alone: its legend names the runs
   for (const auto& run : runs) panel.updateRun(run);
   for (int i = 0; i < panel.chartCount(); ++i) {
     // Equal-scale plots (the journal orbit in its clearance circle) are exported square.
     QSize size(960, 600);
     for (const PlotSpec& spec : StandardPlots()) {
-      if (spec.id == panel.chartId(i) && spec.equal_axes) size = QSize(720, 720);
+      if (spec.id == panel.chartId(i) && spec.equal_axes) size = QSize(820, 640);
     }
     for (const auto& [suffix, format] : {std::pair{QString("png"), ImageFormat::kPng},
                                          std::pair{QString("svg"), ImageFormat::kSvg}}) {
       const QString path = QDir(directory).filePath(panel.chartId(i) + "." + suffix);
-      if (!ExportChart(panel.chart(i), path, format, size, error)) return written;
+      if (!panel.exportChart(i, path, format, size, error)) return written;
       written << path;
     }
   }

@@ -3,28 +3,41 @@
 #include <QChart>
 #include <QChartView>
 #include <QFileDialog>
+#include <QGraphicsItem>
 #include <QGridLayout>
+#include <QLabel>
 #include <QLegendMarker>
 #include <QLineSeries>
 #include <QMenu>
 #include <QMouseEvent>
+#include <QPainter>
+#include <QPainterPath>
 #include <QScrollArea>
 #include <QTimer>
 #include <QVBoxLayout>
 #include <QValueAxis>
+#include <QWheelEvent>
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
 #include "ui/charts/chart_export.hpp"
+#include "ui/charts/round_ticks.hpp"
 
 namespace filmdyn::ui {
 
 namespace {
 
-const QColor kPalette[] = {QColor(31, 119, 180),  QColor(214, 39, 40),   QColor(44, 160, 44),
-                           QColor(255, 127, 14),  QColor(148, 103, 189), QColor(140, 86, 75),
-                           QColor(227, 119, 194), QColor(23, 190, 207)};
+// Colour-blind-safe qualitative palette (Okabe–Ito, black last), then a few more.
+const QColor kPalette[] = {QColor(0, 114, 178),   QColor(213, 94, 0),   QColor(0, 158, 115),
+                           QColor(204, 121, 167), QColor(86, 180, 233), QColor(230, 159, 0),
+                           QColor(120, 120, 120), QColor(0, 0, 0)};
+constexpr int kPaletteSize = int(sizeof(kPalette) / sizeof(kPalette[0]));
 const Qt::PenStyle kStyles[] = {Qt::SolidLine, Qt::DashLine, Qt::DotLine, Qt::DashDotLine};
+constexpr double kLineWidth = 1.6;
+constexpr int kLegendGap = 8;         // between plot area and legend [px]
+constexpr double kLegendShare = 0.4;  // the legend takes at most this share of the chart width
+constexpr int kReadoutWidth = 124;    // the cursor readout's column beside the plot [px]
 
 QValueAxis* AxisX(QChart* chart) {
   return static_cast<QValueAxis*>(chart->axes(Qt::Horizontal).first());
@@ -33,141 +46,301 @@ QValueAxis* AxisY(QChart* chart) {
   return static_cast<QValueAxis*>(chart->axes(Qt::Vertical).first());
 }
 
+void SetRoundAxis(QValueAxis* axis, double lo, double hi, double step) {
+  axis->setTickType(QValueAxis::TicksDynamic);
+  axis->setTickAnchor(0.0);
+  axis->setTickInterval(step);
+  axis->setLabelFormat(QString("%.%1f").arg(DecimalsFor(step)));
+  axis->setRange(lo, hi);
+}
+
+// Linear interpolation of a curve at a crank angle (NaN outside it or across a gap).
+double ValueAtAngle(const CurvePoints& curve, double angle) {
+  const auto& a = curve.crank_angle;
+  for (size_t k = 0; k + 1 < a.size(); ++k) {
+    if ((a[k] <= angle && angle <= a[k + 1]) && a[k + 1] > a[k]) {
+      const double t = (angle - a[k]) / (a[k + 1] - a[k]);
+      return curve.xy[qsizetype(k)].y() * (1 - t) + curve.xy[qsizetype(k + 1)].y() * t;
+    }
+  }
+  if (!a.empty() && std::abs(a.back() - angle) < 1e-9) return curve.xy.back().y();
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
+// The point of an (x, y) curve at a crank angle, interpolated; nullopt outside.
+std::optional<QPointF> PointAtAngle(const CurvePoints& curve, double angle) {
+  const auto& a = curve.crank_angle;
+  for (size_t k = 0; k + 1 < a.size(); ++k) {
+    if (a[k] <= angle && angle <= a[k + 1] && a[k + 1] > a[k]) {
+      const double t = (angle - a[k]) / (a[k + 1] - a[k]);
+      return curve.xy[qsizetype(k)] * (1 - t) + curve.xy[qsizetype(k + 1)] * t;
+    }
+  }
+  return std::nullopt;
+}
+
 }  // namespace
+
+/// Draws what Qt Charts does not: the legend beside the plot (colour and line style), the
+/// crank-angle cursor with its readout, crank-angle marks and direction arrows. A child of the
+/// chart, so exports (which render the chart's scene) contain it too.
+class PlotPanel::Overlay : public QGraphicsItem {
+ public:
+  Overlay(const PlotPanel* panel, size_t index, QGraphicsItem* parent)
+      : QGraphicsItem(parent), panel_(panel), index_(index) {
+    setZValue(100);
+    setAcceptedMouseButtons(Qt::NoButton);
+  }
+  QRectF boundingRect() const override { return static_cast<const QChart*>(parentItem())->rect(); }
+  void paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidget*) override {
+    panel_->paintOverlay(panel_->charts_[index_], painter);
+  }
+  void refresh() {
+    prepareGeometryChange();
+    update();
+  }
+
+ private:
+  const PlotPanel* panel_;
+  size_t index_;
+};
 
 PlotPanel::PlotPanel(QWidget* parent) : QWidget(parent) {
   auto* outer = new QVBoxLayout(this);
   outer->setContentsMargins(0, 0, 0, 0);
+  run_legend_ = new QLabel(this);
+  run_legend_->setObjectName("run_legend");
+  run_legend_->setWordWrap(true);
+  run_legend_->setTextFormat(Qt::RichText);
+  run_legend_->setContentsMargins(8, 2, 8, 2);
+  run_legend_->setVisible(false);
+  outer->addWidget(run_legend_);
   auto* scroll = new QScrollArea(this);
   scroll->setWidgetResizable(true);
   auto* grid_host = new QWidget(scroll);
   auto* grid = new QGridLayout(grid_host);
   grid->setSpacing(2);
   const auto& specs = StandardPlots();
+  charts_.reserve(specs.size());
   for (size_t i = 0; i < specs.size(); ++i) {
     ChartEntry entry;
     entry.spec = &specs[i];
     entry.chart = new QChart;
     entry.chart->setTitle(specs[i].title);
     entry.chart->setMargins(QMargins(2, 2, 2, 2));
-    entry.chart->legend()->setAlignment(Qt::AlignBottom);
-    entry.chart->legend()->setFont(QFont(entry.chart->legend()->font().family(), 7));
+    entry.chart->legend()->hide();  // our own legend (Overlay) shows line styles and wraps
     auto* x = new QValueAxis;
     auto* y = new QValueAxis;
     x->setTitleText(specs[i].x_title);
     y->setTitleText(specs[i].y_title);
-    if (specs[i].crank_angle_axis) {
-      x->setRange(0, 720);
-      x->setTickCount(9);
-      x->setLabelFormat("%.0f");
-    }
+    if (specs[i].crank_angle_axis) SetRoundAxis(x, 0, 720, 90);
     entry.chart->addAxis(x, Qt::AlignBottom);
     entry.chart->addAxis(y, Qt::AlignLeft);
-    if (specs[i].crank_angle_axis) {
-      entry.cursor = new QLineSeries;
-      entry.cursor->setName(tr("cursor"));
-      entry.cursor->setPen(QPen(QColor(90, 90, 90), 1, Qt::DashLine));
-      entry.chart->addSeries(entry.cursor);
-      entry.cursor->attachAxis(x);
-      entry.cursor->attachAxis(y);
-      for (QLegendMarker* m : entry.chart->legend()->markers(entry.cursor)) m->setVisible(false);
-    }
-    if (specs[i].equal_axes) {
+    entry.anchor = new QLineSeries;
+    entry.chart->addSeries(entry.anchor);
+    entry.anchor->attachAxis(x);
+    entry.anchor->attachAxis(y);
+    if (specs[i].clearance_circle) {
       entry.clearance_circle = new QLineSeries;
       entry.clearance_circle->setName(tr("clearance"));
-      entry.clearance_circle->setPen(QPen(Qt::black, 1.2));
+      entry.clearance_circle->setPen(QPen(QColor(60, 60, 60), 1.2));
       entry.chart->addSeries(entry.clearance_circle);
       entry.clearance_circle->attachAxis(x);
       entry.clearance_circle->attachAxis(y);
     }
-    if (specs[i].equal_axes) {
-      const size_t index = i;
-      connect(entry.chart, &QChart::plotAreaChanged, this, [this, index](const QRectF& area) {
-        // Re-fit after a resize; small changes (axis labels) are ignored so this cannot loop.
-        const double aspect = area.height() > 10 ? area.width() / area.height() : 1.0;
-        const double fitted = charts_[index].fitted_aspect;
-        if (fitted > 0 && std::abs(aspect - fitted) < 0.03 * fitted) return;
-        QTimer::singleShot(0, this, [this, index] { rescale(charts_[index]); });
-      });
-    }
+    entry.overlay = new Overlay(this, i, entry.chart);
+    const size_t index = i;
+    connect(entry.chart, &QChart::plotAreaChanged, this, [this, index](const QRectF& area) {
+      ChartEntry& e = charts_[index];
+      e.overlay->refresh();
+      if (!e.spec->equal_axes) return;
+      // Re-fit after a resize; small changes (axis labels) are ignored so this cannot loop.
+      const double aspect = area.height() > 10 ? area.width() / area.height() : 1.0;
+      if (e.fitted_aspect > 0 && std::abs(aspect - e.fitted_aspect) < 0.03 * e.fitted_aspect) {
+        return;
+      }
+      // At once (exports render right after a resize, with no event loop in between); the
+      // threshold above ends the recursion when the new labels shift the area a little.
+      rescale(e);
+    });
+    connect(entry.chart, &QGraphicsWidget::geometryChanged, this,
+            [this, index] { relayoutLegend(charts_[index]); });
     entry.view = new QChartView(entry.chart, grid_host);
     entry.view->setObjectName("chart_" + specs[i].id);
     entry.view->setRenderHint(QPainter::Antialiasing);
     entry.view->setMinimumSize(330, 250);
+    entry.view->setMouseTracking(true);
+    entry.view->viewport()->setMouseTracking(true);
     entry.view->setContextMenuPolicy(Qt::CustomContextMenu);
-    const int index = int(i);
-    connect(entry.view, &QWidget::customContextMenuRequested, this, [this, index](QPoint pos) {
-      QMenu menu;
-      menu.addAction(tr("Export plot (PNG, SVG, PDF)…"), this,
-                     [this, index] { exportChartInteractive(index); });
-      menu.exec(charts_[size_t(index)].view->mapToGlobal(pos));
-    });
-    if (specs[i].crank_angle_axis) entry.view->viewport()->installEventFilter(this);
+    const int chart_index = int(i);
+    connect(entry.view, &QWidget::customContextMenuRequested, this,
+            [this, chart_index](QPoint pos) {
+              QMenu menu;
+              menu.addAction(tr("Export plot (PNG, SVG, PDF)…"), this,
+                             [this, chart_index] { exportChartInteractive(chart_index); });
+              QAction* reset = menu.addAction(tr("Reset zoom"), this,
+                                              [this, chart_index] { resetZoom(chart_index); });
+              reset->setEnabled(isZoomed(chart_index));
+              menu.exec(charts_[size_t(chart_index)].view->mapToGlobal(pos));
+            });
+    entry.view->viewport()->installEventFilter(this);
     grid->addWidget(entry.view, int(i) / 3, int(i) % 3);
     charts_.push_back(entry);
-    rescale(charts_.back());
   }
+  for (ChartEntry& entry : charts_) rescale(entry);
   scroll->setWidget(grid_host);
   outer->addWidget(scroll);
 }
 
+PlotPanel::~PlotPanel() = default;
+
+QChart* PlotPanel::chart(int index) const { return charts_[size_t(index)].chart; }
+QChartView* PlotPanel::chartView(int index) const { return charts_[size_t(index)].view; }
+QString PlotPanel::chartId(int index) const { return charts_[size_t(index)].spec->id; }
+int PlotPanel::chartIndex(const QString& id) const {
+  for (size_t i = 0; i < charts_.size(); ++i) {
+    if (charts_[i].spec->id == id) return int(i);
+  }
+  return -1;
+}
+
+int PlotPanel::entryOfViewport(QObject* watched) const {
+  for (size_t i = 0; i < charts_.size(); ++i) {
+    if (charts_[i].view->viewport() == watched) return int(i);
+  }
+  return -1;
+}
+
 bool PlotPanel::eventFilter(QObject* watched, QEvent* event) {
-  if (event->type() == QEvent::MouseButtonPress &&
-      static_cast<QMouseEvent*>(event)->button() == Qt::LeftButton) {
-    for (ChartEntry& entry : charts_) {
-      if (entry.view->viewport() != watched) continue;
-      const QPointF scene = entry.view->mapToScene(static_cast<QMouseEvent*>(event)->pos());
-      const QPointF chart_pos = entry.chart->mapFromScene(scene);
-      if (entry.chart->plotArea().contains(chart_pos)) {
-        emit crankAngleClicked(entry.chart->mapToValue(chart_pos).x());
+  const int index = entryOfViewport(watched);
+  if (index < 0) return QWidget::eventFilter(watched, event);
+  ChartEntry& entry = charts_[size_t(index)];
+  auto value_at = [&entry](QPointF widget_pos) {
+    const QPointF scene = entry.view->mapToScene(widget_pos.toPoint());
+    return entry.chart->mapToValue(entry.chart->mapFromScene(scene), entry.anchor);
+  };
+  auto in_plot = [&entry](QPointF widget_pos) {
+    const QPointF scene = entry.view->mapToScene(widget_pos.toPoint());
+    return entry.chart->plotArea().contains(entry.chart->mapFromScene(scene));
+  };
+  switch (event->type()) {
+    case QEvent::MouseMove: {
+      auto* mouse = static_cast<QMouseEvent*>(event);
+      if (panning_) {
+        const QPointF value = value_at(mouse->position());
+        panChart(index, pan_last_value_ - value);
+        pan_last_value_ = value_at(mouse->position());
+        return true;
       }
+      if (!in_plot(mouse->position())) {
+        setHoverAngle(std::numeric_limits<double>::quiet_NaN());
+        break;
+      }
+      const QPointF value = value_at(mouse->position());
+      if (entry.spec->crank_angle_axis) {
+        setHoverAngle(std::clamp(value.x(), 0.0, 720.0));
+        break;
+      }
+      // Orbit / portrait: the crank angle of the nearest drawn point (in pixels).
+      double best = INFINITY, angle = std::numeric_limits<double>::quiet_NaN();
+      const QPointF mouse_pos = entry.chart->mapFromScene(entry.view->mapToScene(mouse->pos()));
+      for (int id : visibleRunsWithData(entry)) {
+        for (const CurvePoints& curve : entry.run_points.value(id)) {
+          for (qsizetype k = 0; k < curve.xy.size(); ++k) {
+            const QPointF p = entry.chart->mapToPosition(curve.xy[k], entry.anchor);
+            const double d = std::hypot(p.x() - mouse_pos.x(), p.y() - mouse_pos.y());
+            if (d < best) best = d, angle = curve.crank_angle[size_t(k)];
+          }
+        }
+      }
+      setHoverAngle(best < 40 ? angle : std::numeric_limits<double>::quiet_NaN());
+      break;
     }
+    case QEvent::Leave:
+      setHoverAngle(std::numeric_limits<double>::quiet_NaN());
+      break;
+    case QEvent::MouseButtonPress: {
+      auto* mouse = static_cast<QMouseEvent*>(event);
+      press_pos_ = mouse->pos();
+      if (mouse->button() == Qt::MiddleButton ||
+          (mouse->button() == Qt::LeftButton && (mouse->modifiers() & Qt::ShiftModifier))) {
+        panning_ = true;
+        pan_last_value_ = value_at(mouse->position());
+        return true;
+      }
+      break;
+    }
+    case QEvent::MouseButtonRelease: {
+      auto* mouse = static_cast<QMouseEvent*>(event);
+      if (panning_) {
+        panning_ = false;
+        return true;
+      }
+      const bool click = (mouse->pos() - press_pos_).manhattanLength() < 4;
+      if (mouse->button() == Qt::LeftButton && click && in_plot(mouse->position())) {
+        const double angle =
+            entry.spec->crank_angle_axis ? value_at(mouse->position()).x() : hover_angle_;
+        if (std::isfinite(angle)) emit crankAngleClicked(std::clamp(angle, 0.0, 720.0));
+      }
+      break;
+    }
+    case QEvent::MouseButtonDblClick:
+      resetZoom(index);
+      return true;
+    case QEvent::Wheel: {
+      auto* wheel = static_cast<QWheelEvent*>(event);
+      if (!in_plot(wheel->position())) break;
+      const double notches = wheel->angleDelta().y() / 120.0;
+      if (notches == 0) break;
+      zoomChart(index, std::pow(0.8, notches), value_at(wheel->position()));
+      return true;
+    }
+    default:
+      break;
   }
   return QWidget::eventFilter(watched, event);
 }
 
-QChart* PlotPanel::chart(int index) const { return charts_[size_t(index)].chart; }
-QString PlotPanel::chartId(int index) const { return charts_[size_t(index)].spec->id; }
-
-QColor PlotPanel::runColour(int run_id) {
-  if (!colours_.contains(run_id)) {
-    colours_[run_id] = kPalette[colours_.size() % (sizeof(kPalette) / sizeof(kPalette[0]))];
-  }
-  return colours_[run_id];
-}
-
-PlotRun PlotRunOf(const RunRecord& run) {
-  const engine::BigEndCase& big_end = run.request().engine_case.big_end;
-  return {run.id(), run.label(), big_end.bearing_radius - big_end.journal_radius, run.samples()};
-}
-
 void PlotPanel::updateRun(const PlotRun& run) {
   const int id = run.id;
-  const std::vector<RunSample>& samples = run.samples;
-  if (!visible_.contains(id)) visible_[id] = true;
-  clearance_um_[id] = run.bearing_clearance * 1e6;
-  const QString label = run.label;
+  if (!runs_.contains(id)) {
+    RunEntry r;
+    r.colour = kPalette[colours_used_++ % kPaletteSize];
+    runs_[id] = r;
+    order_.push_back(id);
+  }
+  RunEntry& r = runs_[id];
+  r.label = run.label;
+  r.clearance_um = run.bearing_clearance * 1e6;
   for (ChartEntry& entry : charts_) {
     auto& series = entry.run_series[id];
     if (series.empty()) {
       for (size_t k = 0; k < entry.spec->curves.size(); ++k) {
         auto* s = new QLineSeries;
-        const QString curve = entry.spec->curves[k].name;
-        s->setName(entry.spec->curves.size() > 1 ? curve + " · " + label : label);
-        QPen pen(runColour(id), 1.6, kStyles[k % 4]);
-        s->setPen(pen);
+        s->setName(entry.spec->curves[k].name);
         entry.chart->addSeries(s);
         s->attachAxis(AxisX(entry.chart));
         s->attachAxis(AxisY(entry.chart));
-        s->setVisible(visible_[id]);
+        s->setVisible(r.visible);
         series.push_back(s);
       }
     }
+    auto& points = entry.run_points[id];
+    points.resize(series.size());
     for (size_t k = 0; k < series.size(); ++k) {
-      series[k]->replace(entry.spec->curves[k].points(samples));
+      points[k] = entry.spec->curves[k].points(run.samples);
+      // An orbit or portrait that never leaves one point (an ideal joint's centred journal)
+      // shows nothing: it counts as no data.
+      if (!entry.spec->crank_angle_axis && !points[k].xy.isEmpty()) {
+        const QPointF first = points[k].xy.front();
+        const bool still = std::all_of(points[k].xy.begin(), points[k].xy.end(),
+                                       [&first](const QPointF& p) { return p == first; });
+        if (still) points[k] = CurvePoints{};
+      }
+      series[k]->replace(points[k].xy);
     }
-    rescale(entry);
   }
+  restyle();
 }
 
 void PlotPanel::removeRun(int run_id) {
@@ -177,21 +350,45 @@ void PlotPanel::removeRun(int run_id) {
       delete s;
     }
     entry.run_series.remove(run_id);
-    rescale(entry);
+    entry.run_points.remove(run_id);
   }
-  visible_.remove(run_id);
-  clearance_um_.remove(run_id);
+  runs_.remove(run_id);
+  order_.erase(std::remove(order_.begin(), order_.end(), run_id), order_.end());
+  restyle();
 }
 
 void PlotPanel::setRunVisible(int run_id, bool visible) {
-  visible_[run_id] = visible;
+  if (!runs_.contains(run_id)) return;
+  runs_[run_id].visible = visible;
   for (ChartEntry& entry : charts_) {
     for (QLineSeries* s : entry.run_series.value(run_id)) s->setVisible(visible);
-    rescale(entry);
   }
+  restyle();
 }
 
-bool PlotPanel::isRunVisible(int run_id) const { return visible_.value(run_id, false); }
+bool PlotPanel::isRunVisible(int run_id) const {
+  return runs_.contains(run_id) && runs_[run_id].visible;
+}
+
+void PlotPanel::setRunLabel(int run_id, const QString& label) {
+  if (!runs_.contains(run_id)) return;
+  runs_[run_id].label = label;
+  restyle();
+}
+
+void PlotPanel::setRunOrder(const std::vector<int>& run_ids) {
+  std::vector<int> order;
+  for (int id : run_ids) {
+    if (runs_.contains(id) && std::find(order.begin(), order.end(), id) == order.end()) {
+      order.push_back(id);
+    }
+  }
+  for (int id : order_) {
+    if (std::find(order.begin(), order.end(), id) == order.end()) order.push_back(id);
+  }
+  order_ = order;
+  restyle();
+}
 
 int PlotPanel::pointCount(int run_id) const {
   int count = 0;
@@ -201,17 +398,173 @@ int PlotPanel::pointCount(int run_id) const {
   return count;
 }
 
+std::vector<int> PlotPanel::visibleRunsWithData(const ChartEntry& entry) const {
+  std::vector<int> ids;
+  for (int id : order_) {
+    if (!runs_.value(id).visible) continue;
+    for (const CurvePoints& c : entry.run_points.value(id)) {
+      if (!c.xy.isEmpty()) {
+        ids.push_back(id);
+        break;
+      }
+    }
+  }
+  return ids;
+}
+
+std::vector<size_t> PlotPanel::kindsWithData(const ChartEntry& entry) const {
+  std::vector<size_t> kinds;
+  for (size_t k = 0; k < entry.spec->curves.size(); ++k) {
+    for (int id : order_) {
+      if (!runs_.value(id).visible) continue;
+      const auto points = entry.run_points.value(id);
+      if (k < points.size() && !points[k].xy.isEmpty()) {
+        kinds.push_back(k);
+        break;
+      }
+    }
+  }
+  return kinds;
+}
+
+bool PlotPanel::singleRunMode() const {
+  int visible = 0;
+  for (int id : order_) visible += runs_.value(id).visible ? 1 : 0;
+  return visible <= 1;
+}
+
+QPen PlotPanel::seriesPen(int run_id, size_t kind) const {
+  const QColor colour =
+      singleRunMode() ? kPalette[kind % kPaletteSize] : runs_.value(run_id).colour;
+  return QPen(colour, kLineWidth, kStyles[kind % 4], Qt::RoundCap);
+}
+
+void PlotPanel::restyle() {
+  for (ChartEntry& entry : charts_) {
+    for (auto it = entry.run_series.begin(); it != entry.run_series.end(); ++it) {
+      for (size_t k = 0; k < it.value().size(); ++k) {
+        it.value()[k]->setPen(seriesPen(it.key(), k));
+      }
+    }
+    rescale(entry);
+    relayoutLegend(entry);
+  }
+  const QString legend = runLegendText();
+  run_legend_->setText(legend);
+  run_legend_->setVisible(!legend.isEmpty() && !runs_in_chart_legends_);
+}
+
+QString PlotPanel::runLegendText() const {
+  QStringList items;
+  const bool single = singleRunMode();
+  for (int id : order_) {
+    const RunEntry& r = runs_[id];
+    if (!r.visible) continue;
+    const QString swatch =
+        single ? QString()
+               : QString("<span style=\"color:%1\"><b>━━━</b></span>&nbsp;").arg(r.colour.name());
+    items << swatch + r.label.toHtmlEscaped();
+  }
+  if (items.isEmpty()) return {};
+  return (single ? tr("Run shown: ") : tr("Runs shown: ")) +
+         items.join("&nbsp;&nbsp;&nbsp;&nbsp; ");
+}
+
+void PlotPanel::setRunsInChartLegends(bool on) {
+  runs_in_chart_legends_ = on;
+  restyle();
+}
+
+bool PlotPanel::exportChart(int index, const QString& path, ImageFormat format, const QSize& size,
+                            QString* error) {
+  const bool was = runs_in_chart_legends_;
+  exporting_ = true;
+  runs_in_chart_legends_ = true;
+  relayoutLegend(charts_[size_t(index)]);
+  const bool ok = ExportChart(chart(index), path, format, size, error);
+  runs_in_chart_legends_ = was;
+  exporting_ = false;
+  relayoutLegend(charts_[size_t(index)]);
+  return ok;
+}
+
+std::vector<std::pair<QString, QPen>> PlotPanel::legendEntries(int index) const {
+  const ChartEntry& entry = charts_[size_t(index)];
+  std::vector<std::pair<QString, QPen>> out;
+  const std::vector<int> runs = visibleRunsWithData(entry);
+  const std::vector<size_t> kinds = kindsWithData(entry);
+  if (runs.empty()) return out;
+  const bool single = singleRunMode();
+  if (single) {
+    // One run: named (when the plot stands alone), each kind in its own colour and style.
+    if (runs_in_chart_legends_) out.emplace_back(runs_.value(runs.front()).label, QPen(Qt::NoPen));
+    if (entry.spec->curves.size() > 1) {
+      for (size_t k : kinds)
+        out.emplace_back(entry.spec->curves[k].name, seriesPen(runs.front(), k));
+    }
+    return out;
+  }
+  // Several runs: kinds by line style (in grey), runs by colour.
+  if (kinds.size() > 1) {
+    for (size_t k : kinds) {
+      out.emplace_back(entry.spec->curves[k].name,
+                       QPen(QColor(70, 70, 70), kLineWidth, kStyles[k % 4]));
+    }
+  }
+  if (runs_in_chart_legends_) {
+    for (int id : runs) {
+      out.emplace_back(runs_.value(id).label, QPen(runs_.value(id).colour, 2.4, Qt::SolidLine));
+    }
+  }
+  return out;
+}
+
+namespace {
+
+QFont LegendFont(const QChart* chart) {
+  QFont font = chart->font();
+  font.setPointSizeF(std::max(7.0, font.pointSizeF() * 0.85));
+  return font;
+}
+constexpr int kSwatch = 26;  // legend line sample length [px]
+
+}  // namespace
+
+void PlotPanel::relayoutLegend(ChartEntry& entry) {
+  const int index = int(&entry - charts_.data());
+  const auto entries = legendEntries(index);
+  int width = 0;
+  if (!entries.empty()) {
+    const QFontMetricsF metrics(LegendFont(entry.chart));
+    double widest = 0;
+    for (const auto& [text, pen] : entries) {
+      widest = std::max(
+          widest, metrics.horizontalAdvance(text) + (pen.style() == Qt::NoPen ? 0 : kSwatch + 6));
+    }
+    const double limit = std::max(80.0, entry.chart->size().width() * kLegendShare);
+    width = int(std::ceil(std::min(widest, limit))) + kLegendGap + 6;
+  }
+  // On screen the column beside the plot also holds the cursor readout: reserved whenever the
+  // plot has data, so that hovering never shifts the plot.
+  if (!exporting_ && !runs_in_chart_legends_ && !visibleRunsWithData(entry).empty()) {
+    width = std::max(width, kReadoutWidth + kLegendGap + 6);
+  }
+  const QMargins margins(2, 2, 2 + width, 2);
+  if (entry.chart->margins() != margins) entry.chart->setMargins(margins);
+  entry.overlay->refresh();
+}
+
 void PlotPanel::rescale(ChartEntry& entry) {
   double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
   double clearance = 0;
-  int points = 0, runs = 0;
-  for (auto it = entry.run_series.begin(); it != entry.run_series.end(); ++it) {
-    if (!visible_.value(it.key(), true)) continue;
-    clearance = std::max(clearance, clearance_um_.value(it.key(), 0.0));
-    ++runs;
-    for (QLineSeries* s : it.value()) {
-      points += int(s->count());
-      for (const QPointF& p : s->points()) {
+  int points = 0;
+  const std::vector<int> runs = visibleRunsWithData(entry);
+  for (int id : order_) {
+    if (!runs_.value(id).visible) continue;
+    clearance = std::max(clearance, runs_.value(id).clearance_um);
+    for (const CurvePoints& c : entry.run_points.value(id)) {
+      points += int(c.xy.size());
+      for (const QPointF& p : c.xy) {
         x0 = std::min(x0, p.x());
         x1 = std::max(x1, p.x());
         y0 = std::min(y0, p.y());
@@ -220,61 +573,354 @@ void PlotPanel::rescale(ChartEntry& entry) {
     }
   }
   // Say so when the shown runs' model has no such quantity (e.g. MOFT of the Ideal model).
-  entry.chart->setTitle(runs > 0 && points == 0
+  const bool any_run =
+      std::any_of(order_.begin(), order_.end(), [this](int id) { return runs_.value(id).visible; });
+  entry.chart->setTitle(any_run && points == 0
                             ? tr("%1 — no data for the model(s) shown").arg(entry.spec->title)
                             : entry.spec->title);
   if (entry.clearance_circle) {
     QList<QPointF> circle;
-    if (clearance > 0) {
-      for (int k = 0; k <= 120; ++k) {
-        const double a = 2 * std::numbers::pi * k / 120;
+    if (clearance > 0 && !runs.empty()) {
+      for (int k = 0; k <= 180; ++k) {
+        const double a = 2 * std::numbers::pi * k / 180;
         circle.append(QPointF(clearance * std::cos(a), clearance * std::sin(a)));
       }
-      x0 = std::min(x0, -clearance);
-      x1 = std::max(x1, clearance);
-      y0 = std::min(y0, -clearance);
-      y1 = std::max(y1, clearance);
     }
     entry.clearance_circle->replace(circle);
   }
-  if (!(x1 >= x0)) x0 = 0, x1 = 1;
-  if (!(y1 >= y0)) y0 = 0, y1 = 1;
+  QValueAxis* ax = AxisX(entry.chart);
+  QValueAxis* ay = AxisY(entry.chart);
   if (entry.spec->equal_axes) {
-    // Same µm per pixel on both axes, so the clearance circle is a circle.
-    const double r = std::max({std::abs(x0), std::abs(x1), std::abs(y0), std::abs(y1)}) * 1.05;
+    // Same units per pixel on both axes. The orbit is centred on the bearing and fits the
+    // clearance circle (the data may leave it only by asperity penetration); a load diagram
+    // fits its data and the origin (the bearing centre the load acts through).
     const QRectF area = entry.chart->plotArea();
     const double aspect = area.height() > 10 ? area.width() / area.height() : 1.0;
     entry.fitted_aspect = aspect;
-    x0 = -r * std::max(1.0, aspect);
-    x1 = -x0;
-    y0 = -r * std::max(1.0, 1.0 / aspect);
-    y1 = -y0;
+    double cx = 0, cy = 0, hx = 1, hy = 1;
+    if (entry.spec->clearance_circle) {
+      double r = 0;
+      if (x1 >= x0) r = std::max({std::abs(x0), std::abs(x1), std::abs(y0), std::abs(y1)});
+      if (clearance > 0) r = std::max(r, clearance);
+      if (!(r > 0)) r = 1;
+      const double step = RoundStep(2 * r, 4);
+      hx = hy = std::ceil(r / step - 1e-9) * step;
+    } else if (x1 >= x0) {
+      x0 = std::min(x0, 0.0), x1 = std::max(x1, 0.0), y0 = std::min(y0, 0.0),
+      y1 = std::max(y1, 0.0);
+      const double span = std::max({x1 - x0, y1 - y0, 1e-9});
+      const double step = RoundStep(span, 5);
+      const RoundRange rx{std::floor(x0 / step) * step, std::ceil(x1 / step) * step, step, 0};
+      const RoundRange ry{std::floor(y0 / step) * step, std::ceil(y1 / step) * step, step, 0};
+      cx = 0.5 * (rx.min + rx.max), cy = 0.5 * (ry.min + ry.max);
+      hx = 0.5 * (rx.max - rx.min), hy = 0.5 * (ry.max - ry.min);
+    }
+    // Widen the shorter side to the plot area's aspect.
+    if (hx / hy < aspect)
+      hx = hy * aspect;
+    else
+      hy = hx / aspect;
+    entry.full = QRectF(QPointF(cx - hx, cy - hy), QPointF(cx + hx, cy + hy));
+    const QRectF shown = entry.zoom.value_or(entry.full);
+    const double shown_step = RoundStep(std::min(shown.width(), shown.height()), 4);
+    SetRoundAxis(ax, shown.left(), shown.right(), shown_step);
+    SetRoundAxis(ay, shown.top(), shown.bottom(), shown_step);
+  } else {
+    if (!(x1 >= x0)) x0 = 0, x1 = 1;
+    if (!(y1 >= y0)) y0 = 0, y1 = 1;
+    if (entry.spec->non_negative && y0 >= 0) y0 = 0;
+    if (entry.spec->x_non_negative && x0 >= 0) x0 = 0;
+    if (entry.spec->crank_angle_axis) x0 = 0, x1 = 720;
+    const RoundRange ry = RoundRangeCovering(y0, y1, 5);
+    const RoundRange rx =
+        entry.spec->crank_angle_axis ? RoundRange{0, 720, 90, 0} : RoundRangeCovering(x0, x1, 5);
+    entry.full = QRectF(QPointF(rx.min, ry.min), QPointF(rx.max, ry.max));
+    if (entry.zoom) {
+      const QRectF z = *entry.zoom;
+      // Crank-angle plots zoom along x; y re-fits the data inside the shown crank angles.
+      if (entry.spec->crank_angle_axis) {
+        double zy0 = INFINITY, zy1 = -INFINITY;
+        for (int id : runs) {
+          for (const CurvePoints& c : entry.run_points.value(id)) {
+            for (const QPointF& p : c.xy) {
+              if (p.x() < z.left() || p.x() > z.right()) continue;
+              zy0 = std::min(zy0, p.y());
+              zy1 = std::max(zy1, p.y());
+            }
+          }
+        }
+        if (!(zy1 >= zy0)) zy0 = ry.min, zy1 = ry.max;
+        if (entry.spec->non_negative && zy0 >= 0) zy0 = 0;
+        const RoundRange zr = RoundRangeCovering(zy0, zy1, 5);
+        SetRoundAxis(ax, z.left(), z.right(), RoundStep(z.width(), 6));
+        SetRoundAxis(ay, zr.min, zr.max, zr.step);
+      } else {
+        SetRoundAxis(ax, z.left(), z.right(), RoundStep(z.width(), 5));
+        SetRoundAxis(ay, z.top(), z.bottom(), RoundStep(z.height(), 5));
+      }
+    } else {
+      SetRoundAxis(ax, rx.min, rx.max, rx.step);
+      SetRoundAxis(ay, ry.min, ry.max, ry.step);
+    }
   }
-  if (y1 - y0 < 1e-12 * std::max(1.0, std::abs(y1))) {
-    const double pad = std::max(1.0, std::abs(y1) * 0.1);
-    y0 -= pad;
-    y1 += pad;
-  }
-  const double pad = entry.spec->equal_axes ? 0 : 0.05 * (y1 - y0);
-  if (!entry.spec->crank_angle_axis) AxisX(entry.chart)->setRange(x0, x1 > x0 ? x1 : x0 + 1);
-  AxisY(entry.chart)->setRange(y0 - pad, y1 + pad);
-  if (entry.cursor) updateCursor(entry);
+  entry.overlay->refresh();
 }
 
-void PlotPanel::updateCursor(ChartEntry& entry) {
-  QList<QPointF> line;
-  if (std::isfinite(cursor_angle_)) {
-    line << QPointF(cursor_angle_, AxisY(entry.chart)->min())
-         << QPointF(cursor_angle_, AxisY(entry.chart)->max());
+bool PlotPanel::isZoomed(int index) const { return charts_[size_t(index)].zoom.has_value(); }
+
+void PlotPanel::zoomChart(int index, double factor, QPointF about) {
+  ChartEntry& entry = charts_[size_t(index)];
+  QRectF r = entry.zoom.value_or(entry.full);
+  auto scale = [factor](double lo, double hi, double at, double* out_lo, double* out_hi) {
+    at = std::clamp(at, lo, hi);
+    *out_lo = at - (at - lo) * factor;
+    *out_hi = at + (hi - at) * factor;
+  };
+  double x0, x1, y0 = r.top(), y1 = r.bottom();
+  scale(r.left(), r.right(), about.x(), &x0, &x1);
+  if (!entry.spec->crank_angle_axis) scale(r.top(), r.bottom(), about.y(), &y0, &y1);
+  QRectF zoomed(QPointF(x0, y0), QPointF(x1, y1));
+  if (entry.spec->equal_axes) {  // keep the aspect: scale both about the point
+    zoomed = QRectF(QPointF(x0, y0), QPointF(x1, y1));
   }
-  entry.cursor->replace(line);
+  // Zooming out past the full range is the full range.
+  if (zoomed.width() >= entry.full.width() * (1 - 1e-9)) {
+    entry.zoom.reset();
+  } else {
+    if (entry.spec->crank_angle_axis) {
+      const double w = zoomed.width();
+      zoomed.moveLeft(std::clamp(zoomed.left(), 0.0, 720.0 - w));
+    }
+    entry.zoom = zoomed;
+  }
+  rescale(entry);
+}
+
+void PlotPanel::panChart(int index, QPointF delta) {
+  ChartEntry& entry = charts_[size_t(index)];
+  if (!entry.zoom) return;  // nothing to pan at full range
+  QRectF z = entry.zoom->translated(delta.x(), entry.spec->crank_angle_axis ? 0 : delta.y());
+  if (entry.spec->crank_angle_axis) z.moveLeft(std::clamp(z.left(), 0.0, 720.0 - z.width()));
+  entry.zoom = z;
+  rescale(entry);
+}
+
+void PlotPanel::resetZoom(int index) {
+  charts_[size_t(index)].zoom.reset();
+  rescale(charts_[size_t(index)]);
+}
+
+double PlotPanel::shownAngle() const {
+  return std::isfinite(hover_angle_) ? hover_angle_ : cursor_angle_;
 }
 
 void PlotPanel::setCursorAngle(double crank_angle_deg) {
   cursor_angle_ = crank_angle_deg;
-  for (ChartEntry& entry : charts_) {
-    if (entry.cursor) updateCursor(entry);
+  for (ChartEntry& entry : charts_) entry.overlay->refresh();
+}
+
+void PlotPanel::setHoverAngle(double crank_angle_deg) {
+  if (std::isnan(crank_angle_deg) && std::isnan(hover_angle_)) return;
+  hover_angle_ = crank_angle_deg;
+  for (ChartEntry& entry : charts_) entry.overlay->refresh();
+}
+
+std::vector<PlotPanel::ReadoutEntry> PlotPanel::readoutEntries(int index) const {
+  const ChartEntry& entry = charts_[size_t(index)];
+  std::vector<ReadoutEntry> out;
+  const double angle = shownAngle();
+  if (!std::isfinite(angle)) return out;
+  const std::vector<int> runs = visibleRunsWithData(entry);
+  if (runs.empty()) return out;
+  const bool single = singleRunMode();
+  const bool several_kinds = kindsWithData(entry).size() > 1;
+  out.push_back({QPen(Qt::NoPen), QString(), tr("%1 °CA").arg(QString::number(angle, 'f', 1))});
+  for (int id : runs) {
+    const auto points = entry.run_points.value(id);
+    for (size_t k = 0; k < points.size(); ++k) {
+      if (points[k].xy.isEmpty()) continue;
+      QString who;
+      if (several_kinds) who = entry.spec->curves[k].name;
+      if (!single)
+        who = who.isEmpty() ? runs_.value(id).label : who + " · " + runs_.value(id).label;
+      QString value;
+      if (entry.spec->crank_angle_axis) {
+        value = FormatReadout(ValueAtAngle(points[k], angle), entry.spec->y_unit);
+      } else if (const auto p = PointAtAngle(points[k], angle)) {
+        value = entry.spec->x_unit == entry.spec->y_unit
+                    ? QString("%1, %2").arg(FormatReadout(p->x()),
+                                            FormatReadout(p->y(), entry.spec->y_unit))
+                    : QString("%1, %2").arg(FormatReadout(p->x(), entry.spec->x_unit),
+                                            FormatReadout(p->y(), entry.spec->y_unit));
+      } else {
+        value = "–";
+      }
+      out.push_back({seriesPen(id, k), who, value});
+    }
   }
+  return out;
+}
+
+QStringList PlotPanel::readoutLines(int index) const {
+  QStringList lines;
+  for (const ReadoutEntry& e : readoutEntries(index)) {
+    lines << (e.who.isEmpty() ? e.value : e.who + ": " + e.value);
+  }
+  return lines;
+}
+
+void PlotPanel::paintOverlay(const ChartEntry& entry, QPainter* painter) const {
+  const int index = int(&entry - charts_.data());
+  const QRectF area = entry.chart->plotArea();
+  if (!area.isValid()) return;
+  painter->save();
+  painter->setRenderHint(QPainter::Antialiasing);
+  const QFont font = LegendFont(entry.chart);
+  painter->setFont(font);
+  const QFontMetricsF metrics(font);
+  const bool single = singleRunMode();
+  const std::vector<int> runs = visibleRunsWithData(entry);
+  auto to_pos = [&entry](QPointF value) { return entry.chart->mapToPosition(value, entry.anchor); };
+
+  // Crank-angle marks every 90 °CA and arrows along the direction of travel (orbit, load).
+  if (entry.spec->equal_axes) {
+    painter->setClipRect(area);
+    for (int id : runs) {
+      const auto points = entry.run_points.value(id);
+      for (size_t k = 0; k < points.size(); ++k) {
+        const QColor colour = single ? kPalette[k % kPaletteSize] : runs_.value(id).colour;
+        for (int mark = 0; mark < 720; mark += 90) {
+          if (const auto p = PointAtAngle(points[k], mark)) {
+            const QPointF at = to_pos(*p);
+            painter->setPen(QPen(Qt::white, 1));
+            painter->setBrush(colour);
+            painter->drawEllipse(at, 3.5, 3.5);
+            if (id == runs.front()) {  // labels once (the first run); the others' marks align
+              painter->setPen(colour.darker(130));
+              painter->drawText(at + QPointF(5, -4), QString("%1°").arg(mark));
+            }
+          }
+          // An arrowhead half way to the next mark, along the local tangent.
+          const auto a = PointAtAngle(points[k], mark + 44.0);
+          const auto b = PointAtAngle(points[k], mark + 46.0);
+          if (a && b) {
+            const QPointF pa = to_pos(*a), pb = to_pos(*b);
+            const QPointF d = pb - pa;
+            const double len = std::hypot(d.x(), d.y());
+            if (len > 1e-6) {
+              const QPointF u = d / len, n(-u.y(), u.x());
+              QPainterPath head;
+              head.moveTo(pb + u * 4.0);
+              head.lineTo(pb - u * 5.0 + n * 4.0);
+              head.lineTo(pb - u * 5.0 - n * 4.0);
+              head.closeSubpath();
+              painter->setPen(Qt::NoPen);
+              painter->setBrush(colour);
+              painter->drawPath(head);
+            }
+          }
+        }
+      }
+    }
+    painter->setClipping(false);
+  }
+
+  // The crank-angle cursor: a line on crank-angle plots, a marker on the others.
+  const double angle = exporting_ ? std::numeric_limits<double>::quiet_NaN() : shownAngle();
+  if (std::isfinite(angle) && !runs.empty()) {
+    painter->setClipRect(area);
+    if (entry.spec->crank_angle_axis) {
+      const double x = to_pos(QPointF(angle, 0)).x();
+      painter->setPen(QPen(QColor(80, 80, 80), 1, Qt::DashLine));
+      painter->drawLine(QPointF(x, area.top()), QPointF(x, area.bottom()));
+      for (int id : runs) {
+        const auto points = entry.run_points.value(id);
+        for (size_t k = 0; k < points.size(); ++k) {
+          const double y = ValueAtAngle(points[k], angle);
+          if (!std::isfinite(y)) continue;
+          const QColor colour = single ? kPalette[k % kPaletteSize] : runs_.value(id).colour;
+          painter->setPen(QPen(Qt::white, 1));
+          painter->setBrush(colour);
+          painter->drawEllipse(to_pos(QPointF(angle, y)), 3, 3);
+        }
+      }
+    } else {
+      for (int id : runs) {
+        const auto points = entry.run_points.value(id);
+        for (size_t k = 0; k < points.size(); ++k) {
+          if (const auto p = PointAtAngle(points[k], angle)) {
+            const QColor colour = single ? kPalette[k % kPaletteSize] : runs_.value(id).colour;
+            painter->setPen(QPen(colour.darker(150), 1.5));
+            painter->setBrush(Qt::white);
+            painter->drawEllipse(to_pos(*p), 5, 5);
+          }
+        }
+      }
+    }
+    painter->setClipping(false);
+  }
+
+  // The legend beside the plot: a line sample in the series' colour and style, wrapped text.
+  const auto entries = legendEntries(index);
+  double legend_bottom = area.top();
+  if (!entries.empty()) {
+    const double left = area.right() + kLegendGap;
+    const double width = entry.chart->size().width() - left - 4;
+    double& y = legend_bottom;
+    for (const auto& [text, pen] : entries) {
+      const bool heading = pen.style() == Qt::NoPen;
+      const double text_left = heading ? left : left + kSwatch + 6;
+      const QRectF text_box(text_left, y, std::max(20.0, width - (text_left - left)), 1000);
+      const QRectF used =
+          painter->boundingRect(text_box, Qt::TextWordWrap | Qt::AlignLeft | Qt::AlignTop, text);
+      if (!heading) {
+        QPen sample = pen;
+        sample.setCapStyle(Qt::FlatCap);
+        painter->setPen(sample);
+        const double ly = y + metrics.ascent() * 0.6;
+        painter->drawLine(QPointF(left, ly), QPointF(left + kSwatch, ly));
+      }
+      QFont f = font;
+      f.setBold(heading);
+      painter->setFont(f);
+      painter->setPen(Qt::black);
+      painter->drawText(text_box, Qt::TextWordWrap | Qt::AlignLeft | Qt::AlignTop, text);
+      painter->setFont(font);
+      y += used.height() + 3;
+    }
+  }
+  // The cursor readout in the column beside the plot, under the legend: each value after a
+  // sample of its series' line (colour = run, style = kind; the legends say which is which).
+  const std::vector<ReadoutEntry> readout =
+      std::isfinite(angle) ? readoutEntries(index) : std::vector<ReadoutEntry>{};
+  if (!readout.empty()) {
+    const double left = area.right() + kLegendGap;
+    double top = legend_bottom + (legend_bottom > area.top() ? 6 : 0);
+    const double h = metrics.lineSpacing() * double(readout.size()) + 6;
+    const QRectF box(left, top, entry.chart->size().width() - left - 4, h);
+    painter->setPen(QPen(QColor(190, 190, 190), 0.8));
+    painter->setBrush(QColor(248, 248, 248));
+    painter->drawRect(box);
+    for (size_t i = 0; i < readout.size(); ++i) {
+      const double baseline = box.top() + 3 + metrics.ascent() + double(i) * metrics.lineSpacing();
+      double x = box.left() + 4;
+      if (readout[i].pen.style() != Qt::NoPen) {
+        QPen sample = readout[i].pen;
+        sample.setCapStyle(Qt::FlatCap);
+        painter->setPen(sample);
+        const double ly = baseline - metrics.ascent() * 0.35;
+        painter->drawLine(QPointF(x, ly), QPointF(x + 18, ly));
+        x += 24;
+      }
+      QFont f = font;
+      f.setBold(readout[i].pen.style() == Qt::NoPen);
+      painter->setFont(f);
+      painter->setPen(Qt::black);
+      painter->drawText(QPointF(x, baseline), readout[i].value);
+      painter->setFont(font);
+    }
+  }
+  painter->restore();
 }
 
 void PlotPanel::exportChartInteractive(int index) {
@@ -289,11 +935,16 @@ void PlotPanel::exportChartInteractive(int index) {
     return;
   }
   QString error;
-  if (ExportChart(chart(index), path, format, QSize(960, 600), &error)) {
+  if (exportChart(index, path, format, QSize(960, 600), &error)) {
     emit statusMessage(tr("Wrote %1").arg(path));
   } else {
     emit statusMessage(error);
   }
+}
+
+PlotRun PlotRunOf(const RunRecord& run) {
+  const engine::BigEndCase& big_end = run.request().engine_case.big_end;
+  return {run.id(), run.label(), big_end.bearing_radius - big_end.journal_radius, run.samples()};
 }
 
 }  // namespace filmdyn::ui

@@ -1,6 +1,6 @@
 #pragma once
 /// @file The standard result plots (docs/gui.md): what each shows, in display units. Shared by the
-/// live plot panel and anything that draws the same plots from a finished run.
+/// live plot panel and the headless plots of `filmdyn run` / `sweep` (one code path).
 #include <QList>
 #include <QPointF>
 #include <QString>
@@ -11,19 +11,32 @@
 
 namespace filmdyn::ui {
 
+/// A curve's points (display units) and the crank angle [°CA] of each point.
+struct CurvePoints {
+  QList<QPointF> xy;
+  std::vector<double> crank_angle;
+};
+
+/// One kind of series of a plot (e.g. "skirt" or "big end" in the MOFT plot). Every run draws
+/// each kind with the kind's line style; colours tell runs apart.
 struct PlotCurve {
   QString name;
   /// The curve's points from a run's samples (NaN values are skipped).
-  std::function<QList<QPointF>(const std::vector<RunSample>&)> points;
+  std::function<CurvePoints(const std::vector<RunSample>&)> points;
 };
 
 struct PlotSpec {
   QString id;  ///< file-name friendly, e.g. "journal_orbit"
   QString title;
-  QString x_title;
+  QString x_title;  ///< quantity and unit, e.g. "crank angle [°CA]"
   QString y_title;
-  bool crank_angle_axis = true;  ///< x is 0–720 °CA (shows the field-view cursor)
-  bool equal_axes = false;       ///< orbit: same scale on x and y
+  QString y_unit;  ///< display unit of the values (cursor readout), e.g. "µm"
+  QString x_unit;
+  bool crank_angle_axis = true;   ///< x is 0–720 °CA (the linked crank-angle cursor)
+  bool equal_axes = false;        ///< same scale on x and y, centred on the origin
+  bool clearance_circle = false;  ///< the journal orbit: the bearing clearance drawn, axes fit it
+  bool non_negative = false;      ///< the quantity cannot be negative: the y axis starts at 0
+  bool x_non_negative = false;    ///< same for x (phase portraits of ε)
   std::vector<PlotCurve> curves;
 };
 

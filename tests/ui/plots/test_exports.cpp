@@ -91,6 +91,28 @@ class TestExports : public QObject {
     QVERIFY(ok);
     QVERIFY(row[header.indexOf("skirt_moft[m]")].isEmpty());  // the ideal model has no film
 
+    // The same results in display units: same rows and columns, headers in the plots' units,
+    // values scaled (N → kN, m → mm, rad → deg), empty cells kept.
+    const QString csv_display = dir.filePath("results-display.csv");
+    QVERIFY2(window.exportResultsCsv(run, csv_display, &error, true), qPrintable(error));
+    QFile display_file(csv_display);
+    QVERIFY(display_file.open(QIODevice::ReadOnly | QIODevice::Text));
+    const QStringList display_lines =
+        QString::fromUtf8(display_file.readAll()).split('\n', Qt::SkipEmptyParts);
+    QCOMPARE(display_lines.size(), lines.size());
+    const QStringList display_header = display_lines.first().split(',');
+    QCOMPARE(display_header.size(), header.size());
+    QVERIFY(display_header.contains("gas_force[kN]") && display_header.contains("skirt_moft[um]"));
+    QVERIFY(display_header.contains("rod_angle[deg]") && display_header.contains("time[ms]"));
+    const QStringList display_row = display_lines[10].split(',');
+    const double gas_n = row[header.indexOf("gas_force[N]")].toDouble();
+    QVERIFY(std::abs(display_row[display_header.indexOf("gas_force[kN]")].toDouble() -
+                     gas_n * 1e-3) <= 1e-9 * std::max(1.0, std::abs(gas_n)));
+    const double rod = row[header.indexOf("rod_angle[rad]")].toDouble();
+    QVERIFY(std::abs(display_row[display_header.indexOf("rod_angle[deg]")].toDouble() -
+                     rod * 180 / M_PI) < 1e-8);
+    QVERIFY(display_row[display_header.indexOf("skirt_moft[um]")].isEmpty());
+
     // The whole run folder as `filmdyn run --out` writes it.
     const QString folder = dir.filePath("run");
     QVERIFY2(window.exportRunFolder(run, folder, &error), qPrintable(error));

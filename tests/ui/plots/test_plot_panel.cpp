@@ -1,0 +1,273 @@
+// The result plots as a reader meets them, on the samples of real runs (core's run job: a coupled
+// Skirt-LBRBE run on coarse meshes and the Ideal model, whose film quantities are empty): round
+// axis steps, non-negative quantities from zero, a legend that lists colour and line style and
+// only series with data, the journal orbit filling its panel inside the clearance circle, the
+// linked crank-angle cursor with the values of every visible series, hover, zoom and pan.
+#include <QChart>
+#include <QChartView>
+#include <QLineSeries>
+#include <QMouseEvent>
+#include <QValueAxis>
+#include <QWheelEvent>
+#include <QtTest>
+#include <cmath>
+
+#include "core/engine/run_job.hpp"
+#include "core/io/case_file.hpp"
+#include "core/io/results_writer.hpp"
+#include "ui/charts/round_ticks.hpp"
+#include "ui/plots/plot_export.hpp"
+#include "ui/plots/plot_panel.hpp"
+
+namespace engine = filmdyn::engine;
+namespace io = filmdyn::io;
+using filmdyn::ui::Column;
+using filmdyn::ui::PlotPanel;
+using filmdyn::ui::PlotRun;
+
+namespace {
+
+// One reported cycle of a real run, as the plots receive it.
+PlotRun RealRun(int id, engine::Model model, double rpm) {
+  const io::LoadedCase loaded = io::LoadCase({});
+  engine::RunConfig config =
+      engine::MakeRunConfig(loaded.value, model, rpm, io::PressureCurveForSpeed(loaded, rpm));
+  auto& c = config.engine_case;
+  c.skirt.mesh_thrust = c.skirt.mesh_anti = 8;
+  c.skirt.mesh_relief = 1;
+  c.skirt.mesh_axial = 8;
+  c.big_end.mesh_theta = 36;
+  c.big_end.mesh_z = 6;
+  c.solver.error_estimate = 0;
+  c.solver.max_cycles = 1;
+  const engine::RunResult result = engine::RunJob(config);
+  std::vector<io::OutputRow> rows;
+  const double start = result.samples.empty() ? 0.0 : result.samples.front().time;
+  for (const auto& s : result.samples) rows.push_back(io::RowFromSample(s, model, start));
+  return filmdyn::ui::PlotRunFromRows(id, config.engine_case, engine::ModelName(model), rpm, rows);
+}
+
+bool IsRoundStep(double step) {
+  const double decade = std::pow(10.0, std::floor(std::log10(step) + 1e-9));
+  for (double m : {1.0, 2.0, 2.5, 5.0, 10.0}) {
+    if (std::abs(step - m * decade) < 1e-9 * decade) return true;
+  }
+  return false;
+}
+
+QValueAxis* Axis(QChart* chart, Qt::Orientation o) {
+  return static_cast<QValueAxis*>(chart->axes(o).first());
+}
+
+}  // namespace
+
+class TestPlotPanel : public QObject {
+  Q_OBJECT
+  PlotRun coupled_, ideal_;
+
+ private slots:
+  void initTestCase() {
+    coupled_ = RealRun(1, engine::Model::kSkirtLbrbe, 6000);
+    ideal_ = RealRun(2, engine::Model::kIdeal, 4000);
+    QVERIFY(coupled_.samples.size() >= 700);
+  }
+
+  void roundStepsAndZeroBasedNonNegativeAxes() {
+    PlotPanel panel;
+    panel.resize(1400, 1200);
+    panel.updateRun(coupled_);
+    panel.updateRun(ideal_);
+    const auto& specs = filmdyn::ui::StandardPlots();
+    for (int i = 0; i < panel.chartCount(); ++i) {
+      const auto& spec = specs[size_t(i)];
+      for (Qt::Orientation o : {Qt::Horizontal, Qt::Vertical}) {
+        QValueAxis* axis = Axis(panel.chart(i), o);
+        const QString what = spec.id + (o == Qt::Horizontal ? " x" : " y");
+        QCOMPARE(axis->tickType(), QValueAxis::TicksDynamic);
+        // Crank angle steps by 90 °CA (the strokes' dead centres), every other axis round.
+        const bool crank_angle = spec.crank_angle_axis && o == Qt::Horizontal;
+        if (crank_angle) QCOMPARE(axis->tickInterval(), 90.0);
+        QVERIFY2(crank_angle || IsRoundStep(axis->tickInterval()),
+                 qPrintable(what + QString(" step %1").arg(axis->tickInterval())));
+        QCOMPARE(axis->tickAnchor(), 0.0);
+        QVERIFY2(!axis->titleText().isEmpty() && axis->titleText().contains('['),
+                 qPrintable(what + " has no unit: " + axis->titleText()));
+        if (!spec.equal_axes) {  // the range ends on whole steps
+          const double step = axis->tickInterval();
+          QVERIFY2(std::abs(axis->min() / step - std::round(axis->min() / step)) < 1e-6,
+                   qPrintable(what));
+          QVERIFY2(std::abs(axis->max() / step - std::round(axis->max() / step)) < 1e-6,
+                   qPrintable(what));
+        }
+      }
+      if (spec.non_negative) {
+        QVERIFY2(Axis(panel.chart(i), Qt::Vertical)->min() == 0.0, qPrintable(spec.id));
+      }
+    }
+    // The label format shows every tick exactly: 0.25 steps need two decimals.
+    QCOMPARE(filmdyn::ui::DecimalsFor(0.25), 2);
+    QCOMPARE(filmdyn::ui::DecimalsFor(2.5), 1);
+    QCOMPARE(filmdyn::ui::DecimalsFor(50), 0);
+    const auto r = filmdyn::ui::RoundRangeCovering(-1.0, 34.7, 4);
+    QCOMPARE(r.step, 10.0);
+    QCOMPARE(r.min, -10.0);
+    QCOMPARE(r.max, 40.0);
+  }
+
+  void legendsShowStyleAndColourAndOnlySeriesWithData() {
+    PlotPanel panel;
+    panel.resize(1400, 1200);
+    panel.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&panel));
+    panel.setRunsInChartLegends(true);  // as exported: each plot's legend names the runs
+    panel.updateRun(ideal_);
+    const int moft = panel.chartIndex("moft");
+    QVERIFY(moft >= 0);
+    // The Ideal model has no film: no legend entries, the title says so.
+    QVERIFY(panel.legendEntries(moft).empty());
+    QVERIFY(panel.chart(moft)->title().contains("no data"));
+    panel.updateRun(coupled_);
+    // Two runs: kinds by line style (skirt solid, big end dashed), then the one run with data.
+    auto entries = panel.legendEntries(moft);
+    QCOMPARE(int(entries.size()), 3);
+    QCOMPARE(entries[0].first, QString("skirt"));
+    QCOMPARE(entries[0].second.style(), Qt::SolidLine);
+    QCOMPARE(entries[1].first, QString("big end"));
+    QCOMPARE(entries[1].second.style(), Qt::DashLine);
+    QCOMPARE(entries[2].first, coupled_.label);
+    QCOMPARE(entries[2].second.color(), panel.runColour(coupled_.id));
+    // A plot where both runs have data lists both runs, each in its own colour.
+    const int lateral = panel.chartIndex("piston_lateral");
+    entries = panel.legendEntries(lateral);
+    QCOMPARE(int(entries.size()), 2);
+    QVERIFY(entries[0].second.color() != entries[1].second.color());
+    // One run shown: the run named once, each kind in its own colour and style.
+    panel.setRunVisible(ideal_.id, false);
+    entries = panel.legendEntries(moft);
+    QCOMPARE(int(entries.size()), 3);
+    QCOMPARE(entries[0].first, coupled_.label);
+    QCOMPARE(entries[0].second.style(), Qt::NoPen);
+    QVERIFY(entries[1].second.color() != entries[2].second.color());
+    QVERIFY(entries[1].second.style() != entries[2].second.style());
+    // Renaming reaches every legend.
+    panel.setRunLabel(coupled_.id, "μ 10 mPa·s");
+    QCOMPARE(panel.legendEntries(moft)[0].first, QString("μ 10 mPa·s"));
+    // The legend never cuts a long label: it reserves the room it needs (up to a share of the
+    // chart) and wraps beyond it.
+    panel.setRunVisible(ideal_.id, true);
+    const QString long_label = "Skirt-LBRBE 6000 rpm · μ 10 mPa·s · c_skirt 30 µm · 4000 rpm";
+    panel.setRunLabel(coupled_.id, long_label);
+    QCOMPARE(panel.legendEntries(moft).back().first, long_label);
+    QVERIFY(panel.chart(moft)->margins().right() > 100);
+    // On screen the runs are listed once above the plots, each in its colour; a plot's legend
+    // keeps only its series kinds.
+    panel.setRunsInChartLegends(false);
+    entries = panel.legendEntries(moft);
+    QCOMPARE(int(entries.size()), 2);
+    QCOMPARE(entries[0].first, QString("skirt"));
+    const QString shared = panel.runLegendText();
+    QVERIFY(shared.contains(long_label.toHtmlEscaped()) && shared.contains(ideal_.label));
+    QVERIFY(shared.contains(panel.runColour(coupled_.id).name()));
+    QVERIFY(panel.legendEntries(lateral).empty());  // one kind: the shared legend says it all
+    panel.setRunVisible(ideal_.id, false);
+    QVERIFY(!panel.runLegendText().contains(ideal_.label));
+  }
+
+  void orbitFillsItsPanelInsideTheClearance() {
+    PlotPanel panel;
+    panel.resize(1400, 1200);
+    panel.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&panel));
+    panel.updateRun(coupled_);
+    QCoreApplication::processEvents();
+    const int orbit = panel.chartIndex("journal_orbit");
+    const double clearance_um = coupled_.bearing_clearance * 1e6;
+    QValueAxis* x = Axis(panel.chart(orbit), Qt::Horizontal);
+    QValueAxis* y = Axis(panel.chart(orbit), Qt::Vertical);
+    // The shorter axis spans the clearance circle with at most one round step to spare.
+    const double half = std::min(x->max(), y->max());
+    QVERIFY2(
+        half >= clearance_um && half <= 1.25 * clearance_um,
+        qPrintable(QString("half range %1 µm for a %2 µm clearance").arg(half).arg(clearance_um)));
+    // Equal scale: µm per pixel the same on both axes (the circle is a circle).
+    const QRectF area = panel.chart(orbit)->plotArea();
+    const double sx = (x->max() - x->min()) / area.width();
+    const double sy = (y->max() - y->min()) / area.height();
+    QVERIFY2(std::abs(sx / sy - 1) < 0.05, qPrintable(QString("%1 vs %2").arg(sx).arg(sy)));
+  }
+
+  void linkedCursorShowsTheValuesOfEveryVisibleSeries() {
+    PlotPanel panel;
+    panel.resize(1400, 1200);
+    panel.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&panel));
+    panel.updateRun(coupled_);
+    panel.updateRun(ideal_);
+    // The sample at 90 °CA (output steps are whole degrees here).
+    const filmdyn::ui::RunSample* at90 = nullptr;
+    for (const auto& s : coupled_.samples) {
+      if (std::abs(s[Column::kCrankAngle] - 90.0) < 1e-9) at90 = &s;
+    }
+    QVERIFY(at90 != nullptr);
+    panel.setCursorAngle(90.0);
+    const int moft = panel.chartIndex("moft");
+    const QStringList lines = panel.readoutLines(moft);
+    const QString skirt = filmdyn::ui::FormatReadout((*at90)[Column::kSkirtMoft] * 1e6, "µm");
+    const QString big_end = filmdyn::ui::FormatReadout((*at90)[Column::kBearingMoft] * 1e6, "µm");
+    QVERIFY2(lines.join("\n").contains(skirt) && lines.join("\n").contains(big_end),
+             qPrintable(lines.join(" | ") + " lacks " + skirt + " / " + big_end));
+    QVERIFY(lines.join("\n").contains(coupled_.label));
+    // Every crank-angle plot shows values at the same angle; the orbit shows its point there.
+    for (int i = 0; i < panel.chartCount(); ++i) {
+      QVERIFY2(!panel.readoutLines(i).isEmpty() || panel.chart(i)->title().contains("no data"),
+               qPrintable(panel.chartId(i)));
+    }
+    // Hovering a crank-angle plot moves the cursor of every plot; leaving returns to the pin.
+    QChartView* view = panel.chartView(moft);
+    const QRectF area = panel.chart(moft)->plotArea();
+    const QPointF value_pos = panel.chart(moft)->mapToPosition(QPointF(450, 5));
+    const QPoint widget_pos = view->mapFromScene(panel.chart(moft)->mapToScene(value_pos));
+    QVERIFY(area.contains(value_pos));
+    QMouseEvent move(QEvent::MouseMove, widget_pos, view->viewport()->mapToGlobal(widget_pos),
+                     Qt::NoButton, Qt::NoButton, Qt::NoModifier);
+    QCoreApplication::sendEvent(view->viewport(), &move);
+    QVERIFY2(std::abs(panel.shownAngle() - 450) < 2.0,
+             qPrintable(QString::number(panel.shownAngle())));
+    QVERIFY(panel.readoutLines(panel.chartIndex("piston_tilt")).first().startsWith("45"));
+    QEvent leave(QEvent::Leave);
+    QCoreApplication::sendEvent(view->viewport(), &leave);
+    QCOMPARE(panel.shownAngle(), 90.0);
+  }
+
+  void zoomPanAndReset() {
+    PlotPanel panel;
+    panel.resize(1400, 1200);
+    panel.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&panel));
+    panel.updateRun(coupled_);
+    const int fpl = panel.chartIndex("fpl");
+    QValueAxis* x = Axis(panel.chart(fpl), Qt::Horizontal);
+    QChartView* view = panel.chartView(fpl);
+    const QPointF pos = panel.chart(fpl)->mapToPosition(QPointF(360, 10));
+    const QPoint widget_pos = view->mapFromScene(panel.chart(fpl)->mapToScene(pos));
+    QWheelEvent wheel(widget_pos, view->viewport()->mapToGlobal(widget_pos), QPoint(),
+                      QPoint(0, 240), Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
+    QCoreApplication::sendEvent(view->viewport(), &wheel);
+    QVERIFY(panel.isZoomed(fpl));
+    QVERIFY(x->max() - x->min() < 500 && x->min() <= 360 && x->max() >= 360);
+    QVERIFY(IsRoundStep(x->tickInterval()));
+    const double before = x->min();
+    panel.panChart(fpl, QPointF(30, 0));
+    QVERIFY(std::abs(x->min() - before - 30) < 1e-6);
+    QMouseEvent dbl(QEvent::MouseButtonDblClick, widget_pos,
+                    view->viewport()->mapToGlobal(widget_pos), Qt::LeftButton, Qt::LeftButton,
+                    Qt::NoModifier);
+    QCoreApplication::sendEvent(view->viewport(), &dbl);
+    QVERIFY(!panel.isZoomed(fpl));
+    QCOMPARE(x->min(), 0.0);
+    QCOMPARE(x->max(), 720.0);
+  }
+};
+
+QTEST_MAIN(TestPlotPanel)
+#include "test_plot_panel.moc"
