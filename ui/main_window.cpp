@@ -142,6 +142,7 @@ void MainWindow::createRunPage() {
   connect(run_table_, &RunTable::visibilityToggled, plot_panel_, &PlotPanel::setRunVisible);
   // One label per run (RunRecord::label) in the table, every legend and the field view.
   connect(run_table_, &RunTable::labelsChanged, this, [this](const QList<int>& ids) {
+    runs_modified_ = true;
     for (const RunHandle& run : run_table_->runs()) {
       if (!ids.contains(run->id())) continue;
       plot_panel_->setRunLabel(run->id(), run->label());
@@ -151,7 +152,10 @@ void MainWindow::createRunPage() {
   });
   connect(run_table_, &RunTable::orderChanged, this, [this](const QList<int>& ids) {
     plot_panel_->setRunOrder(std::vector<int>(ids.begin(), ids.end()));
+    runs_modified_ = true;
   });
+  connect(run_table_, &RunTable::runsEdited, this, [this] { runs_modified_ = true; });
+  connect(run_table_, &RunTable::visibilityToggled, this, [this] { runs_modified_ = true; });
   connect(run_table_, &RunTable::removeRequested, this, &MainWindow::removeRun);
   connect(run_table_, &RunTable::statusMessage, this,
           [this](const QString& m) { statusBar()->showMessage(m, 8000); });
@@ -346,6 +350,7 @@ void MainWindow::onRunUpdated(const RunHandle& run) {
 }
 
 void MainWindow::onRunFinished(const RunHandle& run) {
+  runs_modified_ = true;
   onRunUpdated(run);
   updateRunActions();
   progress_bar_->setValue(run->status() == RunStatus::kFinished ? 1000 : progress_bar_->value());
@@ -380,6 +385,7 @@ void MainWindow::removeRun(int run_id) {
   plot_panel_->removeRun(run_id);
   run_table_->removeRun(run_id);
   field_view_->setScaleFrames(AllRunFields(run_table_->runs()));
+  runs_modified_ = true;
 }
 
 void MainWindow::clearRuns() {
@@ -390,6 +396,7 @@ void MainWindow::clearRuns() {
   field_view_->setScaleFrames(AllRunFields(run_table_->runs()));
   shown_fields_run_.reset();
   field_view_->setFrames(nullptr, QString(), QString());
+  runs_modified_ = false;
 }
 
 QStringList MainWindow::restoreRuns(const QString& project_path) {
@@ -401,6 +408,7 @@ QStringList MainWindow::restoreRuns(const QString& project_path) {
   }
   if (loaded.base_id >= 0) run_table_->setBaseRun(loaded.base_id);
   field_view_->setScaleFrames(AllRunFields(run_table_->runs()));
+  runs_modified_ = false;
   return loaded.problems;
 }
 
@@ -412,6 +420,7 @@ bool MainWindow::saveRuns(const QString& project_path, QString* message) {
   SaveRunsReport report;
   QString error;
   const bool ok = SaveProjectRuns(project_path, runs, run_table_->baseRunId(), &report, &error);
+  if (ok && report.skipped_running == 0) runs_modified_ = false;
   QStringList parts;
   parts << tr("Saved %1 with %n run(s)", nullptr, report.saved).arg(project_path);
   if (report.skipped_running > 0)
@@ -511,10 +520,26 @@ bool MainWindow::saveProjectAsInteractive() {
   return false;
 }
 
+bool MainWindow::hasUnsavedRuns() const {
+  if (!runs_modified_) return false;
+  for (const RunHandle& run : run_table_->runs()) {
+    if (run->status() != RunStatus::kRunning) return true;
+  }
+  return false;
+}
+
 bool MainWindow::maybeSave() {
-  if (!document_->isModified()) return true;
+  const bool case_modified = document_->isModified(), runs_modified = hasUnsavedRuns();
+  if (!case_modified && !runs_modified) return true;
+  const QString what = case_modified && runs_modified
+                           ? tr("The case has unsaved changes and the runs are not saved with the "
+                                "project. Save them?")
+                       : case_modified
+                           ? tr("The case has unsaved changes. Save them?")
+                           : tr("The runs (results, names, notes, order) are not saved with the "
+                                "project. Save them?");
   const auto answer = QMessageBox::question(
-      this, tr("Unsaved changes"), tr("The case has unsaved changes. Save them?"),
+      this, tr("Unsaved changes"), what,
       QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
   if (answer == QMessageBox::Cancel) return false;
   if (answer == QMessageBox::Save) return saveProject();

@@ -60,6 +60,8 @@ class MainWindow : public QMainWindow {
   /// the settings) and the file is removed once they are saved or discarded or the window
   /// closes normally; after a crash the next start offers them back (offerRecovery).
   static QString autosavePath();
+  /// Whether the session's runs differ from what the project file's runs folder holds.
+  bool hasUnsavedRuns() const;
   /// Writes the autosave now when the case has unsaved edits (removes it when it has none).
   bool autosaveNow(QString* error = nullptr);
   /// An autosave of an earlier session is waiting (that session did not close normally).
@@ -99,7 +101,8 @@ class MainWindow : public QMainWindow {
   void updateRunActions();
   void addRecentFile(const QString& path);
   void rebuildRecentMenu();
-  /// Asks to save unsaved edits; false when the user cancels.
+  /// Asks to save unsaved edits of the case or runs not yet saved with the project; false when
+  /// the user cancels.
   bool maybeSave();
   void onRunUpdated(const RunHandle& run);
   /// Project runs (ui/runs/run_store.hpp): drops the session's finished runs; reads back those
@@ -108,6 +111,9 @@ class MainWindow : public QMainWindow {
   void clearRuns();
   QStringList restoreRuns(const QString& project_path);
   bool saveRuns(const QString& project_path, QString* message);
+  /// Something about the runs the project would save changed since it was last saved or opened:
+  /// a run finished, was removed, renamed, annotated, re-ordered, hidden or made the base.
+  bool runs_modified_ = false;
   void onRunFinished(const RunHandle& run);
 
   QTabWidget* workspace_ = nullptr;

@@ -277,6 +277,17 @@ SkirtEquilibrium SkirtCalculator::AtLoad(const SkirtLoad& load) {
       beyond = fraction;
     }
   }
+  // Newton from the centred start can miss an equilibrium that exists (a load just above one
+  // whose film is already thin): continued from the largest fraction carried, it is found.
+  if (carried > 0.0) {
+    SkirtEquilibrium continued;
+    const bool ok = Newton(load, from[0], from[1], &continued);
+    solves += continued.reynolds_solves;
+    if (ok) {
+      continued.reynolds_solves = solves;
+      return continued;
+    }
+  }
   const bool force_named = load.side_force != 0.0;
   const std::string with_other = force_named && load.moment != 0.0
                                      ? fmt::format(" with {} = {} N*m (both scaled alike)",

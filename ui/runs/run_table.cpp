@@ -218,6 +218,7 @@ void RunTable::setRunNotes(int run_id, const QString& notes) {
   if (row < 0) return;
   runs_[size_t(row)]->setNotes(notes);
   fillIdentity(row);
+  emit runsEdited();
 }
 
 void RunTable::moveRun(int run_id, int delta) {

@@ -73,6 +73,8 @@ class RunTable : public QTableWidget {
   void orderChanged(const QList<int>& run_ids);
   /// The user asked to remove the run (context menu).
   void removeRequested(int run_id);
+  /// A run's notes changed (what a saved project keeps besides labels, order and visibility).
+  void runsEdited();
   void statusMessage(const QString& message);
 
  protected:

@@ -70,6 +70,21 @@ class TestSkirtCalculator : public QObject {
     }
   }
 
+  void aSideForceAloneIsCarriedAcrossTheRange() {
+    // Zero moment, 10 m/s: Newton from the centred start once ran into the liner at 1000 N and
+    // more and called the load beyond the capacity; continued from a smaller load it is carried.
+    // Each equilibrium balances its load, and the state it reports gives that force again.
+    SkirtCalculator calc(DefaultSkirt());
+    for (double force : {500.0, 900.0, 1000.0, 1500.0, 3000.0}) {
+      const lubrication::SkirtEquilibrium eq = calc.AtLoad({force, 0.0, 10.0});
+      QVERIFY2(eq.converged, qPrintable(QString("%1 N: %2").arg(force).arg(eq.status.c_str())));
+      QVERIFY(std::abs(eq.point.film.lateral_force + force) <= 1e-7 * force);
+      QVERIFY(std::abs(eq.point.film.moment_about_pin) <= 1e-6 * force * 0.028);
+      const lubrication::SkirtPoint again = calc.AtState(eq.point.state);
+      QVERIFY(std::abs(again.film.lateral_force - eq.point.film.lateral_force) <= 1e-9 * force);
+    }
+  }
+
   void contactAloneCarriesALoadWithoutSliding() {
     SkirtCalculator calc(DefaultSkirt());
     const lubrication::SkirtEquilibrium eq = calc.AtLoad({100.0, 0.0, 0.0});

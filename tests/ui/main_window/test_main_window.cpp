@@ -14,7 +14,9 @@
 
 #include "ui/about_info.hpp"
 #include "ui/case_editor/case_document.hpp"
+#include "ui/case_editor/case_parameters.hpp"
 #include "ui/main_window.hpp"
+#include "ui/run/run_controller.hpp"
 
 namespace {
 // Answers the next modal message box with `button` (from the event loop, as a user would) and
@@ -68,6 +70,35 @@ class TestMainWindow : public QObject {
     }
     filmdyn::ui::MainWindow again;
     QCOMPARE(again.size(), QSize(1011, 707));
+  }
+
+  void finishedRunsAreNeverDroppedSilently() {
+    // A finished run not yet saved with the project: closing asks first, like an edited case.
+    QTemporaryDir dir;
+    const QString path = dir.filePath("case.json");
+    filmdyn::ui::MainWindow window;
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    auto c = window.document()->engineCase();
+    filmdyn::ui::ApplyRunModel(c, "ideal");
+    c.solver.output_interval = 4.0 * M_PI / 180.0;
+    window.document()->reset(c);
+    QString error;
+    QVERIFY2(window.saveProjectAs(path, &error), qPrintable(error));
+    QVERIFY(!window.hasUnsavedRuns());
+    QSignalSpy finished(window.runController(), &filmdyn::ui::RunController::runFinished);
+    window.runAction()->trigger();
+    QVERIFY(finished.wait(120000));
+    QVERIFY(window.hasUnsavedRuns());
+    QVERIFY(!window.document()->isModified());
+    QString title;
+    AnswerNextMessageBox(QMessageBox::Cancel, &title);
+    QVERIFY(!window.close());
+    QCOMPARE(title, QString("Unsaved changes"));
+    // Saved with the project: nothing to ask any more.
+    QVERIFY2(window.saveProjectAs(path, &error), qPrintable(error));
+    QVERIFY(!window.hasUnsavedRuns());
+    QVERIFY(window.close());
   }
 
   void unsavedChangesAreNeverLostSilently() {
