@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Refreshes docs/screenshots/*.png: builds the GUI tests that open the main window — one performs
-# two real runs (core's run job) and saves each page, one drives the steady skirt calculator —
+# two real runs (core's run job) and saves each page, one drives the steady skirt calculator, the
+# others save the field maps, the help window, the run table's identity and warnings columns —
 # and runs them under Xvfb (xvfb-run) unless a DISPLAY is already set. Usage: scripts/screenshots.sh [build-dir]  (default: build/)
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -12,11 +13,16 @@ if [ ! -f "$build/CMakeCache.txt" ]; then
   command -v ninja >/dev/null 2>&1 && generator=(-G Ninja)
   cmake -S "$root" -B "$build" "${generator[@]}" -DCMAKE_BUILD_TYPE=Release
 fi
-cmake --build "$build" -j "$jobs" --target test_ui_main_window_after_run test_ui_skirt_calculator
+cmake --build "$build" -j "$jobs" --target test_ui_main_window_after_run test_ui_skirt_calculator \
+  test_ui_field_view test_ui_help test_ui_project_runs test_ui_run_warnings_column
 mkdir -p "$out"
 export FILMDYN_SCREENSHOT_DIR="$out" QT_QPA_PLATFORM=xcb
 for exe in "$build/tests/ui/screenshots/test_ui_main_window_after_run" \
-           "$build/tests/ui/case_editor/test_ui_skirt_calculator"; do
+           "$build/tests/ui/case_editor/test_ui_skirt_calculator" \
+           "$build/tests/ui/fields/test_ui_field_view" \
+           "$build/tests/ui/help/test_ui_help" \
+           "$build/tests/ui/main_window/test_ui_project_runs" \
+           "$build/tests/ui/run/test_ui_run_warnings_column"; do
   if [ -n "${DISPLAY:-}" ]; then
     "$exe"
   else

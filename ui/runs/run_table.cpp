@@ -89,11 +89,11 @@ void ShowEngineeringWarnings(const std::vector<io::RunWarning>& warnings, QTable
 RunTable::RunTable(QWidget* parent) : QTableWidget(0, kColumns, parent) {
   setObjectName("run_table");
   setHorizontalHeaderLabels(
-      {tr("Show"), tr("Run"), tr("Differences from the base run"), tr("Status"), tr("Cycles"),
-       tr("Wall [s]"), tr("max |e₀| [µm]"), tr("max |γ| [mrad]"), tr("min MOFT skirt [µm]"),
-       tr("min MOFT big end [µm]"), tr("mean FPL skirt [W]"), tr("mean FPL big end [W]"),
-       tr("max |F big end| [kN]"), tr("Discretisation error"), tr("Warnings"), tr("Notes"),
-       tr("Reason")});
+      {tr("Show"), tr("Run"), tr("Differences from the base run"), tr("Status"), tr("Warnings"),
+       tr("Cycles"), tr("Wall [s]"), tr("max |e₀| [µm]"), tr("max |γ| [mrad]"),
+       tr("min MOFT skirt [µm]"), tr("min MOFT big end [µm]"), tr("mean FPL skirt [W]"),
+       tr("mean FPL big end [W]"), tr("max |F big end| [kN]"), tr("Discretisation error"),
+       tr("Notes"), tr("Reason")});
   setSelectionBehavior(QAbstractItemView::SelectRows);
   setSelectionMode(QAbstractItemView::SingleSelection);
   // Only the name cell is edited in place (its flags); notes open a multi-line editor.

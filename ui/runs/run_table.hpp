@@ -20,6 +20,7 @@ class RunTable : public QTableWidget {
     kRun,
     kDifferences,
     kStatus,
+    kWarnings,
     kCycles,
     kWall,
     kLateral,
@@ -30,7 +31,6 @@ class RunTable : public QTableWidget {
     kBearingFpl,
     kBigEndForce,
     kError,
-    kWarnings,
     kNotes,
     kReason,
     kColumns
