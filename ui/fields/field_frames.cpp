@@ -16,6 +16,22 @@ const std::vector<FieldArrayInfo>& FieldArrays() {
   return arrays;
 }
 
+bool JointFieldFrames::InNoFilm(double angle) const {
+  for (const auto& [a, b] : no_film) {
+    const double tol = 1e-9 * (b - a);
+    if (angle > a + tol && angle < b - tol) return true;
+  }
+  return false;
+}
+
+const std::vector<double>* FindFieldArray(
+    const std::vector<std::pair<std::string, std::vector<double>>>& frame, const std::string& name) {
+  for (const auto& [array_name, values] : frame) {
+    if (array_name == name) return &values;
+  }
+  return nullptr;
+}
+
 io::SurfaceField JointFieldFrames::Frame(size_t k) const {
   io::SurfaceField f = mesh;
   f.point_data = frames[k];

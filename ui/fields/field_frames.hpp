@@ -44,6 +44,8 @@ struct JointFieldFrames {
   std::vector<std::array<double, 2>> load;
   /// Frame k as a complete surface with its arrays.
   io::SurfaceField Frame(size_t k) const;
+  /// Whether the angle [rad] lies strictly inside an interval without film.
+  bool InNoFilm(double angle) const;
   /// The rotation of frame k [rad] (0 when none is recorded).
   double Rotation(size_t k) const { return k < frame_rotation.size() ? frame_rotation[k] : 0.0; }
   /// True when the grid is known and matches the mesh (node count = columns × rows).
@@ -52,6 +54,10 @@ struct JointFieldFrames {
            angle_lines.size() * axial_lines.size() == mesh.points.size();
   }
 };
+
+/// The values of the array `name` in one frame's arrays, or nullptr when the frame has none.
+const std::vector<double>* FindFieldArray(
+    const std::vector<std::pair<std::string, std::vector<double>>>& frame, const std::string& name);
 
 struct FieldFrames {
   std::vector<double> crank_angle_deg;  ///< one per frame [°CA]

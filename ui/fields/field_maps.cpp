@@ -11,22 +11,6 @@ namespace {
 
 constexpr double kDeg = 180.0 / M_PI;
 
-const std::vector<double>* FindArray(
-    const std::vector<std::pair<std::string, std::vector<double>>>& data, const std::string& name) {
-  for (const auto& [array_name, values] : data) {
-    if (array_name == name) return &values;
-  }
-  return nullptr;
-}
-
-bool InNoFilm(const JointFieldFrames& joint, double angle) {
-  for (const auto& [a, b] : joint.no_film) {
-    const double tol = 1e-9 * (b - a);
-    if (angle > a + tol && angle < b - tol) return true;
-  }
-  return false;
-}
-
 bool Turned(const JointFieldFrames& joint) {
   for (double r : joint.frame_rotation) {
     if (r != 0.0) return true;
@@ -74,11 +58,11 @@ std::pair<double, double> ValueRange(const JointFieldFrames& joint, const FieldA
   const size_t nx = joint.angle_lines.size();
   const bool grid = joint.HasGrid() && !joint.no_film.empty();
   for (const auto& frame : joint.frames) {
-    const std::vector<double>* values = FindArray(frame, info.name);
+    const std::vector<double>* values = FindFieldArray(frame, info.name);
     if (!values) continue;
     for (size_t n = 0; n < values->size(); ++n) {
       const double v = (*values)[n];
-      if (!std::isfinite(v) || (grid && InNoFilm(joint, joint.angle_lines[n % nx]))) continue;
+      if (!std::isfinite(v) || (grid && joint.InNoFilm(joint.angle_lines[n % nx]))) continue;
       lo = std::min(lo, v * info.scale), hi = std::max(hi, v * info.scale);
     }
   }
@@ -95,7 +79,7 @@ double ColumnAngleDeg(const JointFieldFrames& joint, size_t column, size_t frame
 FilmMapData UnrolledMap(const JointFieldFrames& joint, size_t frame, const FieldArrayInfo& info) {
   FilmMapData d;
   if (!joint.HasGrid() || frame >= joint.frames.size()) return d;
-  const std::vector<double>* values = FindArray(joint.frames[frame], info.name);
+  const std::vector<double>* values = FindFieldArray(joint.frames[frame], info.name);
   if (!values || values->size() != joint.mesh.points.size()) return d;
   const size_t nx = joint.angle_lines.size(), ny = joint.axial_lines.size();
   SetLabels(joint, &d);
@@ -153,7 +137,7 @@ std::vector<double> ColumnExtremes(const JointFieldFrames& joint, size_t frame,
   const size_t nx = joint.angle_lines.size(), ny = joint.axial_lines.size();
   std::vector<double> out(nx, NAN);
   if (!joint.HasGrid() || frame >= joint.frames.size()) return out;
-  const std::vector<double>* values = FindArray(joint.frames[frame], info.name);
+  const std::vector<double>* values = FindFieldArray(joint.frames[frame], info.name);
   if (!values || values->size() != nx * ny) return out;
   for (size_t i = 0; i < nx; ++i) {
     double e = info.minimum_matters ? INFINITY : -INFINITY;

@@ -30,23 +30,6 @@ namespace filmdyn::ui {
 
 namespace {
 
-using FrameData = std::vector<std::pair<std::string, std::vector<double>>>;
-
-const std::vector<double>* FindArray(const FrameData& data, const std::string& name) {
-  for (const auto& [array_name, values] : data) {
-    if (array_name == name) return &values;
-  }
-  return nullptr;
-}
-
-bool InNoFilm(const JointFieldFrames& joint, double angle) {
-  for (const auto& [a, b] : joint.no_film) {
-    const double tol = 1e-9 * (b - a);
-    if (angle > a + tol && angle < b - tol) return true;
-  }
-  return false;
-}
-
 // The frame's surface in millimetres (VTK's camera and picking behave better near unit scale),
 // turned into the joint's body frame; elements without film (the pin-boss relief) left out; a
 // mirrored joint (the skirt) with its mirror image about y = 0 as well.
@@ -76,7 +59,7 @@ vtkSmartPointer<vtkPolyData> ToPolyData(const JointFieldFrames& joint, size_t k,
         lo = std::min(lo, joint.angle_lines[size_t(n) % nx]);
         hi = std::max(hi, joint.angle_lines[size_t(n) % nx]);
       }
-      if (InNoFilm(joint, 0.5 * (lo + hi))) continue;
+      if (joint.InNoFilm(0.5 * (lo + hi))) continue;
     }
     const vtkIdType ids[3] = {t[0], t[1], t[2]};
     cells->InsertNextCell(3, ids);
@@ -91,7 +74,7 @@ vtkSmartPointer<vtkPolyData> ToPolyData(const JointFieldFrames& joint, size_t k,
   array->SetName(info.name);
   array->SetNumberOfValues(copies * n);
   const std::vector<double>* values =
-      k < joint.frames.size() ? FindArray(joint.frames[k], info.name) : nullptr;
+      k < joint.frames.size() ? FindFieldArray(joint.frames[k], info.name) : nullptr;
   for (vtkIdType i = 0; i < copies * n; ++i) {
     const size_t node = size_t(i % n);
     array->SetValue(i, values && node < values->size() ? (*values)[node] * info.scale : 0.0);

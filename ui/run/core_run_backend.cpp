@@ -20,6 +20,16 @@
 
 namespace filmdyn::ui {
 
+void ReportRunCounters(RunSink& sink, const RunCounters& c) {
+  sink.Statistic("cycles", c.cycles);
+  sink.Statistic("cycles to steady state", c.cycles_to_steady_state);
+  sink.Statistic("cycle change", c.cycle_change);
+  sink.Statistic("steps", c.steps);
+  sink.Statistic("rejected steps", c.rejected_steps);
+  sink.Statistic("max constraint violation", c.max_constraint_violation);
+  sink.Statistic("Reynolds solves", c.reynolds_solves);
+}
+
 namespace {
 
 // results.csv columns from a crank-train sample: core's row (io::RowFromSample, what
@@ -122,13 +132,10 @@ RunBackend CoreRunBackend() {
     sink.SetWriters(std::move(writers));
     if (auto fields = collector.Result(); !cancelled && fields && !fields->empty())
       sink.ReportFields(fields);
-    sink.Statistic("cycles", result.cycles);
-    sink.Statistic("cycles to steady state", result.cycles_to_steady_state);
-    sink.Statistic("cycle change", result.cycle_change);
-    sink.Statistic("steps", double(result.stats.steps));
-    sink.Statistic("rejected steps", double(result.stats.rejected_steps));
-    sink.Statistic("max constraint violation", result.max_constraint_violation);
-    sink.Statistic("Reynolds solves", double(result.reynolds_solves));
+    ReportRunCounters(sink, {double(result.cycles), double(result.cycles_to_steady_state),
+                             result.cycle_change, double(result.stats.steps),
+                             double(result.stats.rejected_steps), result.max_constraint_violation,
+                             double(result.reynolds_solves)});
     sink.ReportErrorEstimate(result.error_estimate);
     sink.ReportWarnings(io::RunWarnings(config, result));
     switch (result.status) {

@@ -67,6 +67,16 @@ class RunSink {
   virtual void ReportWarnings(std::vector<io::RunWarning> warnings) { (void)warnings; }
 };
 
+/// The solver counters of a finished run, as the run table shows them (live from the run's
+/// result, or from the summary.json of a run reopened with its project).
+struct RunCounters {
+  double cycles = 0, cycles_to_steady_state = 0, cycle_change = 0, steps = 0, rejected_steps = 0,
+         max_constraint_violation = 0, reynolds_solves = 0;
+};
+/// Reports them as the sink's statistics: the one list of their names.
+void ReportRunCounters(RunSink& sink, const RunCounters& counters);
+
+
 using RunBackend =
     std::function<void(const RunRequest& request, const std::atomic<bool>& cancel, RunSink& sink)>;
 

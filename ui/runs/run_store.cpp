@@ -179,13 +179,11 @@ void Restore(RunRecord& run, const fs::path& dir, const std::string& key, bool h
   const fs::path folder = dir / key;
   if (has_folder) {
     const io::RunSummary summary = io::ReadSummaryJson(folder / "summary.json");
-    run.Statistic("cycles", summary.cycles);
-    run.Statistic("cycles to steady state", summary.cycles_to_steady_state);
-    run.Statistic("cycle change", summary.cycle_to_cycle_change);
-    run.Statistic("steps", double(summary.solver.steps));
-    run.Statistic("rejected steps", double(summary.solver.rejected_steps));
-    run.Statistic("max constraint violation", summary.max_constraint_violation);
-    run.Statistic("Reynolds solves", double(summary.solver.reynolds_solves));
+    ReportRunCounters(run, {double(summary.cycles), double(summary.cycles_to_steady_state),
+                            summary.cycle_to_cycle_change, double(summary.solver.steps),
+                            double(summary.solver.rejected_steps),
+                            summary.max_constraint_violation,
+                            double(summary.solver.reynolds_solves)});
     run.ReportErrorEstimate(summary.error_estimate);
     if (!fs::exists(folder / "results.csv")) {
       throw std::runtime_error("cannot read " + (folder / "results.csv").string() + ": missing");

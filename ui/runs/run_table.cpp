@@ -125,8 +125,9 @@ RunTable::RunTable(QWidget* parent) : QTableWidget(0, kColumns, parent) {
     auto* move = new QAction(this);
     move->setShortcut(QKeySequence(Qt::ALT | key));
     move->setShortcutContext(Qt::WidgetShortcut);
-    connect(move, &QAction::triggered, this, [this, delta] {
-      if (const RunHandle run = currentRun()) moveRun(run->id(), delta);
+    const int step = delta;  // (a structured binding cannot be captured before C++20's P1091)
+    connect(move, &QAction::triggered, this, [this, step] {
+      if (const RunHandle run = currentRun()) moveRun(run->id(), step);
     });
     addAction(move);
   }
