@@ -13,7 +13,6 @@
 #include <QPainter>
 #include <QPainterPath>
 #include <QScrollArea>
-#include <QTimer>
 #include <QVBoxLayout>
 #include <QValueAxis>
 #include <QWheelEvent>
@@ -679,10 +678,8 @@ void PlotPanel::zoomChart(int index, double factor, QPointF about) {
   double x0, x1, y0 = r.top(), y1 = r.bottom();
   scale(r.left(), r.right(), about.x(), &x0, &x1);
   if (!entry.spec->crank_angle_axis) scale(r.top(), r.bottom(), about.y(), &y0, &y1);
+  // Both axes scale by the same factor, so equal-scale plots keep their aspect.
   QRectF zoomed(QPointF(x0, y0), QPointF(x1, y1));
-  if (entry.spec->equal_axes) {  // keep the aspect: scale both about the point
-    zoomed = QRectF(QPointF(x0, y0), QPointF(x1, y1));
-  }
   // Zooming out past the full range is the full range.
   if (zoomed.width() >= entry.full.width() * (1 - 1e-9)) {
     entry.zoom.reset();
