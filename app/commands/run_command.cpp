@@ -104,7 +104,7 @@ Command MakeRunCommand() {
     io::WriteRunFolder(out, c.name, config, result, [&](const std::vector<io::OutputRow>& rows) {
       fields.Write(out / "fields");
       // The same charts the GUI draws, also for an incomplete run (what was computed).
-      if (const std::string error = WriteRunPlots(out, config, rows); !error.empty()) {
+      if (const std::string error = WriteRunPlots(out, config, result, rows); !error.empty()) {
         streams.err << "filmdyn run: plots not written: " << error << "\n";
       }
     });

@@ -46,11 +46,12 @@ engine::RunConfig BuildRunConfig(const io::LoadedCase& loaded, engine::Model mod
 }
 
 std::string WriteRunPlots(const std::filesystem::path& folder, const engine::RunConfig& config,
-                          const std::vector<io::OutputRow>& rows) {
+                          const engine::RunResult& result, const std::vector<io::OutputRow>& rows) {
   QString error;
-  ui::ExportStandardPlots({ui::PlotRunFromRows(1, config.engine_case,
-                                               engine::ModelName(config.model), config.rpm, rows)},
-                          QString::fromStdString((folder / "plots").string()), &error);
+  ui::ExportStandardPlots(
+      {ui::PlotRunFromRows(1, config.engine_case, engine::ModelName(config.model), config.rpm, rows,
+                           io::MotionRows(result, config.model))},
+      QString::fromStdString((folder / "plots").string()), &error);
   return error.toStdString();
 }
 
@@ -157,13 +158,14 @@ BatchOutcome RunBatch(std::vector<batch::SweepJob> jobs, int parallel, bool quie
       streams.err << prefix << ": " << label << ": failed: " << outcome.error << "\n";
       continue;
     }
-    if (const std::string error = WriteRunPlots(job.output_folder, job.config, outcome.rows);
+    if (const std::string error =
+            WriteRunPlots(job.output_folder, job.config, outcome.result, outcome.rows);
         !error.empty()) {
       streams.err << prefix << ": " << label << ": plots not written: " << error << "\n";
     }
-    batch.runs[index] =
-        ui::PlotRunFromRows(index + 1, job.config.engine_case, engine::ModelName(job.config.model),
-                            job.config.rpm, outcome.rows);
+    batch.runs[index] = ui::PlotRunFromRows(
+        index + 1, job.config.engine_case, engine::ModelName(job.config.model), job.config.rpm,
+        outcome.rows, io::MotionRows(outcome.result, job.config.model));
     const bool complete = outcome.result.status == engine::RunStatus::kCompleted;
     if (!complete) ++batch.incomplete;
     streams.err << prefix << ": " << label << ": " << engine::StatusName(outcome.result.status)

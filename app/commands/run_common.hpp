@@ -29,10 +29,10 @@ engine::Model ModelFromCase(const engine::EngineCase& c);
 engine::RunConfig BuildRunConfig(const io::LoadedCase& loaded, engine::Model model, double rpm,
                                  const std::optional<std::string>& pressure_csv, double time_limit);
 
-/// Renders the standard plots of one run (rows as written to results.csv) into
-/// `<folder>/plots`. Returns an empty string or the reason it failed.
+/// Renders the standard plots of one run (rows as written to results.csv, with the run's motion
+/// between them) into `<folder>/plots`. Returns an empty string or the reason it failed.
 std::string WriteRunPlots(const std::filesystem::path& folder, const engine::RunConfig& config,
-                          const std::vector<io::OutputRow>& rows);
+                          const engine::RunResult& result, const std::vector<io::OutputRow>& rows);
 
 /// Prints the engineering warnings of a finished run (io::RunWarnings, the list summary.json
 /// holds), one line each: "<prefix>: warning: <message>".

@@ -171,13 +171,27 @@ void LubricatedBigEndElement::RefreshFields() {
   solver_at_cache_ = true;
 }
 
+namespace {
+
+// The state-derived part of a report: the journal's position (global and rod frame) and ε, ε̇.
+void ReportKinematics(const BigEndKinematics& kin, double rod_angle, BearingFilmSample* b) {
+  b->present = true;
+  b->journal_ecc_global = kin.ecc;
+  b->journal_ecc_rod = Rotation(rod_angle).transpose() * kin.ecc;
+  b->eps = kin.eps_true;
+  b->eps_dot = kin.state.eps_dot;
+}
+
+}  // namespace
+
+void LubricatedBigEndElement::ReportMotion(const BodyState& crank, const BodyState& rod,
+                                           BearingFilmSample* bearing) const {
+  ReportKinematics(Kinematics(crank, rod), rod.Angle(), bearing);
+}
+
 void LubricatedBigEndElement::ReportFilm(SkirtFilmSample*, BearingFilmSample* bearing) const {
   BearingFilmSample& b = *bearing;
-  b.present = true;
-  b.journal_ecc_global = kin_.ecc;
-  b.journal_ecc_rod = Rotation(rod_angle_).transpose() * kin_.ecc;
-  b.eps = kin_.eps_true;
-  b.eps_dot = kin_.state.eps_dot;
+  ReportKinematics(kin_, rod_angle_, bearing);
   b.moft = result_.moft;
   b.fpl = result_.friction_power_loss;
   b.max_pressure = result_.max_pressure;

@@ -49,6 +49,11 @@ class LubricatedBigEndElement final : public multibody::JointForceElement,
 
   BigEndKinematics Kinematics(const multibody::BodyState& crank,
                               const multibody::BodyState& rod) const;
+  /// The journal's position and eccentricity (journal_ecc_*, eps, eps_dot, present) at the
+  /// given body states, as ReportFilm gives them, without a film solve; the film fields of
+  /// `bearing` are left alone.
+  void ReportMotion(const multibody::BodyState& crank, const multibody::BodyState& rod,
+                    BearingFilmSample* bearing) const;
   const lubrication::BearingSolver& solver() const { return *solver_; }
   /// A cancel honoured inside the film solve (ReynoldsFem::SetStopCheck).
   void SetStopCheck(const StopCheck& check) { solver_->fem().SetStopCheck(check); }

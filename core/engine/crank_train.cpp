@@ -4,6 +4,7 @@
 #include <numbers>
 
 #include "core/base/input_error.hpp"
+#include "core/coupling/lubricated_big_end_element.hpp"
 #include "core/multibody/joints.hpp"
 
 namespace filmdyn::engine {
@@ -107,6 +108,29 @@ CrankTrain BuildCrankTrain(const EngineCase& c, double rpm, PressureCurve pressu
   return train;
 }
 
+namespace {
+
+struct SecondaryMotion {
+  double lateral = 0.0, tilt = 0.0, lateral_velocity = 0.0, tilt_rate = 0.0;
+};
+
+// The piston's secondary motion: e0 of the paper's eq. 2 — the piston axis at pin height, i.e.
+// the pin minus C_p along the tilted pin arm (= pin X − C_p to second order in the tilt) — the
+// tilt and their rates.
+SecondaryMotion SecondaryMotionOf(const BodyState& piston, const CrankTrainLayout& lay,
+                                  const EngineCase& c) {
+  const Eigen::Vector2d arm = multibody::Rotation(piston.Angle()) * lay.piston_pin_point;
+  SecondaryMotion m;
+  m.lateral = piston.q[0] + arm.x() - c.geometry.pin_offset * std::cos(piston.Angle());
+  m.lateral_velocity = multibody::PointVelocity(piston, lay.piston_pin_point).x() +
+                       c.geometry.pin_offset * std::sin(piston.Angle()) * piston.AngularVelocity();
+  m.tilt = piston.Angle();
+  m.tilt_rate = piston.AngularVelocity();
+  return m;
+}
+
+}  // namespace
+
 CrankTrainSample SampleCrankTrain(CrankTrain& train, const EngineCase& c, double t,
                                   const multibody::SystemState& integrated) {
   multibody::MultibodySystem& sys = *train.system;
@@ -137,22 +161,16 @@ CrankTrainSample SampleCrankTrain(CrankTrain& train, const EngineCase& c, double
                                   eval.acceleration[3 * lay.piston + 2] * multibody::Perp(pin_arm) -
                                   wp * wp * pin_arm;
   s.piston_acceleration = pin_acc.y();
-  // Secondary motion (zero for the ideal liner): pin lateral position relative to C_p, tilt.
-  // e0 of the paper's eq. 2: the piston axis at pin height, i.e. the pin minus C_p along the
-  // tilted pin arm (= pin X − C_p to second order in the tilt). With a lubricated skirt, of the
+  // Secondary motion (zero for the ideal liner). With a lubricated skirt, of the
   // integrated state the film was solved at, so that a sample's piston state and its film
   // forces belong together (the projected state's lateral velocity differs by the constraint
   // drift, up to ~2e-5 m/s: a few per cent of the squeeze part of the film force).
-  const BodyState secondary = train.skirt_element != nullptr ? integrated.Body(lay.piston) : piston;
-  const Eigen::Vector2d secondary_arm =
-      multibody::Rotation(secondary.Angle()) * lay.piston_pin_point;
-  s.piston_lateral =
-      secondary.q[0] + secondary_arm.x() - c.geometry.pin_offset * std::cos(secondary.Angle());
-  s.piston_lateral_velocity =
-      multibody::PointVelocity(secondary, lay.piston_pin_point).x() +
-      c.geometry.pin_offset * std::sin(secondary.Angle()) * secondary.AngularVelocity();
-  s.piston_tilt = secondary.Angle();
-  s.piston_tilt_rate = secondary.AngularVelocity();
+  const SecondaryMotion secondary = SecondaryMotionOf(
+      train.skirt_element != nullptr ? integrated.Body(lay.piston) : piston, lay, c);
+  s.piston_lateral = secondary.lateral;
+  s.piston_lateral_velocity = secondary.lateral_velocity;
+  s.piston_tilt = secondary.tilt;
+  s.piston_tilt_rate = secondary.tilt_rate;
   const BodyState rod = state.Body(lay.rod);
   s.rod_angle = rod.Angle();
   s.rod_angular_velocity = rod.AngularVelocity();
@@ -185,6 +203,52 @@ CrankTrainSample SampleCrankTrain(CrankTrain& train, const EngineCase& c, double
     s.liner_moment_about_pin = s.skirt.moment_about_pin;
   }
   return s;
+}
+
+MotionSample SampleMotion(const CrankTrain& train, const EngineCase& c, double t,
+                          const multibody::SystemState& state) {
+  const CrankTrainLayout& lay = train.layout;
+  MotionSample m;
+  m.time = t;
+  m.crank_angle = train.gas_force->CrankAngle(state);
+  if (train.skirt_element != nullptr) {
+    const SecondaryMotion secondary = SecondaryMotionOf(state.Body(lay.piston), lay, c);
+    m.piston_present = true;
+    m.piston_lateral = secondary.lateral;
+    m.piston_tilt = secondary.tilt;
+    m.piston_lateral_velocity = secondary.lateral_velocity;
+    m.piston_tilt_rate = secondary.tilt_rate;
+  }
+  if (const auto* big_end =
+          dynamic_cast<const coupling::LubricatedBigEndElement*>(train.big_end_element)) {
+    BearingFilmSample b;
+    big_end->ReportMotion(state.Body(lay.crank), state.Body(lay.rod), &b);
+    m.journal_present = true;
+    m.journal_ecc_rod = b.journal_ecc_rod;
+    m.eps = b.eps;
+    m.eps_dot = b.eps_dot;
+  }
+  return m;
+}
+
+MotionSample MotionOf(const CrankTrainSample& s) {
+  MotionSample m;
+  m.time = s.time;
+  m.crank_angle = s.crank_angle;
+  m.piston_present = s.skirt.present;
+  if (m.piston_present) {
+    m.piston_lateral = s.piston_lateral;
+    m.piston_tilt = s.piston_tilt;
+    m.piston_lateral_velocity = s.piston_lateral_velocity;
+    m.piston_tilt_rate = s.piston_tilt_rate;
+  }
+  m.journal_present = s.bearing.present;
+  if (m.journal_present) {
+    m.journal_ecc_rod = s.bearing.journal_ecc_rod;
+    m.eps = s.bearing.eps;
+    m.eps_dot = s.bearing.eps_dot;
+  }
+  return m;
 }
 
 }  // namespace filmdyn::engine

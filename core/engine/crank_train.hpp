@@ -82,4 +82,28 @@ struct CrankTrainSample {
 CrankTrainSample SampleCrankTrain(CrankTrain& train, const EngineCase& engine_case, double t,
                                   const multibody::SystemState& state);
 
+/// The motion of the two clearance joints at one instant: the piston's secondary motion and the
+/// big-end journal's position and eccentricity rate. Taken from the state alone — no film solve,
+/// no force evaluation — so that a run can sample it between its output steps from the
+/// integrator's interpolating polynomial (RunResult::motion) and draw the journal orbit and the
+/// phase portraits as smooth curves. A joint that is not lubricated has no clearance motion:
+/// its `present` flag is false and its values zero.
+struct MotionSample {
+  double time = 0.0;         ///< [s]
+  double crank_angle = 0.0;  ///< unwrapped [rad]
+  bool piston_present = false;
+  double piston_lateral = 0.0, piston_tilt = 0.0;  ///< as CrankTrainSample [m], [rad]
+  double piston_lateral_velocity = 0.0, piston_tilt_rate = 0.0;
+  bool journal_present = false;
+  Eigen::Vector2d journal_ecc_rod = Eigen::Vector2d::Zero();  ///< rod frame [m]
+  double eps = 0.0;                                           ///< ε [-]
+  double eps_dot = 0.0;                                       ///< dε/dt [1/s]
+};
+
+/// The motion at the integrated state `state` (the state the film joints see).
+MotionSample SampleMotion(const CrankTrain& train, const EngineCase& engine_case, double t,
+                          const multibody::SystemState& state);
+/// The motion part of a full sample: the same values SampleMotion gives at its state.
+MotionSample MotionOf(const CrankTrainSample& sample);
+
 }  // namespace filmdyn::engine

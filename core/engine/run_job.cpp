@@ -321,7 +321,44 @@ RunResult RunSingle(const RunConfig& config, const RunMonitor& monitor,
         (skirt ? skirt->factorizations() : 0L) + (big_end ? big_end->factorizations() : 0L);
     return (skirt ? skirt->reynolds_solves() : 0L) + (big_end ? big_end->reynolds_solves() : 0L);
   };
-  std::vector<CrankTrainSample> previous, current;
+  // The reported span: a cycle's (or the run-in's) output samples and the motion over them.
+  struct Span {
+    std::vector<CrankTrainSample> samples;
+    std::vector<MotionSample> motion;
+    bool empty() const { return samples.empty(); }
+    void clear() {
+      samples.clear();
+      motion.clear();
+    }
+    const CrankTrainSample& Add(CrankTrainSample sample) {
+      motion.push_back(MotionOf(sample));
+      samples.push_back(std::move(sample));
+      return samples.back();
+    }
+  };
+  Span previous, current;
+  auto keep = [&result](Span span) {
+    result.samples = std::move(span.samples);
+    result.motion = std::move(span.motion);
+  };
+  // Motion samples between output steps: the output interval in equal parts of at most
+  // config.motion_interval. CVODE (CV_NORMAL) returns a time inside the steps it has taken by
+  // interpolation and chooses its steps independently of the times asked for, so these cost no
+  // evaluation of the films and leave every result as it is — except before its first step,
+  // whose initial size it estimates from the first time asked for: none there. Ideal joints have
+  // no clearance motion: none either.
+  const int motion_parts =
+      config.motion_interval > 0.0 && has_films
+          ? std::max(1, static_cast<int>(
+                            std::ceil(c.solver.output_interval / config.motion_interval - 1e-9)))
+          : 1;
+  auto add_motion_between = [&](double t_from, double t_to) {
+    if (motion_parts < 2 || integrator.Stats().steps == 0) return;
+    for (int j = 1; j < motion_parts; ++j) {
+      const double t_j = t_from + (t_to - t_from) * j / motion_parts;
+      current.motion.push_back(SampleMotion(train, c, t_j, integrator.AdvanceTo(t_j)));
+    }
+  };
   double crank_deg = 0.0;
   int cycle = 1;
   // Typical cycle counts (for the progress estimate): 2 for the ideal model and for film models
@@ -366,23 +403,23 @@ RunResult RunSingle(const RunConfig& config, const RunMonitor& monitor,
       for (int j = 1; j < chunks; ++j) {
         const double t = t_start * j / chunks;
         crank_deg = -(run_in - run_in * j / chunks) * 180.0 / std::numbers::pi;
-        current.push_back(SampleCrankTrain(train, c, t, integrator.AdvanceTo(t)));
+        current.Add(SampleCrankTrain(train, c, t, integrator.AdvanceTo(t)));
         result.stats = integrator.Stats();
         result.reynolds_solves = solves();
         const std::string where = AtAngle(cycle, crank_deg);
-        if (const std::string trouble = FilmTrouble(current.back()); !trouble.empty()) {
+        if (const std::string trouble = FilmTrouble(current.samples.back()); !trouble.empty()) {
           result.status = RunStatus::kFailed;
           result.message = trouble + where;
-          result.samples = std::move(current);
+          keep(std::move(current));
           result.wall_time = elapsed();
           return result;
         }
         RunProgress progress;
         progress.run_in = true;
         progress.crank_angle_deg = crank_deg;
-        progress.sample = &current.back();
+        progress.sample = &current.samples.back();
         if (report(progress, run_in_cycles * j / chunks, false, where)) {
-          result.samples = std::move(current);
+          keep(std::move(current));
           result.wall_time = elapsed();
           return result;
         }
@@ -397,10 +434,10 @@ RunResult RunSingle(const RunConfig& config, const RunMonitor& monitor,
       for (int k = 0; k < steps_per_cycle; ++k) {
         const double t = t_start + (cycle - 1) * cycle_time + k * cycle_time / steps_per_cycle;
         crank_deg = 720.0 * k / steps_per_cycle;
+        if (k > 0) add_motion_between(t - cycle_time / steps_per_cycle, t);
         const multibody::SystemState state =
             t > 0.0 ? integrator.AdvanceTo(t) : train.initial_state;
-        current.push_back(SampleCrankTrain(train, c, t, state));
-        const CrankTrainSample& sample = current.back();
+        const CrankTrainSample& sample = current.Add(SampleCrankTrain(train, c, t, state));
         result.max_constraint_violation =
             std::max(result.max_constraint_violation, sample.constraint_violation);
         result.stats = integrator.Stats();
@@ -409,7 +446,7 @@ RunResult RunSingle(const RunConfig& config, const RunMonitor& monitor,
           result.status = RunStatus::kFailed;
           result.message = trouble + AtAngle(cycle, crank_deg);
           result.cycles = cycle;
-          result.samples = std::move(current);
+          keep(std::move(current));
           result.wall_time = elapsed();
           return result;
         }
@@ -436,12 +473,12 @@ RunResult RunSingle(const RunConfig& config, const RunMonitor& monitor,
         progress.cycle = cycle;
         progress.crank_angle_deg = crank_deg;
         progress.cycle_start_time = t_start + (cycle - 1) * cycle_time;
-        progress.sample = &current.back();
+        progress.sample = &current.samples.back();
         const double work = run_in_cycles + (cycle - 1) + (k + 1.0) / steps_per_cycle;
         const bool last = cycle_end && (verdict.converged || cycle == max_cycles);
         if (report(progress, work, last, AtAngle(cycle, crank_deg))) {
           result.cycles = cycle;
-          result.samples = previous.empty() ? current : previous;
+          keep(previous.empty() ? current : previous);
           result.wall_time = elapsed();
           return result;
         }
@@ -454,7 +491,7 @@ RunResult RunSingle(const RunConfig& config, const RunMonitor& monitor,
       if (verdict.converged) {
         result.cycles_to_steady_state = cycle;
         result.status = RunStatus::kCompleted;
-        result.samples = std::move(current);
+        keep(std::move(current));
         result.stats = integrator.Stats();
         result.reynolds_solves = solves();
         result.wall_time = elapsed();
@@ -466,7 +503,7 @@ RunResult RunSingle(const RunConfig& config, const RunMonitor& monitor,
     result.message = "no periodic steady state after " + std::to_string(max_cycles) +
                      " cycles (last change " + std::to_string(result.cycle_change) +
                      " of range, in " + result.worst_quantity + ")";
-    result.samples = std::move(previous);
+    keep(std::move(previous));
   } catch (const InputError&) {
     throw;
   } catch (const StopRequested&) {
@@ -475,16 +512,16 @@ RunResult RunSingle(const RunConfig& config, const RunMonitor& monitor,
     result.message =
         (cancelled ? "cancelled" : "wall-time limit reached") + AtAngle(cycle, crank_deg);
     result.cycles = std::max(cycle, 0);
-    result.samples = previous.empty() ? current : previous;
+    keep(previous.empty() ? current : previous);
   } catch (const std::exception& error) {
     result.status = RunStatus::kFailed;
     result.message = std::string("integration failed: ") + error.what() + AtAngle(cycle, crank_deg);
     if (!current.empty()) {  // name the film state where it stopped
-      const CrankTrainSample& last = current.back();
+      const CrankTrainSample& last = current.samples.back();
       result.message += fmt::format("; last output: eps = {:.4f}, skirt gap {:.3g} um",
                                     last.bearing.eps, last.skirt.min_gap * 1e6);
     }
-    result.samples = current.empty() ? previous : current;
+    keep(current.empty() ? previous : current);
   }
   result.stats = integrator.Stats();
   result.reynolds_solves = solves();
@@ -521,6 +558,7 @@ RunResult RunJob(const RunConfig& config, const RunMonitor& monitor,
   coarse.integrator = config.integrator.ScaledTolerances(companion.tolerance_factor);
   coarse.threads = 1;
   coarse.field_callback = nullptr;
+  coarse.motion_interval = 0.0;
   std::atomic<bool> stop_coarse{false};
   RunResult coarse_result;
   std::string coarse_error;

@@ -55,7 +55,7 @@ void WriteFileAtomically(const std::filesystem::path& target, std::string_view b
 }
 
 namespace {
-constexpr const char* kRunFiles[] = {"results.csv", "summary.json", "comparison.csv",
+constexpr const char* kRunFiles[] = {"results.csv", "motion.csv", "summary.json", "comparison.csv",
                                      "comparison.md"};
 // FilmDyn's files in its subfolders, by extension.
 struct OwnFiles {
@@ -76,9 +76,11 @@ bool IsOwnFile(const std::filesystem::path& file, const OwnFiles& own) {
 
 void OutputFolder::RefuseEarlierRun(const std::filesystem::path& folder,
                                     const std::string& option) {
-  throw InputError(option, folder.string(),
-                   "holds an earlier run (results.csv, summary.json, fields/ or plots/); choose "
-                   "another folder, or pass --overwrite to replace FilmDyn's files in it");
+  throw InputError(
+      option, folder.string(),
+      "holds an earlier run (results.csv, motion.csv, summary.json, fields/ or plots/); "
+      "choose "
+      "another folder, or pass --overwrite to replace FilmDyn's files in it");
 }
 
 bool OutputFolder::HoldsEarlierRun(const std::filesystem::path& folder) {

@@ -49,6 +49,7 @@ const std::vector<ResultColumn>& ResultColumns() {
       {"bearing_contact_fpl[W]", &OutputRow::bearing_contact_fpl, "W", 1.0},
       {"bigend_force_rod_x[N]", &OutputRow::bigend_force_rod_x, "kN", 1e-3},
       {"bigend_force_rod_y[N]", &OutputRow::bigend_force_rod_y, "kN", 1e-3},
+      {"bearing_eps_rate[1/s]", &OutputRow::bearing_eps_rate, "1/s", 1.0},
       {"piston_position[m]", &OutputRow::piston_position, "mm", 1e3},
       {"piston_velocity[m/s]", &OutputRow::piston_velocity, "m/s", 1.0},
       {"piston_acceleration[m/s^2]", &OutputRow::piston_acceleration, "m/s^2", 1.0},
@@ -126,7 +127,55 @@ std::vector<std::string> ResultsHeader() {
   return header;
 }
 
-OutputRow RowFromSample(const engine::CrankTrainSample& s, engine::Model model,
+namespace {
+
+bool SkirtLubricated(engine::Model model) {
+  return model == engine::Model::kOnlySkirt || model == engine::Model::kSkirtLbrbe;
+}
+bool BigEndLubricated(engine::Model model) {
+  return model == engine::Model::kOnlyLbrbe || model == engine::Model::kSkirtLbrbe;
+}
+
+void WriteCsv(std::ostream& out, const std::vector<OutputRow>& rows,
+              const std::vector<ResultColumn>& columns) {
+  for (std::size_t c = 0; c < columns.size(); ++c) out << (c ? "," : "") << columns[c].header;
+  out << "\n";
+  for (const OutputRow& row : rows) {
+    for (std::size_t c = 0; c < columns.size(); ++c) {
+      if (c) out << ",";
+      if (const auto& value = row.*(columns[c].member)) {
+        out << fmt::format("{:.10g}", *value);
+      }
+    }
+    out << "\n";
+  }
+}
+
+}  // namespace
+
+const std::vector<ResultColumn>& MotionColumns() {
+  static const std::vector<ResultColumn> columns = [] {
+    const std::optional<double> OutputRow::*const members[] = {&OutputRow::crank_angle_deg,
+                                                               &OutputRow::time,
+                                                               &OutputRow::piston_lateral,
+                                                               &OutputRow::piston_tilt,
+                                                               &OutputRow::piston_lateral_velocity,
+                                                               &OutputRow::piston_tilt_rate,
+                                                               &OutputRow::journal_ecc_x,
+                                                               &OutputRow::journal_ecc_y,
+                                                               &OutputRow::bearing_eps,
+                                                               &OutputRow::bearing_eps_rate};
+    std::vector<ResultColumn> chosen;
+    for (const ResultColumn& column : ResultColumns()) {
+      if (std::find(std::begin(members), std::end(members), column.member) != std::end(members))
+        chosen.push_back(column);
+    }
+    return chosen;
+  }();
+  return columns;
+}
+
+OutputRow RowFromMotion(const engine::MotionSample& s, engine::Model model,
                         double cycle_start_time) {
   OutputRow r;
   const double deg = 180.0 / std::numbers::pi;
@@ -134,16 +183,46 @@ OutputRow RowFromSample(const engine::CrankTrainSample& s, engine::Model model,
   r.crank_angle_deg = std::fmod(s.crank_angle * deg, 720.0);
   if (*r.crank_angle_deg < 0) *r.crank_angle_deg += 720.0;
   if (*r.crank_angle_deg > 720.0 - 1e-9) *r.crank_angle_deg = 0.0;
-  const bool skirt_lubricated =
-      model == engine::Model::kOnlySkirt || model == engine::Model::kSkirtLbrbe;
-  const bool big_end_lubricated =
-      model == engine::Model::kOnlyLbrbe || model == engine::Model::kSkirtLbrbe;
-  // Ideal liner: no secondary motion (exactly zero, not round-off), the prismatic joint's
-  // reaction as side force and moment, frictionless.
-  r.piston_lateral = skirt_lubricated ? s.piston_lateral : 0.0;
-  r.piston_tilt = skirt_lubricated ? s.piston_tilt : 0.0;
-  r.piston_lateral_velocity = skirt_lubricated ? s.piston_lateral_velocity : 0.0;
-  r.piston_tilt_rate = skirt_lubricated ? s.piston_tilt_rate : 0.0;
+  // Ideal liner: no secondary motion (exactly zero, not round-off).
+  const bool skirt = SkirtLubricated(model);
+  r.piston_lateral = skirt ? s.piston_lateral : 0.0;
+  r.piston_tilt = skirt ? s.piston_tilt : 0.0;
+  r.piston_lateral_velocity = skirt ? s.piston_lateral_velocity : 0.0;
+  r.piston_tilt_rate = skirt ? s.piston_tilt_rate : 0.0;
+  if (BigEndLubricated(model) && s.journal_present) {  // journal orbit in the rod-fixed frame
+    r.journal_ecc_x = s.journal_ecc_rod.x();
+    r.journal_ecc_y = s.journal_ecc_rod.y();
+    r.bearing_eps = s.eps;
+    r.bearing_eps_rate = s.eps_dot;
+  }
+  if (!BigEndLubricated(model)) {  // ideal pin joint: centred journal
+    r.journal_ecc_x = 0.0;
+    r.journal_ecc_y = 0.0;
+    r.bearing_eps = 0.0;
+    r.bearing_eps_rate = 0.0;
+  }
+  return r;
+}
+
+std::vector<OutputRow> MotionRows(const engine::RunResult& result, engine::Model model) {
+  std::vector<OutputRow> rows;
+  const double start = result.samples.empty() ? 0.0 : result.samples.front().time;
+  rows.reserve(result.motion.size());
+  for (const auto& m : result.motion) rows.push_back(RowFromMotion(m, model, start));
+  return rows;
+}
+
+void WriteMotionCsv(std::ostream& out, const std::vector<OutputRow>& rows) {
+  WriteCsv(out, rows, MotionColumns());
+}
+
+OutputRow RowFromSample(const engine::CrankTrainSample& s, engine::Model model,
+                        double cycle_start_time) {
+  // Crank angle, time, secondary motion, journal position: one rule for both kinds of row.
+  OutputRow r = RowFromMotion(engine::MotionOf(s), model, cycle_start_time);
+  const bool skirt_lubricated = SkirtLubricated(model);
+  const bool big_end_lubricated = BigEndLubricated(model);
+  // Ideal liner: the prismatic joint's reaction as side force and moment, frictionless.
   if (!skirt_lubricated) {
     r.skirt_normal_force = s.liner_force_on_piston.x();
     r.skirt_friction_force = 0.0;
@@ -163,10 +242,7 @@ OutputRow RowFromSample(const engine::CrankTrainSample& s, engine::Model model,
     r.skirt_contact_friction_force = s.skirt.contact_friction_force;
     r.skirt_contact_fpl = s.skirt.contact_fpl;
   }
-  if (big_end_lubricated && s.bearing.present) {  // journal orbit in the rod-fixed frame
-    r.journal_ecc_x = s.bearing.journal_ecc_rod.x();
-    r.journal_ecc_y = s.bearing.journal_ecc_rod.y();
-    r.bearing_eps = s.bearing.eps;
+  if (big_end_lubricated && s.bearing.present) {
     r.bearing_moft = s.bearing.moft;
     r.bearing_fpl = s.bearing.fpl;
     r.bigend_force_x = s.bearing.force_on_rod.x();
@@ -177,10 +253,7 @@ OutputRow RowFromSample(const engine::CrankTrainSample& s, engine::Model model,
     r.bearing_contact_friction_force = s.bearing.contact_friction_force;
     r.bearing_contact_fpl = s.bearing.contact_fpl;
   }
-  if (!big_end_lubricated) {  // ideal pin joint: centred journal, frictionless
-    r.journal_ecc_x = 0.0;
-    r.journal_ecc_y = 0.0;
-    r.bearing_eps = 0.0;
+  if (!big_end_lubricated) {  // ideal pin joint: frictionless
     r.bearing_fpl = 0.0;
     r.bearing_friction_force = 0.0;
     r.bearing_contact_friction_force = 0.0;
@@ -213,18 +286,7 @@ OutputRow RowFromSample(const engine::CrankTrainSample& s, engine::Model model,
 }
 
 void WriteResultsCsv(std::ostream& out, const std::vector<OutputRow>& rows) {
-  const auto& columns = ResultColumns();
-  for (std::size_t c = 0; c < columns.size(); ++c) out << (c ? "," : "") << columns[c].header;
-  out << "\n";
-  for (const OutputRow& row : rows) {
-    for (std::size_t c = 0; c < columns.size(); ++c) {
-      if (c) out << ",";
-      if (const auto& value = row.*(columns[c].member)) {
-        out << fmt::format("{:.10g}", *value);
-      }
-    }
-    out << "\n";
-  }
+  WriteCsv(out, rows, ResultColumns());
 }
 
 std::filesystem::path DefaultOutputFolder(const std::string& case_name, engine::Model model,
@@ -247,6 +309,11 @@ std::vector<OutputRow> WriteRunFolder(const std::filesystem::path& directory,
   std::ostringstream csv;
   WriteResultsCsv(csv, rows);
   WriteFileAtomically(directory / "results.csv", csv.str());
+  if (config.model != engine::Model::kIdeal && !result.motion.empty()) {
+    std::ostringstream motion;
+    WriteMotionCsv(motion, MotionRows(result, config.model));
+    WriteFileAtomically(directory / "motion.csv", motion.str());
+  }
   if (before_summary) before_summary(rows);
   // Last: a summary that says "completed" is only ever beside complete files.
   WriteSummaryJson(directory / "summary.json", SummarizeRun(case_name, config, result, rows));

@@ -23,7 +23,7 @@ struct OutputRow {
       skirt_peak_pressure, skirt_peak_contact_pressure, skirt_contact_friction_force,
       skirt_contact_fpl, bearing_peak_pressure, bearing_peak_contact_pressure,
       bearing_friction_force, bearing_contact_friction_force, bearing_contact_fpl,
-      bigend_force_rod_x, bigend_force_rod_y,
+      bigend_force_rod_x, bigend_force_rod_y, bearing_eps_rate,
       // Extras (after the core columns):
       piston_position, piston_velocity, piston_acceleration, rod_angle, rod_angular_velocity,
       rod_angular_acceleration, pin_force_x, pin_force_y, main_bearing_force_x,
@@ -58,11 +58,26 @@ OutputRow RowFromSample(const engine::CrankTrainSample& sample, engine::Model mo
 
 void WriteResultsCsv(std::ostream& out, const std::vector<OutputRow>& rows);
 
+/// The columns of motion.csv, in results.csv's order: crank angle, time, the piston's secondary
+/// motion, the journal's position and ε, ε̇ — the quantities a run samples between its output
+/// steps (engine::RunResult::motion).
+const std::vector<ResultColumn>& MotionColumns();
+/// The row of a motion sample: the MotionColumns() cells, by the rules of RowFromSample (ideal
+/// joints: zeros), the others empty. RowFromSample fills these cells the same way.
+OutputRow RowFromMotion(const engine::MotionSample& sample, engine::Model model,
+                        double cycle_start_time);
+/// The motion rows of a run (times and crank angles relative to its reported cycle, as
+/// results.csv's rows).
+std::vector<OutputRow> MotionRows(const engine::RunResult& result, engine::Model model);
+/// motion.csv: MotionColumns() of each row.
+void WriteMotionCsv(std::ostream& out, const std::vector<OutputRow>& rows);
+
 /// Called by WriteRunFolder after results.csv and before summary.json, with the rows written:
 /// the caller's further outputs (fields, plots) go here, so that the summary comes last.
 using BeforeSummary = std::function<void(const std::vector<OutputRow>&)>;
 
-/// Writes results.csv, then `before_summary`'s outputs, then summary.json into `directory`
+/// Writes results.csv and motion.csv (for a model with a film joint), then
+/// `before_summary`'s outputs, then summary.json into `directory`
 /// (created), each file atomically (core/io/output_files.hpp). Returns the rows written. Throws
 /// OutputError naming the file when a write fails (the summary then stays what it was:
 /// MarkRunStarted's "running").

@@ -11,10 +11,11 @@
 namespace filmdyn::ui {
 
 PlotRun PlotRunFromRows(int id, const engine::EngineCase& engine_case, const std::string& model,
-                        double rpm, const std::vector<io::OutputRow>& rows) {
+                        double rpm, const std::vector<io::OutputRow>& rows,
+                        const std::vector<io::OutputRow>& motion_rows) {
   return {id, RunLabel(QString::fromStdString(model), rpm),
           engine_case.big_end.bearing_radius - engine_case.big_end.journal_radius,
-          RunSamplesFromRows(rows)};
+          RunSamplesFromRows(rows), RunSamplesFromRows(motion_rows)};
 }
 
 QStringList ExportStandardPlots(const std::vector<PlotRun>& runs, const QString& directory,

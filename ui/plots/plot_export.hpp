@@ -13,9 +13,11 @@
 
 namespace filmdyn::ui {
 
-/// The plot data of a run from core's rows (as written to results.csv).
+/// The plot data of a run from core's rows (as written to results.csv) and its motion rows (as
+/// written to motion.csv; io::MotionRows).
 PlotRun PlotRunFromRows(int id, const engine::EngineCase& engine_case, const std::string& model,
-                        double rpm, const std::vector<io::OutputRow>& rows);
+                        double rpm, const std::vector<io::OutputRow>& rows,
+                        const std::vector<io::OutputRow>& motion_rows);
 
 /// Writes `<directory>/<plot id>.png` and `.svg` for every standard plot, with all `runs`
 /// overlaid (one run: a run's own plots; several: a sweep comparison). Creates the directory.

@@ -327,7 +327,8 @@ void PlotPanel::updateRun(const PlotRun& run) {
     auto& points = entry.run_points[id];
     points.resize(series.size());
     for (size_t k = 0; k < series.size(); ++k) {
-      points[k] = entry.spec->curves[k].points(run.samples);
+      const PlotCurve& curve = entry.spec->curves[k];
+      points[k] = curve.points(curve.from_motion && !run.motion.empty() ? run.motion : run.samples);
       // An orbit or portrait that never leaves one point (an ideal joint's centred journal)
       // shows nothing: it counts as no data.
       if (!entry.spec->crank_angle_axis && !points[k].xy.isEmpty()) {
@@ -941,7 +942,8 @@ void PlotPanel::exportChartInteractive(int index) {
 
 PlotRun PlotRunOf(const RunRecord& run) {
   const engine::BigEndCase& big_end = run.request().engine_case.big_end;
-  return {run.id(), run.label(), big_end.bearing_radius - big_end.journal_radius, run.samples()};
+  return {run.id(), run.label(), big_end.bearing_radius - big_end.journal_radius, run.samples(),
+          run.motion()};
 }
 
 }  // namespace filmdyn::ui

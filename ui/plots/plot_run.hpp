@@ -9,13 +9,16 @@ namespace filmdyn::ui {
 
 class RunRecord;
 
-/// What the plots need of one run: its identity, label, bearing clearance and samples. The GUI
-/// makes one from a run record; headless commands from core's rows (no run record).
+/// What the plots need of one run: its identity, label, bearing clearance, samples and motion. The
+/// GUI makes one from a run record; headless commands from core's rows (no run record).
 struct PlotRun {
   int id = 0;
   QString label;                   ///< e.g. "Skirt-LBRBE 6000 rpm"
   double bearing_clearance = 0.0;  ///< radial [m] (the journal-orbit plot's circle)
   std::vector<RunSample> samples;
+  /// The clearance joints' motion between the output steps too (only the motion columns set;
+  /// empty when the run has none): curves marked PlotCurve::from_motion draw these.
+  std::vector<RunSample> motion;
 };
 /// The current samples of a run record as plot data.
 PlotRun PlotRunOf(const RunRecord& run);

@@ -58,21 +58,28 @@ PlotCurve XY(const QString& name, Column x_column, double x_scale, Column y_colu
           }};
 }
 
-// Phase portrait of a column against its time derivative (central differences in time).
-PlotCurve Phase(const QString& name, Column column, double scale, double rate_scale) {
-  return {name, [=](const Samples& samples) {
-            CurvePoints out;
-            for (size_t k = 1; k + 1 < samples.size(); ++k) {
-              const double dt = samples[k + 1][Column::kTime] - samples[k - 1][Column::kTime];
-              const double rate = (samples[k + 1][column] - samples[k - 1][column]) / dt;
-              const double x = samples[k][column] * scale;
-              if (Finite(x, rate) && dt > 0 && std::isfinite(samples[k][Column::kCrankAngle])) {
-                out.xy.append(QPointF(x, rate * rate_scale));
-                out.crank_angle.push_back(samples[k][Column::kCrankAngle]);
-              }
-            }
-            return out;
-          }};
+// A phase portrait: a column against its time derivative, drawn through the run's motion
+// samples. The rate column where it has values; runs saved before it was recorded have only the
+// column: central differences in time of their output samples then.
+PlotCurve Phase(const QString& name, Column column, Column rate_column, double scale,
+                double rate_scale) {
+  PlotCurve curve = XY(name, column, scale, rate_column, rate_scale);
+  curve.from_motion = true;
+  curve.points = [=, exact = curve.points](const Samples& samples) {
+    CurvePoints out = exact(samples);
+    if (!out.xy.isEmpty()) return out;
+    for (size_t k = 1; k + 1 < samples.size(); ++k) {
+      const double dt = samples[k + 1][Column::kTime] - samples[k - 1][Column::kTime];
+      const double rate = (samples[k + 1][column] - samples[k - 1][column]) / dt;
+      const double x = samples[k][column] * scale;
+      if (Finite(x, rate) && dt > 0 && std::isfinite(samples[k][Column::kCrankAngle])) {
+        out.xy.append(QPointF(x, rate * rate_scale));
+        out.crank_angle.push_back(samples[k][Column::kCrankAngle]);
+      }
+    }
+    return out;
+  };
+  return curve;
 }
 
 PlotSpec VsCrankAngle(QString id, QString title, QString y_title, QString y_unit,
@@ -118,10 +125,11 @@ std::vector<PlotSpec> Make() {
                                QObject::tr("dγ/dt [rad/s]"), "rad/s",
                                {VsAngle("γ̇", Column::kPistonTiltRate, 1.0)}));
   {
-    PlotSpec orbit =
-        Portrait("journal_orbit", QObject::tr("Journal orbit (rod frame)"),
-                 QObject::tr("journal centre x [µm]"), "µm", QObject::tr("journal centre y [µm]"),
-                 "µm", {XY("orbit", Column::kJournalEccX, 1e6, Column::kJournalEccY, 1e6)});
+    PlotCurve path = XY("orbit", Column::kJournalEccX, 1e6, Column::kJournalEccY, 1e6);
+    path.from_motion = true;
+    PlotSpec orbit = Portrait("journal_orbit", QObject::tr("Journal orbit (rod frame)"),
+                              QObject::tr("journal centre x [µm]"), "µm",
+                              QObject::tr("journal centre y [µm]"), "µm", {path});
     orbit.equal_axes = true;
     orbit.clearance_circle = true;
     plots.push_back(orbit);
@@ -174,14 +182,14 @@ std::vector<PlotSpec> Make() {
     PlotSpec eps =
         Portrait("phase_eps", QObject::tr("Big-end phase portrait ε / ε̇"),
                  QObject::tr("eccentricity ratio ε [-]"), "", QObject::tr("rate dε/dt [1/s]"),
-                 "1/s", {Phase("ε", Column::kBearingEps, 1.0, 1.0)});
+                 "1/s", {Phase("ε", Column::kBearingEps, Column::kBearingEpsRate, 1.0, 1.0)});
     eps.x_non_negative = true;
     plots.push_back(eps);
   }
   plots.push_back(Portrait("phase_tilt", QObject::tr("Piston phase portrait γ / dγ/dt"),
                            QObject::tr("tilt γ [mrad]"), "mrad", QObject::tr("dγ/dt [rad/s]"),
                            "rad/s",
-                           {XY("γ", Column::kPistonTilt, 1e3, Column::kPistonTiltRate, 1.0)}));
+                           {Phase("γ", Column::kPistonTilt, Column::kPistonTiltRate, 1e3, 1.0)}));
   return plots;
 }
 

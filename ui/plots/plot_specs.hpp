@@ -23,6 +23,9 @@ struct PlotCurve {
   QString name;
   /// The curve's points from a run's samples (NaN values are skipped).
   std::function<CurvePoints(const std::vector<RunSample>&)> points;
+  /// Drawn from the run's motion samples (PlotRun::motion: the output steps and the
+  /// integrator's interpolation between them) when it has them, else from its output samples.
+  bool from_motion = false;
 };
 
 struct PlotSpec {

@@ -95,6 +95,7 @@ RunBackend CoreRunBackend() {
     for (const engine::CrankTrainSample& sample : result.samples) {
       reported.push_back(ToRunSample(sample, model, report_start));
     }
+    sink.ReportMotion(RunSamplesFromRows(io::MotionRows(result, model)));
     sink.Report(std::move(reported));
     // A cancelled run stays in the run list with its curves and figures; its film fields (one
     // cycle of frames, tens of MB on fine meshes) are dropped, so that runs started and cancelled

@@ -39,6 +39,7 @@ enum class Column {
   kBearingContactFpl,
   kBigEndForceRodX,
   kBigEndForceRodY,
+  kBearingEpsRate,
   kCount
 };
 constexpr int kColumnCount = int(Column::kCount);

@@ -55,6 +55,9 @@ class RunSink {
   virtual void Statistic(const std::string& name, double value) = 0;
   /// The run's reported cycle (what results.csv holds), replacing the streamed samples.
   virtual void Report(std::vector<RunSample> reported_cycle) = 0;
+  /// The clearance joints' motion over the reported cycle, sampled between the output steps too
+  /// (io::MotionRows: the orbit and the phase portraits draw it). Called before Report.
+  virtual void ReportMotion(std::vector<RunSample> motion) { (void)motion; }
   /// A caveat on usable results (e.g. no periodic steady state within max_cycles).
   virtual void Warn(const std::string& message) { (void)message; }
   /// Core's writers of the finished run (the files `filmdyn run` writes).

@@ -41,6 +41,9 @@ class NotifyingSink : public RunSink {
   void ReportWarnings(std::vector<io::RunWarning> warnings) override {
     record_->ReportWarnings(std::move(warnings));
   }
+  void ReportMotion(std::vector<RunSample> motion) override {
+    record_->ReportMotion(std::move(motion));
+  }
   void Report(std::vector<RunSample> reported_cycle) override {
     record_->Report(std::move(reported_cycle));
     Notify();

@@ -140,6 +140,12 @@ void RunRecord::Report(std::vector<RunSample> reported_cycle) {
   ++version_;
 }
 
+void RunRecord::ReportMotion(std::vector<RunSample> motion) {
+  std::lock_guard lock(mutex_);
+  motion_ = std::move(motion);
+  ++version_;
+}
+
 void RunRecord::ReportFields(std::shared_ptr<const FieldFrames> fields) {
   std::lock_guard lock(mutex_);
   fields_ = std::move(fields);
@@ -241,6 +247,11 @@ std::vector<RunSample> RunRecord::samples() const {
   if (has_report_ && !reported_.empty()) return reported_;
   if (current_cycle_.empty()) return last_complete_cycle_;
   return current_cycle_;
+}
+
+std::vector<RunSample> RunRecord::motion() const {
+  std::lock_guard lock(mutex_);
+  return motion_;
 }
 
 RunProgress RunRecord::progress() const {

@@ -59,6 +59,7 @@ class RunRecord : public RunSink {
   void Progress(const RunProgress& progress) override;
   void Statistic(const std::string& name, double value) override;
   void Report(std::vector<RunSample> reported_cycle) override;
+  void ReportMotion(std::vector<RunSample> motion) override;
   void ReportFields(std::shared_ptr<const FieldFrames> fields) override;
   void Warn(const std::string& message) override;
   void SetWriters(RunWriters writers) override;
@@ -83,6 +84,9 @@ class RunRecord : public RunSink {
   /// The samples to show: the reported cycle once the backend reported it, otherwise the cycle
   /// in progress (or the last complete one at a cycle start). Copy, safe on any thread.
   std::vector<RunSample> samples() const;
+  /// The reported cycle's motion samples (empty until reported, and for a run that has none):
+  /// only the motion columns (io::MotionColumns) are set. Copy, safe on any thread.
+  std::vector<RunSample> motion() const;
   /// Monotonic counter bumped by every change (lets viewers skip redundant redraws).
   long version() const { return version_.load(); }
   RunProgress progress() const;
@@ -103,6 +107,7 @@ class RunRecord : public RunSink {
   std::vector<RunSample> current_cycle_;
   std::vector<RunSample> last_complete_cycle_;
   std::vector<RunSample> reported_;
+  std::vector<RunSample> motion_;
   bool has_report_ = false;
   std::shared_ptr<const FieldFrames> fields_;
   QString warning_;

@@ -30,6 +30,7 @@ constexpr char kFormat[] = "FilmDyn runs";
 constexpr int kFormatVersion = 1;
 constexpr char kIndex[] = "runs.json";
 constexpr char kSamplesSuffix[] = ".samples.csv";
+constexpr char kMotionSuffix[] = ".motion.csv";
 constexpr char kKeyPrefix[] = "run-";
 constexpr double kPi = std::numbers::pi;
 
@@ -67,17 +68,25 @@ std::string SamplesCsv(const std::vector<RunSample>& samples) {
   return out;
 }
 
+// Reads SamplesCsv's text. Columns are found by their header names: a file saved by an earlier
+// version, which lacks columns added since, reads with those columns empty (NaN).
 std::vector<RunSample> ParseSamplesCsv(const std::string& text, const fs::path& path) {
   std::istringstream in(text);
   std::string line;
   std::getline(in, line);
-  std::string header;
-  for (int c = 0; c < kColumnCount; ++c) {
-    if (c > 0) header += ',';
-    header += kColumnHeaders[size_t(c)];
-  }
-  if (line != header) {
-    throw std::runtime_error(path.string() + ": the header is not the columns this version shows");
+  std::vector<int> columns;  // the Column of each of the file's columns
+  for (std::size_t start = 0; start <= line.size();) {
+    const std::size_t end = std::min(line.find(',', start), line.size());
+    const std::string name = line.substr(start, end - start);
+    const auto known = std::find(kColumnHeaders.begin(), kColumnHeaders.end(), name);
+    if (known == kColumnHeaders.end() ||
+        std::find(columns.begin(), columns.end(), int(known - kColumnHeaders.begin())) !=
+            columns.end()) {
+      throw std::runtime_error(path.string() + ": the header's column \"" + name +
+                               "\" is not one of the columns this version shows, or repeated");
+    }
+    columns.push_back(int(known - kColumnHeaders.begin()));
+    start = end + 1;
   }
   std::vector<RunSample> samples;
   int row = 1;
@@ -85,20 +94,21 @@ std::vector<RunSample> ParseSamplesCsv(const std::string& text, const fs::path& 
     ++row;
     RunSample sample;
     std::size_t start = 0;
-    for (int c = 0; c < kColumnCount; ++c) {
+    for (std::size_t c = 0; c < columns.size(); ++c) {
       const std::size_t end = std::min(line.find(',', start), line.size());
+      const char* name = kColumnHeaders[size_t(columns[c])];
       if (end > start) {
         double v = 0;
         const auto result = std::from_chars(line.data() + start, line.data() + end, v);
         if (result.ec != std::errc() || result.ptr != line.data() + end) {
           throw std::runtime_error(path.string() + ": row " + std::to_string(row) + ", column " +
-                                   kColumnHeaders[size_t(c)] + " is not a number");
+                                   name + " is not a number");
         }
-        sample.values[size_t(c)] = v;
+        sample.values[size_t(columns[c])] = v;
       }
-      if (c + 1 < kColumnCount && end >= line.size()) {
+      if (c + 1 < columns.size() && end >= line.size()) {
         throw std::runtime_error(path.string() + ": row " + std::to_string(row) + " has " +
-                                 std::to_string(c + 1) + " of " + std::to_string(kColumnCount) +
+                                 std::to_string(c + 1) + " of " + std::to_string(columns.size()) +
                                  " columns");
       }
       start = end + 1;
@@ -162,7 +172,8 @@ RunStatus StatusFromKey(const std::string& key) {
 bool OwnEntry(const std::string& name) { return name.rfind(kKeyPrefix, 0) == 0; }
 
 std::string KeyOfEntry(std::string name) {
-  for (const std::string& suffix : {std::string(kSamplesSuffix), std::string(".tmp")}) {
+  for (const std::string& suffix :
+       {std::string(kSamplesSuffix), std::string(kMotionSuffix), std::string(".tmp")}) {
     if (name.size() > suffix.size() && name.ends_with(suffix)) {
       name.resize(name.size() - suffix.size());
     }
@@ -174,6 +185,9 @@ void AddBigEndLoads(const fs::path& results_csv, FieldFrames* frames);
 
 // Fills a run from its stored files; throws std::runtime_error naming the file and the problem.
 void Restore(RunRecord& run, const fs::path& dir, const std::string& key, bool has_folder) {
+  if (const fs::path motion = dir / (key + kMotionSuffix); fs::exists(motion)) {
+    run.ReportMotion(ParseSamplesCsv(ReadBytes(motion), motion));
+  }
   run.Report(
       ParseSamplesCsv(ReadBytes(dir / (key + kSamplesSuffix)), dir / (key + kSamplesSuffix)));
   const fs::path folder = dir / key;
@@ -397,6 +411,11 @@ bool SaveProjectRuns(const QString& project_path, const std::vector<ProjectRun>&
             throw std::runtime_error(message.toStdString());
           }
           fs::rename(tmp, dir / key);
+        }
+        // The motion first: a save interrupted between the two leaves no samples file, and the
+        // key is then written anew by the next save.
+        if (const std::vector<RunSample> motion = run->motion(); !motion.empty()) {
+          io::WriteFileAtomically(dir / (key + kMotionSuffix), SamplesCsv(motion));
         }
         io::WriteFileAtomically(dir / (key + kSamplesSuffix), SamplesCsv(run->samples()));
         run->setStoredFolder(QPath(dir / key));

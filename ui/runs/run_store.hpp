@@ -12,6 +12,9 @@
 ///                                   summary.json, fields/*.h5 + *.xdmf
 ///     dir/case.runs/<key>.samples.csv  the samples the plots show, every double to the last
 ///                                   bit (results.csv rounds to 10 digits)
+///     dir/case.runs/<key>.motion.csv   the motion samples (between the output steps too) the
+///                                   orbit and phase portraits draw, as exactly; absent for a
+///                                   run without them
 ///
 /// Every file is written atomically; runs.json last, so a save that fails leaves the previous
 /// runs.json (and the folders it names) intact. A run folder is written once under its key and

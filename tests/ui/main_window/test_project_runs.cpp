@@ -197,16 +197,18 @@ class TestProjectRuns : public QObject {
     QVERIFY(QFile::exists(c_folder + "/summary.json"));
     QVERIFY(QFile::exists(c_folder + "/fields/bearing.h5"));
     QVERIFY(QFile::exists(c_folder + "/fields/bearing.xdmf"));
+    QVERIFY(QFile::exists(c_folder + "/motion.csv"));
+    QVERIFY(c->motion().size() > 7 * c->samples().size());
 
     struct Kept {
       QString name, label, notes;
       bool visible;
-      std::vector<filmdyn::ui::RunSample> samples;
+      std::vector<filmdyn::ui::RunSample> samples, motion;
     };
     std::vector<Kept> kept;
     for (const RunHandle& run : table->runs()) {
       kept.push_back({run->name(), run->label(), run->notes(), table->isRunVisible(run->id()),
-                      run->samples()});
+                      run->samples(), run->motion()});
     }
     const auto original_fields = c->fields();
     const QByteArray original_csv = c->resultsCsv();
@@ -230,6 +232,7 @@ class TestProjectRuns : public QObject {
       QCOMPARE(t->isRunVisible(run->id()), kept[k].visible);
       QCOMPARE(again.plotPanel()->isRunVisible(run->id()), kept[k].visible);
       QVERIFY2(SameBits(run->samples(), kept[k].samples), qPrintable(run->label()));
+      QVERIFY2(SameBits(run->motion(), kept[k].motion), qPrintable(run->label()));
       QCOMPARE(run->status(), filmdyn::ui::RunStatus::kFinished);
     }
     QCOMPARE(t->baseRunId(), t->runs()[2]->id());

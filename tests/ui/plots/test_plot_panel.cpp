@@ -44,7 +44,8 @@ PlotRun RealRun(int id, engine::Model model, double rpm) {
   std::vector<io::OutputRow> rows;
   const double start = result.samples.empty() ? 0.0 : result.samples.front().time;
   for (const auto& s : result.samples) rows.push_back(io::RowFromSample(s, model, start));
-  return filmdyn::ui::PlotRunFromRows(id, config.engine_case, engine::ModelName(model), rpm, rows);
+  return filmdyn::ui::PlotRunFromRows(id, config.engine_case, engine::ModelName(model), rpm, rows,
+                                      io::MotionRows(result, model));
 }
 
 bool IsRoundStep(double step) {
@@ -237,6 +238,62 @@ class TestPlotPanel : public QObject {
     QEvent leave(QEvent::Leave);
     QCoreApplication::sendEvent(view->viewport(), &leave);
     QCOMPARE(panel.shownAngle(), 90.0);
+  }
+
+  void orbitAndPortraitsFollowTheMotionBetweenOutputSteps() {
+    // The orbit and the phase portraits are drawn through the run's motion samples (8 per output
+    // step), with the exact rates they carry; a run saved without them (an earlier version's
+    // project: no motion, no ε̇ column) still draws its portrait from central differences.
+    QVERIFY(coupled_.motion.size() >= 8 * (coupled_.samples.size() - 1));
+    PlotPanel panel;
+    panel.updateRun(coupled_);
+    auto curve = [&panel](const QString& chart, const QString& name) -> QList<QPointF> {
+      for (QAbstractSeries* s : panel.chart(panel.chartIndex(chart))->series()) {
+        if (auto* line = qobject_cast<QLineSeries*>(s); line && line->name() == name)
+          return line->points();
+      }
+      return {};
+    };
+    const QList<QPointF> orbit = curve("journal_orbit", "orbit");
+    const QList<QPointF> eps = curve("phase_eps", "ε");
+    const QList<QPointF> tilt = curve("phase_tilt", "γ");
+    QCOMPARE(orbit.size(), qsizetype(coupled_.motion.size()));
+    QCOMPARE(eps.size(), qsizetype(coupled_.motion.size()));
+    QCOMPARE(tilt.size(), qsizetype(coupled_.motion.size()));
+    for (qsizetype k = 0; k < eps.size(); k += 97) {
+      const auto& m = coupled_.motion[size_t(k)];
+      QCOMPARE(eps[k].x(), m[Column::kBearingEps]);
+      QCOMPARE(eps[k].y(), m[Column::kBearingEpsRate]);
+      QCOMPARE(orbit[k].x(), m[Column::kJournalEccX] * 1e6);
+      QCOMPARE(tilt[k].y(), m[Column::kPistonTiltRate]);
+    }
+    // Consecutive orbit points at most 1/8 °CA apart: no straight segment over an output step.
+    const auto& motion = coupled_.motion;
+    for (std::size_t k = 1; k < motion.size(); ++k) {
+      QVERIFY(motion[k][Column::kCrankAngle] - motion[k - 1][Column::kCrankAngle] < 0.126);
+    }
+
+    PlotRun saved_before = coupled_;
+    saved_before.id = 3;
+    saved_before.motion.clear();
+    for (auto& sample : saved_before.samples) sample[Column::kBearingEpsRate] = std::nan("");
+    PlotPanel old;
+    old.updateRun(saved_before);
+    QList<QPointF> old_eps;
+    for (QAbstractSeries* s : old.chart(old.chartIndex("phase_eps"))->series()) {
+      if (auto* line = qobject_cast<QLineSeries*>(s); line && line->name() == "ε")
+        old_eps = line->points();
+    }
+    QCOMPARE(old_eps.size(), qsizetype(saved_before.samples.size() - 2));
+    // Central differences over 2 °CA against the exact rate of the same output step.
+    double worst = 0.0, largest = 0.0;
+    for (qsizetype k = 0; k < old_eps.size(); ++k) {
+      const double exact = coupled_.samples[size_t(k + 1)][Column::kBearingEpsRate];
+      worst = std::max(worst, std::abs(old_eps[k].y() - exact));
+      largest = std::max(largest, std::abs(exact));
+    }
+    qInfo("ε̇ by central differences over 2 °CA: off by up to %.1f %% of the largest rate",
+          100 * worst / largest);
   }
 
   void zoomPanAndReset() {
