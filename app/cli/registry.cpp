@@ -10,6 +10,7 @@ const std::vector<Command>& AllCommands() {
     // One line per subcommand; only commands that work are listed.
     list.push_back(MakeRunCommand());
     list.push_back(MakeSweepCommand());
+    list.push_back(MakeStudyCommand());
     list.push_back(MakeReproduceCommand());
     list.push_back(MakeBearingCommand());
     list.push_back(MakeSkirtCommand());

@@ -11,6 +11,7 @@ Command MakeBearingCommand();
 Command MakeSkirtCommand();
 Command MakeRunCommand();
 Command MakeSweepCommand();
+Command MakeStudyCommand();
 Command MakeReproduceCommand();
 Command MakeValidateCommand();
 

@@ -55,7 +55,7 @@ Command MakeRunCommand() {
     const io::LoadedCase loaded = LoadCaseArgument(args, &streams.err);
     const engine::EngineCase& c = loaded.value;
     const engine::Model model =
-        args.Value("model") ? engine::ParseModel(*args.Value("model")) : ModelFromCase(c);
+        args.Value("model") ? engine::ParseModel(*args.Value("model")) : engine::ModelOfCase(c);
     const double rpm = args.Double("rpm").value_or(c.operating.rpm);
     engine::RunConfig config = BuildRunConfig(loaded, model, rpm, args.Value("pressure-curve"),
                                               args.Double("time-limit").value_or(0.0));

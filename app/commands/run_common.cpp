@@ -22,15 +22,6 @@ std::atomic<bool> g_interrupted{false};
 extern "C" void OnInterrupt(int) { g_interrupted = true; }
 }  // namespace
 
-engine::Model ModelFromCase(const engine::EngineCase& c) {
-  const bool skirt = c.skirt.model == engine::JointModel::kLubricated;
-  const bool big_end = c.big_end.model == engine::JointModel::kLubricated;
-  return skirt && big_end ? engine::Model::kSkirtLbrbe
-         : skirt          ? engine::Model::kOnlySkirt
-         : big_end        ? engine::Model::kOnlyLbrbe
-                          : engine::Model::kIdeal;
-}
-
 engine::RunConfig BuildRunConfig(const io::LoadedCase& loaded, engine::Model model, double rpm,
                                  const std::optional<std::string>& pressure_csv,
                                  double time_limit) {

@@ -21,9 +21,6 @@
 
 namespace filmdyn::cli {
 
-/// The model the case's joint settings describe (used when --model/--models is not given).
-engine::Model ModelFromCase(const engine::EngineCase& c);
-
 /// A run configuration: the cylinder pressure from `pressure_csv` when given, else the case's
 /// curve for `rpm`; `time_limit` [s] (0 = none). Throws InputError naming the option/field.
 engine::RunConfig BuildRunConfig(const io::LoadedCase& loaded, engine::Model model, double rpm,

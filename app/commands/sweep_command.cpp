@@ -58,7 +58,7 @@ Command MakeSweepCommand() {
       for (const auto& name : SplitList(*list)) models.push_back(engine::ParseModel(name));
       if (models.empty()) throw InputError("--models", "'" + *list + "'", "names no model");
     } else {
-      models.push_back(ModelFromCase(c));
+      models.push_back(engine::ModelOfCase(c));
     }
     const int jobs = JobsOption(args);
     const double time_limit = args.Double("time-limit").value_or(0.0);

@@ -73,6 +73,11 @@ void SweepRunner::Work() {
       outcome.rows = io::WriteRunFolder(
           job.output_folder, job.case_name, job.config, outcome.result,
           [&](const std::vector<io::OutputRow>&) { fields.Write(job.output_folder / "fields"); });
+      if (!job.keep_results) {
+        outcome.rows = {};
+        outcome.result.samples = {};
+        outcome.result.motion = {};
+      }
     } catch (const std::exception& error) {
       outcome.error = error.what();
     }

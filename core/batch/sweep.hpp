@@ -26,6 +26,9 @@ struct SweepJob {
   /// An earlier run's files in output_folder: replaced (true) or the job fails naming the
   /// folder (false; the sweep command checks every folder before it starts).
   bool overwrite = false;
+  /// The outcome keeps the run's samples, motion and rows (false: only its status, counters and
+  /// figures — a study of thousands of runs reads them back from the folders).
+  bool keep_results = true;
 };
 
 struct SweepOutcome {

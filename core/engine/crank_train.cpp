@@ -112,6 +112,7 @@ namespace {
 
 struct SecondaryMotion {
   double lateral = 0.0, tilt = 0.0, lateral_velocity = 0.0, tilt_rate = 0.0;
+  double com_lateral_velocity = 0.0;  // X velocity of the centre of mass (the body's own ẋ)
 };
 
 // The piston's secondary motion: e0 of the paper's eq. 2 — the piston axis at pin height, i.e.
@@ -126,6 +127,7 @@ SecondaryMotion SecondaryMotionOf(const BodyState& piston, const CrankTrainLayou
                        c.geometry.pin_offset * std::sin(piston.Angle()) * piston.AngularVelocity();
   m.tilt = piston.Angle();
   m.tilt_rate = piston.AngularVelocity();
+  m.com_lateral_velocity = piston.Velocity().x();
   return m;
 }
 
@@ -171,6 +173,7 @@ CrankTrainSample SampleCrankTrain(CrankTrain& train, const EngineCase& c, double
   s.piston_lateral_velocity = secondary.lateral_velocity;
   s.piston_tilt = secondary.tilt;
   s.piston_tilt_rate = secondary.tilt_rate;
+  s.piston_com_lateral_velocity = secondary.com_lateral_velocity;
   const BodyState rod = state.Body(lay.rod);
   s.rod_angle = rod.Angle();
   s.rod_angular_velocity = rod.AngularVelocity();
@@ -218,6 +221,7 @@ MotionSample SampleMotion(const CrankTrain& train, const EngineCase& c, double t
     m.piston_tilt = secondary.tilt;
     m.piston_lateral_velocity = secondary.lateral_velocity;
     m.piston_tilt_rate = secondary.tilt_rate;
+    m.piston_com_lateral_velocity = secondary.com_lateral_velocity;
   }
   if (const auto* big_end =
           dynamic_cast<const coupling::LubricatedBigEndElement*>(train.big_end_element)) {
@@ -241,6 +245,7 @@ MotionSample MotionOf(const CrankTrainSample& s) {
     m.piston_tilt = s.piston_tilt;
     m.piston_lateral_velocity = s.piston_lateral_velocity;
     m.piston_tilt_rate = s.piston_tilt_rate;
+    m.piston_com_lateral_velocity = s.piston_com_lateral_velocity;
   }
   m.journal_present = s.bearing.present;
   if (m.journal_present) {

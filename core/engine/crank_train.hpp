@@ -65,6 +65,9 @@ struct CrankTrainSample {
   double rod_angle = 0.0, rod_angular_velocity = 0.0, rod_angular_acceleration = 0.0;
   double piston_lateral = 0.0, piston_tilt = 0.0;  ///< pin X − C_p, piston θ
   double piston_lateral_velocity = 0.0, piston_tilt_rate = 0.0;
+  /// X velocity of the piston's centre of mass [m/s], of the same state as the secondary motion
+  /// (the integrated state with a lubricated skirt).
+  double piston_com_lateral_velocity = 0.0;
   double cylinder_pressure = 0.0;  ///< [Pa]
   double gas_force = 0.0;          ///< (p − p_cc)·π R_l², + toward the crank [N]
   double gas_power = 0.0;          ///< power of the gas force on the piston [W]
@@ -94,6 +97,7 @@ struct MotionSample {
   bool piston_present = false;
   double piston_lateral = 0.0, piston_tilt = 0.0;  ///< as CrankTrainSample [m], [rad]
   double piston_lateral_velocity = 0.0, piston_tilt_rate = 0.0;
+  double piston_com_lateral_velocity = 0.0;  ///< X velocity of the piston's centre of mass [m/s]
   bool journal_present = false;
   Eigen::Vector2d journal_ecc_rod = Eigen::Vector2d::Zero();  ///< rod frame [m]
   double eps = 0.0;                                           ///< ε [-]

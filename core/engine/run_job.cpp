@@ -54,6 +54,15 @@ void ApplyModel(Model model, EngineCase* c) {
   c->big_end.model = big_end ? JointModel::kLubricated : JointModel::kIdeal;
 }
 
+Model ModelOfCase(const EngineCase& c) {
+  const bool skirt = c.skirt.model == JointModel::kLubricated;
+  const bool big_end = c.big_end.model == JointModel::kLubricated;
+  return skirt && big_end ? Model::kSkirtLbrbe
+         : skirt          ? Model::kOnlySkirt
+         : big_end        ? Model::kOnlyLbrbe
+                          : Model::kIdeal;
+}
+
 std::string StatusName(RunStatus status) {
   switch (status) {
     case RunStatus::kCompleted:

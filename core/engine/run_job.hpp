@@ -28,6 +28,8 @@ Model ParseModel(const std::string& text);
 std::string ModelName(Model model);
 /// Sets skirt.model / big_end.model of a case for a model.
 void ApplyModel(Model model, EngineCase* engine_case);
+/// The model of a case, from its joints' models (the inverse of ApplyModel).
+Model ModelOfCase(const EngineCase& engine_case);
 
 /// The nodal fields of both lubricated joints at one output step (for the field files and the field
 /// view). The solvers' fields() (pressure, contact_pressure, fluid_fraction), film_thickness() and

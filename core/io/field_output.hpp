@@ -11,9 +11,10 @@
 /// 3D layout (metres): the bore axis is z, the skirt top at z = 0 and the skirt below it
 /// (z = −y); the skirt is written as solved, α ∈ [0, π] from the thrust side (+x) — the film is
 /// symmetric about the pin-axis plane (paper §2.1; ParaView's Reflect filter shows both halves).
-/// The bearing is drawn in the connecting-rod frame: x along the rod from the big end to the
-/// small end, the film angle θ (from the maximum film) placed at ψ = φ + π + θ, φ being the
-/// direction of the journal eccentricity in the rod frame; z across the width.
+/// The bearing is drawn in the connecting-rod frame of the journal orbit (x perpendicular to the
+/// rod, y along the rod from the big end toward the small end), the film angle θ (from the
+/// maximum film) placed at ψ = φ + π + θ, φ being the direction of the journal eccentricity in
+/// the rod frame; z across the width.
 #include <filesystem>
 #include <memory>
 #include <vector>

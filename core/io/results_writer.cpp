@@ -175,14 +175,18 @@ const std::vector<ResultColumn>& MotionColumns() {
   return columns;
 }
 
+double CycleCrankAngleDeg(double crank_angle) {
+  double deg = std::fmod(crank_angle * (180.0 / std::numbers::pi), 720.0);
+  if (deg < 0) deg += 720.0;
+  if (deg > 720.0 - 1e-9) deg = 0.0;
+  return deg;
+}
+
 OutputRow RowFromMotion(const engine::MotionSample& s, engine::Model model,
                         double cycle_start_time) {
   OutputRow r;
-  const double deg = 180.0 / std::numbers::pi;
   r.time = s.time - cycle_start_time;
-  r.crank_angle_deg = std::fmod(s.crank_angle * deg, 720.0);
-  if (*r.crank_angle_deg < 0) *r.crank_angle_deg += 720.0;
-  if (*r.crank_angle_deg > 720.0 - 1e-9) *r.crank_angle_deg = 0.0;
+  r.crank_angle_deg = CycleCrankAngleDeg(s.crank_angle);
   // Ideal liner: no secondary motion (exactly zero, not round-off).
   const bool skirt = SkirtLubricated(model);
   r.piston_lateral = skirt ? s.piston_lateral : 0.0;

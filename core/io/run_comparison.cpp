@@ -11,7 +11,16 @@ namespace filmdyn::io {
 
 namespace {
 
-enum class Reduce { kMaxAbs, kMin, kMax, kMeanFplSkirt, kMeanFplBearing, kWorstError };
+enum class Reduce {
+  kMaxAbs,
+  kMin,
+  kMax,
+  kMeanFplSkirt,
+  kMeanFplBearing,
+  kSlapEnergyMax,
+  kSlapEnergySum,
+  kWorstError
+};
 
 struct FigureRecipe {
   ComparisonFigure figure;
@@ -37,6 +46,22 @@ const std::vector<FigureRecipe>& Recipes() {
       {{"max_abs_bigend_force_y[N]", "max abs big-end F_y [N]", 1.0},
        "bigend_force_y[N]",
        Reduce::kMaxAbs},
+      {{"max_skirt_peak_pressure[Pa]", "peak skirt film pressure [MPa]", 1e-6},
+       "skirt_peak_pressure[Pa]",
+       Reduce::kMax},
+      {{"max_skirt_contact_pressure[Pa]", "peak skirt contact pressure [MPa]", 1e-6},
+       "skirt_peak_contact_pressure[Pa]",
+       Reduce::kMax},
+      {{"max_bearing_peak_pressure[Pa]", "peak big-end film pressure [MPa]", 1e-6},
+       "bearing_peak_pressure[Pa]",
+       Reduce::kMax},
+      {{"max_bearing_contact_pressure[Pa]", "peak big-end contact pressure [MPa]", 1e-6},
+       "bearing_peak_contact_pressure[Pa]",
+       Reduce::kMax},
+      // Piston slap (summary.json's kpis): the largest lateral kinetic energy at a change of
+      // thrust side, and their sum over the cycle.
+      {{"max_slap_energy[J]", "max slap energy [mJ]", 1e3}, "", Reduce::kSlapEnergyMax},
+      {{"slap_energy_sum[J]", "slap energy per cycle [mJ]", 1e3}, "", Reduce::kSlapEnergySum},
       // The largest estimated discretisation error of the run's headline figures (relative).
       {{"max_discretisation_error[-]", "max est. discretisation error [%]", 100.0},
        "",
@@ -78,6 +103,12 @@ ComparisonRow ReadComparisonRow(const std::filesystem::path& folder) {
       value = summary.mean_fpl_skirt_w;
     } else if (recipe.reduce == Reduce::kMeanFplBearing) {
       value = summary.mean_fpl_bearing_w;
+    } else if (recipe.reduce == Reduce::kSlapEnergyMax || recipe.reduce == Reduce::kSlapEnergySum) {
+      if (summary.kpis.skirt && summary.kpis.skirt->slap) {
+        const PistonSlap& slap = *summary.kpis.skirt->slap;
+        value = recipe.reduce == Reduce::kSlapEnergySum ? std::optional<double>(slap.energy_sum)
+                                                        : slap.energy_max.value_or(0.0);
+      }
     } else if (recipe.reduce == Reduce::kWorstError) {
       if (summary.error_estimate.Estimated()) value = summary.error_estimate.worst_relative;
     } else if (const auto e = summary.extremes.find(recipe.column); e != summary.extremes.end()) {

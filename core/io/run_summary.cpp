@@ -49,6 +49,7 @@ RunSummary SummarizeRun(const std::string& case_name, const engine::RunConfig& c
   }
   s.error_estimate = result.error_estimate;
   s.warnings = RunWarnings(config, result);
+  s.kpis = RunKpisOf(config, result);
   SolverSummary& v = s.solver;
   v.integrator = "CVODE BDF (SUNDIALS), dense Newton";
   v.steps = result.stats.steps;
@@ -97,6 +98,78 @@ std::optional<double> GetOptional(const json& object, const std::string& key,
                                   const std::string& where) {
   if (!object.is_object() || !object.contains(key) || object.at(key).is_null()) return std::nullopt;
   return Get<double>(object, key, where);
+}
+
+// "kpis": one object per lubricated joint, keys with their units in brackets.
+json JointKpisToJson(const JointKpis& k) {
+  json o;
+  o["min_moft[m]"] = k.min_moft;
+  o["min_moft_crank_angle[deg]"] = k.min_moft_crank_angle_deg;
+  o["min_moft_position_angle[deg]"] = k.min_moft_position.angle_deg;
+  if (k.min_moft_position.axial_m) o["min_moft_position_axial[m]"] = *k.min_moft_position.axial_m;
+  o["peak_pressure[Pa]"] = k.peak_pressure;
+  o["peak_pressure_crank_angle[deg]"] = Optional(k.peak_pressure_crank_angle_deg);
+  o["peak_contact_pressure[Pa]"] = k.peak_contact_pressure;
+  o["peak_contact_pressure_crank_angle[deg]"] = Optional(k.peak_contact_pressure_crank_angle_deg);
+  o["mean_fpl[W]"] = Optional(k.mean_fpl);
+  if (k.max_eps) {
+    o["max_eps[-]"] = *k.max_eps;
+    o["max_eps_crank_angle[deg]"] = Optional(k.max_eps_crank_angle_deg);
+  }
+  if (k.slap) {
+    json events = json::array();
+    for (const SlapEvent& e : k.slap->events) {
+      events.push_back({{"crank_angle[deg]", e.crank_angle_deg},
+                        {"energy[J]", e.energy},
+                        {"direction", e.to_thrust ? "to_thrust" : "to_anti_thrust"}});
+    }
+    o["slap_events"] = events;
+    o["slap_energy_max[J]"] = Optional(k.slap->energy_max);
+    o["slap_energy_max_crank_angle[deg]"] = Optional(k.slap->energy_max_crank_angle_deg);
+    o["slap_energy_sum[J]"] = k.slap->energy_sum;
+  }
+  return o;
+}
+
+JointKpis JointKpisFromJson(const json& o, const std::string& at) {
+  if (!o.is_object()) throw std::runtime_error("\"" + at + "\" is not an object");
+  JointKpis k;
+  k.min_moft = Get<double>(o, "min_moft[m]", at);
+  Read(o, "min_moft_crank_angle[deg]", at, &k.min_moft_crank_angle_deg);
+  Read(o, "min_moft_position_angle[deg]", at, &k.min_moft_position.angle_deg);
+  k.min_moft_position.axial_m = GetOptional(o, "min_moft_position_axial[m]", at);
+  Read(o, "peak_pressure[Pa]", at, &k.peak_pressure);
+  k.peak_pressure_crank_angle_deg = GetOptional(o, "peak_pressure_crank_angle[deg]", at);
+  Read(o, "peak_contact_pressure[Pa]", at, &k.peak_contact_pressure);
+  k.peak_contact_pressure_crank_angle_deg =
+      GetOptional(o, "peak_contact_pressure_crank_angle[deg]", at);
+  k.mean_fpl = GetOptional(o, "mean_fpl[W]", at);
+  k.max_eps = GetOptional(o, "max_eps[-]", at);
+  k.max_eps_crank_angle_deg = GetOptional(o, "max_eps_crank_angle[deg]", at);
+  if (o.contains("slap_events") || o.contains("slap_energy_sum[J]")) {
+    PistonSlap slap;
+    json events = json::array();
+    Read(o, "slap_events", at, &events);
+    if (!events.is_array()) throw std::runtime_error("\"" + at + ".slap_events\" is not an array");
+    for (std::size_t i = 0; i < events.size(); ++i) {
+      const std::string where = at + ".slap_events." + std::to_string(i);
+      SlapEvent e;
+      e.crank_angle_deg = Get<double>(events[i], "crank_angle[deg]", where);
+      e.energy = Get<double>(events[i], "energy[J]", where);
+      const std::string direction = Get<std::string>(events[i], "direction", where);
+      if (direction != "to_thrust" && direction != "to_anti_thrust") {
+        throw std::runtime_error("\"" + where + ".direction\" is \"" + direction +
+                                 "\" (allowed: to_thrust, to_anti_thrust)");
+      }
+      e.to_thrust = direction == "to_thrust";
+      slap.events.push_back(e);
+    }
+    slap.energy_max = GetOptional(o, "slap_energy_max[J]", at);
+    slap.energy_max_crank_angle_deg = GetOptional(o, "slap_energy_max_crank_angle[deg]", at);
+    Read(o, "slap_energy_sum[J]", at, &slap.energy_sum);
+    k.slap = std::move(slap);
+  }
+  return k;
 }
 
 RunSummary FromJson(const json& j);
@@ -179,6 +252,10 @@ json SummaryToJson(const RunSummary& s) {
     warnings.push_back(o);
   }
   j["warnings"] = warnings;
+  json kpis = json::object();
+  if (s.kpis.skirt) kpis["skirt"] = JointKpisToJson(*s.kpis.skirt);
+  if (s.kpis.big_end) kpis["big_end"] = JointKpisToJson(*s.kpis.big_end);
+  j["kpis"] = kpis;
   return j;
 }
 
@@ -293,6 +370,13 @@ RunSummary FromJson(const json& j) {
     w.position_axial_m = GetOptional(o, "position_axial_m", at);
     Read(o, "fields", at, &w.fields);
     s.warnings.push_back(std::move(w));
+  }
+  json kpis = json::object();  // absent in a summary written before the KPIs existed
+  Read(j, "kpis", "", &kpis);
+  if (!kpis.is_object()) throw std::runtime_error("\"kpis\" is not an object");
+  if (kpis.contains("skirt")) s.kpis.skirt = JointKpisFromJson(kpis.at("skirt"), "kpis.skirt");
+  if (kpis.contains("big_end")) {
+    s.kpis.big_end = JointKpisFromJson(kpis.at("big_end"), "kpis.big_end");
   }
   return s;
 }

@@ -10,6 +10,7 @@
 
 #include "core/engine/run_job.hpp"
 #include "core/io/results_writer.hpp"
+#include "core/io/run_kpis.hpp"
 #include "core/io/run_warnings.hpp"
 
 namespace filmdyn::io {
@@ -66,6 +67,9 @@ struct RunSummary {
   engine::ErrorEstimate error_estimate;
   /// The engineering warnings of the run (io::RunWarnings; "warnings").
   std::vector<RunWarning> warnings;
+  /// The engine KPIs of the reported cycle per lubricated joint (io::RunKpisOf; "kpis"; empty
+  /// for the ideal model and in a summary written before they existed).
+  RunKpis kpis;
 };
 
 /// The summary of a finished (or stopped) run from its configuration, result and the rows

@@ -11,6 +11,7 @@
 #include "core/engine/case_schema.hpp"
 #include "core/io/case_file.hpp"
 #include "core/io/results_writer.hpp"
+#include "core/io/run_kpis.hpp"
 
 namespace filmdyn::io {
 
@@ -20,7 +21,7 @@ constexpr double kDeg = 180.0 / std::numbers::pi;
 
 // The crank angle of a sample within the reported cycle [°CA] (results.csv's first column).
 double CrankAngleDeg(const engine::CrankTrainSample& s) {
-  return RowFromSample(s, engine::Model::kIdeal, 0.0).crank_angle_deg.value_or(0.0);
+  return CycleCrankAngleDeg(s.crank_angle);
 }
 
 // "355–390 °CA" pieces of the intervals where `crossed` holds, one per run of consecutive
@@ -79,20 +80,13 @@ void FilmRatioWarning(const std::vector<engine::CrankTrainSample>& samples, bool
   std::vector<bool> crossed;
   for (double r : ratios) crossed.push_back(r < w.limit);
   w.crank_angle_ranges_deg = Ranges(angles, crossed, whole_cycle);
-  const engine::CrankTrainSample& s = samples[std::size_t(worst)];
-  std::string where;
-  if (skirt) {
-    w.position_angle_deg = s.skirt.moft_alpha * kDeg;
-    w.position_axial_m = s.skirt.moft_y;
-    where = fmt::format("{:.0f}° from the thrust axis, {:.1f} mm below the skirt top",
-                        *w.position_angle_deg, *w.position_axial_m * 1e3);
-  } else {
-    const Eigen::Vector2d& e = s.bearing.journal_ecc_rod;
-    double angle = std::atan2(e.y(), e.x()) * kDeg;
-    if (angle < 0.0) angle += 360.0;
-    w.position_angle_deg = angle;
-    where = fmt::format("{:.0f}° around the big-end eye in the rod frame", angle);
-  }
+  const FilmPosition position = MinFilmPosition(samples[std::size_t(worst)], skirt);
+  w.position_angle_deg = position.angle_deg;
+  w.position_axial_m = position.axial_m;
+  const std::string where =
+      skirt ? fmt::format("{:.0f}° from the thrust axis, {:.1f} mm below the skirt top",
+                          position.angle_deg, position.axial_m.value_or(0.0) * 1e3)
+            : fmt::format("{:.0f}° around the big-end eye in the rod frame", position.angle_deg);
   const double moft = lambda * sigma;
   w.message = fmt::format(
       "{} film thickness ratio h/σ = {:.2f} (minimum film {:.3g} µm, composite roughness σ = "
@@ -208,8 +202,7 @@ std::vector<RunWarning> RunWarnings(const engine::RunConfig& config,
   std::vector<RunWarning> out;
   const engine::EngineCase& c = config.engine_case;
   const auto& samples = result.samples;
-  const bool whole_cycle = result.status == engine::RunStatus::kCompleted ||
-                           result.status == engine::RunStatus::kNotConverged;
+  const bool whole_cycle = ReportsWholeCycle(result);
   const bool skirt = c.skirt.model == engine::JointModel::kLubricated;
   const bool big_end = c.big_end.model == engine::JointModel::kLubricated;
   if (skirt) {

@@ -783,6 +783,32 @@ void PlotPanel::paintOverlay(const ChartEntry& entry, QPainter* painter) const {
   // Crank-angle marks every 90 °CA and arrows along the direction of travel (orbit, load).
   if (entry.spec->equal_axes) {
     painter->setClipRect(area);
+    // A mark's label goes outward from the plot's origin (the bearing centre, the zero load)
+    // or, where that place is taken by an earlier label (the curve passes a spot twice, e.g.
+    // 270° and 630°), to the nearest free place around the mark.
+    std::vector<QRectF> labels;
+    const QPointF origin = to_pos(QPointF(0, 0));
+    auto draw_label = [&](QPointF at, const QString& text) {
+      const QSizeF size = metrics.size(0, text);
+      const QPointF outward = at - origin;
+      const double base = std::hypot(outward.x(), outward.y()) > 1e-6
+                              ? std::atan2(outward.y(), outward.x())
+                              : -std::numbers::pi / 4;
+      QRectF chosen;
+      for (int i = 0; i < 16 && chosen.isNull(); ++i) {
+        const double a = base + (i % 2 ? 1 : -1) * ((i + 1) / 2) * (std::numbers::pi / 8);
+        const QPointF dir(std::cos(a), std::sin(a));
+        const double reach =
+            6.0 + 0.5 * (std::abs(dir.x()) * size.width() + std::abs(dir.y()) * size.height());
+        const QRectF rect(at + dir * reach - QPointF(size.width() / 2, size.height() / 2), size);
+        const bool free = std::none_of(labels.begin(), labels.end(),
+                                       [&rect](const QRectF& r) { return r.intersects(rect); });
+        if (free && area.contains(rect)) chosen = rect;
+      }
+      if (chosen.isNull()) chosen = QRectF(at + QPointF(5, -4 - size.height()), size);
+      labels.push_back(chosen);
+      painter->drawText(chosen, Qt::AlignCenter, text);
+    };
     for (int id : runs) {
       const auto points = entry.run_points.value(id);
       for (size_t k = 0; k < points.size(); ++k) {
@@ -795,7 +821,7 @@ void PlotPanel::paintOverlay(const ChartEntry& entry, QPainter* painter) const {
             painter->drawEllipse(at, 3.5, 3.5);
             if (id == runs.front()) {  // labels once (the first run); the others' marks align
               painter->setPen(colour.darker(130));
-              painter->drawText(at + QPointF(5, -4), QString("%1°").arg(mark));
+              draw_label(at, QString("%1°").arg(mark));
             }
           }
           // An arrowhead half way to the next mark, along the local tangent.

@@ -35,6 +35,11 @@ class TestRunComparison : public QObject {
                    "skirt_moft[m]": {"min": 1.2e-6, "max": 2.0e-5},
                    "bearing_eps[-]": {"min": 0.1, "max": 0.93}},
       "mean_fpl_w": {"skirt": 120.5, "bearing": null},
+      "kpis": {"skirt": {"min_moft[m]": 1.2e-6, "min_moft_crank_angle[deg]": 400,
+                         "min_moft_position_angle[deg]": 0, "peak_pressure[Pa]": 5e6,
+                         "peak_contact_pressure[Pa]": 0, "mean_fpl[W]": 120.5,
+                         "slap_energy_max[J]": 7.5e-5, "slap_energy_max_crank_angle[deg]": 358,
+                         "slap_energy_sum[J]": 2.25e-4, "slap_events": []}},
       "discretisation_error": {"status": "estimated", "worst_relative": 0.028}})");
     const auto row = filmdyn::io::ReadComparisonRow(folder);
     QCOMPARE(row.folder, std::string("c-skirt-lbrbe-6000"));
@@ -48,6 +53,9 @@ class TestRunComparison : public QObject {
     QVERIFY(!row.figures[FigureIndex("mean_bearing_fpl[W]")].has_value());  // null
     QVERIFY(!row.figures[FigureIndex("min_bearing_moft[m]")].has_value());  // absent
     QCOMPARE(*row.figures[FigureIndex("max_discretisation_error[-]")], 0.028);
+    // The piston slap from the KPIs.
+    QCOMPARE(*row.figures[FigureIndex("max_slap_energy[J]")], 7.5e-5);
+    QCOMPARE(*row.figures[FigureIndex("slap_energy_sum[J]")], 2.25e-4);
 
     std::ostringstream csv;
     filmdyn::io::WriteComparisonCsv(csv, {row});

@@ -38,7 +38,8 @@ io::RunSummary Full() {
       .headline = {{"skirt_fpl_mean[W]", "mean skirt FPL", 659.75, false},
                    {"bearing_moft_min[m]", "min big-end MOFT", 1.1e-6, true}},
       .error_estimate = {},
-      .warnings = {}};
+      .warnings = {},
+      .kpis = {}};
   engine::ErrorEstimate& e = s.error_estimate;
   e.status = "estimated";
   e.figures = {{{"bearing_moft_min[m]", "min big-end MOFT", 1.1e-6, true}, 1.0e-6, 3.3e-8, 0.03}};
@@ -64,6 +65,27 @@ io::RunSummary Full() {
   assumed.value = 2.0;
   assumed.fields = {"skirt.peklenik", "big_end.peklenik"};
   s.warnings = {contact, assumed};
+  io::JointKpis skirt;
+  skirt.min_moft = 1.9e-6;
+  skirt.min_moft_crank_angle_deg = 381.0;
+  skirt.min_moft_position = {12.5, 0.0215};
+  skirt.peak_pressure = 3.1e7;
+  skirt.peak_pressure_crank_angle_deg = 376.0;
+  skirt.peak_contact_pressure = 0.0;  // no contact: no crank angle
+  skirt.mean_fpl = 659.75;
+  skirt.slap = io::PistonSlap{{{12.25, 0.004, true}, {371.5, 0.031, false}}, 0.031, 371.5, 0.035};
+  io::JointKpis big_end;
+  big_end.min_moft = 1.1e-6;
+  big_end.min_moft_crank_angle_deg = 372.0;
+  big_end.min_moft_position = {181.5, std::nullopt};
+  big_end.peak_pressure = 9.5e7;
+  big_end.peak_pressure_crank_angle_deg = 371.0;
+  big_end.peak_contact_pressure = 2.5e6;
+  big_end.peak_contact_pressure_crank_angle_deg = 372.0;
+  big_end.mean_fpl = 120.5;
+  big_end.max_eps = 0.97;
+  big_end.max_eps_crank_angle_deg = 373.0;
+  s.kpis = {skirt, big_end};
   return s;
 }
 
@@ -78,6 +100,13 @@ void CompareSummaries(const io::RunSummary& a, const io::RunSummary& b) {
   QCOMPARE(a.solver.relative_tolerance, b.solver.relative_tolerance);
   QCOMPARE(a.pressure_peak_crank_angle_deg, b.pressure_peak_crank_angle_deg);
   QCOMPARE(a.error_estimate.Summary(), b.error_estimate.Summary());
+  QCOMPARE(a.kpis.skirt.has_value(), b.kpis.skirt.has_value());
+  QCOMPARE(a.kpis.big_end.has_value(), b.kpis.big_end.has_value());
+  if (a.kpis.skirt && b.kpis.skirt) {
+    QCOMPARE(a.kpis.skirt->slap->events.size(), b.kpis.skirt->slap->events.size());
+    QCOMPARE(a.kpis.skirt->slap->energy_sum, b.kpis.skirt->slap->energy_sum);
+    QCOMPARE(a.kpis.skirt->min_moft_position.axial_m, b.kpis.skirt->min_moft_position.axial_m);
+  }
 }
 
 }  // namespace
@@ -113,10 +142,11 @@ class TestRunSummary : public QObject {
                             "pressure_curve",
                             "headline",
                             "discretisation_error",
-                            "warnings"}) {
+                            "warnings",
+                            "kpis"}) {
       QVERIFY2(j.contains(key), key);
     }
-    QCOMPARE(j.size(), std::size_t(20));
+    QCOMPARE(j.size(), std::size_t(21));
     QCOMPARE(j["discretisation_error"]["figures"]["bearing_moft_min[m]"]["relative"].get<double>(),
              0.03);
     QVERIFY(j["discretisation_error"]["warning"].get<bool>());  // 3 % > 1 %
@@ -125,6 +155,13 @@ class TestRunSummary : public QObject {
     QCOMPARE(back.error_estimate.figures.at(0).figure.label, std::string("min big-end MOFT"));
     QCOMPARE(back.error_estimate.worst_relative, 0.03);
     QVERIFY(j["mean_fpl_w"]["bearing"].is_null());
+    // KPIs: one object per lubricated joint; no crank angle for a peak of 0; the slap's events.
+    QCOMPARE(j["kpis"]["skirt"]["slap_events"].size(), std::size_t(2));
+    QCOMPARE(j["kpis"]["skirt"]["slap_events"][1]["direction"].get<std::string>(),
+             std::string("to_anti_thrust"));
+    QVERIFY(j["kpis"]["skirt"]["peak_contact_pressure_crank_angle[deg]"].is_null());
+    QCOMPARE(j["kpis"]["big_end"]["max_eps[-]"].get<double>(), 0.97);
+    QVERIFY(!j["kpis"]["big_end"].contains("min_moft_position_axial[m]"));
   }
 
   void errorsNameTheKey() {
@@ -168,6 +205,7 @@ class TestRunSummary : public QObject {
     QCOMPARE(s.extremes.at("gas_force[N]").max, hi);
     QCOMPARE(*s.mean_fpl_skirt_w, 0.0);  // ideal joints: frictionless
     QVERIFY(!s.extremes.contains("skirt_moft[m]"));  // no film: no values, no extremes
+    QVERIFY(!s.kpis.skirt && !s.kpis.big_end);       // nor KPIs
   }
 };
 

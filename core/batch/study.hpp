@@ -1,0 +1,133 @@
+#pragma once
+/// @file A design study (`filmdyn study`): a study file names factors — any case field by its
+/// dotted path, the crank speed (operating.rpm) and the model among them — with levels or a
+/// range, and a design (full factorial, Latin hypercube, one factor at a time); each design
+/// point is one run of the base case with the factors' values set, in its own folder of the
+/// study folder. The study folder and its files are the interface: a study is run, resumed and
+/// collected from what is on disk (docs/study.md).
+///
+///     DIR/study.json     the study as read (every path resolved, ranges expanded), written
+///                        before any run: a second run into DIR must be the same study
+///     DIR/design.csv     one row per point: point number, folder, each factor's value (SI)
+///     DIR/point-NNNN/    the point's run folder, exactly what `filmdyn run` writes
+///     DIR/study.csv      one row per point: the design, the status and the figures of each
+///                        run (written by collecting the folders; empty cells where none yet)
+///     DIR/study.md       the same for people, the status counts, the main effects and the best
+///                        points
+#include <cstdint>
+#include <filesystem>
+#include <iosfwd>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/engine/run_job.hpp"
+#include "core/io/case_file.hpp"
+
+namespace filmdyn::batch {
+
+enum class StudyDesign { kFullFactorial, kLatinHypercube, kOneAtATime };
+/// "full-factorial", "latin-hypercube", "one-at-a-time".
+std::string StudyDesignName(StudyDesign design);
+
+/// The factor path that sets the model of a point (levels: skirt-lbrbe, only-skirt, ...).
+inline constexpr char kModelFactor[] = "model";
+
+/// One factor: a case field (or kModelFactor) and its values. Numbers are SI, as in a case file.
+struct StudyFactor {
+  std::string path;
+  /// Discrete levels (numbers), in the order given or expanded from a range with `count`.
+  std::vector<double> levels;
+  /// Discrete levels of a text-valued factor (the model; a joint model "ideal"/"lubricated").
+  std::vector<std::string> text_levels;
+  /// A range [lo, hi] for the Latin hypercube (sampled continuously; integers rounded).
+  std::optional<std::pair<double, double>> range;
+  bool integer = false;  ///< an integer case field (mesh counts, cycles)
+  std::string unit;      ///< the field's SI unit ("" for the model)
+
+  bool is_text() const { return !text_levels.empty(); }
+  /// Number of discrete levels (0 for a continuous range in a Latin hypercube).
+  std::size_t level_count() const { return is_text() ? text_levels.size() : levels.size(); }
+};
+
+/// A study file as read and checked (ReadStudyFile).
+struct Study {
+  std::string name;
+  std::filesystem::path study_file;         ///< where it was read from (messages)
+  std::filesystem::path case_file;          ///< the base case; empty = the embedded default case
+  std::vector<std::string> base_overrides;  ///< "path=value", applied to the base case first
+  StudyDesign design = StudyDesign::kFullFactorial;
+  int points = 0;          ///< Latin hypercube: the number of points
+  std::uint64_t seed = 1;  ///< Latin hypercube: the random generator's seed
+  std::vector<StudyFactor> factors;
+  bool write_fields = false;  ///< fields/ in every point's folder (off by default: volume)
+  double time_limit_s = 0.0;  ///< per run; 0 = none
+};
+
+/// One design point: the value of each factor (as the case-file text it sets).
+struct StudyPoint {
+  int number = 0;                              ///< 1-based
+  std::string folder;                          ///< "point-0001"
+  std::vector<std::string> values;             ///< one per factor: "3e-05", "skirt-lbrbe"
+  std::vector<std::optional<double>> numbers;  ///< the numeric values (empty for text)
+};
+
+/// Reads and checks a study file: every factor path is a case field the schema knows (or
+/// "model"), every level within the field's range, a range only where the design samples
+/// ranges. Throws InputError naming the file and the key (e.g. "study.json: factors[2].levels[1]")
+/// with the value and what is allowed.
+Study ReadStudyFile(const std::filesystem::path& path);
+/// The same from the file's text; `path` names it in messages and resolves the case file.
+Study ParseStudy(const std::string& text, const std::filesystem::path& path);
+
+/// The design's points, in a fixed order (factorial: the last factor varies fastest; Latin
+/// hypercube: reproducible from the seed; one at a time: the base point first, then each factor
+/// through its levels with the others at the base case's values).
+std::vector<StudyPoint> DesignPoints(const Study& study, const engine::EngineCase& base);
+
+/// The base case of the study (its case file or the embedded default, with its overrides).
+io::LoadedCase LoadStudyBase(const Study& study);
+/// The case of a point: the base case with the point's values set (through the case reader, so
+/// every field's range and the rules between fields are checked). Throws InputError naming the
+/// point and the field.
+io::LoadedCase LoadPointCase(const Study& study, const StudyPoint& point);
+
+/// The study as study.json holds it (a canonical form: a re-run compares it byte for byte).
+std::string StudyJson(const Study& study);
+/// design.csv.
+void WriteDesignCsv(std::ostream& out, const Study& study, const std::vector<StudyPoint>& points);
+
+/// What a point's folder says of it.
+enum class PointState { kPending, kRunning, kDone, kIncomplete, kFailed };
+std::string PointStateName(PointState state);
+/// Done: summary.json says the run reached its end ("completed" or "not-converged"). Running:
+/// it says "running" and another process holds the folder's lock. Incomplete: started but
+/// stopped (cancelled, time limit, or killed: "running" with no lock held). Failed: the run
+/// failed, or the folder cannot be read (`reason` says why). Pending: no summary.json.
+PointState ReadPointState(const std::filesystem::path& folder, std::string* reason = nullptr);
+
+/// One row of study.csv.
+struct StudyRow {
+  StudyPoint point;
+  PointState state = PointState::kPending;
+  std::string status;  ///< the run's status from summary.json, or the state's name
+  std::string reason;  ///< why a point failed or is incomplete
+  std::optional<double> wall_time_s;
+  std::vector<std::optional<double>> figures;  ///< io::ComparisonFigures(), SI
+};
+
+/// Reads every point's folder under `dir` (design.csv gives the points).
+std::vector<StudyRow> CollectStudy(const std::filesystem::path& dir, const Study& study);
+/// study.csv (SI): point, folder, the factors, state, status, wall time, the figures.
+void WriteStudyCsv(std::ostream& out, const Study& study, const std::vector<StudyRow>& rows);
+/// study.md: the design, counts per state, the table (display units), the main effects of each
+/// factor on each figure (mean over the points at each level, done points only) and, when
+/// `rank_by` names a figure key, the best points by it (smallest first, or largest when
+/// `largest_first`).
+std::string StudyMarkdown(const Study& study, const std::vector<StudyRow>& rows,
+                          const std::string& rank_by = {}, bool largest_first = false);
+
+/// Reads DIR/study.json back (a study folder's own copy). Throws InputError naming the file.
+Study ReadStudyFolder(const std::filesystem::path& dir);
+
+}  // namespace filmdyn::batch

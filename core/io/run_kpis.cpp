@@ -1,0 +1,200 @@
+#include "core/io/run_kpis.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "core/io/results_writer.hpp"
+
+namespace filmdyn::io {
+
+namespace {
+
+constexpr double kDeg = 180.0 / std::numbers::pi;
+
+// Index of the output step where `value` is smallest (largest when `largest`) among the samples
+// where `present` holds and the value is finite; the first on a tie. samples.size() when none.
+template <typename Present, typename Value>
+std::size_t Extreme(const std::vector<engine::CrankTrainSample>& samples, Present present,
+                    Value value, bool largest) {
+  std::size_t at = samples.size();
+  for (std::size_t k = 0; k < samples.size(); ++k) {
+    const double v = value(samples[k]);
+    if (!present(samples[k]) || !std::isfinite(v)) continue;
+    if (at == samples.size() || (largest ? v > value(samples[at]) : v < value(samples[at]))) {
+      at = k;
+    }
+  }
+  return at;
+}
+
+// The headline figure `key` of the samples, if present and finite.
+std::optional<double> Headline(const std::vector<engine::HeadlineFigure>& figures,
+                               const std::string& key) {
+  for (const engine::HeadlineFigure& f : figures) {
+    if (f.key == key && std::isfinite(f.value)) return f.value;
+  }
+  return std::nullopt;
+}
+
+// The piston's lateral and angular velocity at one instant.
+struct PistonVelocity {
+  double time = 0.0;
+  double lateral = 0.0;  // X velocity of the centre of mass [m/s]
+  double angular = 0.0;  // [rad/s]
+};
+
+// The velocities at time t, linear between the neighbouring entries of `track` (time order);
+// the end values outside it.
+PistonVelocity At(const std::vector<PistonVelocity>& track, double t) {
+  const auto after = std::upper_bound(track.begin(), track.end(), t,
+                                      [](double x, const PistonVelocity& p) { return x < p.time; });
+  if (after == track.begin()) return track.front();
+  if (after == track.end()) return track.back();
+  const PistonVelocity &a = *(after - 1), &b = *after;
+  const double s = (t - a.time) / (b.time - a.time);
+  return {t, a.lateral + s * (b.lateral - a.lateral), a.angular + s * (b.angular - a.angular)};
+}
+
+PistonSlap SlapOf(const std::vector<engine::CrankTrainSample>& samples,
+                  const std::vector<engine::MotionSample>& motion, double mass, double inertia,
+                  bool whole_cycle) {
+  PistonSlap slap;
+  const std::size_t n = samples.size();
+  if (n < 2) return slap;
+  // The velocities from the motion samples (every output step and the integrator's own
+  // interpolation between them); a run without motion samples (data from before they existed)
+  // falls back to the output samples' own values, which are the motion at the output steps.
+  std::vector<PistonVelocity> track;
+  auto add = [&track](const engine::MotionSample& m) {
+    if (m.piston_present && (track.empty() || m.time > track.back().time)) {
+      track.push_back({m.time, m.piston_com_lateral_velocity, m.piston_tilt_rate});
+    }
+  };
+  if (!motion.empty()) {
+    for (const engine::MotionSample& m : motion) add(m);
+  } else {
+    for (const engine::CrankTrainSample& s : samples) add(engine::MotionOf(s));
+  }
+  if (track.empty()) return slap;
+  // One cycle later the motion repeats: the first step's velocities close the wrap interval.
+  const double period = (samples.back().time - samples.front().time) * static_cast<double>(n) /
+                        static_cast<double>(n - 1);
+  if (whole_cycle && track.front().time == samples.front().time) {
+    PistonVelocity image = track.front();
+    image.time += period;
+    track.push_back(image);
+  }
+  // Consecutive output steps, and the last with the first one cycle later when the samples are
+  // a whole cycle: that event comes last in time, and its crank angle, within the cycle, reads
+  // small when it falls past the cycle's end.
+  const std::size_t pairs = whole_cycle ? n : n - 1;
+  for (std::size_t k = 0; k < pairs; ++k) {
+    const engine::CrankTrainSample &a = samples[k], &b = samples[(k + 1) % n];
+    const bool wrap = k + 1 == n;
+    const double fa = a.skirt.normal_force, fb = b.skirt.normal_force;
+    if (!a.skirt.present || !b.skirt.present || !std::isfinite(fa) || !std::isfinite(fb)) continue;
+    // Negative = pressed onto the major-thrust wall (results.csv's skirt_normal_force).
+    if ((fa < 0.0) == (fb < 0.0)) continue;
+    const double s = fa / (fa - fb);  // where the linear interpolant of the force is zero
+    const double tb = b.time + (wrap ? period : 0.0);
+    const double phib = b.crank_angle + (wrap ? 4.0 * std::numbers::pi : 0.0);
+    const PistonVelocity v = At(track, a.time + s * (tb - a.time));
+    SlapEvent e;
+    e.crank_angle_deg = CycleCrankAngleDeg(a.crank_angle + s * (phib - a.crank_angle));
+    e.energy = 0.5 * mass * v.lateral * v.lateral + 0.5 * inertia * v.angular * v.angular;
+    e.to_thrust = fb < 0.0;
+    slap.energy_sum += e.energy;
+    if (!slap.energy_max || e.energy > *slap.energy_max) {
+      slap.energy_max = e.energy;
+      slap.energy_max_crank_angle_deg = e.crank_angle_deg;
+    }
+    slap.events.push_back(e);
+  }
+  return slap;
+}
+
+// The film KPIs of one joint, if it has samples.
+std::optional<JointKpis> FilmKpisOf(const std::vector<engine::CrankTrainSample>& samples,
+                                    bool skirt) {
+  using S = engine::CrankTrainSample;
+  const auto present = [skirt](const S& s) { return skirt ? s.skirt.present : s.bearing.present; };
+  const std::size_t none = samples.size();
+  const std::size_t min_moft = Extreme(
+      samples, present, [skirt](const S& s) { return skirt ? s.skirt.moft : s.bearing.moft; },
+      false);
+  if (min_moft == none) return std::nullopt;
+  auto angle = [&samples](std::size_t k) { return CycleCrankAngleDeg(samples[k].crank_angle); };
+  JointKpis j;
+  const S& at = samples[min_moft];
+  j.min_moft = skirt ? at.skirt.moft : at.bearing.moft;
+  j.min_moft_crank_angle_deg = angle(min_moft);
+  j.min_moft_position = MinFilmPosition(at, skirt);
+  // A peak and its crank angle; no angle when the peak is 0 (nowhere in the cycle).
+  auto peak = [&](double (*value)(const S&), double* peak_value, std::optional<double>* where) {
+    const std::size_t k = Extreme(samples, present, value, true);
+    if (k == none) return;
+    *peak_value = value(samples[k]);
+    if (*peak_value > 0.0) *where = angle(k);
+  };
+  if (skirt) {
+    peak([](const S& s) { return s.skirt.max_pressure; }, &j.peak_pressure,
+         &j.peak_pressure_crank_angle_deg);
+    peak([](const S& s) { return s.skirt.max_contact_pressure; }, &j.peak_contact_pressure,
+         &j.peak_contact_pressure_crank_angle_deg);
+  } else {
+    peak([](const S& s) { return s.bearing.max_pressure; }, &j.peak_pressure,
+         &j.peak_pressure_crank_angle_deg);
+    peak([](const S& s) { return s.bearing.max_contact_pressure; }, &j.peak_contact_pressure,
+         &j.peak_contact_pressure_crank_angle_deg);
+    const std::size_t k = Extreme(
+        samples, present, [](const S& s) { return s.bearing.eps; }, true);
+    if (k != none) {
+      j.max_eps = samples[k].bearing.eps;
+      j.max_eps_crank_angle_deg = angle(k);
+    }
+  }
+  j.mean_fpl = Headline(engine::HeadlineFigures(samples),
+                        skirt ? "skirt_fpl_mean[W]" : "bearing_fpl_mean[W]");
+  return j;
+}
+
+}  // namespace
+
+FilmPosition MinFilmPosition(const engine::CrankTrainSample& s, bool skirt) {
+  FilmPosition p;
+  if (skirt) {
+    p.angle_deg = s.skirt.moft_alpha * kDeg;
+    p.axial_m = s.skirt.moft_y;
+  } else {
+    const Eigen::Vector2d& e = s.bearing.journal_ecc_rod;
+    p.angle_deg = std::atan2(e.y(), e.x()) * kDeg;
+    if (p.angle_deg < 0.0) p.angle_deg += 360.0;
+  }
+  return p;
+}
+
+bool ReportsWholeCycle(const engine::RunResult& result) {
+  return result.status == engine::RunStatus::kCompleted ||
+         result.status == engine::RunStatus::kNotConverged;
+}
+
+RunKpis ComputeRunKpis(const std::vector<engine::CrankTrainSample>& samples,
+                       const std::vector<engine::MotionSample>& motion, double piston_mass,
+                       double piston_inertia, bool whole_cycle) {
+  RunKpis kpis;
+  kpis.skirt = FilmKpisOf(samples, true);
+  kpis.big_end = FilmKpisOf(samples, false);
+  if (kpis.skirt)
+    kpis.skirt->slap = SlapOf(samples, motion, piston_mass, piston_inertia, whole_cycle);
+  return kpis;
+}
+
+RunKpis RunKpisOf(const engine::RunConfig& config, const engine::RunResult& result) {
+  const engine::CrankTrainGeometry& g = config.engine_case.geometry;
+  return ComputeRunKpis(result.samples, result.motion, g.piston_mass, g.piston_inertia,
+                        ReportsWholeCycle(result));
+}
+
+}  // namespace filmdyn::io

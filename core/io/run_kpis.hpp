@@ -1,0 +1,82 @@
+#pragma once
+/// @file The engine KPIs of a run ("kpis" in summary.json): per lubricated joint, the extremes
+/// of its film over the reported cycle with where in the cycle (and, for the minimum film, where
+/// in the joint) they occur, its mean friction power and, for the skirt, the piston slap — the
+/// piston's lateral kinetic energy at each change of thrust side. One row per run for design
+/// studies; keys, units and definitions in docs/outputs.md.
+#include <optional>
+#include <vector>
+
+#include "core/engine/run_job.hpp"
+
+namespace filmdyn::io {
+
+/// Where the minimum film of a lubricated joint is at one sample. Skirt: angle from the thrust
+/// axis [deg] (0 = thrust side, 180 = anti-thrust side) and distance below the skirt top [m].
+/// Big end: direction of the journal's eccentricity in the rod-fixed frame, counter-clockwise
+/// from the rod-frame x axis, in [0, 360) [deg] (90 = toward the small end); no axial position
+/// (the film is uniform across an aligned bearing). The one rule of the KPIs and the film
+/// warnings.
+struct FilmPosition {
+  double angle_deg = 0.0;
+  std::optional<double> axial_m;  ///< skirt only
+};
+FilmPosition MinFilmPosition(const engine::CrankTrainSample& sample, bool skirt);
+
+/// Whether a run's reported samples are one whole cycle, so that its last output step is
+/// followed by its first (completed or not converged); a stopped run's are judged as they are.
+bool ReportsWholeCycle(const engine::RunResult& result);
+
+/// One change of thrust side of the piston.
+struct SlapEvent {
+  double crank_angle_deg = 0.0;  ///< within the cycle, [0, 720)
+  double energy = 0.0;           ///< ½ m v_x² + ½ I ω² of the piston there [J]
+  bool to_thrust = false;        ///< onto the major-thrust wall (else onto the anti-thrust wall)
+};
+
+/// The piston slap of a cycle: every change of thrust side in time order, the largest energy
+/// (with its crank angle; none without an event) and the sum.
+struct PistonSlap {
+  std::vector<SlapEvent> events;
+  std::optional<double> energy_max;  ///< [J]
+  std::optional<double> energy_max_crank_angle_deg;
+  double energy_sum = 0.0;  ///< [J]
+};
+
+/// The KPIs of one lubricated joint over the reported cycle. Crank angles [°CA] are within the
+/// cycle, of the output step where the extreme occurs (the first on a tie).
+struct JointKpis {
+  double min_moft = 0.0;  ///< [m]
+  double min_moft_crank_angle_deg = 0.0;
+  FilmPosition min_moft_position;  ///< at min_moft_crank_angle_deg
+  double peak_pressure = 0.0;      ///< largest hydrodynamic film pressure [Pa]
+  /// None when the peak is 0 (no film pressure anywhere in the cycle): there is no "where".
+  std::optional<double> peak_pressure_crank_angle_deg;
+  double peak_contact_pressure = 0.0;  ///< largest asperity contact pressure [Pa]
+  std::optional<double> peak_contact_pressure_crank_angle_deg;  ///< none when 0 (no contact)
+  /// Mean friction power loss [W]: the headline figure's (engine::HeadlineFigures), the plain
+  /// mean of the cycle's equally spaced output samples.
+  std::optional<double> mean_fpl;
+  std::optional<double> max_eps;  ///< big end: largest eccentricity ratio [-]
+  std::optional<double> max_eps_crank_angle_deg;
+  std::optional<PistonSlap> slap;  ///< skirt only
+};
+
+/// The KPIs of a run: an entry per lubricated joint that has samples (none for the ideal model).
+struct RunKpis {
+  std::optional<JointKpis> skirt;
+  std::optional<JointKpis> big_end;
+};
+
+/// The KPIs of a reported cycle's output samples and motion samples (engine::RunResult::samples
+/// and ::motion). `piston_mass` [kg] and `piston_inertia` [kg·m²] (about the centre of mass)
+/// weigh the slap energy. `whole_cycle`: the samples are one whole cycle, so the change of
+/// thrust side between the last output step and the first counts too. Without motion samples
+/// the slap's velocities come from the output samples themselves.
+RunKpis ComputeRunKpis(const std::vector<engine::CrankTrainSample>& samples,
+                       const std::vector<engine::MotionSample>& motion, double piston_mass,
+                       double piston_inertia, bool whole_cycle);
+/// The KPIs of a finished (or stopped) run: what it computed.
+RunKpis RunKpisOf(const engine::RunConfig& config, const engine::RunResult& result);
+
+}  // namespace filmdyn::io

@@ -1,0 +1,185 @@
+// `filmdyn study` through the real executable: a bad study refused before anything runs, the
+// dry run, a small factorial study run for real (Ideal and a coarse Only-LBRBE at two speeds),
+// its folders, study.csv and study.md; a second run that skips every finished point and leaves
+// the tables byte for byte; an incomplete point re-run alone; a different study refused in the
+// same folder; `status` and `collect`; points that stop early recorded with their reason.
+#include <QDir>
+#include <QFile>
+#include <QProcess>
+#include <QTemporaryDir>
+#include <QtTest>
+
+namespace {
+
+struct Result {
+  int exit_code = -1;
+  QString out;
+  QString err;
+};
+
+Result Run(const QStringList& arguments, int timeout_ms = 300000) {
+  QProcess process;
+  process.start(FILMDYN_EXECUTABLE, arguments);
+  if (!process.waitForFinished(timeout_ms)) {
+    process.kill();
+    return {};
+  }
+  return {process.exitCode(), QString::fromUtf8(process.readAllStandardOutput()),
+          QString::fromUtf8(process.readAllStandardError())};
+}
+
+QByteArray Read(const QString& path) {
+  QFile f(path);
+  return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+}
+
+void Write(const QString& path, const QByteArray& text) {
+  QFile f(path);
+  QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
+  f.write(text);
+}
+
+// Ideal and Only-LBRBE on a coarse bearing mesh, at 2000 and 6000 rpm: four quick points.
+const char kStudy[] = R"({
+  "name": "quick",
+  "design": "full-factorial",
+  "set": {"big_end.mesh_theta": 24, "big_end.mesh_z": 6, "solver.error_estimate": 0,
+          "solver.max_cycles": 2},
+  "factors": [
+    {"path": "model", "levels": ["ideal", "only-lbrbe"]},
+    {"path": "operating.rpm", "levels": [2000, 6000]}
+  ]
+})";
+
+}  // namespace
+
+class TestCliStudy : public QObject {
+  Q_OBJECT
+ private slots:
+  void aBadStudyIsRefusedBeforeAnythingRuns() {
+    QTemporaryDir dir;
+    const QString file = dir.filePath("bad.json");
+    Write(
+        file,
+        R"({"design": "full-factorial", "factors": [{"path": "skirt.clearance", "levels": [1e-5]}]})");
+    const QString out = dir.filePath("out");
+    const Result r = Run({"study", file, "--out", out});
+    QCOMPARE(r.exit_code, 2);
+    QVERIFY2(r.err.contains("bad.json: factors[0].path = \"skirt.clearance\": is not a case field"),
+             qPrintable(r.err));
+    QVERIFY(!QDir(out).exists());
+    // A level outside the field's range, named with the field and what is allowed.
+    Write(
+        file,
+        R"({"design": "one-at-a-time", "factors": [{"path": "lubricant.viscosity", "levels": [0.02, 0]}]})");
+    const Result range = Run({"study", file, "--out", out});
+    QCOMPARE(range.exit_code, 2);
+    QVERIFY2(range.err.contains("factors[1]") || range.err.contains("factors[0].levels[1]"),
+             qPrintable(range.err));
+    QVERIFY2(range.err.contains("lubricant.viscosity"), qPrintable(range.err));
+    QVERIFY(!QDir(out).exists());
+  }
+
+  void aStudyRunsResumesAndCollects() {
+    QTemporaryDir dir;
+    const QString file = dir.filePath("quick.json");
+    Write(file, kStudy);
+    const QString out = dir.filePath("quick");
+
+    const Result dry = Run({"study", file, "--out", out, "--dry-run"});
+    QCOMPARE(dry.exit_code, 0);
+    QVERIFY2(dry.out.startsWith("point,folder,model,operating.rpm[rpm]\n1,point-0001,ideal,2000\n"),
+             qPrintable(dry.out));
+    QCOMPARE(dry.out.count('\n'), 5);
+    QVERIFY(!QDir(out).exists());
+
+    const Result first =
+        Run({"study", file, "--out", out, "--jobs", "2", "--rank-by", "mean_bearing_fpl[W]"});
+    QVERIFY2(first.exit_code == 0, qPrintable(first.err));
+    QVERIFY2(first.err.contains("4 points (full-factorial), 0 already done, 4 to run"),
+             qPrintable(first.err));
+    QVERIFY2(first.err.contains("study: 4 points, 4 done"), qPrintable(first.err));
+    for (const char* point : {"point-0001", "point-0002", "point-0003", "point-0004"}) {
+      QVERIFY(QFile::exists(out + "/" + point + "/results.csv"));
+      QVERIFY(QFile::exists(out + "/" + point + "/summary.json"));
+      QVERIFY(!QDir(out + "/" + point + "/fields").exists());  // fields are off in studies
+    }
+    const QByteArray csv = Read(out + "/study.csv");
+    const QList<QByteArray> lines = csv.trimmed().split('\n');
+    QCOMPARE(lines.size(), 5);
+    QVERIFY2(
+        lines[0].startsWith("point,folder,model,operating.rpm[rpm],state,status,wall_time[s],"),
+        lines[0].constData());
+    QVERIFY(lines[0].contains("min_bearing_moft[m]"));
+    QVERIFY2(lines[3].startsWith("3,point-0003,only-lbrbe,2000,done,completed,"),
+             lines[3].constData());
+    // The Only-LBRBE points have a big-end MOFT, the Ideal ones none (an empty cell).
+    const QList<QByteArray> header = lines[0].split(',');
+    const int moft = int(header.indexOf("min_bearing_moft[m]"));
+    QVERIFY(moft > 0);
+    QVERIFY(lines[1].split(',').at(moft).isEmpty());
+    QVERIFY(lines[3].split(',').at(moft).toDouble() > 1e-7);
+    const QByteArray md = Read(out + "/study.md");
+    QVERIFY(md.contains("# Study: quick"));
+    QVERIFY(md.contains("## Main effects"));
+    QVERIFY(md.contains("### operating.rpm[rpm]"));
+    QVERIFY(md.contains("## Best points by mean bearing FPL"));
+
+    // Again: nothing to run, the tables unchanged byte for byte.
+    const Result again = Run({"study", file, "--out", out, "--rank-by", "mean_bearing_fpl[W]"});
+    QCOMPARE(again.exit_code, 0);
+    QVERIFY2(again.err.contains("4 already done, 0 to run"), qPrintable(again.err));
+    QCOMPARE(Read(out + "/study.csv"), csv);
+    QCOMPARE(Read(out + "/study.md"), md);
+
+    // A point left incomplete (its run was cancelled) is run again, alone.
+    const QString summary = out + "/point-0004/summary.json";
+    QByteArray text = Read(summary);
+    QVERIFY(text.contains("\"status\": \"completed\""));
+    text.replace("\"status\": \"completed\"", "\"status\": \"cancelled\"");
+    Write(summary, text);
+    const Result status = Run({"study", "status", out});
+    QCOMPARE(status.exit_code, 0);
+    QVERIFY2(status.out.startsWith("4 points, 3 done, 1 incomplete\npoint-0004: incomplete"),
+             qPrintable(status.out));
+    const Result resumed = Run({"study", file, "--out", out});
+    QCOMPARE(resumed.exit_code, 0);
+    QVERIFY2(resumed.err.contains("3 already done, 1 to run"), qPrintable(resumed.err));
+    QVERIFY(Read(summary).contains("\"status\": \"completed\""));
+
+    // collect rebuilds the tables from the folders alone.
+    QVERIFY(QFile::remove(out + "/study.csv"));
+    const Result collect = Run({"study", "collect", out});
+    QCOMPARE(collect.exit_code, 0);
+    QVERIFY2(collect.err.contains("4 points, 4 done"), qPrintable(collect.err));
+    QCOMPARE(Read(out + "/study.csv").count('\n'), 5);
+
+    // Another study into the same folder is refused.
+    Write(file, QByteArray(kStudy).replace("6000", "4000"));
+    const Result other = Run({"study", file, "--out", out});
+    QCOMPARE(other.exit_code, 2);
+    QVERIFY2(other.err.contains("holds a different study"), qPrintable(other.err));
+  }
+
+  void pointsThatStopEarlyAreRecordedWithTheirReason() {
+    // A wall-time limit no film run can meet: every Only-LBRBE point stops early; each is
+    // recorded as incomplete with its reason, and none stops the others.
+    QTemporaryDir dir;
+    const QString file = dir.filePath("short.json");
+    QByteArray study(kStudy);
+    study.replace("\"name\": \"quick\",", "\"name\": \"short\", \"time_limit_s\": 0.05,");
+    Write(file, study);
+    const QString out = dir.filePath("short");
+    const Result r = Run({"study", file, "--out", out, "--quiet"});
+    QCOMPARE(r.exit_code, 1);
+    QVERIFY2(r.err.contains("point-0003: time-limit"), qPrintable(r.err));
+    QVERIFY2(r.err.contains("point-0004: time-limit"), qPrintable(r.err));
+    const QList<QByteArray> lines = Read(out + "/study.csv").trimmed().split('\n');
+    QCOMPARE(lines.size(), 5);
+    QVERIFY2(lines[3].contains(",incomplete,time-limit,"), lines[3].constData());
+    QVERIFY2(lines[3].contains("wall-time limit reached"), lines[3].constData());
+  }
+};
+
+QTEST_GUILESS_MAIN(TestCliStudy)
+#include "test_cli_study.moc"

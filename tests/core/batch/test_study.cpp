@@ -1,0 +1,251 @@
+// Design studies in core: the study file's checks (every bad key, path, level and combination
+// named with the file and the key), the three designs (factorial order and size, the Latin
+// hypercube's one-point-per-stratum property and its seed, one-at-a-time around the base case),
+// the points' cases through the case reader, the canonical study.json, and a point folder's
+// state as summary.json and the folder lock tell it.
+#include <QtTest>
+
+#include <QTemporaryDir>
+#include <fstream>
+#include <set>
+
+#include "core/base/input_error.hpp"
+#include "core/batch/study.hpp"
+#include "core/engine/case_schema.hpp"
+#include "core/io/output_files.hpp"
+#include "core/io/run_summary.hpp"
+
+using namespace filmdyn;
+using batch::ParseStudy;
+using batch::Study;
+
+namespace {
+
+// The InputError's message of parsing `text`, or "" when it parses.
+std::string ErrorOf(const std::string& text) {
+  try {
+    ParseStudy(text, "s.json");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return {};
+}
+
+bool Contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+}  // namespace
+
+class TestStudy : public QObject {
+  Q_OBJECT
+ private slots:
+  void badStudiesAreRefusedNamingTheKey() {
+    const std::string ok =
+        R"({"design": "full-factorial", "factors": [{"path": "operating.rpm", "levels": [2000, 4000]}]})";
+    QCOMPARE(ErrorOf(ok), std::string());
+    struct Case {
+      const char* text;
+      const char* names;
+    };
+    const Case cases[] = {
+        {"not json", "s.json = (file): is not valid JSON"},
+        {R"({"design": "full-factorial", "factor": []})", "s.json: factor"},
+        {R"({"design": "random", "factors": []})", "s.json: design"},
+        {R"({"factors": [{"path": "operating.rpm", "levels": [1]}]})",
+         "s.json: design = (missing)"},
+        {R"({"design": "full-factorial", "factors": []})", "s.json: factors"},
+        {R"({"design": "full-factorial", "factors": [{"path": "skirt.nope", "levels": [1]}]})",
+         "s.json: factors[0].path = \"skirt.nope\": is not a case field"},
+        {R"({"design": "full-factorial", "factors": [{"path": "name", "levels": [1]}]})",
+         "cannot be a factor"},
+        {R"({"design": "full-factorial", "factors": [{"path": "lubricant.viscosity", "levels": [0.01, -1]}]})",
+         "s.json: factors[0].levels[1] (lubricant.viscosity)"},
+        {R"({"design": "full-factorial", "factors": [{"path": "big_end.mesh_z", "levels": [8.5]}]})",
+         "factors[0].levels[0] = 8.5: must be a whole number"},
+        {R"({"design": "full-factorial", "factors": [{"path": "operating.rpm", "range": [1000, 2000]}]})",
+         "a range needs \"count\""},
+        {R"({"design": "latin-hypercube", "points": 5, "factors": [{"path": "operating.rpm", "range": [1000, 2000], "count": 3}]})",
+         "factors[0].count"},
+        {R"({"design": "latin-hypercube", "factors": [{"path": "operating.rpm", "range": [1000, 2000]}]})",
+         "s.json: points = (missing)"},
+        {R"({"design": "full-factorial", "seed": 3, "factors": [{"path": "operating.rpm", "levels": [1000]}]})",
+         "s.json: seed"},
+        {R"({"design": "full-factorial", "factors": [{"path": "operating.rpm", "range": [3000, 2000], "count": 2}]})",
+         "must have low < high"},
+        {R"({"design": "full-factorial", "factors": [{"path": "operating.rpm", "levels": [1000, 1000]}]})",
+         "factors[0].levels[1] = 1000: is given twice"},
+        {R"({"design": "full-factorial", "factors": [{"path": "model", "levels": ["skirt-lbrbe", "fast"]}]})",
+         "factors[0].levels[1] = \"fast\""},
+        {R"({"design": "full-factorial", "factors": [{"path": "model", "levels": ["ideal"]}, {"path": "skirt.model", "levels": ["ideal"]}]})",
+         "factors[1].path = \"skirt.model\": is already a factor"},
+        {R"({"design": "full-factorial", "factors": [{"path": "operating.rpm", "levels": [1000, 2000]}, {"path": "operating.rpm", "levels": [3000]}]})",
+         "is already a factor"},
+        {R"({"design": "full-factorial", "factors": [
+              {"path": "operating.rpm", "range": [1000, 6000], "count": 100},
+              {"path": "lubricant.viscosity", "range": [0.01, 0.03], "count": 100},
+              {"path": "big_end.mesh_z", "range": [8, 100], "count": 20}]})",
+         "too large"},
+        {R"({"design": "full-factorial", "time_limit_s": -1, "factors": [{"path": "operating.rpm", "levels": [1000]}]})",
+         "s.json: time_limit_s = -1"},
+    };
+    for (const Case& c : cases) {
+      const std::string error = ErrorOf(c.text);
+      QVERIFY2(Contains(error, c.names),
+               qPrintable(QString::fromStdString("expected '" + std::string(c.names) + "' in '" +
+                                                 error + "' for " + c.text)));
+    }
+  }
+
+  void fullFactorialVariesTheLastFactorFastest() {
+    const Study s = ParseStudy(R"({"design": "full-factorial", "factors": [
+        {"path": "model", "levels": ["only-lbrbe", "ideal"]},
+        {"path": "operating.rpm", "range": [2000, 6000], "count": 3}]})",
+                               "s.json");
+    const auto points = batch::DesignPoints(s, engine::EngineCase{});
+    QCOMPARE(points.size(), std::size_t(6));
+    const char* expected[6][2] = {{"only-lbrbe", "2000"}, {"only-lbrbe", "4000"},
+                                  {"only-lbrbe", "6000"}, {"ideal", "2000"},
+                                  {"ideal", "4000"},      {"ideal", "6000"}};
+    for (std::size_t k = 0; k < 6; ++k) {
+      QCOMPARE(points[k].number, int(k + 1));
+      QCOMPARE(points[k].values[0], std::string(expected[k][0]));
+      QCOMPARE(points[k].values[1], std::string(expected[k][1]));
+    }
+    QCOMPARE(points[2].folder, std::string("point-0003"));
+    QCOMPARE(*points[4].numbers[1], 4000.0);
+    QVERIFY(!points[4].numbers[0]);
+  }
+
+  void latinHypercubePutsOnePointInEachStratumAndFollowsTheSeed() {
+    auto study = [](int seed) {
+      return ParseStudy(R"({"design": "latin-hypercube", "points": 20, "seed": )" +
+                            std::to_string(seed) + R"(, "factors": [
+          {"path": "lubricant.viscosity", "range": [0.01, 0.03]},
+          {"path": "big_end.mesh_z", "range": [8, 28]},
+          {"path": "model", "levels": ["ideal", "only-lbrbe"]}]})",
+                        "s.json");
+    };
+    const auto a = batch::DesignPoints(study(7), engine::EngineCase{});
+    const auto b = batch::DesignPoints(study(7), engine::EngineCase{});
+    const auto c = batch::DesignPoints(study(8), engine::EngineCase{});
+    QCOMPARE(a.size(), std::size_t(20));
+    std::set<int> strata;
+    int only_lbrbe = 0;
+    bool differs = false;
+    for (std::size_t k = 0; k < a.size(); ++k) {
+      QCOMPARE(a[k].values, b[k].values);  // the same seed: the same design, value for value
+      differs = differs || a[k].values != c[k].values;
+      const double mu = *a[k].numbers[0];
+      QVERIFY(mu >= 0.01 && mu <= 0.03);
+      strata.insert(int(std::floor((mu - 0.01) / 0.02 * 20)));
+      const double mesh = *a[k].numbers[1];
+      QCOMPARE(mesh, std::round(mesh));  // an integer field: whole values
+      QVERIFY(mesh >= 8 && mesh <= 28);
+      only_lbrbe += a[k].values[2] == "only-lbrbe";
+    }
+    QCOMPARE(strata.size(), std::size_t(20));  // one point in each of the 20 strata
+    QCOMPARE(only_lbrbe, 10);                  // a two-level factor: half the strata each
+    QVERIFY(differs);
+  }
+
+  void oneAtATimeStartsAtTheBaseCase() {
+    const Study s = ParseStudy(R"({"design": "one-at-a-time", "factors": [
+        {"path": "operating.rpm", "levels": [2000, 4000, 6000]},
+        {"path": "lubricant.viscosity", "levels": [0.01, 0.03]}]})",
+                               "s.json");
+    engine::EngineCase base;
+    base.operating.rpm = 4000;
+    base.lubricant.viscosity = 0.02;
+    const auto points = batch::DesignPoints(s, base);
+    // The base, then rpm 2000 and 6000 (4000 is the base), then μ 0.01 and 0.03.
+    QCOMPARE(points.size(), std::size_t(5));
+    QCOMPARE(points[0].values, (std::vector<std::string>{"4000", "0.02"}));
+    QCOMPARE(points[1].values, (std::vector<std::string>{"2000", "0.02"}));
+    QCOMPARE(points[2].values, (std::vector<std::string>{"6000", "0.02"}));
+    QCOMPARE(points[3].values, (std::vector<std::string>{"4000", "0.01"}));
+    QCOMPARE(points[4].values, (std::vector<std::string>{"4000", "0.03"}));
+  }
+
+  void pointsAreCasesCheckedByTheCaseReader() {
+    const Study s = ParseStudy(R"({"design": "full-factorial",
+        "set": {"solver.max_cycles": 3},
+        "factors": [{"path": "model", "levels": ["only-skirt", "ideal"]},
+                    {"path": "geometry.rod_length", "levels": [0.14, 0.03]}]})",
+                               "s.json");
+    const auto points = batch::DesignPoints(s, batch::LoadStudyBase(s).value);
+    const io::LoadedCase first = batch::LoadPointCase(s, points[0]);
+    QCOMPARE(first.value.solver.max_cycles, 3);
+    QCOMPARE(first.value.geometry.rod_length, 0.14);
+    QCOMPARE(engine::ModelName(engine::ModelOfCase(first.value)), std::string("only-skirt"));
+    QCOMPARE(engine::ModelName(engine::ModelOfCase(batch::LoadPointCase(s, points[2]).value)),
+             std::string("ideal"));
+    // A rod shorter than the crank radius: the rule between fields, named with the point.
+    try {
+      batch::LoadPointCase(s, points[1]);
+      QFAIL("a rod shorter than the crank was accepted");
+    } catch (const InputError& e) {
+      const std::string text = e.what();
+      QVERIFY2(Contains(text, "point 2 (model = only-skirt, geometry.rod_length = 0.03)"),
+               e.what());
+      QVERIFY2(Contains(text, "geometry.rod_length"), e.what());
+    }
+  }
+
+  void studyJsonIsCanonical() {
+    const Study s = ParseStudy(R"({"name": "clearance", "design": "latin-hypercube",
+        "points": 4, "seed": 11, "set": {"solver.max_cycles": 3, "skirt.model": "ideal"},
+        "factors": [{"path": "skirt.cold_clearance", "range": [2e-5, 4e-5]},
+                    {"path": "model", "levels": ["ideal", "only-lbrbe"]}]})",
+                               "/tmp/s.json");
+    const std::string text = batch::StudyJson(s);
+    const Study again = ParseStudy(text, "/tmp/study.json");
+    QCOMPARE(batch::StudyJson(again), text);
+    QCOMPARE(again.points, 4);
+    QCOMPARE(again.seed, std::uint64_t(11));
+    QCOMPARE(again.base_overrides.size(), std::size_t(2));
+    const auto a = batch::DesignPoints(s, engine::EngineCase{});
+    const auto b = batch::DesignPoints(again, engine::EngineCase{});
+    for (std::size_t k = 0; k < a.size(); ++k) QCOMPARE(a[k].values, b[k].values);
+  }
+
+  void aPointFolderSaysWhereItIs() {
+    QTemporaryDir dir;
+    const std::filesystem::path folder = dir.path().toStdString() + "/point-0001";
+    QCOMPARE(batch::ReadPointState(folder), batch::PointState::kPending);
+    std::filesystem::create_directories(folder);
+    auto write = [&](const std::string& status) {
+      io::RunSummary summary;
+      summary.model = "ideal";
+      summary.rpm = 2000;
+      summary.status = status;
+      summary.message = "why: " + status;
+      io::WriteSummaryJson(folder / "summary.json", summary);
+    };
+    write("completed");
+    QCOMPARE(batch::ReadPointState(folder), batch::PointState::kDone);
+    write("not-converged");
+    QCOMPARE(batch::ReadPointState(folder), batch::PointState::kDone);
+    write("failed");
+    std::string reason;
+    QCOMPARE(batch::ReadPointState(folder, &reason), batch::PointState::kFailed);
+    QCOMPARE(reason, std::string("why: failed"));
+    write("time-limit");
+    QCOMPARE(batch::ReadPointState(folder), batch::PointState::kIncomplete);
+    write("running");
+    // Nobody holds the lock: a run that was killed.
+    QCOMPARE(batch::ReadPointState(folder, &reason), batch::PointState::kIncomplete);
+    QVERIFY(Contains(reason, "stopped before it wrote its results"));
+    {
+      const io::OutputFolder held(folder, io::OutputFolder::Reuse::kReplace, "--out");
+      write("running");
+      QCOMPARE(batch::ReadPointState(folder), batch::PointState::kRunning);
+    }
+    std::ofstream(folder / "summary.json") << "{ broken";
+    QCOMPARE(batch::ReadPointState(folder, &reason), batch::PointState::kFailed);
+    QVERIFY(!reason.empty());
+  }
+};
+
+QTEST_GUILESS_MAIN(TestStudy)
+#include "test_study.moc"
