@@ -6,6 +6,7 @@
 
 #include <sys/wait.h>
 
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -224,7 +225,16 @@ int SubmitToSlurm(const Args& args, Streams& streams, const fs::path& out,
     throw InputError("--scheduler", "slurm",
                      "sbatch failed (exit " + std::to_string(code) + "): " + output);
   }
-  std::string job = output.substr(0, output.find_first_of(";\n"));
+  // --parsable prints "jobid[;cluster]" as its last line (warnings may come before it).
+  std::string job;
+  std::istringstream lines(output);
+  for (std::string line; std::getline(lines, line);) {
+    if (!line.empty() && std::isdigit(static_cast<unsigned char>(line[0])))
+      job = line.substr(0, line.find(';'));
+  }
+  if (job.empty()) {
+    throw InputError("--scheduler", "slurm", "sbatch printed no job number: " + output);
+  }
   std::ofstream(slurm / "jobs.txt", std::ios::app) << job << "\n";
   streams.err << fmt::format(
       "study: submitted job array {} ({} tasks, {} points); "

@@ -51,6 +51,13 @@ if ! munge -n 2>/dev/null | unmunge >/dev/null 2>&1; then
 fi
 munge -n | unmunge | grep -q "STATUS: *Success" || { echo "slurm test: munge does not work" >&2; exit 1; }
 
+# slurmd sets up its cgroup plugin at start and gives up without the machine's cgroup file
+# system (a chroot needs /sys/fs/cgroup bound in): say so rather than fail in its log.
+if ! mountpoint -q /sys/fs/cgroup; then
+  echo "slurm test: /sys/fs/cgroup is not mounted here; slurmd cannot start without it" >&2
+  exit 1
+fi
+
 host="$(hostname -s)"
 mkdir -p "$work/state" "$work/spool"
 export SLURM_CONF="$work/slurm.conf"
@@ -75,8 +82,14 @@ MpiDefault=none
 NodeName=$host NodeAddr=127.0.0.1 CPUs=$(nproc) State=UNKNOWN
 PartitionName=debug Nodes=$host Default=YES MaxTime=INFINITE State=UP
 CONF
-slurmctld -f "$SLURM_CONF"
-slurmd -f "$SLURM_CONF"
+# cgroup v2 machines: slurmd would ask systemd (over D-Bus) for a scope; our daemons are not
+# systemd services, so it makes its cgroup itself (cgroup v1 machines ignore this).
+cat > "$work/cgroup.conf" <<CONF
+CgroupPlugin=autodetect
+IgnoreSystemd=yes
+CONF
+slurmctld -f "$SLURM_CONF" || { echo "slurm test: slurmctld did not start"; cat "$work/slurmctld.log"; exit 1; }
+slurmd -f "$SLURM_CONF" || { echo "slurm test: slurmd did not start"; cat "$work/slurmd.log"; exit 1; }
 for _ in $(seq 60); do
   sinfo -h -o '%t' 2>/dev/null | grep -qE '^(idle|mix|alloc)' && break
   sleep 0.5
