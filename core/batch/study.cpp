@@ -312,7 +312,9 @@ Study ParseStudy(const std::string& text, const fs::path& path) {
   if (!j.is_object()) Bad(s, "(top level)", JsonText(j), "must be a JSON object");
   static const char* const kKeys[] = {"name", "case",    "set",    "design",      "points",
                                       "seed", "factors", "fields", "time_limit_s"};
-  for (const auto& [key, value] : j.items()) {
+  for (const auto& item : j.items()) {
+    const std::string& key = item.key();
+    const json& value = item.value();
     if (std::find_if(std::begin(kKeys), std::end(kKeys),
                      [&key](const char* k) { return key == k; }) == std::end(kKeys)) {
       Bad(s, key, JsonText(value),
