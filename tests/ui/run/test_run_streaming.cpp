@@ -47,6 +47,22 @@ using filmdyn::ui::RunStatus;
 
 namespace {
 
+// How much slower the GUI thread runs in this build: the sanitizer builds (AddressSanitizer +
+// UndefinedBehaviorSanitizer at -O1, ThreadSanitizer) redraw the plots 5-10 times slower than the
+// Release build, so their responsiveness bounds are twice as loose; the Release build's suites
+// hold the GUI to the real ones. What the sanitizers check here is memory and threads.
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+constexpr int kSlowBuild = 2;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
+constexpr int kSlowBuild = 2;
+#else
+constexpr int kSlowBuild = 1;
+#endif
+#else
+constexpr int kSlowBuild = 1;
+#endif
+
 // Measures the largest gap between ticks of a 10 ms timer on the GUI thread.
 class Heartbeat : public QObject {
  public:
@@ -177,9 +193,9 @@ class TestRunStreaming : public QObject {
     QVERIFY2(points_while_running > 0, "no points reached the plots before the end");
     // Coalescing: far fewer redraws than samples (one per ≥ 40 ms).
     QVERIFY(updates_while_running <= run_ms / filmdyn::ui::RunController::kRedrawIntervalMs + 5);
-    QVERIFY2(heartbeat.maxGap() < 250, "the GUI thread was blocked");
+    QVERIFY2(heartbeat.maxGap() < 250 * kSlowBuild, "the GUI thread was blocked");
     // Loose (2 shared cores): the timer must keep running, not hit every 10 ms.
-    QVERIFY(heartbeat.ticks() > run_ms / 10 / 10);
+    QVERIFY(heartbeat.ticks() > run_ms / 10 / 10 / kSlowBuild);
     // One reported cycle at 0.5 °CA, drawn in the plots and counted in the run table.
     QCOMPARE(int(run->samples().size()), 1440);
     QVERIFY(window.plotPanel()->pointCount(run->id()) >= 1440);
@@ -223,7 +239,7 @@ class TestRunStreaming : public QObject {
           run->elapsedSeconds(), heartbeat.maxGap(), moft_points_while_running);
     QCOMPARE(run->status(), RunStatus::kFinished);
     QVERIFY(moft_points_while_running > 0);
-    QVERIFY2(heartbeat.maxGap() < 250, "the GUI thread was blocked");
+    QVERIFY2(heartbeat.maxGap() < 250 * kSlowBuild, "the GUI thread was blocked");
     QCOMPARE(int(run->samples().size()), 90);
     QVERIFY(run->fields() != nullptr);
     QCOMPARE(int(run->fields()->crank_angle_deg.size()), 90);
