@@ -47,21 +47,11 @@ using filmdyn::ui::RunStatus;
 
 namespace {
 
-// How much slower the GUI thread runs in this build: the sanitizer builds (AddressSanitizer +
-// UndefinedBehaviorSanitizer at -O1, ThreadSanitizer) redraw the plots 5-10 times slower than the
-// Release build, so their responsiveness bounds are twice as loose; the Release build's suites
-// hold the GUI to the real ones. What the sanitizers check here is memory and threads.
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-constexpr int kSlowBuild = 2;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
-constexpr int kSlowBuild = 2;
-#else
-constexpr int kSlowBuild = 1;
-#endif
-#else
-constexpr int kSlowBuild = 1;
-#endif
+// How much slower the GUI thread runs in this build: the AddressSanitizer + UBSan build (at -O1)
+// redraws the plots 5-10 times slower than the Release build, so its responsiveness bounds are
+// twice as loose; the Release build's suites hold the GUI to the real ones. What the sanitizer
+// checks here is memory.
+constexpr int kSlowBuild = FILMDYN_ASAN ? 2 : 1;
 
 // Measures the largest gap between ticks of a 10 ms timer on the GUI thread.
 class Heartbeat : public QObject {
