@@ -332,10 +332,9 @@ int RunStudy(const Args& args, Streams& streams) {
                        "holds a different study (its study.json differs from this one's); "
                        "choose another folder, or remove it to start again");
     }
-  } else if (fs::exists(out) && !fs::is_empty(out) &&
-             std::any_of(fs::directory_iterator(out), fs::directory_iterator(),
+  } else if (std::any_of(fs::directory_iterator(out), fs::directory_iterator(),
                          [](const fs::directory_entry& e) {
-                           return e.path().filename() != ".filmdyn.lock";
+                           return e.path().filename() != io::OutputFolder::kLockFile;
                          })) {
     throw InputError("--out", out.string(),
                      "is not empty and holds no study; choose an empty or new folder");

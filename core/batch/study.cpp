@@ -1,9 +1,6 @@
 #include "core/batch/study.hpp"
 
-#include <fcntl.h>
 #include <fmt/format.h>
-#include <sys/file.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -273,16 +270,6 @@ std::string CsvCell(const std::string& text) {
 
 std::string FactorHeader(const StudyFactor& f) {
   return f.path + (f.is_text() || f.unit.empty() ? "" : "[" + f.unit + "]");
-}
-
-// Whether another process holds the lock of a run folder (a run in progress).
-bool LockHeld(const fs::path& folder) {
-  const fs::path lock = folder / ".filmdyn.lock";
-  const int fd = ::open(lock.c_str(), O_RDONLY | O_CLOEXEC);
-  if (fd < 0) return false;
-  const bool held = ::flock(fd, LOCK_SH | LOCK_NB) != 0;
-  ::close(fd);
-  return held;
 }
 
 }  // namespace
@@ -581,7 +568,7 @@ PointState ReadPointState(const fs::path& folder, std::string* reason) {
   }
   if (reason) *reason = summary.message;
   if (summary.status == io::kRunningStatus) {
-    if (LockHeld(folder)) return PointState::kRunning;
+    if (io::OutputFolder::IsLocked(folder)) return PointState::kRunning;
     if (reason) *reason = "stopped before it wrote its results (killed, or out of time)";
     return PointState::kIncomplete;
   }

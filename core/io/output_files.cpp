@@ -132,7 +132,7 @@ OutputFolder::OutputFolder(const std::filesystem::path& folder, Reuse reuse,
   if (!std::filesystem::is_directory(folder, error)) {
     throw InputError(option, folder.string(), "is not a folder");
   }
-  const std::filesystem::path lock = folder / ".filmdyn.lock";
+  const std::filesystem::path lock = folder / kLockFile;
   lock_fd_ = ::open(lock.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
   if (lock_fd_ < 0) {
     throw InputError(option, folder.string(),
@@ -156,6 +156,14 @@ OutputFolder::OutputFolder(const std::filesystem::path& folder, Reuse reuse,
     lock_fd_ = -1;
     throw;
   }
+}
+
+bool OutputFolder::IsLocked(const std::filesystem::path& folder) {
+  const int fd = ::open((folder / kLockFile).c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return false;
+  const bool held = ::flock(fd, LOCK_SH | LOCK_NB) != 0;
+  ::close(fd);
+  return held;
 }
 
 OutputFolder::~OutputFolder() {

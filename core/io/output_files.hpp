@@ -62,6 +62,11 @@ class OutputFolder {
   /// True when an earlier run's files were found (and, with kReplace, removed).
   bool replaced_earlier_run() const { return replaced_; }
 
+  /// The lock file a run holds in its folder (advisory flock, released when the process ends).
+  static constexpr char kLockFile[] = ".filmdyn.lock";
+  /// Whether another process holds `folder`'s lock (a run writing into it now).
+  static bool IsLocked(const std::filesystem::path& folder);
+
   /// Whether `folder` holds files of an earlier FilmDyn run (results.csv, summary.json, fields/,
   /// plots/, comparison.csv/.md).
   static bool HoldsEarlierRun(const std::filesystem::path& folder);
