@@ -6,10 +6,14 @@
 
 #include <sys/wait.h>
 
+#include <QString>
+
 #include <cctype>
+#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <functional>
 #include <sstream>
@@ -21,6 +25,7 @@
 #include "core/batch/study.hpp"
 #include "core/batch/sweep.hpp"
 #include "core/io/output_files.hpp"
+#include "ui/plots/study_charts.hpp"
 
 namespace filmdyn::cli {
 
@@ -52,17 +57,48 @@ std::string Duration(double seconds) {
   return fmt::format("{:.1f} h", seconds / 3600);
 }
 
-// Writes study.csv and study.md of `dir` from its folders; returns the rows.
+// Writes study.csv, study.md and plots/ of `dir` from its folders; returns the rows. The plots
+// are drawn when a point is done; a plot that cannot be drawn is a warning, never an error.
 std::vector<batch::StudyRow> Collect(const fs::path& dir, const batch::Study& study,
-                                     const Args& args) {
+                                     const Args& args, Streams& streams) {
   const std::vector<batch::StudyRow> rows = batch::CollectStudy(dir, study);
+  const std::string rank_by = args.Value("rank-by").value_or("");
   std::ostringstream csv;
   batch::WriteStudyCsv(csv, study, rows);
   io::WriteFileAtomically(dir / "study.csv", csv.str());
   io::WriteFileAtomically(dir / "study.md",
-                          batch::StudyMarkdown(study, rows, args.Value("rank-by").value_or(""),
-                                               args.Has("largest-first")));
+                          batch::StudyMarkdown(study, rows, rank_by, args.Has("largest-first")));
+  QString error;
+  try {
+    ui::ExportStudyPlots(study, rows, QString::fromStdString(dir.string()), rank_by,
+                         args.Has("largest-first"), &error);
+  } catch (const std::exception& e) {
+    error = QString::fromUtf8(e.what());
+  }
+  if (!error.isEmpty()) streams.err << "study: plots not written: " << error.toStdString() << "\n";
   return rows;
+}
+
+// --points-per-task: the points each array task runs.
+long PointsPerTask(const Args& args) {
+  const long per_task = args.Integer("points-per-task").value_or(1);
+  if (per_task < 1 || per_task > 100000) {
+    throw InputError("--points-per-task", std::to_string(per_task), "must be an integer ≥ 1");
+  }
+  return per_task;
+}
+
+// The INDEX of `study task DIR INDEX`: a whole number ≥ 0 (parsed as Args::Integer parses an
+// integer option, without a sign).
+long TaskIndex(const std::string& text) {
+  errno = 0;
+  char* end = nullptr;
+  const long value = std::strtol(text.c_str(), &end, 10);
+  if (text.empty() || text.find_first_not_of("0123456789") != std::string::npos ||
+      end != text.c_str() + text.size() || errno == ERANGE) {
+    throw InputError("task index", "'" + text + "'", "must be a whole number ≥ 0");
+  }
+  return value;
 }
 
 std::string Counts(const std::vector<batch::StudyRow>& rows) {
@@ -192,10 +228,7 @@ int SubmitToSlurm(const Args& args, Streams& streams, const fs::path& out,
     streams.err << "study: nothing to submit; every point is done or running\n";
     return 0;
   }
-  const long per_task = args.Integer("points-per-task").value_or(1);
-  if (per_task < 1 || per_task > 100000) {
-    throw InputError("--points-per-task", std::to_string(per_task), "must be an integer ≥ 1");
-  }
+  const long per_task = PointsPerTask(args);
   const long tasks = (long(folders.size()) + per_task - 1) / per_task;
   const fs::path slurm = out / "slurm";
   fs::create_directories(slurm);
@@ -252,8 +285,8 @@ int RunTask(const Args& args, Streams& streams) {
     throw InputError("study task", "(arguments)", "needs DIR and the task index");
   }
   const fs::path dir = args.positional()[1];
-  const long index = long(ParseDouble("task index", args.positional()[2]));
-  const long per_task = args.Integer("points-per-task").value_or(1);
+  const long index = TaskIndex(args.positional()[2]);
+  const long per_task = PointsPerTask(args);
   const batch::Study study = batch::ReadStudyFolder(dir);
   const std::vector<batch::StudyPoint> points =
       batch::DesignPoints(study, batch::LoadStudyBase(study).value);
@@ -321,9 +354,9 @@ int RunStudy(const Args& args, Streams& streams) {
   std::error_code ec;
   fs::create_directories(out, ec);
   if (ec) throw InputError("--out", out.string(), "cannot create the folder: " + ec.message());
-  const io::OutputFolder lock(out, io::OutputFolder::Reuse::kRefuse, "--out");
   const std::string definition = batch::StudyJson(study);
-  if (fs::exists(out / "study.json")) {
+  // Throws when `out` holds another study.
+  auto refuse_other_study = [&out, &definition] {
     std::ifstream in(out / "study.json", std::ios::binary);
     std::ostringstream existing;
     existing << in.rdbuf();
@@ -332,6 +365,18 @@ int RunStudy(const Args& args, Streams& streams) {
                        "holds a different study (its study.json differs from this one's); "
                        "choose another folder, or remove it to start again");
     }
+  };
+  // The plots/ of this same study (an earlier run's or collect's) are no earlier run to refuse:
+  // the lock removes them, and they are drawn again from the folders at the end (or by
+  // `collect`). Another study is refused first, untouched; so is any other folder holding a
+  // run's files.
+  const bool study_folder = fs::exists(out / "study.json");
+  if (study_folder) refuse_other_study();
+  const io::OutputFolder lock(
+      out, study_folder ? io::OutputFolder::Reuse::kReplace : io::OutputFolder::Reuse::kRefuse,
+      "--out");
+  if (fs::exists(out / "study.json")) {
+    refuse_other_study();  // again, under the lock
   } else if (std::any_of(fs::directory_iterator(out), fs::directory_iterator(),
                          [](const fs::directory_entry& e) {
                            return e.path().filename() != io::OutputFolder::kLockFile;
@@ -378,9 +423,9 @@ int RunStudy(const Args& args, Streams& streams) {
 
   RunPoints([&](std::size_t k) { return JobForPoint(study, points[size_t(job_point[k])], out); },
             names, JobsOption(args), quiet, streams);
-  const std::vector<batch::StudyRow> rows = Collect(out, study, args);
+  const std::vector<batch::StudyRow> rows = Collect(out, study, args, streams);
   streams.err << "study: " << Counts(rows) << "; " << (out / "study.csv").string() << ", "
-              << (out / "study.md").string() << "\n";
+              << (out / "study.md").string() << ", " << (out / "plots").string() << "\n";
   const bool all_done = std::all_of(rows.begin(), rows.end(), [](const batch::StudyRow& r) {
     return r.state == batch::PointState::kDone;
   });
@@ -395,9 +440,9 @@ int CollectOrStatus(const Args& args, Streams& streams, bool collect) {
   const fs::path dir = args.positional()[1];
   const batch::Study study = batch::ReadStudyFolder(dir);
   if (collect) {
-    const std::vector<batch::StudyRow> rows = Collect(dir, study, args);
+    const std::vector<batch::StudyRow> rows = Collect(dir, study, args, streams);
     streams.err << "study collect: " << Counts(rows) << "; " << (dir / "study.csv").string() << ", "
-                << (dir / "study.md").string() << "\n";
+                << (dir / "study.md").string() << ", " << (dir / "plots").string() << "\n";
     return 0;
   }
   const std::vector<batch::StudyRow> rows = batch::CollectStudy(dir, study);
@@ -441,12 +486,13 @@ Command MakeStudyCommand() {
   command.summary = "design study over any case fields: factorial, Latin hypercube, one at a time";
   command.positional_usage = "STUDY.json | collect DIR | status DIR";
   command.max_positional = 3;  // also `task DIR INDEX` (what a Slurm array task runs)
+  command.needs_gui_application = true;  // plots/ are rendered with Qt Charts (offscreen)
   command.options = {
       {"out", "DIR", "the study folder (default: ./results/study-<name>)"},
       {"jobs", "N", "points computed at the same time (default: number of cores)"},
       {"dry-run", "", "check every point and print the design (design.csv); run nothing"},
-      {"rank-by", "KEY", "study.md lists the best points by this figure (a study.csv column)"},
-      {"largest-first", "", "with --rank-by: largest first (default: smallest first)"},
+      {"rank-by", "KEY", "best points (study.md, plots/) by this study.csv column"},
+      {"largest-first", "", "rank the best points largest first (default: smallest first)"},
       {"quiet", "", "no progress line on stderr"},
       {"scheduler", "local|slurm", "where the points run (default local; slurm: a job array)"},
       {"partition", "P", "slurm: the partition (sbatch --partition)"},
@@ -459,19 +505,24 @@ Command MakeStudyCommand() {
       "is examples/study-skirt-clearance.json). Every point is checked before anything runs.\n"
       "Each point is a run folder DIR/point-NNNN/ like `filmdyn run` writes (without fields/\n"
       "unless the study asks for them); DIR/study.csv and DIR/study.md tabulate the points'\n"
-      "figures. Running the same study into DIR again skips the points whose results are\n"
-      "complete and re-runs the failed or incomplete ones; Ctrl-C stops cleanly.\n"
-      "  filmdyn study collect DIR   rewrite study.csv and study.md from the folders\n"
+      "figures, DIR/plots/ draws them (main effects, scatter matrix, best points). Running the\n"
+      "same study into DIR again skips the points whose results are complete and re-runs the\n"
+      "failed or incomplete ones; Ctrl-C stops cleanly.\n"
+      "  filmdyn study collect DIR   rewrite study.csv, study.md and plots/ from the folders\n"
       "  filmdyn study status DIR    points done, running, failed, incomplete, pending\n"
       "With --scheduler slurm the points are submitted as a job array (DIR/slurm/study.sbatch,\n"
       "one task per --points-per-task points) and nothing runs here; `status` shows the\n"
       "scheduler's view, `collect` tabulates what has finished. `filmdyn study task DIR I` is\n"
       "what array task I runs.\n"
+      "--rank-by KEY must be a figure's study.csv column; without it plots/best-points ranks\n"
+      "by mean_bearing_fpl[W] (mean_skirt_fpl[W] when no point has a lubricated big end).\n"
       "Example:\n  filmdyn study examples/study-skirt-clearance.json --out results/clearance";
   command.run = [](const Args& args, Streams& streams) {
     if (args.positional().empty()) {
       throw InputError("study", "(missing)", "needs STUDY.json, or collect DIR, or status DIR");
     }
+    // An unknown figure is refused before anything is read or run.
+    if (const auto rank_by = args.Value("rank-by")) batch::StudyFigureIndex(*rank_by);
     const std::string& first = args.positional()[0];
     if (first == "collect" || first == "status")
       return CollectOrStatus(args, streams, first == "collect");

@@ -622,6 +622,76 @@ void WriteStudyCsv(std::ostream& out, const Study& study, const std::vector<Stud
   }
 }
 
+std::size_t StudyFigureIndex(const std::string& key) {
+  const auto& figures = io::ComparisonFigures();
+  for (std::size_t k = 0; k < figures.size(); ++k) {
+    if (figures[k].key == key) return k;
+  }
+  std::string keys;
+  for (std::size_t k = 0; k < figures.size(); ++k) keys += (k ? ", " : "") + figures[k].key;
+  throw InputError("--rank-by", key, "must be one of: " + keys);
+}
+
+std::size_t DefaultRankFigure(const std::vector<StudyRow>& rows) {
+  const std::size_t bearing = StudyFigureIndex("mean_bearing_fpl[W]");
+  const bool any = std::any_of(rows.begin(), rows.end(), [bearing](const StudyRow& r) {
+    return r.state == PointState::kDone && r.figures[bearing];
+  });
+  return any ? bearing : StudyFigureIndex("mean_skirt_fpl[W]");
+}
+
+std::vector<MainEffect> MainEffects(const Study& study, const std::vector<StudyRow>& rows) {
+  const std::size_t count = io::ComparisonFigures().size();
+  std::vector<MainEffect> effects;
+  for (std::size_t f = 0; f < study.factors.size(); ++f) {
+    const StudyFactor& factor = study.factors[f];
+    if (factor.range) continue;  // sampled continuously: no levels to average over
+    MainEffect effect;
+    effect.factor = f;
+    for (std::size_t l = 0; l < factor.level_count(); ++l) {
+      MainEffectLevel level;
+      level.label = factor.is_text() ? factor.text_levels[l] : Number(factor.levels[l]);
+      if (!factor.is_text()) level.value = factor.levels[l];
+      // A point is at the level when its value, as written, is the level's (the values of a
+      // point are the levels' own texts).
+      std::vector<double> sum(count, 0.0);
+      std::vector<int> have(count, 0);
+      for (const StudyRow& r : rows) {
+        if (r.state != PointState::kDone || r.point.values[f] != level.label) continue;
+        ++level.points;
+        for (std::size_t k = 0; k < count && k < r.figures.size(); ++k) {
+          if (r.figures[k]) {
+            sum[k] += *r.figures[k];
+            ++have[k];
+          }
+        }
+      }
+      level.means.assign(count, std::nullopt);
+      for (std::size_t k = 0; k < count; ++k) {
+        if (have[k]) level.means[k] = sum[k] / have[k];
+      }
+      effect.levels.push_back(std::move(level));
+    }
+    effects.push_back(std::move(effect));
+  }
+  return effects;
+}
+
+std::vector<std::size_t> RankedPoints(const std::vector<StudyRow>& rows, std::size_t figure,
+                                      bool largest_first) {
+  std::vector<std::size_t> ranked;
+  for (std::size_t n = 0; n < rows.size(); ++n) {
+    const StudyRow& r = rows[n];
+    if (r.state == PointState::kDone && figure < r.figures.size() && r.figures[figure])
+      ranked.push_back(n);
+  }
+  std::stable_sort(ranked.begin(), ranked.end(), [&](std::size_t a, std::size_t b) {
+    const double va = *rows[a].figures[figure], vb = *rows[b].figures[figure];
+    return largest_first ? va > vb : va < vb;
+  });
+  return ranked;
+}
+
 std::string StudyMarkdown(const Study& study, const std::vector<StudyRow>& rows,
                           const std::string& rank_by, bool largest_first) {
   const auto& figures = io::ComparisonFigures();
@@ -692,62 +762,31 @@ std::string StudyMarkdown(const Study& study, const std::vector<StudyRow>& rows,
   if (!shown.empty()) {
     md << "\n## Main effects\n\nMean of each figure over the finished points at each level of a "
           "factor (all other factors as the design combines them).\n";
-    for (std::size_t f = 0; f < study.factors.size(); ++f) {
-      const StudyFactor& factor = study.factors[f];
-      if (factor.range) continue;  // sampled continuously: see study.csv
-      md << "\n### " << FactorHeader(factor) << "\n\n| level | points |";
+    for (const MainEffect& effect : MainEffects(study, rows)) {
+      md << "\n### " << FactorHeader(study.factors[effect.factor]) << "\n\n| level | points |";
       std::string rule = "|---|---|";
       for (std::size_t k : shown) {
         md << " " << figures[k].display_name << " |";
         rule += "---|";
       }
       md << "\n" << rule << "\n";
-      for (std::size_t l = 0; l < factor.level_count(); ++l) {
-        const std::string level =
-            factor.is_text() ? factor.text_levels[l] : Number(factor.levels[l]);
-        int n = 0;
-        std::vector<double> sum(figures.size(), 0.0);
-        std::vector<int> have(figures.size(), 0);
-        for (const StudyRow& r : rows) {
-          if (r.state != PointState::kDone || r.point.values[f] != level) continue;
-          ++n;
-          for (std::size_t k : shown) {
-            if (r.figures[k]) {
-              sum[k] += *r.figures[k];
-              ++have[k];
-            }
-          }
-        }
-        md << "| " << level << " | " << n << " |";
-        for (std::size_t k : shown) {
-          md << " "
-             << (have[k] ? cell(sum[k] / have[k], figures[k].display_scale) : std::string("–"))
-             << " |";
-        }
+      for (const MainEffectLevel& level : effect.levels) {
+        md << "| " << level.label << " | " << level.points << " |";
+        for (std::size_t k : shown)
+          md << " " << cell(level.means[k], figures[k].display_scale) << " |";
         md << "\n";
       }
     }
   }
 
   if (!rank_by.empty()) {
-    const auto it =
-        std::find_if(figures.begin(), figures.end(),
-                     [&rank_by](const io::ComparisonFigure& fig) { return fig.key == rank_by; });
-    if (it != figures.end()) {
-      const std::size_t k = std::size_t(it - figures.begin());
-      std::vector<const StudyRow*> ranked;
-      for (const StudyRow& r : rows) {
-        if (r.state == PointState::kDone && r.figures[k]) ranked.push_back(&r);
-      }
-      std::stable_sort(ranked.begin(), ranked.end(), [&](const StudyRow* a, const StudyRow* b) {
-        return largest_first ? *a->figures[k] > *b->figures[k] : *a->figures[k] < *b->figures[k];
-      });
-      md << "\n## Best points by " << it->display_name << " ("
-         << (largest_first ? "largest" : "smallest") << " first)\n\n"
-         << header();
-      for (std::size_t n = 0; n < std::min<std::size_t>(10, ranked.size()); ++n)
-        md << line(*ranked[n]);
-    }
+    const std::size_t k = StudyFigureIndex(rank_by);
+    const std::vector<std::size_t> ranked = RankedPoints(rows, k, largest_first);
+    md << "\n## Best points by " << figures[k].display_name << " ("
+       << (largest_first ? "largest" : "smallest") << " first)\n\n"
+       << header();
+    for (std::size_t n = 0; n < std::min<std::size_t>(10, ranked.size()); ++n)
+      md << line(rows[ranked[n]]);
   }
   return md.str();
 }

@@ -14,6 +14,8 @@
 ///                        run (written by collecting the folders; empty cells where none yet)
 ///     DIR/study.md       the same for people, the status counts, the main effects and the best
 ///                        points
+///     DIR/plots/         the same as pictures: main effects, scatter matrix, best points
+///                        (drawn by the command line with ui/plots/study_charts.hpp)
 #include <cstdint>
 #include <filesystem>
 #include <iosfwd>
@@ -120,10 +122,46 @@ struct StudyRow {
 std::vector<StudyRow> CollectStudy(const std::filesystem::path& dir, const Study& study);
 /// study.csv (SI): point, folder, the factors, state, status, wall time, the figures.
 void WriteStudyCsv(std::ostream& out, const Study& study, const std::vector<StudyRow>& rows);
+/// The index in io::ComparisonFigures() of the figure whose key (a study.csv column, e.g.
+/// "mean_bearing_fpl[W]") is `key`. Throws InputError("--rank-by", key, "must be one of: …"),
+/// listing every key, when there is none.
+std::size_t StudyFigureIndex(const std::string& key);
+/// The figure the best points are ranked by when none is asked for: the mean big-end friction
+/// power (mean_bearing_fpl[W]), or the skirt's (mean_skirt_fpl[W]) when no done point has a
+/// big-end film (every point's big end ideal). An index in io::ComparisonFigures().
+std::size_t DefaultRankFigure(const std::vector<StudyRow>& rows);
+
+/// One level of a factor in the main effects.
+struct MainEffectLevel {
+  std::string label;            ///< the level as study.csv writes it ("3e-05", "ideal")
+  std::optional<double> value;  ///< the level's number (empty for a text factor)
+  int points = 0;               ///< done points at this level
+  /// Per io::ComparisonFigures() (SI): the mean over the done points at this level that have the
+  /// figure; empty when none has it.
+  std::vector<std::optional<double>> means;
+};
+/// The main effects of one factor with discrete levels.
+struct MainEffect {
+  std::size_t factor = 0;               ///< index in Study::factors
+  std::vector<MainEffectLevel> levels;  ///< in the factor's order of levels
+};
+/// The main effects of every factor with discrete levels (a factor sampled continuously over a
+/// range, in a Latin hypercube, has none): for each level, the done points whose value of the
+/// factor is that level and the mean of each figure over them. The other factors are as the
+/// design combines them, so in a full factorial each level's mean averages over the same
+/// combinations of the others. In a one-at-a-time design the base point counts for a level only
+/// where its value is that level.
+std::vector<MainEffect> MainEffects(const Study& study, const std::vector<StudyRow>& rows);
+/// The done points that have figure `figure` (an index in io::ComparisonFigures()), best first:
+/// smallest first, or largest when `largest_first`; equal values keep the order of `rows`.
+/// Indices in `rows`.
+std::vector<std::size_t> RankedPoints(const std::vector<StudyRow>& rows, std::size_t figure,
+                                      bool largest_first);
+
 /// study.md: the design, counts per state, the table (display units), the main effects of each
-/// factor on each figure (mean over the points at each level, done points only) and, when
-/// `rank_by` names a figure key, the best points by it (smallest first, or largest when
-/// `largest_first`).
+/// factor on each figure (MainEffects) and, when `rank_by` names a figure key, the ten best
+/// points by it (RankedPoints: smallest first, or largest when `largest_first`). A `rank_by`
+/// that is no figure's key throws InputError (StudyFigureIndex).
 std::string StudyMarkdown(const Study& study, const std::vector<StudyRow>& rows,
                           const std::string& rank_by = {}, bool largest_first = false);
 

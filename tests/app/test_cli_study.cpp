@@ -2,10 +2,15 @@
 // dry run, a small factorial study run for real (Ideal and a coarse Only-LBRBE at two speeds),
 // its folders, study.csv and study.md; a second run that skips every finished point and leaves
 // the tables byte for byte; an incomplete point re-run alone; a different study refused in the
-// same folder; `status` and `collect`; points that stop early recorded with their reason.
+// same folder; `status` and `collect`; the plots in DIR/plots (written by the run and by
+// `collect`, not by `status`); points that stop early recorded with their reason; an unknown
+// --rank-by and a bad task index refused before anything runs.
 #include <QDir>
 #include <QFile>
+#include <QFileInfo>
+#include <QImage>
 #include <QProcess>
+#include <QSvgRenderer>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -37,6 +42,37 @@ void Write(const QString& path, const QByteArray& text) {
   QFile f(path);
   QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
   f.write(text);
+}
+
+// The study's pictures in `plots`: each PNG decodes to its expected width (2x the logical size)
+// and is not blank, each SVG parses and has the same logical size.
+void CheckPlots(const QString& plots) {
+  // Logical sizes: main effects 2 panels of 500 x (300 + 20 per factor with levels) under a
+  // heading line; the scatter matrix a row per plotted figure and a column per factor (360 x
+  // 300); best points 960 x (130 + 34 per bar).
+  struct Picture {
+    const char* name;
+    int width;
+  };
+  for (const Picture& p :
+       {Picture{"main-effects", 2 * 3 * 500}, Picture{"scatter-matrix", 2 * 2 * 360},
+        Picture{"best-points", 2 * 960}}) {
+    const QString png = plots + "/" + p.name + ".png";
+    const QImage image(png);
+    QVERIFY2(!image.isNull(), qPrintable(png));
+    QVERIFY2(image.width() == p.width, qPrintable(png + QString(": %1 wide").arg(image.width())));
+    QVERIFY2(image.height() > 300, qPrintable(png));
+    QSet<QRgb> colours;
+    for (int y = 0; y < image.height(); y += 4) {
+      for (int x = 0; x < image.width(); x += 4) colours.insert(image.pixel(x, y));
+    }
+    QVERIFY2(colours.size() > 20, qPrintable(png));
+    const QString svg = plots + "/" + p.name + ".svg";
+    QSvgRenderer renderer(svg);
+    QVERIFY2(renderer.isValid(), qPrintable(svg));
+    QCOMPARE(renderer.viewBoxF().size() * 2, QSizeF(image.size()));
+    QVERIFY(QFileInfo(svg).size() > 5000);
+  }
 }
 
 // Ideal and Only-LBRBE on a coarse bearing mesh, at 2000 and 6000 rpm: four quick points.
@@ -124,6 +160,14 @@ class TestCliStudy : public QObject {
     QVERIFY(md.contains("## Main effects"));
     QVERIFY(md.contains("### operating.rpm[rpm]"));
     QVERIFY(md.contains("## Best points by mean bearing FPL"));
+    QVERIFY2(first.err.contains(out + "/plots"), qPrintable(first.err));
+    QVERIFY2(!first.err.contains("plots not written"), qPrintable(first.err));
+    CheckPlots(out + "/plots");
+    // Four done points: two of them (Only-LBRBE) have a big-end friction power, ranked.
+    {
+      const QImage best(out + "/plots/best-points.png");
+      QCOMPARE(best.size(), QSize(2 * 960, 2 * (130 + 34 * 2)));
+    }
 
     // Again: nothing to run, the tables unchanged byte for byte.
     const Result again = Run({"study", file, "--out", out, "--rank-by", "mean_bearing_fpl[W]"});
@@ -138,21 +182,50 @@ class TestCliStudy : public QObject {
     QVERIFY(text.contains("\"status\": \"completed\""));
     text.replace("\"status\": \"completed\"", "\"status\": \"cancelled\"");
     Write(summary, text);
+    QVERIFY(QDir(out + "/plots").removeRecursively());
     const Result status = Run({"study", "status", out});
     QCOMPARE(status.exit_code, 0);
     QVERIFY2(status.out.startsWith("4 points, 3 done, 1 incomplete\npoint-0004: incomplete"),
              qPrintable(status.out));
+    QVERIFY(!QDir(out + "/plots").exists());  // status reads, never writes
     const Result resumed = Run({"study", file, "--out", out});
     QCOMPARE(resumed.exit_code, 0);
     QVERIFY2(resumed.err.contains("3 already done, 1 to run"), qPrintable(resumed.err));
     QVERIFY(Read(summary).contains("\"status\": \"completed\""));
 
-    // collect rebuilds the tables from the folders alone.
+    // collect rebuilds the tables and the plots from the folders alone.
     QVERIFY(QFile::remove(out + "/study.csv"));
+    QVERIFY(QDir(out + "/plots").removeRecursively());
     const Result collect = Run({"study", "collect", out});
     QCOMPARE(collect.exit_code, 0);
     QVERIFY2(collect.err.contains("4 points, 4 done"), qPrintable(collect.err));
     QCOMPARE(Read(out + "/study.csv").count('\n'), 5);
+    CheckPlots(out + "/plots");
+
+    // An unknown --rank-by is refused, naming the option and the keys, before anything is read
+    // or run: by collect, and by a run into a new folder (which gets no point).
+    const Result bad_collect = Run({"study", "collect", out, "--rank-by", "total_fpl[W]"});
+    QCOMPARE(bad_collect.exit_code, 2);
+    QVERIFY2(bad_collect.err.contains("--rank-by = total_fpl[W]: must be one of: "),
+             qPrintable(bad_collect.err));
+    QVERIFY2(bad_collect.err.contains("mean_bearing_fpl[W]"), qPrintable(bad_collect.err));
+    const QString fresh = dir.filePath("fresh");
+    const Result bad_run = Run({"study", file, "--out", fresh, "--rank-by", "mean_fpl"});
+    QCOMPARE(bad_run.exit_code, 2);
+    QVERIFY2(
+        bad_run.err.contains("--rank-by = mean_fpl: must be one of: max_abs_piston_lateral[m], "),
+        qPrintable(bad_run.err));
+    QVERIFY(!QDir(fresh + "/point-0001").exists());
+    QVERIFY(!bad_run.err.contains("points done"));
+
+    // The task index of `study task DIR INDEX` is a whole number ≥ 0.
+    for (const char* index : {"1.5", "-1", "x", ""}) {
+      const Result task = Run({"study", "task", out, index});
+      QCOMPARE(task.exit_code, 2);
+      QVERIFY2(
+          task.err.contains(QString("task index = '%1': must be a whole number ≥ 0").arg(index)),
+          qPrintable(task.err));
+    }
 
     // Another study into the same folder is refused.
     Write(file, QByteArray(kStudy).replace("6000", "4000"));

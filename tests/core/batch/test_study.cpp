@@ -1,8 +1,9 @@
 // Design studies in core: the study file's checks (every bad key, path, level and combination
 // named with the file and the key), the three designs (factorial order and size, the Latin
 // hypercube's one-point-per-stratum property and its seed, one-at-a-time around the base case),
-// the points' cases through the case reader, the canonical study.json, and a point folder's
-// state as summary.json and the folder lock tell it.
+// the points' cases through the case reader, the canonical study.json, a point folder's state
+// as summary.json and the folder lock tell it, and the main effects, the ranking and the figure
+// keys of the tables and plots (on rows made by hand).
 #include <QtTest>
 
 #include <QTemporaryDir>
@@ -13,6 +14,7 @@
 #include "core/batch/study.hpp"
 #include "core/engine/case_schema.hpp"
 #include "core/io/output_files.hpp"
+#include "core/io/run_comparison.hpp"
 #include "core/io/run_summary.hpp"
 
 using namespace filmdyn;
@@ -244,6 +246,102 @@ class TestStudy : public QObject {
     std::ofstream(folder / "summary.json") << "{ broken";
     QCOMPARE(batch::ReadPointState(folder, &reason), batch::PointState::kFailed);
     QVERIFY(!reason.empty());
+  }
+
+  void mainEffectsAndRankingFromRowsByHand() {
+    // Model × rpm, the rpm levels not in order: ideal points have no big-end figures, point 3
+    // failed, point 6 stopped early with a figure that must not count.
+    const Study s = ParseStudy(R"({"design": "full-factorial", "factors": [
+        {"path": "model", "levels": ["ideal", "only-lbrbe"]},
+        {"path": "operating.rpm", "levels": [4000, 2000, 6000]}]})",
+                               "s.json");
+    const std::size_t fpl = batch::StudyFigureIndex("mean_bearing_fpl[W]");
+    const std::size_t moft = batch::StudyFigureIndex("min_bearing_moft[m]");
+    QCOMPARE(io::ComparisonFigures()[fpl].key, std::string("mean_bearing_fpl[W]"));
+    std::vector<batch::StudyRow> rows;
+    for (const batch::StudyPoint& p : batch::DesignPoints(s, engine::EngineCase{})) {
+      batch::StudyRow r;
+      r.point = p;
+      r.state = batch::PointState::kDone;
+      r.figures.assign(io::ComparisonFigures().size(), std::nullopt);
+      rows.push_back(r);
+    }
+    QCOMPARE(rows.size(), std::size_t(6));
+    QCOMPARE(rows[4].point.values, (std::vector<std::string>{"only-lbrbe", "2000"}));
+    rows[2].state = batch::PointState::kFailed;                    // ideal, 6000
+    rows[3].figures[fpl] = 200.0, rows[3].figures[moft] = 1.5e-6;  // only-lbrbe, 4000
+    rows[4].figures[fpl] = 100.0, rows[4].figures[moft] = 2.0e-6;  // only-lbrbe, 2000
+    rows[5].figures[fpl] = 999.0;                                  // only-lbrbe, 6000
+    rows[5].state = batch::PointState::kIncomplete;
+
+    const std::vector<batch::MainEffect> effects = batch::MainEffects(s, rows);
+    QCOMPARE(effects.size(), std::size_t(2));
+    const batch::MainEffect& model = effects[0];
+    QCOMPARE(model.factor, std::size_t(0));
+    QCOMPARE(model.levels.size(), std::size_t(2));
+    QCOMPARE(model.levels[0].label, std::string("ideal"));
+    QVERIFY(!model.levels[0].value);
+    QCOMPARE(model.levels[0].points, 2);  // points 1 and 2 (3 failed)
+    QVERIFY(!model.levels[0].means[fpl]);
+    QCOMPARE(model.levels[1].label, std::string("only-lbrbe"));
+    QCOMPARE(model.levels[1].points, 2);              // points 4 and 5 (6 incomplete)
+    QCOMPARE(*model.levels[1].means[fpl], 150.0);     // (200 + 100) / 2
+    QCOMPARE(*model.levels[1].means[moft], 1.75e-6);  // (1.5 + 2.0) / 2 µm
+    const batch::MainEffect& rpm = effects[1];
+    QCOMPARE(rpm.factor, std::size_t(1));
+    QCOMPARE(rpm.levels.size(), std::size_t(3));  // in the study's order: 4000, 2000, 6000
+    QCOMPARE(rpm.levels[0].label, std::string("4000"));
+    QCOMPARE(*rpm.levels[0].value, 4000.0);
+    QCOMPARE(rpm.levels[0].points, 2);           // points 1 and 4
+    QCOMPARE(*rpm.levels[0].means[fpl], 200.0);  // point 4 alone has it
+    QCOMPARE(*rpm.levels[1].means[fpl], 100.0);  // point 5
+    QCOMPARE(rpm.levels[2].label, std::string("6000"));
+    QCOMPARE(rpm.levels[2].points, 0);  // failed and incomplete only
+    QVERIFY(!rpm.levels[2].means[fpl]);
+
+    // Best first, done points with the figure only.
+    QCOMPARE(batch::RankedPoints(rows, fpl, false), (std::vector<std::size_t>{4, 3}));
+    QCOMPARE(batch::RankedPoints(rows, fpl, true), (std::vector<std::size_t>{3, 4}));
+    QCOMPARE(batch::RankedPoints(rows, moft, true), (std::vector<std::size_t>{4, 3}));
+    // Equal values keep the order of the rows.
+    rows[4].figures[fpl] = 200.0;
+    QCOMPARE(batch::RankedPoints(rows, fpl, false), (std::vector<std::size_t>{3, 4}));
+    QCOMPARE(batch::RankedPoints(rows, fpl, true), (std::vector<std::size_t>{3, 4}));
+
+    // The default ranking figure: big-end friction power, the skirt's when no point has one.
+    QCOMPARE(batch::DefaultRankFigure(rows), fpl);
+    rows[3].figures[fpl].reset();
+    rows[4].figures[fpl].reset();
+    QCOMPARE(batch::DefaultRankFigure(rows), batch::StudyFigureIndex("mean_skirt_fpl[W]"));
+
+    // A range sampled continuously has no main effects.
+    const Study lhs = ParseStudy(R"({"design": "latin-hypercube", "points": 4, "factors": [
+        {"path": "operating.rpm", "range": [2000, 6000]},
+        {"path": "model", "levels": ["ideal", "only-lbrbe"]}]})",
+                                 "s.json");
+    const std::vector<batch::MainEffect> sampled = batch::MainEffects(lhs, {});
+    QCOMPARE(sampled.size(), std::size_t(1));
+    QCOMPARE(sampled[0].factor, std::size_t(1));
+    QCOMPARE(sampled[0].levels[1].points, 0);
+  }
+
+  void anUnknownFigureKeyListsTheKeys() {
+    try {
+      batch::StudyFigureIndex("mean_fpl[W]");
+      QFAIL("an unknown figure key was accepted");
+    } catch (const InputError& e) {
+      QCOMPARE(e.field(), std::string("--rank-by"));
+      QCOMPARE(e.value(), std::string("mean_fpl[W]"));
+      QVERIFY2(Contains(e.allowed(), "must be one of: max_abs_piston_lateral[m], "), e.what());
+      for (const io::ComparisonFigure& figure : io::ComparisonFigures())
+        QVERIFY2(Contains(e.allowed(), figure.key), e.what());
+    }
+    // study.md refuses it too (it was silently left out before).
+    const Study s = ParseStudy(
+        R"({"design": "full-factorial", "factors": [{"path": "operating.rpm", "levels": [2000]}]})",
+        "s.json");
+    QVERIFY_THROWS_EXCEPTION(InputError, batch::StudyMarkdown(s, {}, "nope"));
+    QVERIFY(Contains(batch::StudyMarkdown(s, {}, ""), "# Study: s"));
   }
 };
 
