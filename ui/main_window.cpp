@@ -39,6 +39,7 @@
 #include "ui/run/run_controller.hpp"
 #include "ui/runs/run_store.hpp"
 #include "ui/runs/run_table.hpp"
+#include "ui/study/study_view.hpp"
 
 namespace filmdyn::ui {
 
@@ -86,6 +87,17 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   field_view_ = new FieldView(workspace_);
   field_view_->setObjectName("field_view");
   workspace_->addTab(field_view_, tr("Pressure fields"));
+  study_view_ = new StudyView(workspace_);
+  study_view_->setObjectName("study_view");
+  workspace_->addTab(study_view_, tr("Study"));
+  connect(study_view_, &StudyView::openRunRequested, this, [this](int number) {
+    QString error;
+    if (!openStudyPointRun(number, &error)) {
+      QMessageBox::warning(this, tr("Cannot open the point's run"), error);
+    }
+  });
+  connect(study_view_, &StudyView::statusMessage, this,
+          [this](const QString& m) { statusBar()->showMessage(m, 8000); });
   connect(field_view_, &FieldView::crankAngleChanged, plot_panel_, &PlotPanel::setCursorAngle);
   connect(plot_panel_, &PlotPanel::crankAngleClicked, field_view_, &FieldView::setCrankAngle);
 
@@ -199,6 +211,15 @@ void MainWindow::createMenus() {
                          &MainWindow::exportFieldsInteractive);
   export_menu->addAction(tr("Cylinder pressure curve (CSV)…"), case_editor_,
                          [this] { case_editor_->exportPressureCsv(); });
+  QAction* open_study = file_menu->addAction(tr("Open s&tudy folder…"), this, [this] {
+    workspace_->setCurrentWidget(study_view_);
+    study_view_->openInteractive();
+  });
+  open_study->setObjectName("open_study_action");
+  open_study->setShortcut(QKeySequence(tr("Ctrl+Shift+O")));
+  open_study->setStatusTip(
+      tr("Open the folder of a design study (filmdyn study): its points, "
+         "their figures, and any point's run"));
   file_menu->addAction(tr("&Import cylinder pressure (CSV)…"), case_editor_,
                        [this] { case_editor_->importPressureCsv(); });
   file_menu->addSeparator();
@@ -229,7 +250,8 @@ void MainWindow::createMenus() {
   run_menu->addAction(tr("Re&move selected run"), this, &MainWindow::removeSelectedRun);
 
   QMenu* view_menu = menuBar()->addMenu(tr("&View"));
-  const QStringList pages = {tr("&Case"), tr("Run and &results"), tr("Pressure &fields")};
+  const QStringList pages = {tr("&Case"), tr("Run and &results"), tr("Pressure &fields"),
+                             tr("&Study")};
   for (int i = 0; i < pages.size(); ++i) {
     QAction* a =
         view_menu->addAction(pages[i], this, [this, i] { workspace_->setCurrentIndex(i); });
@@ -476,6 +498,53 @@ void MainWindow::openProjectInteractive() {
   settings.setValue("paths/last_dir", QFileInfo(path).absolutePath());
   QString error;
   if (!openProject(path, &error)) QMessageBox::warning(this, tr("Cannot open case"), error);
+}
+
+bool MainWindow::openStudyPointRun(int number, QString* error) {
+  const batch::StudyRow* row = study_view_->row(number);
+  auto fail = [error](const QString& message) {
+    if (error) *error = message;
+    return false;
+  };
+  if (row == nullptr) return fail(tr("The open study has no point %1").arg(number));
+  const QString folder =
+      QDir(study_view_->folder()).filePath(QString::fromStdString(row->point.folder));
+  // A point already in the run table is shown, not read twice.
+  for (const RunHandle& run : run_table_->runs()) {
+    if (!run->storedFolder().isEmpty() && QFileInfo(run->storedFolder()).canonicalFilePath() ==
+                                              QFileInfo(folder).canonicalFilePath()) {
+      run_table_->selectRow(run_table_->rowOf(run->id()));
+      workspace_->setCurrentIndex(workspace_->indexOf(run_splitter_->parentWidget()));
+      return true;
+    }
+  }
+  RunRequest request;
+  try {
+    // The point's case: the study's base case with the point's values (a run folder holds none).
+    request.engine_case = batch::LoadPointCase(study_view_->study(), row->point).value;
+    request.model = engine::ModelName(engine::ModelOfCase(request.engine_case));
+    request.rpm = request.engine_case.operating.rpm;
+  } catch (const std::exception& e) {
+    return fail(tr("Point %1: its case cannot be rebuilt from the study: %2")
+                    .arg(number)
+                    .arg(QString::fromUtf8(e.what())));
+  }
+  RunHandle run;
+  try {
+    run = ReadRunFolder(folder, request, run_controller_->takeId());
+  } catch (const std::exception& e) {
+    return fail(tr("Point %1: %2").arg(number).arg(QString::fromUtf8(e.what())));
+  }
+  run->setName(
+      tr("%1 · point %2").arg(QString::fromStdString(study_view_->study().name)).arg(number));
+  run_table_->updateRun(run);
+  plot_panel_->updateRun(run);
+  field_view_->setScaleFrames(AllRunFields(run_table_->runs()));
+  run_table_->selectRow(run_table_->rowOf(run->id()));
+  runs_modified_ = true;
+  workspace_->setCurrentIndex(workspace_->indexOf(run_splitter_->parentWidget()));
+  statusBar()->showMessage(tr("Opened point %1 of the study: %2").arg(number).arg(folder), 8000);
+  return true;
 }
 
 bool MainWindow::saveProjectAs(const QString& path, QString* error) {

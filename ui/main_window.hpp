@@ -24,6 +24,7 @@ class FieldView;
 class PlotPanel;
 class RunController;
 class RunTable;
+class StudyView;
 
 class MainWindow : public QMainWindow {
   Q_OBJECT
@@ -39,6 +40,7 @@ class MainWindow : public QMainWindow {
   PlotPanel* plotPanel() const { return plot_panel_; }
   RunTable* runTable() const { return run_table_; }
   FieldView* fieldView() const { return field_view_; }
+  StudyView* studyView() const { return study_view_; }
   QAction* runAction() const { return run_action_; }
   QAction* cancelAction() const { return cancel_action_; }
   QProgressBar* progressBar() const { return progress_bar_; }
@@ -69,6 +71,10 @@ class MainWindow : public QMainWindow {
   /// Loads the waiting autosave as unsaved edits on top of its case file (or the default case),
   /// then removes it.
   bool recoverAutosave(QString* error = nullptr);
+  /// Adds the run of point `number` of the study the Study page shows to the runs (its folder
+  /// read by ReadRunFolder, its case rebuilt from the study) and shows the results page; a
+  /// point already among the runs is selected. False with *error saying why it cannot be read.
+  bool openStudyPointRun(int number, QString* error = nullptr);
   /// Writes every plot as <dir>/<plot id>.<suffix> for each suffix in {png, svg, pdf}.
   bool exportAllPlots(const QString& directory, const QStringList& suffixes,
                       QString* error = nullptr);
@@ -123,6 +129,7 @@ class MainWindow : public QMainWindow {
   PlotPanel* plot_panel_ = nullptr;
   RunTable* run_table_ = nullptr;
   FieldView* field_view_ = nullptr;
+  StudyView* study_view_ = nullptr;
   QSplitter* run_splitter_ = nullptr;
   QAction* run_action_ = nullptr;
   QAction* cancel_action_ = nullptr;

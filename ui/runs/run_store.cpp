@@ -69,8 +69,11 @@ std::string SamplesCsv(const std::vector<RunSample>& samples) {
 }
 
 // Reads SamplesCsv's text. Columns are found by their header names: a file saved by an earlier
-// version, which lacks columns added since, reads with those columns empty (NaN).
-std::vector<RunSample> ParseSamplesCsv(const std::string& text, const fs::path& path) {
+// version, which lacks columns added since, reads with those columns empty (NaN). With
+// `skip_unknown` the columns this version does not show are skipped (results.csv and motion.csv
+// of a run folder carry more columns than the plots draw); without, they are an error.
+std::vector<RunSample> ParseSamplesCsv(const std::string& text, const fs::path& path,
+                                       bool skip_unknown = false) {
   std::istringstream in(text);
   std::string line;
   std::getline(in, line);
@@ -79,13 +82,16 @@ std::vector<RunSample> ParseSamplesCsv(const std::string& text, const fs::path& 
     const std::size_t end = std::min(line.find(',', start), line.size());
     const std::string name = line.substr(start, end - start);
     const auto known = std::find(kColumnHeaders.begin(), kColumnHeaders.end(), name);
-    if (known == kColumnHeaders.end() ||
-        std::find(columns.begin(), columns.end(), int(known - kColumnHeaders.begin())) !=
-            columns.end()) {
+    if (known == kColumnHeaders.end() && skip_unknown) {
+      columns.push_back(-1);
+    } else if (known == kColumnHeaders.end() ||
+               std::find(columns.begin(), columns.end(), int(known - kColumnHeaders.begin())) !=
+                   columns.end()) {
       throw std::runtime_error(path.string() + ": the header's column \"" + name +
                                "\" is not one of the columns this version shows, or repeated");
+    } else {
+      columns.push_back(int(known - kColumnHeaders.begin()));
     }
-    columns.push_back(int(known - kColumnHeaders.begin()));
     start = end + 1;
   }
   std::vector<RunSample> samples;
@@ -96,8 +102,8 @@ std::vector<RunSample> ParseSamplesCsv(const std::string& text, const fs::path& 
     std::size_t start = 0;
     for (std::size_t c = 0; c < columns.size(); ++c) {
       const std::size_t end = std::min(line.find(',', start), line.size());
-      const char* name = kColumnHeaders[size_t(columns[c])];
-      if (end > start) {
+      if (columns[c] >= 0 && end > start) {  // (< 0: a column this version does not show)
+        const char* name = kColumnHeaders[size_t(columns[c])];
         double v = 0;
         const auto result = std::from_chars(line.data() + start, line.data() + end, v);
         if (result.ec != std::errc() || result.ptr != line.data() + end) {
@@ -140,6 +146,8 @@ RunWriters CopyingWriters(const fs::path& folder) {
     fs::create_directories(to);
     io::WriteFileAtomically(to / "results.csv", ReadBytes(folder / "results.csv"));
     if (fs::is_directory(folder / "fields")) CopyFieldFiles(folder / "fields", to / "fields");
+    if (fs::exists(folder / "motion.csv"))
+      io::WriteFileAtomically(to / "motion.csv", ReadBytes(folder / "motion.csv"));
     io::WriteFileAtomically(to / "summary.json", ReadBytes(folder / "summary.json"));
   };
   writers.csv = [folder] { return ReadBytes(folder / "results.csv"); };
@@ -183,6 +191,33 @@ std::string KeyOfEntry(std::string name) {
 
 void AddBigEndLoads(const fs::path& results_csv, FieldFrames* frames);
 
+// Fills a run from the files of its run folder (as `filmdyn run` writes it): the counters and
+// the error estimate of summary.json, the film fields, the writers that copy the files; throws
+// std::runtime_error naming the file and the problem.
+void RestoreFolder(RunRecord& run, const fs::path& folder, const io::RunSummary& summary) {
+  ReportRunCounters(run, {double(summary.cycles), double(summary.cycles_to_steady_state),
+                          summary.cycle_to_cycle_change, double(summary.solver.steps),
+                          double(summary.solver.rejected_steps), summary.max_constraint_violation,
+                          double(summary.solver.reynolds_solves)});
+  run.ReportErrorEstimate(summary.error_estimate);
+  run.ReportWarnings(summary.warnings);
+  if (!fs::exists(folder / "results.csv")) {
+    throw std::runtime_error("cannot read " + (folder / "results.csv").string() + ": missing");
+  }
+  if (fs::is_directory(folder / "fields")) {
+    auto fields =
+        ReadFieldFrames(QPath(folder / "fields"), run.request().engine_case, run.request().rpm);
+    if (fields) {
+      auto with_loads = std::make_shared<FieldFrames>(*fields);
+      AddBigEndLoads(folder / "results.csv", with_loads.get());
+      fields = with_loads;
+    }
+    run.ReportFields(fields);
+  }
+  run.SetWriters(CopyingWriters(folder));
+  run.setStoredFolder(QPath(folder));
+}
+
 // Fills a run from its stored files; throws std::runtime_error naming the file and the problem.
 void Restore(RunRecord& run, const fs::path& dir, const std::string& key, bool has_folder) {
   if (const fs::path motion = dir / (key + kMotionSuffix); fs::exists(motion)) {
@@ -191,29 +226,7 @@ void Restore(RunRecord& run, const fs::path& dir, const std::string& key, bool h
   run.Report(
       ParseSamplesCsv(ReadBytes(dir / (key + kSamplesSuffix)), dir / (key + kSamplesSuffix)));
   const fs::path folder = dir / key;
-  if (has_folder) {
-    const io::RunSummary summary = io::ReadSummaryJson(folder / "summary.json");
-    ReportRunCounters(run, {double(summary.cycles), double(summary.cycles_to_steady_state),
-                            summary.cycle_to_cycle_change, double(summary.solver.steps),
-                            double(summary.solver.rejected_steps),
-                            summary.max_constraint_violation,
-                            double(summary.solver.reynolds_solves)});
-    run.ReportErrorEstimate(summary.error_estimate);
-    if (!fs::exists(folder / "results.csv")) {
-      throw std::runtime_error("cannot read " + (folder / "results.csv").string() + ": missing");
-    }
-    if (fs::is_directory(folder / "fields")) {
-      auto fields =
-          ReadFieldFrames(QPath(folder / "fields"), run.request().engine_case, run.request().rpm);
-      if (fields) {
-        auto with_loads = std::make_shared<FieldFrames>(*fields);
-        AddBigEndLoads(folder / "results.csv", with_loads.get());
-        fields = with_loads;
-      }
-      run.ReportFields(fields);
-    }
-    run.SetWriters(CopyingWriters(folder));
-  }
+  if (has_folder) RestoreFolder(run, folder, io::ReadSummaryJson(folder / "summary.json"));
   run.setStoredFolder(QPath(folder));
 }
 
@@ -453,6 +466,36 @@ bool SaveProjectRuns(const QString& project_path, const std::vector<ProjectRun>&
   }
   if (report) *report = done;
   return true;
+}
+
+RunHandle ReadRunFolder(const QString& folder_path, RunRequest request, int id) {
+  const fs::path folder = PathOf(folder_path);
+  const io::RunSummary summary = io::ReadSummaryJson(folder / "summary.json");
+  if (summary.status == io::kRunningStatus) {
+    throw std::runtime_error(folder.string() +
+                             " holds a run that has not ended (summary.json "
+                             "says \"running\")");
+  }
+  auto run = std::make_shared<RunRecord>(id, std::move(request));
+  if (const fs::path motion = folder / "motion.csv"; fs::exists(motion)) {
+    run->ReportMotion(ParseSamplesCsv(ReadBytes(motion), motion, true));
+  }
+  run->Report(ParseSamplesCsv(ReadBytes(folder / "results.csv"), folder / "results.csv", true));
+  RestoreFolder(*run, folder, summary);
+  const QString message = QString::fromStdString(summary.message);
+  RunStatus status = RunStatus::kFinished;
+  if (summary.status == "failed") {
+    status = RunStatus::kFailed;
+  } else if (summary.status == "cancelled" || summary.status == "time-limit") {
+    status = RunStatus::kCancelled;
+  } else if (summary.status != "completed" && summary.status != "not-converged") {
+    throw std::runtime_error((folder / "summary.json").string() + ": status \"" + summary.status +
+                             "\" is not one a run ends with");
+  }
+  if (status == RunStatus::kFinished && !message.isEmpty()) run->Warn(summary.message);
+  run->finish(status, message);
+  run->setWallSeconds(summary.wall_time_s);
+  return run;
 }
 
 LoadedRuns LoadProjectRuns(const QString& project_path, const std::function<int()>& take_id) {

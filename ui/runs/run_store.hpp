@@ -63,6 +63,13 @@ struct LoadedRuns {
 /// gives each restored run its id. Never throws: what cannot be read is reported in problems.
 LoadedRuns LoadProjectRuns(const QString& project_path, const std::function<int()>& take_id);
 
+/// A run folder as `filmdyn run` and every point of `filmdyn study` write it, read as a run of
+/// the session: its samples from results.csv (10 significant digits), the motion samples from
+/// motion.csv, status, counters, error estimate and warnings from summary.json, the film fields
+/// from fields/ when it has them. A folder holds no case: `request` gives the run's inputs.
+/// Throws std::runtime_error naming the file when one cannot be read or the run has not ended.
+RunHandle ReadRunFolder(const QString& folder, RunRequest request, int id);
+
 /// The film fields of a run folder's fields/ files (core's HDF5 series) as the field view's
 /// frames, keeping every stride-th frame as a live run does (at most 240 per cycle); `rpm`
 /// gives each frame's time within the cycle. nullptr when the folder has no fields. Throws
