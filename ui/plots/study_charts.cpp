@@ -18,6 +18,7 @@
 #include <cstdlib>
 #include <memory>
 #include <numeric>
+#include <random>
 
 #include "core/base/input_error.hpp"
 #include "core/engine/case_schema.hpp"
@@ -38,6 +39,8 @@ constexpr int kPaletteSize = int(sizeof(kPalette) / sizeof(kPalette[0]));
 // Panel sizes of the pictures [logical px].
 const QSize kScatterCell(360, 300);
 constexpr int kMainEffectsColumns = 3;
+// The most dots the scatter matrix is written as SVG with (beyond, as PNG only).
+constexpr std::size_t kSvgDots = 10000;
 
 bool Done(const batch::StudyRow& r) { return r.state == batch::PointState::kDone; }
 
@@ -237,7 +240,24 @@ std::vector<std::size_t> StudyScatterRows(const std::vector<batch::StudyRow>& ro
     if (Done(rows[n]) && figure < rows[n].figures.size() && rows[n].figures[figure])
       drawn.push_back(n);
   }
+  if (drawn.size() <= kMaxScatterDots) return drawn;
+  // A uniform random sample, the same every time (a fixed seed; the first kMaxScatterDots of a
+  // Fisher–Yates shuffle on the generator's raw output), in the order of `rows`. Not every k-th
+  // row: a factorial's order would alias with its levels.
+  std::mt19937_64 random(20261125);
+  for (std::size_t i = 0; i < kMaxScatterDots; ++i) {
+    const std::size_t j = i + std::size_t(random() % (drawn.size() - i));
+    std::swap(drawn[i], drawn[j]);
+  }
+  drawn.resize(kMaxScatterDots);
+  std::sort(drawn.begin(), drawn.end());
   return drawn;
+}
+
+std::size_t StudyScatterCandidates(const std::vector<batch::StudyRow>& rows, std::size_t figure) {
+  return std::size_t(std::count_if(rows.begin(), rows.end(), [figure](const batch::StudyRow& r) {
+    return Done(r) && figure < r.figures.size() && r.figures[figure];
+  }));
 }
 
 QChart* MakeStudyScatterChart(const batch::Study& study, const std::vector<batch::StudyRow>& rows,
@@ -290,6 +310,9 @@ QChart* MakeStudyScatterChart(const batch::Study& study, const std::vector<batch
     x->setTitleText(FactorTitle(f));
     chart->addAxis(x, Qt::AlignBottom);
     series->attachAxis(x);
+  }
+  if (const std::size_t all = StudyScatterCandidates(rows, figure); all > kMaxScatterDots) {
+    chart->setTitle(QString("a random %1 of %2 points").arg(kMaxScatterDots).arg(all));
   }
   auto* y = new QValueAxis;
   if (!(y1 >= y0)) y0 = 0, y1 = 1;
@@ -480,13 +503,14 @@ QStringList ExportStudyPlots(const batch::Study& study, const std::vector<batch:
   const std::vector<std::size_t> figures = StudyPlotFigures(rows);
   // Writes <plots>/<base>.png and .svg of the charts (deleted afterwards); with no chart, removes
   // an older picture of that name (its study has changed since).
+  // `svg` false: the PNG only (an SVG of that name removed).
   auto write = [&](const QString& base, std::vector<std::unique_ptr<QChart>> charts, int columns,
-                   const QSize& cell, const QString& heading) {
+                   const QSize& cell, const QString& heading, bool svg = true) {
     std::vector<QChart*> raw;
     for (const auto& c : charts) raw.push_back(c.get());
     for (const QString& suffix : {QString("png"), QString("svg")}) {
       const QString path = QDir(plots).filePath(base + "." + suffix);
-      if (raw.empty()) {
+      if (raw.empty() || (suffix == "svg" && !svg)) {
         QFile::remove(path);
         continue;
       }
@@ -524,8 +548,12 @@ QStringList ExportStudyPlots(const batch::Study& study, const std::vector<batch:
       for (std::size_t f = 0; f < study.factors.size(); ++f)
         charts.emplace_back(MakeStudyScatterChart(study, rows, f, k));
     }
+    // An SVG holds every dot as an element of its own (about 1 kB each: 43 MB for 1000 points
+    // and 16 figures of 3 factors, bench/bench_study_plots): beyond kSvgDots, the PNG only.
+    const std::size_t done = std::size_t(std::count_if(rows.begin(), rows.end(), Done));
+    const bool svg = done * charts.size() <= kSvgDots;
     if (!write("scatter-matrix", std::move(charts), int(study.factors.size()), kScatterCell,
-               QString("%1 — every figure against every factor (done points)").arg(name)))
+               QString("%1 — every figure against every factor (done points)").arg(name), svg))
       return written;
   }
   // Best points.

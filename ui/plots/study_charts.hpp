@@ -38,8 +38,17 @@ QString FactorValueText(const batch::StudyFactor& factor, const std::string& val
 /// at least one done point has and that take at least two different values over the done points.
 std::vector<std::size_t> StudyPlotFigures(const std::vector<batch::StudyRow>& rows);
 
+/// The most points a scatter plot draws. Qt Charts makes a graphics item of every dot, and its
+/// cost grows faster than the number of dots (bench/bench_study_plots: 13 s for the 48 panels
+/// of 2 000 points, 200 s for 10 000); beyond, a random sample of this many is drawn and the
+/// chart's title says so.
+inline constexpr std::size_t kMaxScatterDots = 2000;
+/// The done rows that have `figure` (what a scatter plot of it would draw without the limit).
+std::size_t StudyScatterCandidates(const std::vector<batch::StudyRow>& rows, std::size_t figure);
+
 /// The rows drawn by MakeStudyScatterChart for `figure`, in the order of its series' points:
-/// every done row that has the figure, in the order of `rows`. Point k of the series
+/// every done row that has the figure, in the order of `rows` (beyond kMaxScatterDots, a random
+/// sample of kMaxScatterDots of them, the same on every call). Point k of the series
 /// (QXYSeries::at(k)) is rows[StudyScatterRows(rows, figure)[k]]; a point that the series'
 /// clicked(QPointF) signal gives is at k = series->points().indexOf(point) (the first of two
 /// points drawn at the same place). The factor does not matter: every row has a value of every
@@ -53,8 +62,9 @@ std::vector<std::size_t> StudyScatterRows(const std::vector<batch::StudyRow>& ro
 /// for its k-th level (the study's order; a one-at-a-time base value that is no level comes
 /// after them), its tick labelled with the level's name. One QScatterSeries (the chart's only
 /// series, named after the figure) holds one point per row of StudyScatterRows(rows, figure),
-/// in that order; points that are not done, or have no such figure, are not drawn. No title
-/// and no legend: the axes say what is drawn.
+/// in that order; points that are not done, or have no such figure, are not drawn. No legend,
+/// and no title unless the points are a sample ("a random 2000 of 10000 points"): the axes say
+/// what is drawn.
 QChart* MakeStudyScatterChart(const batch::Study& study, const std::vector<batch::StudyRow>& rows,
                               std::size_t factor, std::size_t figure);
 
@@ -85,7 +95,8 @@ QChart* MakeBestPointsChart(const batch::Study& study, const std::vector<batch::
 ///   main-effects     a grid of MakeMainEffectsChart, one panel per StudyPlotFigures figure
 ///                    (when a factor has discrete levels)
 ///   scatter-matrix   MakeStudyScatterChart panels: a row per StudyPlotFigures figure, a
-///                    column per factor
+///                    column per factor (its SVG only up to 10 000 dots in all: beyond, an SVG
+///                    of a dot each would take tens of MB, and the PNG is written alone)
 ///   best-points      MakeBestPointsChart of the figure `rank_by` (a study.csv column), or of
 ///                    batch::DefaultRankFigure when `rank_by` is empty
 /// A plot with nothing to draw is not written (and an older file of it removed). Returns the

@@ -22,11 +22,15 @@
 #include <QTemporaryDir>
 #include <QValueAxis>
 #include <QtTest>
+#include <algorithm>
 #include <cmath>
+#include <memory>
 
+#include "core/engine/engine_case.hpp"
 #include "core/io/run_comparison.hpp"
 #include "ui/main_window.hpp"
 #include "ui/plots/plot_panel.hpp"
+#include "ui/plots/study_charts.hpp"
 #include "ui/runs/run_table.hpp"
 #include "ui/study/study_view.hpp"
 
@@ -203,6 +207,42 @@ class TestStudyView : public QObject {
     series = qobject_cast<QScatterSeries*>(view.scatterView()->chart()->series().front());
     QCOMPARE(series->count(), 4);  // the done points: Ideal 2000 rpm and the three Only-LBRBE
     Save(&view, "study-page.png");
+  }
+
+  void aLargeStudysScatterDrawsAMarkedRandomSample() {
+    // 2 500 done points (synthetic figures): the plot draws a fixed random 2 000 of them, in the
+    // rows' order, and says so.
+    const filmdyn::batch::Study study = filmdyn::batch::ParseStudy(
+        R"({"design": "latin-hypercube", "points": 2500, "factors": [
+            {"path": "operating.rpm", "range": [2000, 6000]}]})",
+        "large.json");
+    std::vector<filmdyn::batch::StudyRow> rows;
+    const int moft = FigureIndex("min_bearing_moft[m]");
+    for (const auto& p : filmdyn::batch::DesignPoints(study, filmdyn::engine::EngineCase{})) {
+      filmdyn::batch::StudyRow r;
+      r.point = p;
+      r.state = filmdyn::batch::PointState::kDone;
+      r.figures.assign(filmdyn::io::ComparisonFigures().size(), std::nullopt);
+      r.figures[size_t(moft)] = 1e-6 * *p.numbers[0] / 1000;
+      rows.push_back(r);
+    }
+    const auto drawn = filmdyn::ui::StudyScatterRows(rows, size_t(moft));
+    QCOMPARE(drawn.size(), filmdyn::ui::kMaxScatterDots);
+    QVERIFY(std::is_sorted(drawn.begin(), drawn.end()));
+    QVERIFY(std::adjacent_find(drawn.begin(), drawn.end()) == drawn.end());
+    QVERIFY(drawn.back() < rows.size());
+    QVERIFY(drawn == filmdyn::ui::StudyScatterRows(rows, size_t(moft)));  // the same every time
+    // Spread over the whole design: each quarter of it holds about a quarter of the sample.
+    for (int q = 0; q < 4; ++q) {
+      const auto in = std::count_if(drawn.begin(), drawn.end(),
+                                    [q](size_t n) { return int(n * 4 / 2500) == q; });
+      QVERIFY2(in > 400 && in < 600, qPrintable(QString::number(in)));
+    }
+    std::unique_ptr<QChart> chart(filmdyn::ui::MakeStudyScatterChart(study, rows, 0, size_t(moft)));
+    auto* series = qobject_cast<QScatterSeries*>(chart->series().front());
+    QCOMPARE(series->count(), 2000);
+    QCOMPARE(series->at(0).x(), *rows[drawn[0]].point.numbers[0]);
+    QCOMPARE(chart->title(), QString("a random 2000 of 2500 points"));
   }
 
   void aPointsRunOpensInTheResultsView() {
