@@ -17,6 +17,12 @@ function(filmdyn_add_qtest name)
     FILMDYN_SOURCE_DIR="${PROJECT_SOURCE_DIR}" FILMDYN_BINARY_DIR="${PROJECT_BINARY_DIR}")
   set_target_properties(${name} PROPERTIES AUTOMOC ON)
   filmdyn_warnings(${name})
+  # The donor's PCH (tests/CMakeLists.txt) for the suites that link FilmDyn's libraries (the
+  # donor's macros and include paths come from them); a rejected PCH is a warning.
+  if(FILMDYN_TEST_PCH AND "${T_LIBS}" MATCHES "FilmDyn::|filmdyn_cli")
+    target_precompile_headers(${name} REUSE_FROM filmdyn_test_pch)
+    target_compile_options(${name} PRIVATE -Winvalid-pch)
+  endif()
   set(labels ${T_LABEL})
   if(T_GL)
     list(APPEND labels gl)
