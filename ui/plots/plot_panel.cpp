@@ -21,17 +21,13 @@
 #include <numbers>
 
 #include "ui/charts/chart_export.hpp"
+#include "ui/charts/palette.hpp"
 #include "ui/charts/round_ticks.hpp"
 
 namespace filmdyn::ui {
 
 namespace {
 
-// Colour-blind-safe qualitative palette (Okabe–Ito, black last), then a few more.
-const QColor kPalette[] = {QColor(0, 114, 178),   QColor(213, 94, 0),   QColor(0, 158, 115),
-                           QColor(204, 121, 167), QColor(86, 180, 233), QColor(230, 159, 0),
-                           QColor(120, 120, 120), QColor(0, 0, 0)};
-constexpr int kPaletteSize = int(sizeof(kPalette) / sizeof(kPalette[0]));
 const Qt::PenStyle kStyles[] = {Qt::SolidLine, Qt::DashLine, Qt::DotLine, Qt::DashDotLine};
 constexpr double kLineWidth = 1.6;
 constexpr int kLegendGap = 8;         // between plot area and legend [px]

@@ -24,17 +24,13 @@
 #include "core/engine/case_schema.hpp"
 #include "core/io/run_comparison.hpp"
 #include "ui/charts/chart_export.hpp"
+#include "ui/charts/palette.hpp"
 #include "ui/charts/round_ticks.hpp"
 
 namespace filmdyn::ui {
 
 namespace {
 
-// The result plots' colour-blind-safe palette (Okabe–Ito, black last; ui/plots/plot_panel.cpp).
-const QColor kPalette[] = {QColor(0, 114, 178),   QColor(213, 94, 0),   QColor(0, 158, 115),
-                           QColor(204, 121, 167), QColor(86, 180, 233), QColor(230, 159, 0),
-                           QColor(120, 120, 120), QColor(0, 0, 0)};
-constexpr int kPaletteSize = int(sizeof(kPalette) / sizeof(kPalette[0]));
 
 // Panel sizes of the pictures [logical px].
 const QSize kScatterCell(360, 300);
