@@ -1,5 +1,7 @@
 // The real `filmdyn` executable, run as a user would: help, version, dispatching, and clear
 // one-line errors with exit code 2 for bad input.
+#include <QDir>
+#include <QElapsedTimer>
 #include <QFileInfo>
 #include <QImage>
 #include <QJsonArray>
@@ -8,12 +10,10 @@
 #include <QProcess>
 #include <QSet>
 #include <QTemporaryDir>
-#include <QDir>
-#include <QElapsedTimer>
 #include <QtTest>
 
-#include <csignal>
 #include <sys/types.h>
+#include <csignal>
 
 #include "app/cli/command.hpp"
 #include "app/cli/dispatcher.hpp"
@@ -160,55 +160,6 @@ class TestCli : public QObject {
     }
   }
 
-  void reproduceRunsThePapersStudyAndIndexesItsFigures() {
-    // The paper's section 4 study on the coarse test meshes: six real runs (three models at
-    // 6000 rpm, Skirt-LBRBE at 1000/2000/4000 rpm), overlays and the figure index. On these
-    // meshes the bearing film collapses at 1000 and 2000 rpm (the coarse mesh under-predicts the
-    // MOFT ~2.6x): those runs must end as `failed` with partial results, and the study still
-    // writes everything else (exit code 1 = some run incomplete).
-    QTemporaryDir dir;
-    const QString out = dir.filePath("paper");
-    const Result result =
-        Run({"reproduce", "--out", out, "--no-fields", "--quiet", "--jobs", "2", "--set",
-             "skirt.mesh_thrust=10", "--set", "skirt.mesh_anti=10", "--set", "skirt.mesh_axial=12",
-             "--set", "big_end.mesh_theta=24", "--set", "big_end.mesh_z=6"},
-            QProcessEnvironment::systemEnvironment(), 280000);
-    QVERIFY2(result.exit_code == 0 || result.exit_code == 1, qPrintable(result.err));
-    for (const char* run : {"only-skirt-6000", "only-lbrbe-6000", "skirt-lbrbe-6000",
-                            "skirt-lbrbe-1000", "skirt-lbrbe-2000", "skirt-lbrbe-4000"}) {
-      const QString folder = out + "/runs/zhao-shen-gasoline-" + run;
-      QVERIFY2(QFileInfo::exists(folder + "/summary.json"), qPrintable(folder));
-      QVERIFY2(QFileInfo::exists(folder + "/results.csv"), qPrintable(folder));
-    }
-    QVERIFY(result.err.contains("reproduce: skirt-lbrbe 6000 rpm: completed"));
-    QVERIFY(result.err.contains("reproduce: only-skirt 6000 rpm: completed"));
-    QVERIFY(result.err.contains("reproduce: only-lbrbe 6000 rpm: completed"));
-    // Models: three rows; speeds: four (the 6000 rpm Skirt-LBRBE run is shared).
-    auto rows = [&](const QString& csv_path) {
-      QFile csv(csv_path);
-      return csv.open(QIODevice::ReadOnly)
-                 ? QString::fromUtf8(csv.readAll()).trimmed().split('\n').size() - 1
-                 : -1;
-    };
-    QCOMPARE(rows(out + "/models-6000rpm/comparison.csv"), 3);
-    QCOMPARE(rows(out + "/speeds-skirt-lbrbe/comparison.csv"), 4);
-    for (const char* plot :
-         {"models-6000rpm/plots/journal_orbit.png", "models-6000rpm/plots/moft.png",
-          "speeds-skirt-lbrbe/plots/fpl.png", "speeds-skirt-lbrbe/plots/phase_eps.png",
-          "figures/cylinder_pressure.png"}) {
-      const QImage image(out + "/" + plot);
-      QVERIFY2(!image.isNull() && image.width() > 500, plot);
-    }
-    QVERIFY(QFileInfo(out + "/figures/cylinder_pressure.svg").size() > 1000);
-    QFile index(out + "/figures.md");
-    QVERIFY(index.open(QIODevice::ReadOnly));
-    const QString text = QString::fromUtf8(index.readAll());
-    for (int figure = 5; figure <= 15; ++figure) {
-      QVERIFY2(text.contains(QString("| Fig. %1 |").arg(figure)), qPrintable(text));
-    }
-    QVERIFY(result.out.contains("## The three models at 6000 rpm"));
-  }
-
   void sweepRejectsBadJobs() {
     const Result result = Run({"sweep", "--jobs", "0"});
     QCOMPARE(result.exit_code, 2);
@@ -290,10 +241,10 @@ class TestCli : public QObject {
     QTemporaryDir dir;
     QElapsedTimer timer;
     timer.start();
-    const Result limited = Run({"run", "--out", dir.filePath("big"), "--quiet", "--no-fields",
-                                "--time-limit", "1", "--set", "big_end.mesh_theta=2000",
-                                "--set", "big_end.mesh_z=200"},
-                               QProcessEnvironment::systemEnvironment(), 120000);
+    const Result limited =
+        Run({"run", "--out", dir.filePath("big"), "--quiet", "--no-fields", "--time-limit", "1",
+             "--set", "big_end.mesh_theta=2000", "--set", "big_end.mesh_z=200"},
+            QProcessEnvironment::systemEnvironment(), 120000);
     qInfo("--time-limit 1 on a 2000 x 200 big-end mesh: exited after %lld ms",
           static_cast<long long>(timer.elapsed()));
     QCOMPARE(limited.exit_code, 1);
@@ -375,13 +326,13 @@ class TestCli : public QObject {
                   dir.filePath("b3")});
     QCOMPARE(result.exit_code, 2);
     QVERIFY2(result.err.contains(".pressure = 1e+300"), qPrintable(result.err));
-    result = Run({"run", "--model", "ideal", "--pressure-curve", "/dev/zero", "--out",
-                  dir.filePath("c")});
+    result = Run(
+        {"run", "--model", "ideal", "--pressure-curve", "/dev/zero", "--out", dir.filePath("c")});
     QCOMPARE(result.exit_code, 2);
     QVERIFY2(result.err.contains("--pressure-curve = /dev/zero: is not a regular file"),
              qPrintable(result.err));
-    result = Run({"run", "--model", "ideal", "--set", "pressure_curves.3.file=/dev/zero",
-                  "--out", dir.filePath("d")});
+    result = Run({"run", "--model", "ideal", "--set", "pressure_curves.3.file=/dev/zero", "--out",
+                  dir.filePath("d")});
     QCOMPARE(result.exit_code, 2);
     QVERIFY2(result.err.contains("pressure_curves.3.file"), qPrintable(result.err));
     const QString cell = dir.filePath("cell.csv");
@@ -414,7 +365,8 @@ class TestCli : public QObject {
                  {"run", "--model", "ideal", "--quiet", "--set", "name=../../escaped"});
     QVERIFY(escape.waitForFinished(60000));
     QCOMPARE(escape.exitCode(), 0);
-    const QStringList made = QDir(dir.filePath("results")).entryList(QDir::Dirs | QDir::NoDotAndDotDot);
+    const QStringList made =
+        QDir(dir.filePath("results")).entryList(QDir::Dirs | QDir::NoDotAndDotDot);
     QCOMPARE(made.size(), 1);
     QVERIFY2(!made.first().contains('/'), qPrintable(made.first()));
     QVERIFY(!QFileInfo::exists(QDir(dir.path()).absoluteFilePath("../escaped-ideal-6000")));
