@@ -19,26 +19,14 @@
 #include "app/cli/dispatcher.hpp"
 #include "core/base/input_error.hpp"
 
-namespace {
+#include "run_filmdyn.hpp"
 
-struct Result {
-  int exit_code = -1;
-  QString out;
-  QString err;
-};
+namespace {
 
 Result Run(const QStringList& arguments,
            const QProcessEnvironment& env = QProcessEnvironment::systemEnvironment(),
            int timeout_ms = 60000) {
-  QProcess process;
-  process.setProcessEnvironment(env);
-  process.start(FILMDYN_EXECUTABLE, arguments);
-  if (!process.waitForFinished(timeout_ms)) {
-    process.kill();
-    return {};
-  }
-  return {process.exitCode(), QString::fromUtf8(process.readAllStandardOutput()),
-          QString::fromUtf8(process.readAllStandardError())};
+  return RunFilmdyn(arguments, timeout_ms, env);
 }
 
 }  // namespace

@@ -13,23 +13,12 @@
 
 #include <cmath>
 
+#include "run_filmdyn.hpp"
+
 namespace {
 
-struct Result {
-  int exit_code = -1;
-  QString out;
-  QString err;
-};
-
 Result Run(const QStringList& arguments) {
-  QProcess process;
-  process.start(FILMDYN_EXECUTABLE, QStringList{"skirt"} + arguments);
-  if (!process.waitForFinished(120000)) {
-    process.kill();
-    return {};
-  }
-  return {process.exitCode(), QString::fromUtf8(process.readAllStandardOutput()),
-          QString::fromUtf8(process.readAllStandardError())};
+  return RunFilmdyn(QStringList{"skirt"} + arguments, 120000);
 }
 
 QJsonObject Json(const Result& r) { return QJsonDocument::fromJson(r.out.toUtf8()).object(); }

@@ -14,23 +14,12 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include "run_filmdyn.hpp"
+
 namespace {
 
-struct Result {
-  int exit_code = -1;
-  QString out;
-  QString err;
-};
-
 Result Run(const QStringList& arguments, int timeout_ms = 300000) {
-  QProcess process;
-  process.start(FILMDYN_EXECUTABLE, arguments);
-  if (!process.waitForFinished(timeout_ms)) {
-    process.kill();
-    return {};
-  }
-  return {process.exitCode(), QString::fromUtf8(process.readAllStandardOutput()),
-          QString::fromUtf8(process.readAllStandardError())};
+  return RunFilmdyn(arguments, timeout_ms);
 }
 
 QByteArray Read(const QString& path) {
