@@ -31,7 +31,6 @@ namespace filmdyn::ui {
 
 namespace {
 
-
 // Panel sizes of the pictures [logical px].
 const QSize kScatterCell(360, 300);
 constexpr int kMainEffectsColumns = 3;
@@ -39,6 +38,10 @@ constexpr int kMainEffectsColumns = 3;
 constexpr std::size_t kSvgDots = 10000;
 
 bool Done(const batch::StudyRow& r) { return r.state == batch::PointState::kDone; }
+// A done point that has figure k (what a plot of the figure can draw).
+bool HasFigure(const batch::StudyRow& r, std::size_t k) {
+  return Done(r) && k < r.figures.size() && r.figures[k].has_value();
+}
 
 QString Text(const std::string& text) { return QString::fromStdString(text); }
 
@@ -220,7 +223,7 @@ std::vector<std::size_t> StudyPlotFigures(const std::vector<batch::StudyRow>& ro
   for (std::size_t k = 0; k < io::ComparisonFigures().size(); ++k) {
     double lo = INFINITY, hi = -INFINITY;
     for (const batch::StudyRow& r : rows) {
-      if (!Done(r) || k >= r.figures.size() || !r.figures[k]) continue;
+      if (!HasFigure(r, k)) continue;
       lo = std::min(lo, *r.figures[k]);
       hi = std::max(hi, *r.figures[k]);
     }
@@ -233,8 +236,7 @@ std::vector<std::size_t> StudyScatterRows(const std::vector<batch::StudyRow>& ro
                                           std::size_t figure) {
   std::vector<std::size_t> drawn;
   for (std::size_t n = 0; n < rows.size(); ++n) {
-    if (Done(rows[n]) && figure < rows[n].figures.size() && rows[n].figures[figure])
-      drawn.push_back(n);
+    if (HasFigure(rows[n], figure)) drawn.push_back(n);
   }
   if (drawn.size() <= kMaxScatterDots) return drawn;
   // A uniform random sample, the same every time (a fixed seed; the first kMaxScatterDots of a
@@ -252,7 +254,7 @@ std::vector<std::size_t> StudyScatterRows(const std::vector<batch::StudyRow>& ro
 
 std::size_t StudyScatterCandidates(const std::vector<batch::StudyRow>& rows, std::size_t figure) {
   return std::size_t(std::count_if(rows.begin(), rows.end(), [figure](const batch::StudyRow& r) {
-    return Done(r) && figure < r.figures.size() && r.figures[figure];
+    return HasFigure(r, figure);
   }));
 }
 
@@ -285,6 +287,7 @@ QChart* MakeStudyScatterChart(const batch::Study& study, const std::vector<batch
   }
   chart->addSeries(series);
 
+  QAbstractAxis* x_axis = nullptr;
   if (f.is_text()) {
     auto* x = new QCategoryAxis;
     x->setLabelsPosition(QCategoryAxis::AxisLabelsPositionCenter);
@@ -296,17 +299,16 @@ QChart* MakeStudyScatterChart(const batch::Study& study, const std::vector<batch
     QFont font = x->labelsFont();
     font.setPointSizeF(font.pointSizeF() * 0.85);
     x->setLabelsFont(font);
-    x->setTitleText(FactorTitle(f));
-    chart->addAxis(x, Qt::AlignBottom);
-    series->attachAxis(x);
+    x_axis = x;
   } else {
     auto* x = new QValueAxis;
     if (!(x1 >= x0)) x0 = 0, x1 = 1;
     SetFactorAxis(x, x0, x1, 4);
-    x->setTitleText(FactorTitle(f));
-    chart->addAxis(x, Qt::AlignBottom);
-    series->attachAxis(x);
+    x_axis = x;
   }
+  x_axis->setTitleText(FactorTitle(f));
+  chart->addAxis(x_axis, Qt::AlignBottom);
+  series->attachAxis(x_axis);
   if (const std::size_t all = StudyScatterCandidates(rows, figure); all > kMaxScatterDots) {
     chart->setTitle(QString("a random %1 of %2 points").arg(kMaxScatterDots).arg(all));
   }
