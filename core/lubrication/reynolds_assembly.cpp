@@ -155,6 +155,8 @@ ReynoldsFem::ReynoldsFem(TriMesh mesh, int sliding_axis, ReynoldsOptions options
   h_ = Eigen::VectorXd::Constant(n, 1.0);
   dhdt_ = Eigen::VectorXd::Zero(n);
   p_fixed_ = Eigen::VectorXd::Zero(n);
+  theta_fixed_ = Eigen::VectorXd::Ones(n);
+  void_old_ = Eigen::VectorXd::Zero(n);
   f_ = rhs_ = x_ = work_ = phi_c_ = Eigen::VectorXd::Zero(n);
   extra_fixed_.assign(n, 0);
   fixed_.assign(n, 0);
@@ -165,6 +167,7 @@ ReynoldsFem::ReynoldsFem(TriMesh mesh, int sliding_axis, ReynoldsOptions options
   factors_.assign(n, NodalFilmFactors{});
   sol_.pressure = sol_.contact_pressure = sol_.residual = Eigen::VectorXd::Zero(n);
   sol_.fluid_fraction = Eigen::VectorXd::Ones(n);
+  sol_.void_content = Eigen::VectorXd::Zero(n);
   sol_.cavitated.assign(n, 0);
 }
 
@@ -245,6 +248,7 @@ void ReynoldsFem::Assemble(const ReynoldsParams& params) {
     }
   }
   u_sum_ = params.u_sum;
+  time_step_ = jfo ? params.time_step : 0.0;
   // Flow scale for relative tolerances: the Couette and squeeze flows through one cell.
   double scale = f_.cwiseAbs().maxCoeff();
   for (int k = 0; k < n; ++k) {

@@ -51,6 +51,7 @@ void ReynoldsStats::Add(const ReynoldsStats& o) {
   complementarity_residual = std::max(complementarity_residual, o.complementarity_residual);
   min_pressure = std::min(min_pressure, o.min_pressure);
   max_mass_residual = std::max(max_mass_residual, o.max_mass_residual);
+  fraction_excess = std::max(fraction_excess, o.fraction_excess);
   assembly_s += o.assembly_s;
   factorization_s += o.factorization_s;
   complementarity_s += o.complementarity_s;
@@ -58,12 +59,15 @@ void ReynoldsStats::Add(const ReynoldsStats& o) {
 
 const ReynoldsSolution& ReynoldsFem::Solve(const ReynoldsParams& params) {
   const int n = NodeCount();
+  if (!(params.time_step >= 0.0) || !std::isfinite(params.time_step))
+    throw std::logic_error("ReynoldsFem::Solve: time_step must be finite and >= 0");
   sol_.stats = ReynoldsStats{};
   auto t0 = Clock::now();
   for (int k = 0; k < n; ++k) fixed_[k] = mesh_.fixed[k] || extra_fixed_[k];
   Assemble(params);
   sol_.stats.assembly_s = Seconds(t0, Clock::now());
   sol_.fluid_fraction.setOnes();
+  sol_.void_content.setZero();
   switch (options_.cavitation) {
     case CavitationModel::kNone:
       SolveReynoldsLcp(true);

@@ -27,7 +27,16 @@
 ///    -r dh/dt, on the dual cells of the structured mesh. Solved by the same active-set
 ///    (semismooth Newton) iteration on the mixed unknowns (p on full-film nodes, r on cavitated
 ///    ones), started from the Reynolds solution; non-symmetric, so a sparse LU is used.
-///    Quasi-static: d(r h)/dt history is not carried between solves (the r dh/dt term only).
+///    Quasi-static (ReynoldsParams::time_step = 0): d(phi_c r h)/dt ~ phi_c r dh/dt, no history.
+///    Transient (time_step > 0): the void content V = phi_c r h of every node is carried from
+///    the previous step (void_history()) and its rate is the backward difference
+///    (V - V_old) / dt (lumped), while the full-film squeeze phi_c dh/dt keeps the exact dh/dt of
+///    the caller (a function of the state, so an ODE integrator's error control covers it). The
+///    nodal balances then conserve oil exactly through rupture and reformation: the void that
+///    collapses where the film reforms must be filled by the flow (Elrod-Adams / JFO in the
+///    time-dependent form of Ausas et al. 2009, J. Tribol. 131 031702).
+///    Fixed nodes carry a prescribed fluid fraction (boundary_fraction(), default 1): a starved
+///    inlet brings the void 1 - theta into the film with its Couette flow.
 ///  - kNone: full Sommerfeld film, negative pressures allowed (verification only).
 #include <Eigen/Sparse>
 #include <Eigen/SparseLU>
@@ -78,6 +87,9 @@ struct ReynoldsParams {
   double u_sum = 0.0;                     ///< U1 + U2 along the sliding axis [m/s]
   double u_diff = 0.0;                    ///< U1 - U2 along the sliding axis [m/s]
   const FilmFactorModel* film = nullptr;  ///< nullptr = smooth surfaces
+  /// JFO only: 0 = quasi-static; > 0 = transient, the time [s] since the state whose void
+  /// content is in ReynoldsFem::void_history().
+  double time_step = 0.0;
 };
 
 /// Statistics of one solve.
@@ -93,6 +105,8 @@ struct ReynoldsStats {
   double complementarity_residual = 0;  ///< max_k |min(p_k/p_ref, w_k/w_ref)| over free nodes
   double min_pressure = 0;              ///< most negative nodal pressure [Pa] (0 when exact)
   double max_mass_residual = 0;         ///< JFO: max nodal mass-balance residual / flow scale
+  /// JFO: how far the fluid fraction leaves [0, 1] (max of -theta and theta - 1, 0 when inside).
+  double fraction_excess = 0;
   double assembly_s = 0, factorization_s = 0, complementarity_s = 0;  ///< wall times [s]
 
   /// Merges the statistics of an independent solve of the same step (e.g. the other panel of
@@ -105,6 +119,9 @@ struct ReynoldsSolution {
   Eigen::VectorXd pressure;             ///< p [Pa] (gauge, relative to the cavitation pressure)
   Eigen::VectorXd contact_pressure;     ///< asperity pressure p_c [Pa]
   Eigen::VectorXd fluid_fraction;       ///< JFO theta = 1 - r (1 in the full film) [-]
+  /// JFO: void content phi_c (1 - theta) h [m] per node (0 on fixed nodes): the next transient
+  /// step's void_history().
+  Eigen::VectorXd void_content;
   Eigen::VectorXd residual;             ///< w = K p - f (+B r): nodal net outflow [m^3/s]; at
                                         ///< fixed nodes minus the boundary outflow
   std::vector<std::uint8_t> cavitated;  ///< 1 where the film is cavitated (active set)
@@ -137,6 +154,11 @@ class ReynoldsFem {
   Eigen::VectorXd& film_rate() { return dhdt_; }             ///< dh/dt [m/s]
   Eigen::VectorXd& boundary_pressure() { return p_fixed_; }  ///< p on fixed nodes [Pa] (>= 0)
   std::vector<std::uint8_t>& extra_fixed() { return extra_fixed_; }  ///< per-solve Dirichlet
+  /// JFO: fluid fraction theta on fixed nodes, in (0, 1] (default 1: a flooded boundary).
+  Eigen::VectorXd& boundary_fraction() { return theta_fixed_; }
+  /// Transient JFO: the void content [m] per node at the start of the step (the previous
+  /// solve's ReynoldsSolution::void_content; zero = a full film).
+  Eigen::VectorXd& void_history() { return void_old_; }
   const Eigen::VectorXd& film_thickness() const { return h_; }
   const Eigen::VectorXd& film_rate() const { return dhdt_; }
 
@@ -194,9 +216,11 @@ class ReynoldsFem {
   std::unique_ptr<SparseLdlt> ldlt_;
   std::unique_ptr<Eigen::SparseLU<Eigen::SparseMatrix<double>>> lu_;
   bool lu_analyzed_ = false;
-  Eigen::VectorXd h_, dhdt_, p_fixed_, f_, rhs_, x_, work_;
+  Eigen::VectorXd h_, dhdt_, p_fixed_, f_, rhs_, x_, work_, theta_fixed_, void_old_;
+  double time_step_ = 0.0;
   std::vector<std::uint8_t> extra_fixed_, fixed_, active_, prev_active_, next_active_;
   bool have_prev_ = false;
+  bool jfo_warm_ = false;  // prev_active_ holds the cavitated set of a converged JFO solve
   // The matrix the LDL^T factor belongs to: per node 0 free, 1 active (cavitated), 2 fixed
   // (unit or diagonal row); factor_ready_ once a factorisation succeeded.
   std::vector<std::uint8_t> cut_, factor_cut_;

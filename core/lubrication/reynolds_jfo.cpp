@@ -19,9 +19,16 @@ bool ReynoldsFem::SolveJfo() {
   const int n = NodeCount();
   ReynoldsStats& st = sol_.stats;
   auto t_start = Clock::now();
-  // Start from the Swift-Stieber active set (a good approximation of the cavitated zone).
-  if (!SolveReynoldsLcp(false) && st.status == SolveStatus::kFactorizationFailed) return false;
-  st.status = SolveStatus::kConverged;
+  // Start from the last JFO solve's cavitated set when there is one (the time-stepping case: the
+  // zone moved little), else from the Swift-Stieber active set (a good approximation of it).
+  if (options_.warm_start && jfo_warm_) {
+    active_ = prev_active_;
+    for (int k = 0; k < n; ++k)
+      if (fixed_[k]) active_[k] = 0;
+  } else {
+    if (!SolveReynoldsLcp(false) && st.status == SolveStatus::kFactorizationFailed) return false;
+    st.status = SolveStatus::kConverged;
+  }
   std::vector<std::uint8_t>& cav = active_;  // cavitated set, updated in place
   Eigen::VectorXd base = f_;                 // same symmetric elimination of prescribed pressures
   const double* kf = k_full_.valuePtr();
@@ -33,18 +40,31 @@ bool ReynoldsFem::SolveJfo() {
   }
   for (int k = 0; k < n; ++k)
     if (fixed_[k]) base[k] = kf[diag_pos_full_[k]] * p_fixed_[k];
-  // Void transport coefficients: B_kk = -(|U|/2) h_k w_k - A_k phi_c dh/dt,
-  // B_dk = +(|U|/2) h_k w_k (d = downstream neighbour of k).
-  Eigen::VectorXd bdiag(n), boff(n);
+  // Void transport coefficients: B_kk = -(|U|/2) h_k w_k - A_k phi_c s_k,
+  // B_dk = +(|U|/2) h_k w_k (d = downstream neighbour of k), where s_k = dh/dt (quasi-static) or
+  // h_k / dt (transient: the void content's backward difference, its old part moved to `base`).
+  const bool transient = time_step_ > 0.0;
+  const double inv_dt = transient ? 1.0 / time_step_ : 0.0;
+  Eigen::VectorXd bdiag(n), boff(n), r_fixed(n);
   std::vector<int> bpos(n), bnode(n);
+  const bool plus = u_sum_ >= 0.0;
   for (int k = 0; k < n; ++k) {
-    const double a = 0.5 * std::abs(u_sum_) * h_[k] * face_width_[k];
-    bdiag[k] = -a - lumped_area_[k] * phi_c_[k] * dhdt_[k];
-    if (std::abs(bdiag[k]) < 1e-14 * flow_scale_) bdiag[k] = -kf[diag_pos_full_[k]];  // r idle
-    boff[k] = a;
-    const bool plus = u_sum_ >= 0.0;
     bnode[k] = plus ? down_node_plus_[k] : down_node_minus_[k];
     bpos[k] = plus ? down_pos_plus_[k] : down_pos_minus_[k];
+    // No downstream neighbour (an open end): no Couette flux, as in the full-film assembly.
+    const double a = bnode[k] >= 0 ? 0.5 * std::abs(u_sum_) * h_[k] * face_width_[k] : 0.0;
+    const double storage = transient ? h_[k] * inv_dt : dhdt_[k];
+    bdiag[k] = -a - lumped_area_[k] * phi_c_[k] * storage;
+    if (std::abs(bdiag[k]) < 1e-14 * flow_scale_) bdiag[k] = -kf[diag_pos_full_[k]];  // r idle
+    boff[k] = a;
+    r_fixed[k] = fixed_[k] ? 1.0 - theta_fixed_[k] : 0.0;
+  }
+  // Known void terms: the old void content of every free node (transient), and the void a
+  // starved fixed node sends downstream with its Couette flow.
+  for (int k = 0; k < n; ++k) {
+    if (transient && !fixed_[k]) base[k] -= lumped_area_[k] * void_old_[k] * inv_dt;
+    if (fixed_[k] && r_fixed[k] != 0.0 && bnode[k] >= 0 && !fixed_[bnode[k]])
+      base[bnode[k]] -= boff[k] * r_fixed[k];
   }
   if (!lu_) lu_ = std::make_unique<Eigen::SparseLU<Eigen::SparseMatrix<double>>>();
   if (!lu_analyzed_) {
@@ -57,7 +77,7 @@ bool ReynoldsFem::SolveJfo() {
   Eigen::VectorXd r = Eigen::VectorXd::Zero(n);
   bool converged = false;
   st.complementarity_s += Seconds(t_start, Clock::now()) - 0.0;
-  while (st.iterations < options_.max_iterations) {
+  for (int iteration = 0; iteration < options_.max_iterations; ++iteration) {
     ThrowIfStopRequested(stop_check_);
     auto t0 = Clock::now();
     for (int c = 0; c < n; ++c) {
@@ -93,7 +113,7 @@ bool ReynoldsFem::SolveJfo() {
     for (int k = 0; k < n; ++k) {
       if (fixed_[k]) {
         p[k] = p_fixed_[k];
-        r[k] = 0.0;
+        r[k] = r_fixed[k];
         continue;
       }
       p[k] = cav[k] ? 0.0 : x_[k];
@@ -111,24 +131,44 @@ bool ReynoldsFem::SolveJfo() {
   }
   if (!converged) st.status = SolveStatus::kNotConverged;
   for (int k = 0; k < n; ++k) {
+    if (fixed_[k]) continue;
     if (!cav[k]) r[k] = 0.0;
     if (cav[k]) p[k] = 0.0;
   }
-  // Mass balance w = K p - f + B r at every node (fixed nodes: minus the boundary outflow).
+  // Mass balance w = K p - f + B r (+ A V_old / dt) at every node; at fixed nodes it is minus
+  // the flow leaving the film there.
   work_.noalias() = k_lower_.selfadjointView<Eigen::Lower>() * p;
   work_ -= f_;
+  double excess = 0.0;
   for (int k = 0; k < n; ++k) {
-    if (!cav[k] || fixed_[k]) continue;
-    const double a = 0.5 * std::abs(u_sum_) * h_[k] * face_width_[k];
-    work_[k] += (-a - lumped_area_[k] * phi_c_[k] * dhdt_[k]) * r[k];
+    if (!fixed_[k]) {
+      if (transient) work_[k] += lumped_area_[k] * void_old_[k] * inv_dt;
+      excess = std::max({excess, r[k] - 1.0, -r[k]});
+    }
+    if (r[k] == 0.0) continue;
+    const double a = boff[k];
+    if (!fixed_[k]) {
+      const double storage = transient ? h_[k] * inv_dt : dhdt_[k];
+      work_[k] += (-a - lumped_area_[k] * phi_c_[k] * storage) * r[k];
+    } else {
+      work_[k] -= a * r[k];  // a starved boundary node sends less oil downstream
+    }
     if (bnode[k] >= 0) work_[bnode[k]] += a * r[k];
   }
-  double mass = 0.0;
-  for (int k = 0; k < n; ++k)
-    if (!fixed_[k]) mass = std::max(mass, std::abs(work_[k]));
-  st.max_mass_residual = mass / flow_scale_;
+  // Relative to the flow scale, which for a transient solve includes the flow that fills a
+  // node's cell within the step.
+  double mass = 0.0, scale = flow_scale_;
+  for (int k = 0; k < n; ++k) {
+    if (fixed_[k]) continue;
+    mass = std::max(mass, std::abs(work_[k]));
+    if (transient) scale = std::max(scale, lumped_area_[k] * phi_c_[k] * h_[k] * inv_dt);
+  }
+  st.max_mass_residual = mass / scale;
+  st.fraction_excess = excess;
   sol_.fluid_fraction = Eigen::VectorXd::Ones(n) - r;
+  for (int k = 0; k < n; ++k) sol_.void_content[k] = fixed_[k] ? 0.0 : phi_c_[k] * r[k] * h_[k];
   prev_active_ = cav;
+  jfo_warm_ = converged;
   return converged;
 }
 

@@ -6,6 +6,7 @@
 
 #include "core/base/input_error.hpp"
 #include "core/engine/validation_cases.hpp"
+#include "core/lubrication/cavitation_validation.hpp"
 #include "core/lubrication/skirt_validation.hpp"
 #include "core/lubrication/validation_cases.hpp"
 #include "core/multibody/validation_cases.hpp"
@@ -17,6 +18,7 @@ namespace {
 const std::vector<std::pair<std::string, std::function<std::vector<ValidationRow>()>>>& Suites() {
   static const std::vector<std::pair<std::string, std::function<std::vector<ValidationRow>()>>>
       suites = {{"lubrication", [] { return lubrication::LubricationValidationRows(); }},
+                {"cavitation", [] { return lubrication::CavitationValidationRows(); }},
                 {"multibody",
                  [] {
                    auto rows = engine::CrankTrainValidationRows();

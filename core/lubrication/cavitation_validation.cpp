@@ -1,0 +1,241 @@
+#include "core/lubrication/cavitation_validation.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <numbers>
+#include <stdexcept>
+
+#include "core/lubrication/tri_mesh.hpp"
+
+namespace filmdyn::lubrication {
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+// Root of f on [a, b] by bisection (f(a) and f(b) of opposite signs) to an interval of 1e-13.
+double Bisect(const std::function<double(double)>& f, double a, double b) {
+  double fa = f(a);
+  if (fa * f(b) > 0.0) throw std::logic_error("Bisect: no sign change");
+  while (b - a > 1e-13) {
+    const double m = 0.5 * (a + b);
+    const double fm = f(m);
+    if ((fm < 0.0) == (fa < 0.0)) {
+      a = m;
+      fa = fm;
+    } else {
+      b = m;
+    }
+  }
+  return 0.5 * (a + b);
+}
+
+}  // namespace
+
+double OscillatorySqueeze::Gap(double t) { return 0.375 + 0.125 * std::cos(4.0 * kPi * t); }
+double OscillatorySqueeze::GapRate(double t) { return -0.5 * kPi * std::sin(4.0 * kPi * t); }
+
+double OscillatorySqueeze::FullFilmPressure(double x, double t) const {
+  const double h = Gap(t);
+  return p0 + GapRate(t) / (h * h * h) * (x * x - x);
+}
+
+double OscillatorySqueeze::RuptureTime() const {
+  // h' = 4 p0 h^3 first holds just after the gap's minimum at t = 1/4 (h' = 0 there).
+  return Bisect([&](double t) { return GapRate(t) - 4.0 * p0 * std::pow(Gap(t), 3); }, 0.25, 0.3);
+}
+
+double OscillatorySqueeze::RuptureFront(double t) const {
+  return 1.0 - std::sqrt(p0 * std::pow(Gap(t), 3) / GapRate(t));
+}
+
+double OscillatorySqueeze::RupturePressure(double x, double t) const {
+  const double s = RuptureFront(t);
+  if (x <= s) return 0.0;
+  return GapRate(t) / std::pow(Gap(t), 3) * (x - s) * (x - s);
+}
+
+double OscillatorySqueeze::PeakTime() const {
+  // d/dt (h^3 / h') = 0  <=>  3 h'^2 = h h'', with h'' = -2 pi^2 cos(4 pi t).
+  return Bisect(
+      [](double t) {
+        const double h2 = -2.0 * kPi * kPi * std::cos(4.0 * kPi * t);
+        return 3.0 * GapRate(t) * GapRate(t) - Gap(t) * h2;
+      },
+      RuptureTime(), 0.375);
+}
+
+OscillatorySqueeze::Trajectory OscillatorySqueeze::Reformation() const {
+  const double t_rup = RuptureTime(), t_peak = PeakTime();
+  const double s_peak = RuptureFront(t_peak);
+  // tau(x): when the growing rupture front passed x in [1/2, s_peak].
+  auto tau = [&](double x) {
+    if (x <= 0.5) return t_rup;
+    if (x >= s_peak) return t_peak;
+    return Bisect([&](double t) { return RuptureFront(t) - x; }, t_rup, t_peak);
+  };
+  auto rate = [&](double t, double s) {
+    const double h = Gap(t), h3 = h * h * h;
+    const double b = p0 / (1.0 - s) - GapRate(t) / h3 * (1.0 - s);
+    return -h3 * b / (2.0 * (h - Gap(tau(s))));
+  };
+  Trajectory tr;
+  const double dt = 1e-5;
+  double t = t_peak + 1e-7, s = s_peak;
+  tr.t.push_back(t_peak);
+  tr.front.push_back(s_peak);
+  while (s > 0.5 && t < t_peak + 1.0) {
+    const double k1 = rate(t, s);
+    const double k2 = rate(t + 0.5 * dt, s + 0.5 * dt * k1);
+    const double k3 = rate(t + 0.5 * dt, s + 0.5 * dt * k2);
+    const double k4 = rate(t + dt, s + dt * k3);
+    const double s_next = s + dt / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
+    if (s_next <= 0.5) {
+      tr.close_time = t + dt * (s - 0.5) / (s - s_next);
+      s = 0.5;
+      t = tr.close_time;
+    } else {
+      s = s_next;
+      t += dt;
+    }
+    tr.t.push_back(t);
+    tr.front.push_back(s);
+  }
+  return tr;
+}
+
+double OscillatorySqueeze::Front(double t, const Trajectory& reform) const {
+  const double t_rup = RuptureTime();
+  if (t >= reform.close_time) t -= 0.5;  // the solution repeats once the first cavity closed
+  if (t < t_rup) return 0.5;
+  if (t <= reform.t.front()) return RuptureFront(t);
+  const auto it = std::lower_bound(reform.t.begin(), reform.t.end(), t);
+  if (it == reform.t.end()) return 0.5;
+  const size_t i = static_cast<size_t>(it - reform.t.begin());
+  const double w = (t - reform.t[i - 1]) / (reform.t[i] - reform.t[i - 1]);
+  return reform.front[i - 1] + w * (reform.front[i] - reform.front[i - 1]);
+}
+
+SqueezeRun SolveOscillatorySqueeze(const OscillatorySqueeze& problem,
+                                   const SqueezeRunOptions& options) {
+  const double width = 0.01;
+  TriMesh mesh =
+      MakeTensorMesh(Linspace(0.0, 1.0, options.cells), Linspace(0.0, width, 1), false, 0.0);
+  const int nx = mesh.nx_nodes();
+  for (int j = 0; j < 2; ++j) {
+    mesh.fixed[mesh.Node(0, j)] = 1;
+    mesh.fixed[mesh.Node(nx - 1, j)] = 1;
+  }
+  ReynoldsOptions opt;
+  opt.cavitation = options.model;
+  ReynoldsFem fem(std::move(mesh), 0, opt);
+  const TriMesh& m = fem.mesh();
+  const int n = m.NodeCount();
+  fem.boundary_pressure() = Eigen::VectorXd::Constant(n, problem.p0);
+  ReynoldsParams params;
+  params.viscosity = 1.0 / 6.0;  // h^3 / (12 mu) = h^3 / 2
+  SqueezeRun run;
+  const double dx = 1.0 / options.cells;
+  const double x_mid = 0.75;
+  const int i_mid = std::min(static_cast<int>(x_mid / dx), nx - 2);
+  double net_in = 0.0, stored_change = 0.0, inflow = 0.0;
+  const std::vector<double>& area = fem.lumped_area();
+  auto void_total = [&](const Eigen::VectorXd& v) {
+    double sum = 0.0;
+    for (int k = 0; k < n; ++k) sum += area[k] * v[k];
+    return sum;
+  };
+  const double v_start = void_total(fem.void_history());
+  const int steps = static_cast<int>(std::lround(options.end_time / options.time_step));
+  for (int step = 1; step <= steps; ++step) {
+    const double t = step * options.time_step;
+    fem.film_thickness().setConstant(OscillatorySqueeze::Gap(t));
+    fem.film_rate().setConstant(OscillatorySqueeze::GapRate(t));
+    params.time_step = options.time_step;
+    const ReynoldsSolution& sol = fem.Solve(params);
+    run.stats.Add(sol.stats);
+    // Oil in through the ends over the step, and the full-film part of the stored oil's change
+    // at the solver's own rate (the void part telescopes: its total is read at the end).
+    for (int k = 0; k < n; ++k) {
+      if (!m.fixed[k]) continue;
+      net_in += options.time_step * sol.residual[k];
+      inflow += options.time_step * std::max(sol.residual[k], 0.0);
+    }
+    stored_change += options.time_step * fem.Integrate(fem.film_rate());
+    if (options.model == CavitationModel::kJfo) fem.void_history() = sol.void_content;
+    double front = 0.5;
+    bool any = false;
+    for (int i = 0; i < nx; ++i) {
+      const int k = m.Node(i, 0);
+      run.fraction_min = std::min(run.fraction_min, sol.fluid_fraction[k]);
+      if (sol.cavitated[k]) {
+        any = true;
+        front = std::max(front, m.x[k] + 0.5 * dx);
+      }
+    }
+    run.fraction_excess = std::max(run.fraction_excess, sol.stats.fraction_excess);
+    if (any && run.rupture_time < 0.0) run.rupture_time = t;
+    if (!any && run.rupture_time >= 0.0 && run.close_time < 0.0) run.close_time = t;
+    const double w = (x_mid - m.x[m.Node(i_mid, 0)]) / dx;
+    run.p_mid.push_back((1.0 - w) * sol.pressure[m.Node(i_mid, 0)] +
+                        w * sol.pressure[m.Node(i_mid + 1, 0)]);
+    run.t.push_back(t);
+    run.front.push_back(front);
+  }
+  stored_change -= void_total(fem.void_history()) - v_start;
+  run.inflow = inflow;
+  run.mass_balance = (net_in - stored_change) / std::max(inflow, 1e-300);
+  return run;
+}
+
+std::vector<verification::ValidationRow> CavitationValidationRows() {
+  std::vector<verification::ValidationRow> rows;
+  const OscillatorySqueeze problem;
+  const OscillatorySqueeze::Trajectory reform = problem.Reformation();
+  SqueezeRunOptions options;
+  const SqueezeRun jfo = SolveOscillatorySqueeze(problem, options);
+  const std::string src = "oscillatory squeeze, exact (Ausas et al. 2009 sec. 3)";
+  const std::string grid = fmt::format("{} cells, dt {:g}", options.cells, options.time_step);
+  rows.push_back({"cavitation", "squeeze: rupture onset time (" + grid + ")", src, jfo.rupture_time,
+                  problem.RuptureTime(), 2.0 * options.time_step, false});
+  // Largest cavity and the cavity's closing time (reformation: the JFO history at work).
+  const double peak_num = *std::max_element(jfo.front.begin(), jfo.front.end());
+  rows.push_back({"cavitation", "squeeze: largest cavity, right front x", src, peak_num,
+                  problem.RuptureFront(problem.PeakTime()), 2.0 / options.cells, false});
+  rows.push_back({"cavitation", "squeeze: cavity closing time (reformation)", src, jfo.close_time,
+                  reform.close_time, 0.002, false});
+  // The front at sampled times of the rupture and reformation phases.
+  double worst = 0.0;
+  for (size_t i = 0; i < jfo.t.size(); ++i) {
+    if (jfo.t[i] > reform.close_time - 0.02 && jfo.t[i] < reform.close_time + 0.02) continue;
+    worst = std::max(worst, std::abs(jfo.front[i] - problem.Front(jfo.t[i], reform)));
+  }
+  rows.push_back({"cavitation", "squeeze: front position, max error over the run", src, worst, 0.0,
+                  3.0 / options.cells, false});
+  // Pressure at x = 3/4 in the full-film and rupture phases, relative to the peak pressure.
+  double p_err = 0.0, p_peak = 0.0;
+  for (size_t i = 0; i < jfo.t.size(); ++i) {
+    const double t = jfo.t[i];
+    double exact;
+    if (t < problem.RuptureTime() - options.time_step)
+      exact = problem.FullFilmPressure(0.75, t);
+    else if (t > problem.RuptureTime() + options.time_step && t < problem.PeakTime())
+      exact = problem.RupturePressure(0.75, t);
+    else
+      continue;
+    p_peak = std::max(p_peak, std::abs(exact));
+    p_err = std::max(p_err, std::abs(jfo.p_mid[i] - exact));
+  }
+  rows.push_back({"cavitation", "squeeze: pressure at x=3/4, max error / max pressure", src,
+                  p_err / p_peak, 0.0, 0.01, false});
+  rows.push_back({"cavitation", "squeeze: oil balance over the run / inflow", "mass conservation",
+                  jfo.mass_balance, 0.0, 1e-9, false});
+  rows.push_back({"cavitation", "squeeze: fluid fraction excursion outside [0, 1]",
+                  "0 <= theta <= 1", jfo.fraction_excess, 0.0, 1e-9, false});
+  return rows;
+}
+
+}  // namespace filmdyn::lubrication

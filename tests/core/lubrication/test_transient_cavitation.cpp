@@ -1,0 +1,179 @@
+// Transient mass-conserving (JFO) cavitation of ReynoldsFem: the oscillatory squeeze film against
+// its exact solution (rupture, reformation, pressure), its convergence under refinement, the
+// oil balance, agreement with the Reynolds condition while no film ruptures, and a starved
+// inlet against a closed-form solution written here.
+#include <QtTest>
+
+#include <cmath>
+
+#include "core/lubrication/cavitation_validation.hpp"
+#include "core/lubrication/tri_mesh.hpp"
+
+using namespace filmdyn::lubrication;
+
+namespace {
+
+// Max |front - exact| over a run, away from the instant the cavity closes (where the front
+// sweeps the last cells within a step or two).
+double FrontError(const SqueezeRun& run, const OscillatorySqueeze& problem,
+                  const OscillatorySqueeze::Trajectory& reform) {
+  double worst = 0.0;
+  for (size_t i = 0; i < run.t.size(); ++i) {
+    if (std::abs(run.t[i] - reform.close_time) < 0.02) continue;
+    worst = std::max(worst, std::abs(run.front[i] - problem.Front(run.t[i], reform)));
+  }
+  return worst;
+}
+
+}  // namespace
+
+class TestTransientCavitation : public QObject {
+  Q_OBJECT
+ private slots:
+  void validationRowsPass() {
+    const auto rows = CavitationValidationRows();
+    QVERIFY(rows.size() >= 7);
+    for (const auto& row : rows) {
+      QVERIFY2(row.Pass(), qPrintable(QString::fromStdString(row.name) +
+                                      QString(": ours %1 reference %2 error %3 > %4")
+                                          .arg(row.ours, 0, 'g', 8)
+                                          .arg(row.reference, 0, 'g', 8)
+                                          .arg(row.Error())
+                                          .arg(row.tolerance)));
+    }
+  }
+
+  void exactSolutionHelpers() {
+    const OscillatorySqueeze problem;
+    // At the onset the full-film pressure is zero at the centre and the front formula gives 1/2.
+    const double t_rup = problem.RuptureTime();
+    QVERIFY(std::abs(problem.FullFilmPressure(0.5, t_rup)) < 1e-10);
+    QVERIFY(std::abs(problem.RuptureFront(t_rup) - 0.5) < 1e-9);
+    QVERIFY(std::abs(t_rup - 0.2500792) < 1e-7);
+    // The rupture pressure meets the end pressure at x = 1.
+    QVERIFY(std::abs(problem.RupturePressure(1.0, 0.3) - problem.p0) < 1e-12);
+    // Largest cavity: front 0.97699 at t = 0.31483.
+    QVERIFY(std::abs(problem.PeakTime() - 0.31483) < 1e-5);
+    QVERIFY(std::abs(problem.RuptureFront(problem.PeakTime()) - 0.97699) < 1e-5);
+    // The reformation ODE: the front retreats monotonically and the cavity closes in the next
+    // squeeze half-period, before the gap reaches its minimum at t = 3/4.
+    const auto reform = problem.Reformation();
+    for (size_t i = 1; i < reform.front.size(); ++i)
+      QVERIFY(reform.front[i] <= reform.front[i - 1]);
+    QVERIFY(reform.close_time > 0.7 && reform.close_time < 0.75);
+  }
+
+  void convergesUnderRefinement() {
+    const OscillatorySqueeze problem;
+    const auto reform = problem.Reformation();
+    SqueezeRunOptions coarse;
+    coarse.cells = 100;
+    coarse.time_step = 2e-3;
+    SqueezeRunOptions fine = coarse;
+    fine.cells = 400;
+    fine.time_step = 5e-4;
+    const SqueezeRun a = SolveOscillatorySqueeze(problem, coarse);
+    const SqueezeRun b = SolveOscillatorySqueeze(problem, fine);
+    const double ea = FrontError(a, problem, reform), eb = FrontError(b, problem, reform);
+    const double ca = std::abs(a.close_time - reform.close_time);
+    const double cb = std::abs(b.close_time - reform.close_time);
+    qInfo("front error %.3g -> %.3g, closing time error %.3g -> %.3g", ea, eb, ca, cb);
+    // First order in space and time: 4x refinement at least halves both errors.
+    QVERIFY(eb < 0.5 * ea);
+    QVERIFY(cb < 0.5 * ca + 1e-4);
+    QVERIFY(eb < 0.004);
+    QVERIFY(std::abs(a.mass_balance) < 1e-10 && std::abs(b.mass_balance) < 1e-10);
+  }
+
+  void reynoldsConditionLosesTheHistory() {
+    // Same problem with the Reynolds (Swift-Stieber) condition: identical while the film is
+    // whole, but the cavity vanishes as soon as the gap closes again (t = 1/2) and oil is
+    // created: the balance does not close.
+    const OscillatorySqueeze problem;
+    SqueezeRunOptions options;
+    options.cells = 200;
+    options.time_step = 1e-3;
+    const SqueezeRun jfo = SolveOscillatorySqueeze(problem, options);
+    options.model = CavitationModel::kReynolds;
+    const SqueezeRun rey = SolveOscillatorySqueeze(problem, options);
+    for (size_t i = 0; i < jfo.t.size() && jfo.t[i] < problem.RuptureTime() - 1e-3; ++i) {
+      QVERIFY2(std::abs(jfo.p_mid[i] - rey.p_mid[i]) <= 1e-10 * std::abs(rey.p_mid[i]) + 1e-14,
+               qPrintable(QString("t=%1: JFO %2 Reynolds %3")
+                              .arg(jfo.t[i])
+                              .arg(jfo.p_mid[i])
+                              .arg(rey.p_mid[i])));
+    }
+    QVERIFY(std::abs(rey.close_time - 0.5) < 2e-3);
+    QVERIFY(jfo.close_time > 0.7);
+    QVERIFY(std::abs(rey.mass_balance) > 1e-3);
+    QVERIFY(std::abs(jfo.mass_balance) < 1e-10);
+  }
+
+  void starvedInletOfAConvergingSlider() {
+    // Linear converging slider h = h_in + (h_out - h_in) x / L, one surface moving at U, p = 0 at
+    // both ends, the inlet supplying theta_in < 1. The oil arrives as a partial film carried at
+    // U/2; the full film starts at x_f where the flow U h/2 - h^3 p'/(12 mu) equals the supplied
+    // q = U theta_in h_in / 2 with p(x_f) = 0 (the front is stationary), and p(L) = 0:
+    //   0 = int_{x_f}^{L} 12 mu (U / (2 h^2) - q / h^3) dx.
+    const double length = 0.01, h_in = 20e-6, h_out = 10e-6, speed = 2.0, mu = 0.02;
+    const double theta_in = 0.6;  // below h*/h_in = 2/3 of the flooded wedge: starved
+    const double q = 0.5 * speed * theta_in * h_in;
+    const double slope = (h_out - h_in) / length;
+    auto gap = [&](double x) { return h_in + slope * x; };
+    // int dx/h^2 = -(1/slope)(1/h), int dx/h^3 = -(1/(2 slope))(1/h^2).
+    auto pressure_rise = [&](double xf) {
+      const double a = gap(xf), b = gap(length);
+      const double i2 = -(1.0 / b - 1.0 / a) / slope;
+      const double i3 = -(1.0 / (b * b) - 1.0 / (a * a)) / (2.0 * slope);
+      return 12.0 * mu * (0.5 * speed * i2 - q * i3);
+    };
+    // The front lies where h = theta_in h_in at the latest (the partial film fills the gap).
+    double lo = 0.0, hi = (theta_in * h_in - h_in) / slope;
+    for (int i = 0; i < 200; ++i) {
+      const double mid = 0.5 * (lo + hi);
+      (pressure_rise(mid) > 0.0 ? lo : hi) = mid;
+    }
+    const double x_front = 0.5 * (lo + hi);
+
+    const int cells = 2000;
+    TriMesh mesh = MakeTensorMesh(Linspace(0.0, length, cells), Linspace(0.0, 1e-4, 1), false, 0);
+    const int nx = mesh.nx_nodes();
+    for (int j = 0; j < 2; ++j) {
+      mesh.fixed[mesh.Node(0, j)] = 1;
+      mesh.fixed[mesh.Node(nx - 1, j)] = 1;
+    }
+    ReynoldsOptions opt;
+    opt.cavitation = CavitationModel::kJfo;
+    ReynoldsFem fem(std::move(mesh), 0, opt);
+    const TriMesh& m = fem.mesh();
+    for (int k = 0; k < m.NodeCount(); ++k) {
+      fem.film_thickness()[k] = gap(m.x[k]);
+      fem.boundary_fraction()[k] = m.x[k] < 0.5 * length ? theta_in : 1.0;
+    }
+    ReynoldsParams params;
+    params.viscosity = mu;
+    params.u_sum = speed;
+    params.u_diff = speed;
+    const ReynoldsSolution& sol = fem.Solve(params);
+    QCOMPARE(sol.stats.status, SolveStatus::kConverged);
+    double x_full = length;
+    for (int i = nx - 1; i >= 0; --i)
+      if (!sol.cavitated[m.Node(i, 0)] && m.x[m.Node(i, 0)] > 0.0)
+        x_full = m.x[m.Node(i, 0)];
+      else if (sol.cavitated[m.Node(i, 0)])
+        break;
+    const double dx = length / cells;
+    qInfo("full film from %.5g mm, closed form %.5g mm", x_full * 1e3, x_front * 1e3);
+    QVERIFY(std::abs(x_full - x_front) < 3.0 * dx);
+    // The partial film upstream keeps its content: theta h = theta_in h_in.
+    const int k1 = m.Node(cells / 20, 0);
+    QVERIFY(std::abs(sol.fluid_fraction[k1] * gap(m.x[k1]) - theta_in * h_in) < 1e-3 * h_in);
+    // The flow leaving at x = L is the supplied flow (per unit width).
+    double out = 0.0;
+    for (int j = 0; j < 2; ++j) out -= sol.residual[m.Node(nx - 1, j)];
+    QVERIFY(std::abs(out / 1e-4 - q) < 1e-8 * q);
+  }
+};
+
+QTEST_APPLESS_MAIN(TestTransientCavitation)
+#include "test_transient_cavitation.moc"
