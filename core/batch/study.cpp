@@ -111,11 +111,12 @@ StudyFactor ParseFactor(const Study& s, const json& j, const std::string& key) {
     Bad(s, key + ".path", "\"" + f.path + "\"",
         "is not a case field (`filmdyn case-fields` lists every path) nor \"model\"");
   }
-  const bool text = f.path == kModelFactor || field->kind == engine::FieldKind::kJointModel;
+  const bool text = f.path == kModelFactor || field->kind == engine::FieldKind::kChoice;
   if (!text && field->kind != engine::FieldKind::kNumber &&
       field->kind != engine::FieldKind::kInteger) {
     Bad(s, key + ".path", "\"" + f.path + "\"",
-        "cannot be a factor: only numbers, integers, joint models and \"model\" can");
+        "cannot be a factor: only numbers, integers, choices (joint and cavitation models) and "
+        "\"model\" can");
   }
   if (text) {
     if (has_range)
@@ -129,7 +130,8 @@ StudyFactor ParseFactor(const Study& s, const json& j, const std::string& key) {
         if (field == nullptr) {
           engine::ParseModel(value);
         } else {
-          engine::ParseJointModel(f.path, value);
+          engine::EngineCase probe;
+          field->SetChoice(probe, value);
         }
       } catch (const InputError& e) {
         Bad(s, level_key, "\"" + value + "\"", e.allowed());
@@ -249,9 +251,7 @@ std::pair<std::string, std::optional<double>> BaseValue(const StudyFactor& f,
   if (f.path == kModelFactor) return {engine::ModelName(engine::ModelOfCase(base)), std::nullopt};
   const engine::CaseField* field = engine::FindCaseField(f.path);
   engine::EngineCase copy = base;
-  if (field->kind == engine::FieldKind::kJointModel) {
-    return {engine::JointModelName(field->model(copy)), std::nullopt};
-  }
+  if (field->kind == engine::FieldKind::kChoice) return {field->ChoiceName(copy), std::nullopt};
   const double v = field->get(copy);
   return {Number(v), v};
 }

@@ -3,8 +3,30 @@
 /// filled by the coupling elements and copied into the engine's samples. Knows nothing of the
 /// engine; the engine's crank-train sample holds one of each.
 #include <Eigen/Core>
+#include <cmath>
 
 namespace filmdyn::coupling {
+
+/// A mass-conserving (JFO) film's oil account, updated at every accepted time step of the
+/// integration (the film content's backward-Euler steps): running totals since the run began.
+/// Between any two accounts, (supplied - lost) - (squeezed - change of void_volume) is zero to
+/// the film solver's round-off: the film neither creates nor destroys oil.
+struct OilAccount {
+  bool kept = false;         ///< false: the joint's cavitation model does not conserve oil
+  double time = 0.0;         ///< of the last accepted step [s]
+  double supplied = 0.0;     ///< oil in through the supply (big end) / inflow nodes (skirt) [m^3]
+  double lost = 0.0;         ///< oil out through the edges (big end) / outflow nodes (skirt) [m^3]
+  double squeezed = 0.0;     ///< time integral of the full film's storage rate [m^3]
+  double void_volume = 0.0;  ///< void (gas) volume of the film at `time` [m^3]
+  /// The balance between this account and an earlier one, relative to the oil supplied between
+  /// them (0 when none was).
+  double BalanceSince(const OilAccount& earlier) const {
+    const double in = supplied - earlier.supplied;
+    const double residual = in - (lost - earlier.lost) - (squeezed - earlier.squeezed) +
+                            (void_volume - earlier.void_volume);
+    return in != 0.0 ? residual / std::abs(in) : 0.0;
+  }
+};
 
 /// Film quantities of the lubricated skirt at one instant (present = false with an ideal liner).
 /// Forces on the piston: lateral along +X (thrust side), friction along the bore, + toward the
@@ -34,6 +56,10 @@ struct SkirtFilmSample {
   /// The state the film was solved at (the integrated state; the skirt solver's conventions):
   /// e0 [m], γ = sin of the piston's rotation, their rates, u_p (+ toward the crank) [m/s].
   double e0 = 0.0, tilt = 0.0, e0_rate = 0.0, tilt_rate = 0.0, speed = 0.0;
+  /// Oil entering / leaving the film through its boundary (skirt edges, relief edges) [m^3/s].
+  double inflow = 0.0, outflow = 0.0;
+  double wetted_fraction = 1.0;  ///< oil-covered share of the panels (SkirtResult) [-]
+  OilAccount oil;
 };
 
 /// Film quantities of the lubricated big end at one instant (present = false when ideal).
@@ -59,6 +85,10 @@ struct BearingFilmSample {
   double friction_torque_journal = 0.0;                          ///< on the crank [N·m]
   double friction_torque_bearing = 0.0;                          ///< on the rod [N·m]
   double power = 0.0;  ///< power of the film on crank + rod, F·ė + T_j ω_j + T_b ω_b [W] (≤ 0)
+  /// Oil into the film through the feed (or the film-start line) and out through both edges
+  /// (BearingResult::feed_flow, side_flow) [m^3/s].
+  double supply_flow = 0.0, side_flow = 0.0;
+  OilAccount oil;
 };
 
 /// Implemented by the lubricated joint elements so that whoever samples a system can fill the

@@ -17,9 +17,11 @@ namespace {
 
 constexpr double kEpsFloor = 1e-3;  // line-of-centres regularisation (see header)
 
-bool SameInput(const multibody::JointForceInput& a, const multibody::JointForceInput& b) {
-  return a.body_i.q == b.body_i.q && a.body_i.v == b.body_i.v && a.body_j.q == b.body_j.q &&
-         a.body_j.v == b.body_j.v;
+// With a film history (JFO) the result also depends on the time (the step it is taken from).
+bool SameInput(const multibody::JointForceInput& a, const multibody::JointForceInput& b,
+               bool timed) {
+  return (!timed || a.t == b.t) && a.body_i.q == b.body_i.q && a.body_i.v == b.body_i.v &&
+         a.body_j.q == b.body_j.q && a.body_j.v == b.body_j.v;
 }
 
 }  // namespace
@@ -83,7 +85,7 @@ Eigen::Vector4d LubricatedBigEndElement::Loads(const Eigen::Matrix<double, 6, 1>
                                                double bearing_angle, BigEndKinematics* kin) {
   const double c = solver_->config().geometry.radial_clearance;
   *kin = FromCartesian(z, bearing_angle, c);
-  factorizations_ += solver_->Solve(kin->state).stats.factorizations;
+  factorizations_ += solver_->SolveAt(kin->state, eval_time_).stats.factorizations;
   ++solves_;
   const lubrication::BearingResult& r = solver_->result();
   Eigen::Vector4d g(r.force_x, r.force_y, r.friction_torque_journal, r.friction_torque_bearing);
@@ -97,7 +99,8 @@ Eigen::Vector4d LubricatedBigEndElement::Loads(const Eigen::Matrix<double, 6, 1>
 
 void LubricatedBigEndElement::EvaluateJoint(const multibody::JointForceInput& in,
                                             bool want_jacobian, multibody::JointForceOutput* out) {
-  if (cache_valid_ && SameInput(in, cached_in_) && (!want_jacobian || cache_has_jacobian_)) {
+  if (cache_valid_ && SameInput(in, cached_in_, solver_->Transient()) &&
+      (!want_jacobian || cache_has_jacobian_)) {
     *out = cached_out_;
     if (!want_jacobian) out->jacobian.setZero();
     return;
@@ -107,6 +110,7 @@ void LubricatedBigEndElement::EvaluateJoint(const multibody::JointForceInput& in
   const Eigen::Vector2d a_c = Rotation(crank.Angle()) * mount_.journal_point;
   const Eigen::Vector2d a_r = Rotation(rod.Angle()) * mount_.bearing_point;
   const Cartesian z = CartesianOf(crank, rod, mount_);
+  eval_time_ = in.t;
   rod_angle_ = rod.Angle();
   loads_ = Loads(z, rod_angle_, &kin_);
   result_ = solver_->result();
@@ -164,9 +168,29 @@ void LubricatedBigEndElement::EvaluateJoint(const multibody::JointForceInput& in
   cache_has_jacobian_ = true;
 }
 
+void LubricatedBigEndElement::OnStepAccepted(double t, const multibody::SystemState& state) {
+  const BigEndKinematics kin = Kinematics(state.Body(BodyI()), state.Body(BodyJ()));
+  const lubrication::FilmHistory::Entry* from = solver_->history().Before(t);
+  const double dt = from != nullptr ? t - from->time : 0.0;
+  const lubrication::BearingResult& r = solver_->SolveAt(kin.state, t);
+  factorizations_ += r.stats.factorizations;
+  ++solves_;
+  // The step's oil account: the film content's backward-Euler step from the last accepted one.
+  oil_.kept = true;
+  oil_.time = t;
+  oil_.supplied += dt * r.feed_flow;
+  oil_.lost += dt * r.side_flow;
+  oil_.squeezed += dt * r.squeeze_rate;
+  oil_.void_volume = r.void_volume;
+  solver_->AcceptStep(t);
+  // Evaluations after this step from the new history; the fields are no longer the cache's.
+  cache_valid_ = false;
+  solver_at_cache_ = false;
+}
+
 void LubricatedBigEndElement::RefreshFields() {
   if (solver_at_cache_ || !cache_valid_) return;
-  solver_->Solve(kin_.state);
+  solver_->SolveAt(kin_.state, cached_in_.t);
   ++solves_;
   solver_at_cache_ = true;
 }
@@ -203,6 +227,9 @@ void LubricatedBigEndElement::ReportFilm(SkirtFilmSample*, BearingFilmSample* be
   b.force_on_rod = -loads_.head<2>();
   b.friction_torque_journal = loads_[2];
   b.friction_torque_bearing = loads_[3];
+  b.supply_flow = result_.feed_flow;
+  b.side_flow = result_.side_flow;
+  b.oil = oil_;
   b.power = loads_.head<2>().dot(kin_.ecc_rate) + loads_[2] * kin_.state.omega_journal +
             loads_[3] * kin_.state.omega_bearing;
 }

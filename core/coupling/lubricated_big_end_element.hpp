@@ -45,6 +45,9 @@ class LubricatedBigEndElement final : public multibody::JointForceElement,
   bool ProvidesJacobian() const override { return true; }
   /// Own solver and caches only (the surface model is immutable): may run beside the other joint.
   bool Concurrent() const override { return true; }
+  /// Mass-conserving cavitation carries the film's void content from step to step.
+  bool WantsAcceptedSteps() const override { return solver_->Transient(); }
+  void OnStepAccepted(double t, const multibody::SystemState& state) override;
   void ReportFilm(SkirtFilmSample* skirt, BearingFilmSample* bearing) const override;
 
   BigEndKinematics Kinematics(const multibody::BodyState& crank,
@@ -73,6 +76,7 @@ class LubricatedBigEndElement final : public multibody::JointForceElement,
   std::unique_ptr<lubrication::BearingSolver> solver_;
   BigEndMounting mount_;
   double penalty_stiffness_ = 0.0;  ///< [N/m]
+  double eval_time_ = 0.0;          ///< time of the evaluation in progress (film history)
   multibody::JointForceInput cached_in_;
   multibody::JointForceOutput cached_out_;
   bool cache_valid_ = false, cache_has_jacobian_ = false, solver_at_cache_ = false;
@@ -81,6 +85,7 @@ class LubricatedBigEndElement final : public multibody::JointForceElement,
   Eigen::Vector4d loads_ = Eigen::Vector4d::Zero();
   double rod_angle_ = 0.0;
   long solves_ = 0, factorizations_ = 0;
+  OilAccount oil_;  ///< kept at accepted steps when the film conserves oil (JFO)
 };
 
 }  // namespace filmdyn::coupling

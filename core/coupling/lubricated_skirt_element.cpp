@@ -13,8 +13,10 @@ using multibody::BodyState;
 
 namespace {
 
-bool SameInput(const multibody::JointForceInput& a, const multibody::JointForceInput& b) {
-  return a.body_j.q == b.body_j.q && a.body_j.v == b.body_j.v;
+// With a film history (JFO) the result also depends on the time (the step it is taken from).
+bool SameInput(const multibody::JointForceInput& a, const multibody::JointForceInput& b,
+               bool timed) {
+  return (!timed || a.t == b.t) && a.body_j.q == b.body_j.q && a.body_j.v == b.body_j.v;
 }
 
 }  // namespace
@@ -57,7 +59,7 @@ SkirtKinematics LubricatedSkirtElement::Kinematics(const BodyState& piston) cons
 }
 
 void LubricatedSkirtElement::SolveAt(const lubrication::SkirtState& state) {
-  factorizations_ += solver_->Solve(state).stats.factorizations;
+  factorizations_ += solver_->SolveAt(state, eval_time_).stats.factorizations;
   ++solves_;
 }
 
@@ -67,12 +69,14 @@ Eigen::Vector3d LubricatedSkirtElement::Generalised(const lubrication::SkirtResu
 
 void LubricatedSkirtElement::EvaluateJoint(const multibody::JointForceInput& in, bool want_jacobian,
                                            multibody::JointForceOutput* out) {
-  if (cache_valid_ && SameInput(in, cached_in_) && (!want_jacobian || cache_has_jacobian_)) {
+  if (cache_valid_ && SameInput(in, cached_in_, solver_->Transient()) &&
+      (!want_jacobian || cache_has_jacobian_)) {
     *out = cached_out_;
     if (!want_jacobian) out->jacobian.setZero();
     return;
   }
   kin_ = Kinematics(in.body_j);
+  eval_time_ = in.t;
   SolveAt(kin_.state);
   result_ = solver_->result();
   const Eigen::Vector3d g = Generalised(result_);
@@ -128,8 +132,28 @@ void LubricatedSkirtElement::EvaluateJoint(const multibody::JointForceInput& in,
   cache_has_jacobian_ = true;
 }
 
+void LubricatedSkirtElement::OnStepAccepted(double t, const multibody::SystemState& state) {
+  eval_time_ = t;
+  const lubrication::FilmHistory::Entry* from = solver_->history().Before(t);
+  const double dt = from != nullptr ? t - from->time : 0.0;
+  SolveAt(Kinematics(state.Body(BodyJ())).state);
+  // The step's oil account: the film content's backward-Euler step from the last accepted one.
+  const lubrication::SkirtResult& r = solver_->result();
+  oil_.kept = true;
+  oil_.time = t;
+  oil_.supplied += dt * r.inflow;
+  oil_.lost += dt * r.outflow;
+  oil_.squeezed += dt * r.squeeze_rate;
+  oil_.void_volume = r.void_volume;
+  solver_->AcceptStep(t);
+  // Evaluations after this step from the new history; the fields are no longer the cache's.
+  cache_valid_ = false;
+  solver_at_cache_ = false;
+}
+
 void LubricatedSkirtElement::RefreshFields() {
   if (solver_at_cache_ || !cache_valid_) return;
+  eval_time_ = cached_in_.t;
   SolveAt(kin_.state);
   solver_at_cache_ = true;
 }
@@ -157,6 +181,10 @@ void LubricatedSkirtElement::ReportFilm(SkirtFilmSample* skirt, BearingFilmSampl
   f.e0_rate = kin_.state.e0_dot;
   f.tilt_rate = kin_.state.gamma_dot;
   f.speed = kin_.state.piston_velocity;
+  f.inflow = result_.inflow;
+  f.outflow = result_.outflow;
+  f.wetted_fraction = result_.wetted_fraction;
+  f.oil = oil_;
   f.power = result_.lateral_force * kin_.state.e0_dot +
             result_.moment_about_pin * kin_.state.gamma_dot +
             result_.friction_force * kin_.state.piston_velocity;

@@ -51,6 +51,9 @@ class LubricatedSkirtElement final : public multibody::JointForceElement,
   bool ProvidesJacobian() const override { return true; }
   /// Own solver and caches only (the surface model is immutable): may run beside the other joint.
   bool Concurrent() const override { return true; }
+  /// Mass-conserving cavitation carries the film's void content from step to step.
+  bool WantsAcceptedSteps() const override { return solver_->Transient(); }
+  void OnStepAccepted(double t, const multibody::SystemState& state) override;
   void ReportFilm(SkirtFilmSample* skirt, BearingFilmSample* bearing) const override;
 
   /// e0, γ, rates and u_p of a piston state, with J.
@@ -77,10 +80,12 @@ class LubricatedSkirtElement final : public multibody::JointForceElement,
   // Gap geometry on the two panel edges (α = 0 and π): static gap per axial node line.
   std::vector<double> edge_y_, edge_gap_thrust_, edge_gap_anti_;
   // Cache of the last base evaluation (the integrator asks twice for the same state).
+  double eval_time_ = 0.0;  ///< time of the evaluation in progress (film history)
   multibody::JointForceInput cached_in_;
   multibody::JointForceOutput cached_out_;
   bool cache_valid_ = false, cache_has_jacobian_ = false, solver_at_cache_ = false;
   lubrication::SkirtResult result_;
+  OilAccount oil_;  ///< kept at accepted steps when the film conserves oil (JFO)
   SkirtKinematics kin_;
   long solves_ = 0, factorizations_ = 0;
 };

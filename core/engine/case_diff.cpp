@@ -116,12 +116,14 @@ std::vector<CaseDifference> DiffRunInputs(const RunInputs& a, const RunInputs& b
                                                  : field.symbol + " changed"});
         break;
       }
-      case FieldKind::kJointModel: {
-        if (models_given) break;
-        const JointModel ma = field.model(ca), mb = field.model(cb);
-        if (ma == mb) break;
-        out.push_back({field.path, field.symbol, JointModelName(ma), JointModelName(mb),
-                       Phrase(field.symbol, JointModelName(mb))});
+      case FieldKind::kChoice: {
+        // The joint models are said by the run model's name when one is given.
+        const bool joint_model = field.path == "skirt.model" || field.path == "big_end.model";
+        if (models_given && joint_model) break;
+        if (field.choice(ca) == field.choice(cb)) break;
+        const std::string& nb = field.ChoiceName(cb);
+        out.push_back(
+            {field.path, field.symbol, field.ChoiceName(ca), nb, Phrase(field.symbol, nb)});
         break;
       }
       case FieldKind::kNumberList: {

@@ -89,12 +89,42 @@ CaseField List(std::string path, Section EngineCase::*section, std::vector<doubl
   return f;
 }
 
+// A choice among `names`, the enumerators of Enum in order (0, 1, ...).
+template <typename Section, typename Enum>
+CaseField Choice(std::string path, Section EngineCase::*section, Enum Section::*member,
+                 std::vector<std::string> names, const Info& info) {
+  CaseField f = Base(std::move(path), FieldKind::kChoice, info);
+  f.choices = std::move(names);
+  f.choice = [section, member](const EngineCase& c) {
+    return static_cast<int>(c.*section.*member);
+  };
+  f.set_choice = [section, member](EngineCase& c, int k) { c.*section.*member = Enum(k); };
+  return f;
+}
+
 template <typename Section>
 CaseField Model(std::string path, Section EngineCase::*section, JointModel Section::*member,
                 const Info& info) {
-  CaseField f = Base(std::move(path), FieldKind::kJointModel, info);
-  f.model = [section, member](EngineCase& c) -> JointModel& { return c.*section.*member; };
-  return f;
+  return Choice(std::move(path), section, member,
+                {JointModelName(JointModel::kIdeal), JointModelName(JointModel::kLubricated)},
+                info);
+}
+
+// A joint's cavitation model.
+template <typename Section>
+CaseField Cavitation(std::string path, Section EngineCase::*section,
+                     lubrication::CavitationModel Section::*member, FieldGroup group) {
+  using lubrication::CavitationModel;
+  return Choice(std::move(path), section, member,
+                {ToString(CavitationModel::kReynolds), ToString(CavitationModel::kJfo)},
+                {group,
+                 "Cavitation model",
+                 "",
+                 "",
+                 1.0,
+                 {},
+                 "\"reynolds\" (Swift–Stieber, the paper's) or \"jfo\" (mass-conserving, "
+                 "the film's oil content carried from step to step)"});
 }
 
 CaseField Text(std::string path, std::string EngineCase::*member, const Info& info) {
@@ -139,6 +169,7 @@ void SetSymbols(std::vector<CaseField>& fields) {
       {"skirt.modulus_liner", "E_liner"},
       {"skirt.poisson_liner", "ν_liner"},
       {"skirt.boundary_friction", "μ_f skirt"},
+      {"skirt.cavitation", "skirt cavitation"},
       {"skirt.mesh_thrust", "skirt mesh Ω₁"},
       {"skirt.mesh_relief", "skirt mesh Ω₂"},
       {"skirt.mesh_anti", "skirt mesh Ω₃"},
@@ -159,6 +190,7 @@ void SetSymbols(std::vector<CaseField>& fields) {
       {"big_end.modulus_bearing", "E_b"},
       {"big_end.poisson_bearing", "ν_b"},
       {"big_end.boundary_friction", "μ_f big end"},
+      {"big_end.cavitation", "big-end cavitation"},
       {"big_end.mesh_theta", "big-end mesh around"},
       {"big_end.mesh_theta_grading", "big-end grading around"},
       {"big_end.mesh_z", "big-end mesh across"},
@@ -259,6 +291,12 @@ void SetDescriptions(std::vector<CaseField>& fields) {
       {"skirt.poisson_liner", "Poisson ratio of the liner material."},
       {"skirt.boundary_friction",
        "Friction coefficient where skirt and liner asperities touch (boundary lubrication)."},
+      {"skirt.cavitation",
+       "How the oil film breaks up where the gap widens and refills where it narrows. "
+       "\"reynolds\": the pressure is simply kept from falling below the cavitation pressure, "
+       "as the paper does; oil is not conserved where the film reforms. \"jfo\": the film's "
+       "oil content is tracked from one time step to the next, so a film that broke up earlier "
+       "in the cycle refills only as oil arrives (mass-conserving; somewhat slower)."},
       {"skirt.mesh_thrust",
        "Number of elements around the thrust panel in the film calculation; more is finer and "
        "slower."},
@@ -292,6 +330,12 @@ void SetDescriptions(std::vector<CaseField>& fields) {
       {"big_end.poisson_bearing", "Poisson ratio of the bearing lining material."},
       {"big_end.boundary_friction",
        "Friction coefficient where journal and bearing asperities touch (boundary lubrication)."},
+      {"big_end.cavitation",
+       "How the oil film breaks up where the gap widens and refills where it narrows. "
+       "\"reynolds\": the pressure is simply kept from falling below the cavitation pressure, "
+       "as the paper does; oil is not conserved where the film reforms. \"jfo\": the film's "
+       "oil content is tracked from one time step to the next, so a film that broke up earlier "
+       "in the cycle refills only as oil arrives (mass-conserving; somewhat slower)."},
       {"big_end.mesh_theta",
        "Number of elements around the bearing in the film calculation; more is finer and "
        "slower."},
@@ -468,6 +512,7 @@ std::vector<CaseField> MakeSchema() {
   f.push_back(Scalar("skirt.boundary_friction", sk, &S::boundary_friction,
                      {G::kSkirt, "Boundary friction μ_f", "-", "–", 1.0, Between(0.0, 1.0),
                       "friction coefficient of asperity contact; Table I: 0.13"}));
+  f.push_back(Cavitation("skirt.cavitation", sk, &S::cavitation, G::kSkirt));
   f.push_back(Scalar("skirt.mesh_thrust", sk, &S::mesh_thrust,
                      {G::kSolver, "Skirt mesh: elements over Ω₁ (thrust)", "-", "–", 1.0,
                       Between(2, 2000), "circumferential elements of the thrust panel"}));
@@ -535,6 +580,7 @@ std::vector<CaseField> MakeSchema() {
   f.push_back(Scalar("big_end.boundary_friction", be, &B::boundary_friction,
                      {G::kBigEnd, "Boundary friction μ_f", "-", "–", 1.0, Between(0.0, 1.0),
                       "friction coefficient of asperity contact; Table I: 0.13"}));
+  f.push_back(Cavitation("big_end.cavitation", be, &B::cavitation, G::kBigEnd));
   f.push_back(Scalar("big_end.mesh_theta", be, &B::mesh_theta,
                      {G::kSolver, "Big-end mesh: elements around 360°", "-", "–", 1.0,
                       Between(8, 5000), "circumferential elements (Table II: 50)"}));
@@ -657,8 +703,8 @@ std::string CaseField::RangeText() const {
   switch (kind) {
     case FieldKind::kText:
       return "text";
-    case FieldKind::kJointModel:
-      return "\"ideal\" | \"lubricated\"";
+    case FieldKind::kChoice:
+      return ChoicesText();
     case FieldKind::kInteger:
       return "integer in [" + std::to_string(static_cast<long>(range.lo)) + ", " +
              std::to_string(static_cast<long>(range.hi)) + "]";
@@ -690,14 +736,31 @@ const CaseField* FindCaseField(std::string_view path) {
   return nullptr;
 }
 
-const char* JointModelName(JointModel model) {
-  return model == JointModel::kIdeal ? "ideal" : "lubricated";
+const std::string& CaseField::ChoiceName(const EngineCase& c) const {
+  return choices.at(static_cast<std::size_t>(choice(c)));
 }
 
-JointModel ParseJointModel(const std::string& path, const std::string& text) {
-  if (text == "ideal") return JointModel::kIdeal;
-  if (text == "lubricated") return JointModel::kLubricated;
-  throw InputError(path, text, "must be \"ideal\" or \"lubricated\"");
+std::string CaseField::ChoicesText(bool prose) const {
+  std::string text;
+  for (std::size_t k = 0; k < choices.size(); ++k) {
+    if (k > 0) text += !prose ? " | " : (k + 1 == choices.size() ? " or " : ", ");
+    text += "\"" + choices[k] + "\"";
+  }
+  return text;
+}
+
+void CaseField::SetChoice(EngineCase& c, const std::string& name) const {
+  for (std::size_t k = 0; k < choices.size(); ++k) {
+    if (choices[k] == name) {
+      set_choice(c, static_cast<int>(k));
+      return;
+    }
+  }
+  throw InputError(path, name, "must be " + ChoicesText(true));
+}
+
+const char* JointModelName(JointModel model) {
+  return model == JointModel::kIdeal ? "ideal" : "lubricated";
 }
 
 void CheckCaseConsistency(const EngineCase& c) {

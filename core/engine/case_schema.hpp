@@ -16,7 +16,7 @@ namespace filmdyn::engine {
 
 enum class FieldKind {
   kText,        ///< a string
-  kJointModel,  ///< "ideal" | "lubricated"
+  kChoice,      ///< one of a few names (CaseField::choices): joint and cavitation models
   kNumber,      ///< a finite real in SI
   kInteger,     ///< a whole number (mesh counts, cycle counts)
   kNumberList,  ///< an array of finite reals in SI, each within the range
@@ -56,10 +56,21 @@ struct CaseField {
   /// value becomes −1, which every integer range rejects).
   std::function<double(const EngineCase&)> get;
   std::function<void(EngineCase&, double)> set;
-  /// Number lists, text, joint models: the member itself.
+  /// Number lists, text: the member itself.
   std::function<std::vector<double>&(EngineCase&)> list;
   std::function<std::string&(EngineCase&)> text;
-  std::function<JointModel&(EngineCase&)> model;
+  /// Choices: the allowed names, in the order of the member's enumerators, and the index of the
+  /// chosen one.
+  std::vector<std::string> choices;
+  std::function<int(const EngineCase&)> choice;
+  std::function<void(EngineCase&, int)> set_choice;
+
+  /// The chosen name of a choice field.
+  const std::string& ChoiceName(const EngineCase& c) const;
+  /// Sets a choice field by name; any other name throws InputError(path, name, the choices).
+  void SetChoice(EngineCase& c, const std::string& name) const;
+  /// The choices quoted: "a" | "b" | "c", or in prose "a", "b" or "c".
+  std::string ChoicesText(bool prose = false) const;
 
   /// Throws InputError naming `field` (the path, or path.k for a list element), the value and
   /// the allowed range when `si_value` is not allowed; the one check of a field's own range.
@@ -73,9 +84,8 @@ const std::vector<CaseField>& CaseSchema();
 /// The field with this dotted path, or nullptr.
 const CaseField* FindCaseField(std::string_view path);
 
-/// "ideal" / "lubricated"; ParseJointModel throws InputError(path, text, allowed).
+/// "ideal" / "lubricated" (the choices of the joint-model fields).
 const char* JointModelName(JointModel model);
-JointModel ParseJointModel(const std::string& path, const std::string& text);
 
 /// The rules that tie fields together (rod longer than crank + |pin offset|, clearances > 0,
 /// panel widths, profile and ovality tables). Throws InputError naming the field to fix.

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "core/lubrication/cavitation_model.hpp"
+
 namespace filmdyn::engine {
 
 /// How a joint is modelled: ideal (kinematic constraint) or lubricated (film force element).
@@ -63,6 +65,8 @@ struct SkirtCase {
   /// paper's Table II counts (30, 2, 30, 40): min skirt MOFT within 0.5 % at 6000 rpm, 1.6 % low
   /// at 2000 and 3.3 % at 1000 rpm (docs/validation/errors.md).
   int mesh_thrust = 15, mesh_relief = 2, mesh_anti = 15, mesh_axial = 20;
+  /// Film rupture and reformation: Reynolds (Swift–Stieber, the paper's) or mass-conserving JFO.
+  lubrication::CavitationModel cavitation = lubrication::CavitationModel::kReynolds;
 };
 
 /// The connecting-rod big-end bearing (Table I); the film data are used when the big end is
@@ -91,6 +95,8 @@ struct BigEndCase {
   double mesh_theta_grading = 8.0;
   /// Largest (mid-plane) / smallest (edges) axial element (1 = uniform) [-].
   double mesh_z_grading = 4.0;
+  /// Film rupture and reformation: Reynolds (Swift–Stieber, the paper's) or mass-conserving JFO.
+  lubrication::CavitationModel cavitation = lubrication::CavitationModel::kReynolds;
 };
 
 /// One cylinder-pressure curve: absolute pressure vs crank angle at one speed.

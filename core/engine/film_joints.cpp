@@ -35,6 +35,7 @@ lubrication::SkirtConfig SkirtConfigFromCase(const EngineCase& c) {
   config.mesh.n_relief = sk.mesh_relief;
   config.mesh.n_anti = sk.mesh_anti;
   config.mesh.n_axial = sk.mesh_axial;
+  config.solver.cavitation = sk.cavitation;
   lubrication::SurfacePair pair;
   pair.sigma1 = sk.roughness_skirt;
   pair.sigma2 = sk.roughness_liner;
@@ -85,6 +86,7 @@ lubrication::BearingConfig BearingConfigFromCase(const EngineCase& c) {
   config.mesh.n_z = config.mesh.symmetric_half ? be.mesh_z / 2 : be.mesh_z;
   config.mesh.theta_grading = be.mesh_theta_grading;
   config.mesh.z_grading = be.mesh_z_grading;
+  config.solver.cavitation = be.cavitation;
   if (be.oil_feed_pressure > 0.0) {  // a hole in the rod's bore, on the rod axis toward the pin
     config.feed.kind = lubrication::OilFeed::Kind::kHole;
     config.feed.angle = 0.5 * std::numbers::pi;

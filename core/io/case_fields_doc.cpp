@@ -16,8 +16,8 @@ std::string DefaultText(const engine::CaseField& field, engine::EngineCase& c) {
       const std::string& text = field.text(c);
       return text.size() > 40 ? "(text)" : "\"" + text + "\"";
     }
-    case engine::FieldKind::kJointModel:
-      return std::string("\"") + engine::JointModelName(field.model(c)) + "\"";
+    case engine::FieldKind::kChoice:
+      return "\"" + field.ChoiceName(c) + "\"";
     case engine::FieldKind::kNumber:
     case engine::FieldKind::kInteger:
       return FormatValue(field.get(c));

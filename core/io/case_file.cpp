@@ -37,8 +37,8 @@ void VisitCase(V& v, EngineCase& c) {
       case engine::FieldKind::kText:
         v.Text(field, field.text(c));
         break;
-      case engine::FieldKind::kJointModel:
-        v.Model(field, field.model(c));
+      case engine::FieldKind::kChoice:
+        v.Choice(field, c);
         break;
       case engine::FieldKind::kNumber:
       case engine::FieldKind::kInteger:
@@ -99,10 +99,9 @@ struct Reader {
       field.Check(field.get(c));
     }
   }
-  void Model(const engine::CaseField& field, JointModel& value) {
+  void Choice(const engine::CaseField& field, EngineCase& c) {
     if (const json* j = Get(field.path)) {
-      value =
-          engine::ParseJointModel(field.path, j->is_string() ? j->get<std::string>() : Dump(*j));
+      field.SetChoice(c, j->is_string() ? j->get<std::string>() : Dump(*j));
     }
   }
   void Vector(const engine::CaseField& field, std::vector<double>& value) {
@@ -142,8 +141,8 @@ struct Writer {
       At(field.path) = field.get(c);
     }
   }
-  void Model(const engine::CaseField& field, JointModel& value) {
-    At(field.path) = engine::JointModelName(value);
+  void Choice(const engine::CaseField& field, EngineCase& c) {
+    At(field.path) = field.ChoiceName(c);
   }
   void Vector(const engine::CaseField& field, std::vector<double>& value) {
     At(field.path) = value;
@@ -311,6 +310,7 @@ void ApplyOverride(json* root, const std::string& assignment) {
     throw InputError("--set", assignment, "must be key=value with a dotted JSON path as key");
   }
   const std::string path = assignment.substr(0, eq), text = assignment.substr(eq + 1);
+  const engine::CaseField* field = engine::FindCaseField(path);
   json* node = root;
   std::size_t start = 0;
   while (true) {
@@ -325,6 +325,11 @@ void ApplyOverride(json* root, const std::string& assignment) {
       node = &(*node)[index];
     } else if (node->is_object() && node->contains(key)) {
       node = &(*node)[key];
+    } else if (node->is_object() && field != nullptr &&
+               field->kind != engine::FieldKind::kNumberList) {
+      // A field the file leaves at its default (e.g. a file older than the field): added.
+      node = &(*node)[key];
+      if (dot != std::string::npos) *node = json::object();
     } else if (path == kOldPistonRadius) {
       throw InputError("--set " + path, text,
                        "replaced by skirt.cold_clearance, the cold radial skirt clearance "
@@ -334,6 +339,11 @@ void ApplyOverride(json* root, const std::string& assignment) {
     }
     if (dot == std::string::npos) break;
     start = dot + 1;
+  }
+  if (node->is_null() && field != nullptr) {  // added above: the field's kind says the type
+    const bool number =
+        field->kind == engine::FieldKind::kNumber || field->kind == engine::FieldKind::kInteger;
+    *node = number ? json(0.0) : json(std::string());
   }
   if (node->is_number()) {
     double value = 0.0;

@@ -50,6 +50,11 @@ const std::vector<ResultColumn>& ResultColumns() {
       {"bigend_force_rod_x[N]", &OutputRow::bigend_force_rod_x, "kN", 1e-3},
       {"bigend_force_rod_y[N]", &OutputRow::bigend_force_rod_y, "kN", 1e-3},
       {"bearing_eps_rate[1/s]", &OutputRow::bearing_eps_rate, "1/s", 1.0},
+      {"skirt_inflow[m^3/s]", &OutputRow::skirt_inflow, "cm^3/s", 1e6},
+      {"skirt_outflow[m^3/s]", &OutputRow::skirt_outflow, "cm^3/s", 1e6},
+      {"skirt_wetted_fraction[-]", &OutputRow::skirt_wetted_fraction, "-", 1.0},
+      {"bearing_supply_flow[m^3/s]", &OutputRow::bearing_supply_flow, "cm^3/s", 1e6},
+      {"bearing_side_flow[m^3/s]", &OutputRow::bearing_side_flow, "cm^3/s", 1e6},
       {"piston_position[m]", &OutputRow::piston_position, "mm", 1e3},
       {"piston_velocity[m/s]", &OutputRow::piston_velocity, "m/s", 1.0},
       {"piston_acceleration[m/s^2]", &OutputRow::piston_acceleration, "m/s^2", 1.0},
@@ -248,6 +253,9 @@ OutputRow RowFromSample(const engine::CrankTrainSample& s, engine::Model model,
     r.skirt_peak_contact_pressure = s.skirt.max_contact_pressure;
     r.skirt_contact_friction_force = s.skirt.contact_friction_force;
     r.skirt_contact_fpl = s.skirt.contact_fpl;
+    r.skirt_inflow = s.skirt.inflow;
+    r.skirt_outflow = s.skirt.outflow;
+    r.skirt_wetted_fraction = s.skirt.wetted_fraction;
   }
   if (big_end_lubricated && s.bearing.present) {
     r.bearing_moft = s.bearing.moft;
@@ -259,6 +267,8 @@ OutputRow RowFromSample(const engine::CrankTrainSample& s, engine::Model model,
     r.bearing_friction_force = s.bearing.friction_force;
     r.bearing_contact_friction_force = s.bearing.contact_friction_force;
     r.bearing_contact_fpl = s.bearing.contact_fpl;
+    r.bearing_supply_flow = s.bearing.supply_flow;
+    r.bearing_side_flow = s.bearing.side_flow;
   }
   if (!big_end_lubricated) {  // ideal pin joint: frictionless
     r.bearing_fpl = 0.0;

@@ -24,6 +24,8 @@ struct OutputRow {
       skirt_contact_fpl, bearing_peak_pressure, bearing_peak_contact_pressure,
       bearing_friction_force, bearing_contact_friction_force, bearing_contact_fpl,
       bigend_force_rod_x, bigend_force_rod_y, bearing_eps_rate,
+      // Oil flows of each joint and the skirt's oil-covered share:
+      skirt_inflow, skirt_outflow, skirt_wetted_fraction, bearing_supply_flow, bearing_side_flow,
       // Extras (after the core columns):
       piston_position, piston_velocity, piston_acceleration, rod_angle, rod_angular_velocity,
       rod_angular_acceleration, pin_force_x, pin_force_y, main_bearing_force_x,

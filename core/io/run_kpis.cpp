@@ -157,6 +157,26 @@ std::optional<JointKpis> FilmKpisOf(const std::vector<engine::CrankTrainSample>&
   }
   j.mean_fpl = Headline(engine::HeadlineFigures(samples),
                         skirt ? "skirt_fpl_mean[W]" : "bearing_fpl_mean[W]");
+  // Oil: the mean flows of the cycle's samples times its duration (equally spaced samples).
+  std::vector<const S*> with;
+  for (const S& s : samples)
+    if (present(s)) with.push_back(&s);
+  if (with.size() >= 2) {
+    const double span = (with[1]->time - with[0]->time) * static_cast<double>(with.size());
+    double in = 0.0, out = 0.0, wetted = 0.0;
+    for (const S* s : with) {
+      in += skirt ? s->skirt.inflow : s->bearing.supply_flow;
+      out += skirt ? s->skirt.outflow : s->bearing.side_flow;
+      wetted += s->skirt.wetted_fraction;
+    }
+    const double n = static_cast<double>(with.size());
+    j.oil_in_per_cycle = in / n * span;
+    j.oil_out_per_cycle = out / n * span;
+    if (skirt) j.mean_wetted_fraction = wetted / n;
+    const coupling::OilAccount& first = skirt ? with.front()->skirt.oil : with.front()->bearing.oil;
+    const coupling::OilAccount& last = skirt ? with.back()->skirt.oil : with.back()->bearing.oil;
+    if (first.kept && last.kept && last.time > first.time) j.oil_balance = last.BalanceSince(first);
+  }
   return j;
 }
 

@@ -60,6 +60,14 @@ struct JointKpis {
   std::optional<double> max_eps;  ///< big end: largest eccentricity ratio [-]
   std::optional<double> max_eps_crank_angle_deg;
   std::optional<PistonSlap> slap;  ///< skirt only
+  /// Oil into the film (big end: through the supply; skirt: at its inflow nodes) and out of it
+  /// (big end: side leakage; skirt: outflow nodes) over the cycle: the mean of the equally spaced
+  /// output samples times the cycle's duration [m^3].
+  std::optional<double> oil_in_per_cycle, oil_out_per_cycle;
+  /// Mass-conserving (JFO) films: the oil balance between the cycle's first and last output
+  /// steps relative to the oil supplied (coupling::OilAccount::BalanceSince); none otherwise.
+  std::optional<double> oil_balance;
+  std::optional<double> mean_wetted_fraction;  ///< skirt: oil-covered share of the panels [-]
 };
 
 /// The KPIs of a run: an entry per lubricated joint that has samples (none for the ideal model).

@@ -112,6 +112,10 @@ json JointKpisToJson(const JointKpis& k) {
   o["peak_contact_pressure[Pa]"] = k.peak_contact_pressure;
   o["peak_contact_pressure_crank_angle[deg]"] = Optional(k.peak_contact_pressure_crank_angle_deg);
   o["mean_fpl[W]"] = Optional(k.mean_fpl);
+  o["oil_in_per_cycle[m^3]"] = Optional(k.oil_in_per_cycle);
+  o["oil_out_per_cycle[m^3]"] = Optional(k.oil_out_per_cycle);
+  o["oil_balance[-]"] = Optional(k.oil_balance);
+  if (k.mean_wetted_fraction) o["mean_wetted_fraction[-]"] = *k.mean_wetted_fraction;
   if (k.max_eps) {
     o["max_eps[-]"] = *k.max_eps;
     o["max_eps_crank_angle[deg]"] = Optional(k.max_eps_crank_angle_deg);
@@ -145,6 +149,10 @@ JointKpis JointKpisFromJson(const json& o, const std::string& at) {
       GetOptional(o, "peak_contact_pressure_crank_angle[deg]", at);
   k.mean_fpl = GetOptional(o, "mean_fpl[W]", at);
   k.max_eps = GetOptional(o, "max_eps[-]", at);
+  k.oil_in_per_cycle = GetOptional(o, "oil_in_per_cycle[m^3]", at);
+  k.oil_out_per_cycle = GetOptional(o, "oil_out_per_cycle[m^3]", at);
+  k.oil_balance = GetOptional(o, "oil_balance[-]", at);
+  k.mean_wetted_fraction = GetOptional(o, "mean_wetted_fraction[-]", at);
   k.max_eps_crank_angle_deg = GetOptional(o, "max_eps_crank_angle[deg]", at);
   if (o.contains("slap_events") || o.contains("slap_energy_sum[J]")) {
     PistonSlap slap;

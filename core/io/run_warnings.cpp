@@ -133,8 +133,8 @@ bool SameValue(const engine::CaseField& f, engine::EngineCase& a, engine::Engine
     }
     case engine::FieldKind::kText:
       return f.text && f.text(a) == f.text(b);
-    case engine::FieldKind::kJointModel:
-      return false;  // the model is chosen per run, never an assumption
+    case engine::FieldKind::kChoice:
+      return false;  // models are chosen per run, never an assumption
   }
   return false;
 }

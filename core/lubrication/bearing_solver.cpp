@@ -141,7 +141,27 @@ BearingSolver::BearingSolver(BearingConfig config)
   }
 }
 
-const BearingResult& BearingSolver::Solve(const BearingState& s) {
+const BearingResult& BearingSolver::Solve(const BearingState& state) {
+  return SolveStep(state, 0.0);
+}
+
+const BearingResult& BearingSolver::SolveAt(const BearingState& state, double t) {
+  if (!Transient()) return SolveStep(state, 0.0);
+  const FilmHistory::Entry* from = history_.Before(t);
+  if (from == nullptr) {
+    SolveStep(state, 0.0);
+    if (history_.empty()) history_.Push(t, {fem_.solution().void_content});
+    return result_;
+  }
+  fem_.void_history() = from->void_content.front();
+  return SolveStep(state, t - from->time);
+}
+
+void BearingSolver::AcceptStep(double t) {
+  if (Transient()) history_.Push(t, {fem_.solution().void_content});
+}
+
+const BearingResult& BearingSolver::SolveStep(const BearingState& s, double time_step) {
   s.Validate();
   const BearingGeometry& g = config_.geometry;
   const TriMesh& m = fem_.mesh();
@@ -198,6 +218,7 @@ const BearingResult& BearingSolver::Solve(const BearingState& s) {
   params.u_sum = R * (s.omega_journal + s.omega_bearing - 2.0 * s.line_of_centres_rate);
   params.u_diff = R * (s.omega_journal - s.omega_bearing);
   params.film = config_.film.get();
+  params.time_step = time_step;
   const ReynoldsSolution& sol = fem_.Solve(params);
 
   BearingResult& r = result_;
@@ -267,6 +288,8 @@ const BearingResult& BearingSolver::Solve(const BearingState& s) {
   r.side_flow *= sym;
   r.feed_flow *= sym;
   r.inlet_flow *= sym;
+  r.squeeze_rate = sym * sol.squeeze_rate;
+  r.void_volume = sym * sol.void_volume;
   return r;
 }
 

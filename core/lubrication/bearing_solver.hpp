@@ -13,6 +13,7 @@
 #include <memory>
 #include <string>
 
+#include "core/lubrication/film_history.hpp"
 #include "core/lubrication/reynolds_fem.hpp"
 
 namespace filmdyn::lubrication {
@@ -112,6 +113,10 @@ struct BearingResult {
   /// default film start: feed_flow + the Couette flow (U/2) h arriving at theta = 0 from the
   /// (cavitated) upstream side.
   double inlet_flow = 0.0;
+  /// The oil balance's storage terms (ReynoldsSolution): feed_flow - side_flow = squeeze_rate -
+  /// d(void_volume)/dt in a transient JFO solve [m^3/s], [m^3].
+  double squeeze_rate = 0.0;
+  double void_volume = 0.0;
 };
 
 /// The film surface over the whole width, for output and display: the solver's own mesh, or —
@@ -125,7 +130,17 @@ struct FullWidthSurface {
 class BearingSolver {
  public:
   explicit BearingSolver(BearingConfig config);
+  /// Quasi-static solve (the steady calculator; JFO without history).
   const BearingResult& Solve(const BearingState& state);
+  /// A solve at time t of a time integration. With JFO cavitation the film steps from the
+  /// history's latest accepted state before t (FilmHistory); the first solve, with no history
+  /// yet, is quasi-static and becomes the history's starting state. Other models: Solve(state).
+  const BearingResult& SolveAt(const BearingState& state, double t);
+  /// The last solve (SolveAt at t) is the film of an accepted step at t: recorded in history().
+  void AcceptStep(double t);
+  const FilmHistory& history() const { return history_; }
+  /// True when solves depend on the history (JFO cavitation).
+  bool Transient() const { return config_.solver.cavitation == CavitationModel::kJfo; }
   const BearingResult& result() const { return result_; }
   /// Fields of the last solve (pressure, contact pressure, fluid fraction per node).
   const ReynoldsSolution& fields() const { return fem_.solution(); }
@@ -141,12 +156,15 @@ class BearingSolver {
   static TriMesh MakeMesh(const BearingGeometry& g, const BearingMeshSpec& spec, bool fix_theta0);
 
  private:
+  const BearingResult& SolveStep(const BearingState& state, double time_step);
+
   BearingConfig config_;
   ReynoldsFem fem_;
   std::vector<double> theta_;
   BearingResult result_;
   Eigen::VectorXd cos_, sin_;  // load directions of the film integrals
   FullWidthSurface full_width_;
+  FilmHistory history_;
 };
 
 }  // namespace filmdyn::lubrication

@@ -80,6 +80,22 @@ const ReynoldsSolution& ReynoldsFem::Solve(const ReynoldsParams& params) {
       break;
   }
   FinishStats();
+  double squeeze = 0.0, voids = 0.0, wetted = 0.0;
+  for (const Element& e : elements_) {
+    const auto& nd = e.node;
+    squeeze += e.area / 3.0 *
+               (phi_c_[nd[0]] * dhdt_[nd[0]] + phi_c_[nd[1]] * dhdt_[nd[1]] +
+                phi_c_[nd[2]] * dhdt_[nd[2]]);
+  }
+  for (int k = 0; k < n; ++k) {
+    voids += lumped_area_[k] * sol_.void_content[k];
+    // JFO: the oil fraction; Reynolds: the film is whole where it is not cavitated.
+    const bool jfo = options_.cavitation == CavitationModel::kJfo;
+    wetted += lumped_area_[k] * (jfo ? sol_.fluid_fraction[k] : (sol_.cavitated[k] ? 0.0 : 1.0));
+  }
+  sol_.squeeze_rate = squeeze;
+  sol_.void_volume = voids;
+  sol_.wetted_area = wetted;
   return sol_;
 }
 

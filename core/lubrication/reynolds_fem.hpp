@@ -44,19 +44,17 @@
 #include <memory>
 #include <vector>
 
+#include "core/base/stop.hpp"
+#include "core/lubrication/cavitation_model.hpp"
 #include "core/lubrication/film_factors.hpp"
 #include "core/lubrication/sparse_ldlt.hpp"
-#include "core/base/stop.hpp"
 #include "core/lubrication/tri_mesh.hpp"
 
 namespace filmdyn::lubrication {
 
-enum class CavitationModel { kReynolds, kJfo, kNone };
-
 /// Numerical status of one solve (numerical trouble is a status, never an exception: docs/conventions.md).
 enum class SolveStatus { kConverged, kNotConverged, kFactorizationFailed };
 const char* ToString(SolveStatus status);
-const char* ToString(CavitationModel model);
 
 struct ReynoldsOptions {
   CavitationModel cavitation = CavitationModel::kReynolds;
@@ -125,6 +123,15 @@ struct ReynoldsSolution {
   Eigen::VectorXd residual;             ///< w = K p - f (+B r): nodal net outflow [m^3/s]; at
                                         ///< fixed nodes minus the boundary outflow
   std::vector<std::uint8_t> cavitated;  ///< 1 where the film is cavitated (active set)
+  /// The oil balance's terms: the sum of the fixed nodes' residuals (net flow into the film
+  /// through its boundary) equals squeeze_rate - (void_volume - void volume of the history) / dt
+  /// for a transient JFO solve (squeeze_rate alone when quasi-static or Reynolds, plus the
+  /// Reynolds condition's unbalanced cavitated nodes).
+  double squeeze_rate = 0.0;  ///< integral of phi_c dh/dt over the film [m^3/s]
+  double void_volume = 0.0;   ///< sum of lumped area x void_content [m^3]
+  /// Oil-covered area [m^2]: the lumped integral of theta (JFO), of the uncavitated nodes
+  /// (Reynolds, which tracks no oil in a cavity).
+  double wetted_area = 0.0;
   ReynoldsStats stats;
 };
 

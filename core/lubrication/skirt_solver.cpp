@@ -153,7 +153,7 @@ const ReynoldsFem& SkirtSolver::panel(int k) const { return *panels_.at(k)->fem;
 
 const std::vector<int>& SkirtSolver::panel_nodes(int k) const { return panels_.at(k)->node; }
 
-void SkirtSolver::SolvePanel(Panel& pa, const SkirtState& s) {
+void SkirtSolver::SolvePanel(Panel& pa, const SkirtState& s, double time_step) {
   ReynoldsFem& fem = *pa.fem;
   const int n = fem.NodeCount();
   Eigen::VectorXd& h = fem.film_thickness();
@@ -167,6 +167,7 @@ void SkirtSolver::SolvePanel(Panel& pa, const SkirtState& s) {
   params.u_sum = -s.piston_velocity;  // liner moves at -u_p in the piston frame
   params.u_diff = s.piston_velocity;  // U1 - U2, surface 1 = skirt (at rest)
   params.film = config_.film.get();
+  params.time_step = time_step;
   const ReynoldsSolution& sol = fem.Solve(params);
   pa.stats = sol.stats;
 
@@ -183,7 +184,32 @@ void SkirtSolver::SolvePanel(Panel& pa, const SkirtState& s) {
       fem, sol, params, {.load_directions = directions, .friction_arms = arms, .symmetry = 2.0});
 }
 
-const SkirtResult& SkirtSolver::Solve(const SkirtState& s) {
+const SkirtResult& SkirtSolver::Solve(const SkirtState& state) { return SolveStep(state, 0.0); }
+
+std::vector<Eigen::VectorXd> SkirtSolver::VoidContent() const {
+  std::vector<Eigen::VectorXd> v;
+  for (const auto& pa : panels_) v.push_back(pa->fem->solution().void_content);
+  return v;
+}
+
+const SkirtResult& SkirtSolver::SolveAt(const SkirtState& state, double t) {
+  if (!Transient()) return SolveStep(state, 0.0);
+  const FilmHistory::Entry* from = history_.Before(t);
+  if (from == nullptr) {
+    SolveStep(state, 0.0);
+    if (history_.empty()) history_.Push(t, VoidContent());
+    return result_;
+  }
+  for (size_t p = 0; p < panels_.size(); ++p)
+    panels_[p]->fem->void_history() = from->void_content[p];
+  return SolveStep(state, t - from->time);
+}
+
+void SkirtSolver::AcceptStep(double t) {
+  if (Transient()) history_.Push(t, VoidContent());
+}
+
+const SkirtResult& SkirtSolver::SolveStep(const SkirtState& s, double time_step) {
   s.Validate();
   const int n = mesh_.NodeCount();
   SkirtResult& r = result_;
@@ -197,15 +223,15 @@ const SkirtResult& SkirtSolver::Solve(const SkirtState& s) {
     }
   }
   if (pool_) {
-    pool_->Run(kPanels, [&](int p) { SolvePanel(*panels_[p], s); });
+    pool_->Run(kPanels, [&](int p) { SolvePanel(*panels_[p], s, time_step); });
   } else {
-    for (auto& panel : panels_) SolvePanel(*panel, s);
+    for (auto& panel : panels_) SolvePanel(*panel, s, time_step);
   }
 
   // Whole-skirt results: the panels' sums in panel order. The whole-skirt fields are gathered
   // only when asked for (fields(): output steps), not at every solve.
   ReynoldsStats& st = r.stats;
-  double cavitated_area = 0.0, panel_area = 0.0;
+  double cavitated_area = 0.0, panel_area = 0.0, wetted_area = 0.0;
   r.moft = 1e300;
   for (const auto& pa : panels_) {
     const FilmIntegrals& fi = pa->integrals;
@@ -225,11 +251,22 @@ const SkirtResult& SkirtSolver::Solve(const SkirtState& s) {
     r.max_contact_pressure = std::max(r.max_contact_pressure, fi.max_contact_pressure);
     cavitated_area += fi.cavitated_area;
     panel_area += fi.film_area;
+    const ReynoldsSolution& sol = pa->fem->solution();
+    wetted_area += 2.0 * sol.wetted_area;  // x2: the mirrored half
+    r.squeeze_rate += 2.0 * sol.squeeze_rate;
+    r.void_volume += 2.0 * sol.void_volume;
+    const TriMesh& pm = pa->fem->mesh();
+    for (int k = 0; k < pm.NodeCount(); ++k) {
+      if (!pm.fixed[k]) continue;
+      r.inflow += 2.0 * std::max(sol.residual[k], 0.0);
+      r.outflow += 2.0 * std::max(-sol.residual[k], 0.0);
+    }
   }
   fields_stale_ = true;
   r.moment_about_pin += r.friction_moment_about_pin;
   r.friction_power_loss = std::abs(r.friction_force * s.piston_velocity);
   r.cavitated_fraction = panel_area > 0 ? cavitated_area / panel_area : 0.0;
+  r.wetted_fraction = panel_area > 0 ? wetted_area / panel_area : 1.0;
   return r;
 }
 

@@ -13,9 +13,10 @@
 #include <memory>
 #include <string>
 
+#include "core/base/worker_pool.hpp"
+#include "core/lubrication/film_history.hpp"
 #include "core/lubrication/profile_table.hpp"
 #include "core/lubrication/reynolds_fem.hpp"
-#include "core/base/worker_pool.hpp"
 
 namespace filmdyn::lubrication {
 
@@ -75,6 +76,14 @@ struct SkirtResult {
   double max_pressure = 0.0, max_contact_pressure = 0.0;  ///< [Pa]
   double cavitated_fraction = 0.0;                        ///< of the panel area [-]
   int clamped_nodes = 0;                                  ///< nodes where h < min_film was clamped
+  /// Oil through the panels' boundaries (skirt edges and relief edges), both halves: what
+  /// enters at the nodes with a net inflow and leaves at those with a net outflow [m^3/s].
+  double inflow = 0.0, outflow = 0.0;
+  /// Oil-covered share of the panels' area: the mean fluid fraction (JFO), the uncavitated
+  /// share (Reynolds) [-].
+  double wetted_fraction = 1.0;
+  /// The oil balance's storage terms (as BearingResult), both halves [m^3/s], [m^3].
+  double squeeze_rate = 0.0, void_volume = 0.0;
 };
 
 /// Construct once per skirt (mesh + symbolic factorisation), then Solve() per time step.
@@ -90,7 +99,15 @@ class SkirtSolver {
  public:
   explicit SkirtSolver(SkirtConfig config);
   ~SkirtSolver();
+  /// Quasi-static solve (the skirt calculator; JFO without history).
   const SkirtResult& Solve(const SkirtState& state);
+  /// A solve at time t of a time integration; with JFO cavitation it steps from the history's
+  /// latest accepted state before t (as BearingSolver::SolveAt).
+  const SkirtResult& SolveAt(const SkirtState& state, double t);
+  /// The last solve (SolveAt at t) is the film of an accepted step at t: recorded in history().
+  void AcceptStep(double t);
+  const FilmHistory& history() const { return history_; }
+  bool Transient() const { return config_.solver.cavitation == CavitationModel::kJfo; }
   const SkirtResult& result() const { return result_; }
   /// Whole-skirt fields of the last solve (gathered from the panels on the first call after it).
   const ReynoldsSolution& fields() const;
@@ -114,7 +131,9 @@ class SkirtSolver {
 
  private:
   struct Panel;
-  void SolvePanel(Panel& panel, const SkirtState& s);
+  void SolvePanel(Panel& panel, const SkirtState& s, double time_step);
+  const SkirtResult& SolveStep(const SkirtState& state, double time_step);
+  std::vector<Eigen::VectorXd> VoidContent() const;
 
   SkirtConfig config_;
   TriMesh mesh_;
@@ -125,6 +144,7 @@ class SkirtSolver {
   mutable ReynoldsSolution fields_;  // a cache of the panels' fields, see fields()
   mutable bool fields_stale_ = false;
   SkirtResult result_;
+  FilmHistory history_;
 };
 
 }  // namespace filmdyn::lubrication

@@ -38,8 +38,11 @@ class ForceElement {
   /// members (and the arguments): the system may then evaluate it on a helper thread,
   /// concurrently with other such elements (MultibodySystem::SetThreads). Default: false.
   virtual bool Concurrent() const { return false; }
-  /// Called once per accepted integrator step (history, caches, counters). Default: nothing.
+  /// Called once per accepted integrator step, at its end (t, state), when
+  /// WantsAcceptedSteps(): for elements with a history (e.g. a film's cavitation content).
   virtual void OnStepAccepted(double /*t*/, const SystemState& /*state*/) {}
+  /// True when the element needs OnStepAccepted (it costs the integrator a step-by-step loop).
+  virtual bool WantsAcceptedSteps() const { return false; }
 
  private:
   std::string name_;

@@ -25,6 +25,7 @@ struct Integrator::Impl {
   std::exception_ptr error;
   std::string cvode_message;
   SystemState scratch;
+  SystemState accepted;  // the end of the last accepted step (AdvanceTo, step by step)
 
   ~Impl() {
     if (solver) SUNLinSolFree(solver);
@@ -150,9 +151,30 @@ SystemState Integrator::AdvanceTo(double t_out) {
   Impl& m = *impl_;
   double t_reached = t_;
   m.error = nullptr;
-  const int flag = CVode(m.cvode, t_out, m.y, &t_reached, CV_NORMAL);
-  if (m.error) std::rethrow_exception(m.error);
-  m.Check(flag, "step");
+  if (!m.system->WantsAcceptedSteps()) {
+    const int flag = CVode(m.cvode, t_out, m.y, &t_reached, CV_NORMAL);
+    if (m.error) std::rethrow_exception(m.error);
+    m.Check(flag, "step");
+  } else {
+    // Step by step (what CV_NORMAL does inside): each accepted step's end goes to the elements
+    // with a history, then the state at t_out is interpolated inside the last step.
+    double t_step = 0.0;
+    m.Check(CVodeGetCurrentTime(m.cvode, &t_step), "GetCurrentTime");
+    long steps = 0;
+    while (t_step < t_out) {
+      if (++steps > m.config.max_steps_per_output)
+        throw std::runtime_error(
+            "CVODE step failed: " + std::to_string(m.config.max_steps_per_output) +
+            " steps taken before reaching t = " + std::to_string(t_out));
+      const int flag = CVode(m.cvode, t_out, m.y, &t_step, CV_ONE_STEP);
+      if (m.error) std::rethrow_exception(m.error);
+      m.Check(flag, "step");
+      m.Unpack(m.y, &m.accepted);
+      m.system->OnStepAccepted(t_step, m.accepted);
+    }
+    m.Check(CVodeGetDky(m.cvode, t_out, 0, m.y), "GetDky");
+    t_reached = t_out;
+  }
   t_ = t_reached;
   SystemState state;
   m.Unpack(m.y, &state);

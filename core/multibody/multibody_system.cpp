@@ -79,6 +79,17 @@ std::vector<int> ConcurrentElements(const std::vector<std::unique_ptr<ForceEleme
 }
 }  // namespace
 
+bool MultibodySystem::WantsAcceptedSteps() const {
+  for (const auto& e : elements_)
+    if (e->WantsAcceptedSteps()) return true;
+  return false;
+}
+
+void MultibodySystem::OnStepAccepted(double t, const SystemState& state) {
+  for (const auto& e : elements_)
+    if (e->WantsAcceptedSteps()) e->OnStepAccepted(t, state);
+}
+
 Eigen::VectorXd MultibodySystem::AppliedForces(double t, const SystemState& state) {
   ThrowIfStopRequested(stop_check_);
   const int n = NumCoordinates();

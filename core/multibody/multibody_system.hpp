@@ -70,6 +70,11 @@ class MultibodySystem {
   /// a cancel or a time limit is honoured within one evaluation, not one output step.
   void SetStopCheck(StopCheck check) { stop_check_ = std::move(check); }
 
+  /// True when a force element wants OnStepAccepted calls (ForceElement::WantsAcceptedSteps).
+  bool WantsAcceptedSteps() const;
+  /// Passes an accepted integrator step's end to the elements that want it.
+  void OnStepAccepted(double t, const SystemState& state);
+
   /// Sum of all applied forces Q (3n) at the state.
   Eigen::VectorXd AppliedForces(double t, const SystemState& state);
   /// eq. 39 at the state (force elements evaluated once).

@@ -44,8 +44,8 @@ QString DisplayRangeText(const engine::CaseField& field) {
   switch (field.kind) {
     case FieldKind::kText:
       return Tr("any text");
-    case FieldKind::kJointModel:
-      return Tr("\"ideal\" or \"lubricated\"");
+    case FieldKind::kChoice:
+      return QString::fromStdString(field.ChoicesText(true));
     case FieldKind::kInteger:
       return Tr("whole number from %1 to %2")
           .arg(QLocale::c().toString(field.range.lo, 'g', 10),
@@ -77,8 +77,8 @@ QString DisplayDefaultText(const engine::CaseField& field) {
       const QString text = QString::fromStdString(field.text(c));
       return text.size() > 40 ? QString() : "\"" + text + "\"";
     }
-    case FieldKind::kJointModel:
-      return QString::fromLatin1(engine::JointModelName(field.model(c)));
+    case FieldKind::kChoice:
+      return QString::fromStdString(field.ChoiceName(c));
     case FieldKind::kNumber:
     case FieldKind::kInteger:
       return DisplayNumber(field.get(c), field) + UnitSuffix(field);
