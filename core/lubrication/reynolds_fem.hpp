@@ -39,7 +39,6 @@
 ///    inlet brings the void 1 - theta into the film with its Couette flow.
 ///  - kNone: full Sommerfeld film, negative pressures allowed (verification only).
 #include <Eigen/Sparse>
-#include <Eigen/SparseLU>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -48,6 +47,7 @@
 #include "core/lubrication/cavitation_model.hpp"
 #include "core/lubrication/film_factors.hpp"
 #include "core/lubrication/sparse_ldlt.hpp"
+#include "core/lubrication/sparse_lu.hpp"
 #include "core/lubrication/tri_mesh.hpp"
 
 namespace filmdyn::lubrication {
@@ -221,8 +221,7 @@ class ReynoldsFem {
   std::vector<int> down_node_plus_, down_node_minus_;
   std::vector<double> face_width_;  // dual-cell width across the sliding direction [m]
   std::unique_ptr<SparseLdlt> ldlt_;
-  std::unique_ptr<Eigen::SparseLU<Eigen::SparseMatrix<double>>> lu_;
-  bool lu_analyzed_ = false;
+  std::unique_ptr<SparseLu> lu_;  // JFO: the mixed (p, r) system
   Eigen::VectorXd h_, dhdt_, p_fixed_, f_, rhs_, x_, work_, theta_fixed_, void_old_;
   double time_step_ = 0.0;
   std::vector<std::uint8_t> extra_fixed_, fixed_, active_, prev_active_, next_active_;

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "core/lubrication/reynolds_internal.hpp"
+#include "core/lubrication/sparse_lu.hpp"
 
 namespace filmdyn::lubrication {
 
@@ -66,11 +67,15 @@ bool ReynoldsFem::SolveJfo() {
     if (fixed_[k] && r_fixed[k] != 0.0 && bnode[k] >= 0 && !fixed_[bnode[k]])
       base[bnode[k]] -= boff[k] * r_fixed[k];
   }
-  if (!lu_) lu_ = std::make_unique<Eigen::SparseLU<Eigen::SparseMatrix<double>>>();
-  if (!lu_analyzed_) {
-    lu_->analyzePattern(k_full_);
-    lu_analyzed_ = true;
+  if (!lu_) {
+    lu_ = std::make_unique<SparseLu>();
+    lu_->Analyze(k_full_);
   }
+  // A void column is scaled so that its diagonal has the size of the pressure column it
+  // replaces (r_k = scale_k x_k): the columns then stay diagonally dominant whichever nodes are
+  // cavitated, so the pivot sequence of an earlier factorisation remains a stable one.
+  Eigen::VectorXd void_scale(n);
+  for (int k = 0; k < n; ++k) void_scale[k] = kf[diag_pos_full_[k]] / std::abs(bdiag[k]);
   double* mv = m_full_.valuePtr();
   const int* inner = k_full_.innerIndexPtr();
   Eigen::VectorXd& p = sol_.pressure;
@@ -90,7 +95,8 @@ bool ReynoldsFem::SolveJfo() {
         else if (fixed_[c])
           v = 0.0;
         else if (cav[c])
-          v = (q == diag_pos_full_[c]) ? bdiag[c] : (q == bpos[c] ? boff[c] : 0.0);
+          v = void_scale[c] *
+              ((q == diag_pos_full_[c]) ? bdiag[c] : (q == bpos[c] ? boff[c] : 0.0));
         else
           v = kf[q];
         mv[q] = v;
@@ -98,17 +104,21 @@ bool ReynoldsFem::SolveJfo() {
     }
     auto t1 = Clock::now();
     st.complementarity_s += Seconds(t0, t1);
-    lu_->factorize(m_full_);
+    const bool factored = lu_->Factorize(m_full_);
     auto t2 = Clock::now();
     st.factorization_s += Seconds(t1, t2);
     ++st.iterations;
     ++st.jfo_iterations;
-    if (lu_->info() != Eigen::Success) {
+    if (!factored) {
       st.status = SolveStatus::kFactorizationFailed;
       return false;
     }
-    x_ = lu_->solve(base);
-    const double p_tol = 1e-12 * std::max(x_.cwiseAbs().maxCoeff(), 1e-300);
+    x_ = base;
+    lu_->Solve(x_);
+    double p_max = 0.0;
+    for (int k = 0; k < n; ++k)
+      if (!cav[k]) p_max = std::max(p_max, std::abs(x_[k]));
+    const double p_tol = 1e-12 * std::max(p_max, 1e-300);
     bool changed = false;
     for (int k = 0; k < n; ++k) {
       if (fixed_[k]) {
@@ -117,7 +127,7 @@ bool ReynoldsFem::SolveJfo() {
         continue;
       }
       p[k] = cav[k] ? 0.0 : x_[k];
-      r[k] = cav[k] ? x_[k] : 0.0;
+      r[k] = cav[k] ? void_scale[k] * x_[k] : 0.0;
       const bool next = cav[k] ? (r[k] > -1e-12) : (p[k] < -p_tol);
       changed |= next != static_cast<bool>(cav[k]);
       next_active_[k] = next;
