@@ -55,7 +55,8 @@ Cartesian CartesianOf(const BodyState& crank, const BodyState& rod, const BigEnd
   return z;
 }
 
-BigEndKinematics FromCartesian(const Cartesian& z, double bearing_angle, double c) {
+BigEndKinematics FromCartesian(const Cartesian& z, double bearing_angle, double journal_angle,
+                               double c) {
   BigEndKinematics k;
   k.ecc = z.segment<2>(0);
   k.ecc_rate = z.segment<2>(2);
@@ -70,6 +71,7 @@ BigEndKinematics FromCartesian(const Cartesian& z, double bearing_angle, double 
   k.state.omega_journal = z[4];
   k.state.omega_bearing = z[5];
   k.state.bearing_angle = bearing_angle;
+  k.state.journal_angle = journal_angle;
   return k;
 }
 
@@ -77,14 +79,17 @@ BigEndKinematics FromCartesian(const Cartesian& z, double bearing_angle, double 
 
 BigEndKinematics LubricatedBigEndElement::Kinematics(const BodyState& crank,
                                                      const BodyState& rod) const {
-  return FromCartesian(CartesianOf(crank, rod, mount_), rod.Angle(),
-                       solver_->config().geometry.radial_clearance);
+  BigEndKinematics k = FromCartesian(CartesianOf(crank, rod, mount_), rod.Angle(), crank.Angle(),
+                                     solver_->config().geometry.radial_clearance);
+  if (supply_pressure_) k.state.supply_pressure = supply_pressure_(crank.Angle());
+  return k;
 }
 
 Eigen::Vector4d LubricatedBigEndElement::Loads(const Eigen::Matrix<double, 6, 1>& z,
                                                double bearing_angle, BigEndKinematics* kin) {
   const double c = solver_->config().geometry.radial_clearance;
-  *kin = FromCartesian(z, bearing_angle, c);
+  *kin = FromCartesian(z, bearing_angle, journal_angle_, c);
+  if (supply_pressure_) kin->state.supply_pressure = supply_pressure_(journal_angle_);
   factorizations_ += solver_->SolveAt(kin->state, eval_time_).stats.factorizations;
   ++solves_;
   const lubrication::BearingResult& r = solver_->result();
@@ -112,6 +117,7 @@ void LubricatedBigEndElement::EvaluateJoint(const multibody::JointForceInput& in
   const Cartesian z = CartesianOf(crank, rod, mount_);
   eval_time_ = in.t;
   rod_angle_ = rod.Angle();
+  journal_angle_ = crank.Angle();
   loads_ = Loads(z, rod_angle_, &kin_);
   result_ = solver_->result();
   const Eigen::Vector4d& g = loads_;

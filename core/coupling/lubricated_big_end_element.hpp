@@ -12,6 +12,7 @@
 /// the Cartesian e, ė, in which the Jacobian is differentiated. Beyond ε_max = 1 − 5e-4 (a film
 /// of ~0.05 σ) the solver sees ε_max and a stiff contact penalty acts along −n; the run reports a
 /// journal–bearing contact failure when an output step lands there.
+#include <functional>
 #include <memory>
 
 #include "core/coupling/film_report.hpp"
@@ -58,6 +59,11 @@ class LubricatedBigEndElement final : public multibody::JointForceElement,
   void ReportMotion(const multibody::BodyState& crank, const multibody::BodyState& rod,
                     BearingFilmSample* bearing) const;
   const lubrication::BearingSolver& solver() const { return *solver_; }
+  /// A supply pressure that varies with the crank's orientation [rad] -> [Pa] (a curve over
+  /// crank angle); unset: the configuration's constant OilFeed::pressure.
+  void SetSupplyPressure(std::function<double(double)> pressure_of_crank_angle) {
+    supply_pressure_ = std::move(pressure_of_crank_angle);
+  }
   /// A cancel honoured inside the film solve (ReynoldsFem::SetStopCheck).
   void SetStopCheck(const StopCheck& check) { solver_->fem().SetStopCheck(check); }
   /// Re-solves at the last state evaluated without a Jacobian if a Jacobian evaluation has left
@@ -77,6 +83,8 @@ class LubricatedBigEndElement final : public multibody::JointForceElement,
   BigEndMounting mount_;
   double penalty_stiffness_ = 0.0;  ///< [N/m]
   double eval_time_ = 0.0;          ///< time of the evaluation in progress (film history)
+  double journal_angle_ = 0.0;      ///< crank orientation of that evaluation (pin holes)
+  std::function<double(double)> supply_pressure_;
   multibody::JointForceInput cached_in_;
   multibody::JointForceOutput cached_out_;
   bool cache_valid_ = false, cache_has_jacobian_ = false, solver_at_cache_ = false;

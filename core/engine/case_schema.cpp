@@ -6,6 +6,7 @@
 #include <type_traits>
 
 #include "core/base/input_error.hpp"
+#include "core/engine/pressure_curve.hpp"
 #include "core/engine/run_memory.hpp"
 
 namespace filmdyn::engine {
@@ -196,6 +197,14 @@ void SetSymbols(std::vector<CaseField>& fields) {
       {"big_end.mesh_z", "big-end mesh across"},
       {"big_end.mesh_z_grading", "big-end grading across"},
       {"big_end.oil_feed_pressure", "p_feed"},
+      {"big_end.supply", "big-end oil supply"},
+      {"big_end.supply_pressure_angles", "supply-pressure curve"},
+      {"big_end.supply_pressure_values", "supply-pressure curve"},
+      {"big_end.supply_hole_angles", "supply-hole angles"},
+      {"big_end.supply_hole_diameter", "supply-hole diameter"},
+      {"big_end.groove_start_angle", "groove start"},
+      {"big_end.groove_end_angle", "groove end"},
+      {"big_end.groove_width", "groove width"},
       {"lubricant.viscosity", "μ"},
       {"lubricant.greenwood_tripp_k", "K"},
       {"operating.rpm", ""},
@@ -345,8 +354,30 @@ void SetDescriptions(std::vector<CaseField>& fields) {
       {"big_end.mesh_z", "Number of elements across the bearing width in the film calculation."},
       {"big_end.mesh_z_grading",
        "How much finer the elements are at the bearing edges than at its middle (1: all equal)."},
+      {"big_end.supply",
+       "Where oil enters the big-end film. \"line_of_centres\": no supply modelled, the film "
+       "simply starts where the gap is widest (as the paper and the classic bearing tables do). "
+       "\"shell_holes\": holes through the bearing shell, fixed in the rod. \"pin_holes\": "
+       "drillings in the crank pin that turn with the crank. \"groove\": a groove in the shell, "
+       "part of the way round or all the way."},
       {"big_end.oil_feed_pressure",
-       "Gauge pressure of the oil supplied to the bearing; 0 means no feed hole."},
+       "Gauge pressure of the oil at the supply holes or groove (constant over the cycle unless a "
+       "supply-pressure curve is given)."},
+      {"big_end.supply_pressure_angles",
+       "Crank angles at which the supply pressure is given, over the 720° cycle; leave empty for "
+       "a constant supply pressure."},
+      {"big_end.supply_pressure_values",
+       "Supply gauge pressure at each of those crank angles (smoothly interpolated, repeating "
+       "every cycle)."},
+      {"big_end.supply_hole_angles",
+       "Where the supply holes are: shell holes measured from the rod axis toward the small "
+       "end, crank-pin holes from the crank web's axis, counter-clockwise. One angle per hole."},
+      {"big_end.supply_hole_diameter", "Diameter of each supply hole."},
+      {"big_end.groove_start_angle",
+       "Where the shell groove starts, from the rod axis toward the small end, "
+       "counter-clockwise."},
+      {"big_end.groove_end_angle", "Where the shell groove ends (a full circle: start + 360°)."},
+      {"big_end.groove_width", "Axial width of the shell groove, centred on the bearing width."},
       {"lubricant.viscosity",
        "Dynamic viscosity of the oil at its running temperature, the same everywhere in both "
        "films."},
@@ -596,9 +627,50 @@ std::vector<CaseField> MakeSchema() {
                      {G::kSolver, "Big-end mesh: axial grading", "-", "–", 1.0, Between(1.0, 100.0),
                       "largest (mid-plane) / smallest (edges) element across the width (1 = "
                       "uniform, the paper's)"}));
+  {
+    using lubrication::OilFeedKind;
+    f.push_back(Choice("big_end.supply", be, &B::supply,
+                       {ToString(OilFeedKind::kLineOfCentres), ToString(OilFeedKind::kShellHoles),
+                        ToString(OilFeedKind::kPinHoles), ToString(OilFeedKind::kGroove)},
+                       {G::kBigEnd,
+                        "Oil supply",
+                        "",
+                        "",
+                        1.0,
+                        {},
+                        "\"line_of_centres\" (the film starts at the line of centres, the "
+                        "paper's), \"shell_holes\", \"pin_holes\" or \"groove\""}));
+  }
   f.push_back(Scalar("big_end.oil_feed_pressure", be, &B::oil_feed_pressure,
-                     {G::kBigEnd, "Oil-feed pressure (gauge, 0 = none)", "Pa", "MPa", kMPa,
-                      GaugePressure(), "0: no feed hole, the film starts at the line of centres"}));
+                     {G::kBigEnd, "Oil-supply pressure (gauge)", "Pa", "MPa", kMPa, GaugePressure(),
+                      "at the holes or groove (constant; see supply_pressure_* for a curve)"}));
+  f.push_back(List("big_end.supply_pressure_angles", be, &B::supply_pressure_angles,
+                   {G::kBigEnd, "Supply pressure curve: crank angle", "rad", "°", kDeg,
+                    Open(0.0, 4.0 * kPi, false, true),
+                    "crank angles of the supply-pressure curve (empty: constant pressure)"}));
+  f.push_back(List("big_end.supply_pressure_values", be, &B::supply_pressure_values,
+                   {G::kBigEnd, "Supply pressure curve: gauge pressure", "Pa", "MPa", kMPa,
+                    GaugePressure(), "the supply pressure at each angle"}));
+  f.push_back(
+      List("big_end.supply_hole_angles", be, &B::supply_hole_angles,
+           {G::kBigEnd, "Supply holes: angles", "rad", "°", kDeg, Between(-2.0 * kPi, 2.0 * kPi),
+            "shell holes from the rod axis toward the small end, pin holes from the crank "
+            "web axis, counter-clockwise"}));
+  f.push_back(Scalar("big_end.supply_hole_diameter", be, &B::supply_hole_diameter,
+                     {G::kBigEnd, "Supply holes: diameter", "m", "mm", kMm,
+                      Open(0.0, 1.0, true, false), "of each hole; less than the bearing width"}));
+  f.push_back(
+      Scalar("big_end.groove_start_angle", be, &B::groove_start_angle,
+             {G::kBigEnd, "Groove: start angle", "rad", "°", kDeg, Between(-2.0 * kPi, 2.0 * kPi),
+              "from the rod axis toward the small end, counter-clockwise"}));
+  f.push_back(
+      Scalar("big_end.groove_end_angle", be, &B::groove_end_angle,
+             {G::kBigEnd, "Groove: end angle", "rad", "°", kDeg, Between(-2.0 * kPi, 4.0 * kPi),
+              "after the start angle by at most 360° (a whole-circle groove)"}));
+  f.push_back(
+      Scalar("big_end.groove_width", be, &B::groove_width,
+             {G::kBigEnd, "Groove: axial width", "m", "mm", kMm, Open(0.0, 1.0, true, false),
+              "centred on the bearing's mid-width; less than the bearing width"}));
   f.push_back(Scalar("lubricant.viscosity", lub, &LubricantCase::viscosity,
                      {G::kLubricant, "Dynamic viscosity μ", "Pa*s", "mPa·s", 1e-3, Viscosity(),
                       "constant over the film; Table I: 0.02 Pa·s"}));
@@ -763,6 +835,69 @@ const char* JointModelName(JointModel model) {
   return model == JointModel::kIdeal ? "ideal" : "lubricated";
 }
 
+namespace {
+
+// The big end's oil supply: a pressure needs somewhere to act, holes may not overlap or exceed
+// the width, a groove spans at most a circle, a pressure curve is a proper periodic curve.
+void CheckBigEndSupply(const BigEndCase& b) {
+  using lubrication::OilFeedKind;
+  const bool curve = !b.supply_pressure_angles.empty() || !b.supply_pressure_values.empty();
+  if (b.supply == OilFeedKind::kLineOfCentres && (b.oil_feed_pressure > 0.0 || curve)) {
+    throw InputError("big_end.supply", "\"line_of_centres\"",
+                     "has no supply for the given pressure (big_end.oil_feed_pressure or the "
+                     "supply-pressure curve): choose \"shell_holes\", \"pin_holes\" or "
+                     "\"groove\"");
+  }
+  if (curve) {
+    if (b.supply_pressure_angles.size() != b.supply_pressure_values.size()) {
+      throw InputError("big_end.supply_pressure_values",
+                       std::to_string(b.supply_pressure_values.size()) + " values",
+                       "needs as many values as big_end.supply_pressure_angles (" +
+                           std::to_string(b.supply_pressure_angles.size()) + ")");
+    }
+    // The cylinder-pressure curves' rules: increasing angles, no gap above 10 °CA, finite.
+    PressureCurve(b.supply_pressure_angles, b.supply_pressure_values,
+                  "big_end.supply_pressure_values");
+  }
+  const double radius = b.bearing_radius;
+  if (b.supply == OilFeedKind::kShellHoles || b.supply == OilFeedKind::kPinHoles) {
+    if (b.supply_hole_angles.empty())
+      throw InputError("big_end.supply_hole_angles", "[]", "needs at least one hole");
+    if (b.supply_hole_diameter >= b.width) {
+      throw InputError("big_end.supply_hole_diameter", FormatValue(b.supply_hole_diameter),
+                       "must be smaller than big_end.width = " + FormatValue(b.width) + " [m]");
+    }
+    const double apart = b.supply_hole_diameter / radius;  // angular diameter [rad]
+    const auto& a = b.supply_hole_angles;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+      for (std::size_t j = i + 1; j < a.size(); ++j) {
+        const double d = std::abs(std::remainder(a[i] - a[j], 2.0 * kPi));
+        if (d < apart) {
+          throw InputError("big_end.supply_hole_angles." + std::to_string(j), FormatValue(a[j]),
+                           "overlaps hole " + std::to_string(i) + " at " + FormatValue(a[i]) +
+                               " rad: holes must be at least one diameter apart (" +
+                               FormatValue(apart) + " rad at this radius)");
+        }
+      }
+    }
+  }
+  if (b.supply == OilFeedKind::kGroove) {
+    const double span = b.groove_end_angle - b.groove_start_angle;
+    if (!(span > 0.0) || span > 2.0 * kPi + 1e-9) {
+      throw InputError(
+          "big_end.groove_end_angle", FormatValue(b.groove_end_angle),
+          "must lie after big_end.groove_start_angle = " + FormatValue(b.groove_start_angle) +
+              " [rad] by at most 2π (a whole-circle groove)");
+    }
+    if (b.groove_width >= b.width) {
+      throw InputError("big_end.groove_width", FormatValue(b.groove_width),
+                       "must be smaller than big_end.width = " + FormatValue(b.width) + " [m]");
+    }
+  }
+}
+
+}  // namespace
+
 void CheckCaseConsistency(const EngineCase& c) {
   const auto& g = c.geometry;
   if (g.rod_length <= g.crank_radius + std::abs(g.pin_offset)) {
@@ -812,6 +947,7 @@ void CheckCaseConsistency(const EngineCase& c) {
                        "must increase strictly [rad]");
     }
   }
+  CheckBigEndSupply(c.big_end);
   CheckFilmMeshSizes(c);
 }
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "core/lubrication/cavitation_model.hpp"
+#include "core/lubrication/film_models.hpp"
 
 namespace filmdyn::engine {
 
@@ -86,7 +86,22 @@ struct BigEndCase {
   double modulus_bearing = 70.0e9;   ///< E of the bearing lining [Pa] (assumed: Al-Sn alloy)
   double poisson_bearing = 0.33;     ///< ν of the bearing lining [-] (assumed)
   double boundary_friction = 0.13;   ///< μ_f [-]
-  double oil_feed_pressure = 0.0;    ///< gauge [Pa]; 0 = no feed hole (assumed)
+  /// Oil supply (lubrication::OilFeed): the film start at the line of centres (the paper's, no
+  /// supply hardware), holes in the shell (fixed in the rod) or in the crank pin (turning with
+  /// the crank), or a groove in the shell.
+  lubrication::OilFeedKind supply = lubrication::OilFeedKind::kLineOfCentres;
+  double oil_feed_pressure = 0.0;  ///< supply gauge pressure [Pa] (assumed: none given)
+  /// Supply pressure over the cycle: crank angles [rad] in [0, 4π) and gauge pressures [Pa];
+  /// both empty = the constant oil_feed_pressure.
+  std::vector<double> supply_pressure_angles, supply_pressure_values;
+  /// Holes: their angles [rad] — shell holes from the rod axis toward the small end, pin holes
+  /// from the crank web's axis toward the pin — counter-clockwise, and their diameter [m].
+  std::vector<double> supply_hole_angles = {0.0};  ///< one hole on the rod axis (assumed)
+  double supply_hole_diameter = 4.0e-3;            ///< (assumed: a common feed-drilling size)
+  /// Groove: from start to end angle [rad] in the rod frame (a whole circle: 0 to 2π), axial
+  /// width [m] centred on the bearing's mid-width.
+  double groove_start_angle = 0.0, groove_end_angle = 6.283185307179586;
+  double groove_width = 2.0e-3;  ///< (assumed)
   /// FEM mesh: elements around 360° and across the width. Default 100 x 10 graded 8:1 around
   /// and 4:1 across (the paper's Table II: 50 x 10 uniform, ~20 % low on the minimum film at
   /// eps ~ 0.97; docs/validation/errors.md).

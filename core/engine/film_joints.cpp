@@ -7,6 +7,7 @@
 #include "core/base/input_error.hpp"
 #include "core/coupling/lubricated_big_end_element.hpp"
 #include "core/coupling/lubricated_skirt_element.hpp"
+#include "core/engine/pressure_curve.hpp"
 #include "core/lubrication/surface_film.hpp"
 
 namespace filmdyn::engine {
@@ -87,11 +88,13 @@ lubrication::BearingConfig BearingConfigFromCase(const EngineCase& c) {
   config.mesh.theta_grading = be.mesh_theta_grading;
   config.mesh.z_grading = be.mesh_z_grading;
   config.solver.cavitation = be.cavitation;
-  if (be.oil_feed_pressure > 0.0) {  // a hole in the rod's bore, on the rod axis toward the pin
-    config.feed.kind = lubrication::OilFeed::Kind::kHole;
-    config.feed.angle = 0.5 * std::numbers::pi;
-    config.feed.pressure = be.oil_feed_pressure;
-  }
+  config.feed.kind = be.supply;
+  config.feed.hole_angles = be.supply_hole_angles;
+  config.feed.hole_diameter = be.supply_hole_diameter;
+  config.feed.groove_start = be.groove_start_angle;
+  config.feed.groove_end = be.groove_end_angle;
+  config.feed.groove_width = be.groove_width;
+  config.feed.pressure = be.oil_feed_pressure;
   lubrication::SurfacePair pair;
   pair.sigma1 = be.roughness_journal;
   pair.sigma2 = be.roughness_bearing;
@@ -112,8 +115,29 @@ std::unique_ptr<multibody::JointForceElement> MakeLubricatedBigEnd(const EngineC
   coupling::BigEndMounting mount;
   mount.journal_point = layout.crank_pin;
   mount.bearing_point = layout.rod_big_end;
-  return std::make_unique<coupling::LubricatedBigEndElement>(BearingConfigFromCase(c), layout.crank,
-                                                             layout.rod, mount);
+  lubrication::BearingConfig config = BearingConfigFromCase(c);
+  // The case's supply angles are measured from the rod axis (toward the small end) and from the
+  // crank web's axis (main journal to pin); the solver's, from each body's own x axis.
+  auto axis_angle = [](const Eigen::Vector2d& from, const Eigen::Vector2d& to) {
+    return std::atan2(to.y() - from.y(), to.x() - from.x());
+  };
+  const double rod_axis = axis_angle(layout.rod_big_end, layout.rod_small_end);
+  const double web_axis = axis_angle(layout.crank_main_journal, layout.crank_pin);
+  const bool pin = config.feed.kind == lubrication::OilFeedKind::kPinHoles;
+  for (double& a : config.feed.hole_angles) a += pin ? web_axis : rod_axis;
+  config.feed.groove_start += rod_axis;
+  config.feed.groove_end += rod_axis;
+  auto element = std::make_unique<coupling::LubricatedBigEndElement>(
+      std::move(config), layout.crank, layout.rod, mount);
+  const BigEndCase& be = c.big_end;
+  if (!be.supply_pressure_angles.empty()) {
+    // The crank body's orientation is the crank angle (the gas force's convention).
+    auto curve = std::make_shared<const PressureCurve>(
+        be.supply_pressure_angles, be.supply_pressure_values, "big_end.supply_pressure_values");
+    element->SetSupplyPressure(
+        [curve](double crank_angle) { return curve->Pressure(crank_angle); });
+  }
+  return element;
 }
 
 LubricatedJointFactories FilmJointFactories() {

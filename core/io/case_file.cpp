@@ -241,6 +241,16 @@ EngineCase CaseFromJson(const json& root, std::vector<std::string>* notes) {
   Reader reader{root, {}};
   VisitCase(reader, c);
   ReadOldPistonRadius(root, reader, c, notes);
+  // Before the supply kinds, a feed pressure meant one hole through the shell on the rod axis.
+  if (!Find(root, "big_end.supply") && c.big_end.oil_feed_pressure > 0.0) {
+    c.big_end.supply = lubrication::OilFeedKind::kShellHoles;
+    if (notes) {
+      notes->push_back(
+          "the case file gives big_end.oil_feed_pressure without big_end.supply (an older "
+          "file): read as one shell hole on the rod axis (big_end.supply = \"shell_holes\"); "
+          "saving the case writes the supply");
+    }
+  }
   reader.seen.insert("pressure_curves");
   reader.seen.insert("assumed");
   reader.seen.insert("filmdyn_case_version");

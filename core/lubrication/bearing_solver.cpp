@@ -33,12 +33,41 @@ void BearingConfig::Validate(const std::string& prefix) const {
   RequireInRange(prefix + ".mesh.theta_grading", mesh.theta_grading, 1.0, 100.0, false, false, "-");
   RequireInRange(prefix + ".mesh.z_grading", mesh.z_grading, 1.0, 100.0, false, false, "-");
   RequireInRange(prefix + ".solver.max_iterations", solver.max_iterations, 1, 100000);
-  if (feed.kind != OilFeed::Kind::kLineOfCentres) {
-    RequireFinite(prefix + ".feed.angle", feed.angle, "rad");
-    RequireNonNegative(prefix + ".feed.pressure", feed.pressure, "Pa");
-    RequireInRange(prefix + ".feed.angular_width", feed.angular_width, 0.0, 2.0 * kPi, false, true,
-                   "rad");
-    RequireNonNegative(prefix + ".feed.axial_width", feed.axial_width, "m");
+  RequireNonNegative(prefix + ".feed.pressure", feed.pressure, "Pa");
+  if (feed.kind == OilFeed::Kind::kShellHoles || feed.kind == OilFeed::Kind::kPinHoles) {
+    if (feed.hole_angles.empty())
+      throw InputError(prefix + ".feed.hole_angles", "[]", "needs at least one hole angle");
+    for (std::size_t k = 0; k < feed.hole_angles.size(); ++k)
+      RequireFinite(prefix + ".feed.hole_angles." + std::to_string(k), feed.hole_angles[k], "rad");
+    RequireInRange(prefix + ".feed.hole_diameter", feed.hole_diameter, 0.0, geometry.length, true,
+                   false, "m");
+    // Holes whose circles overlap are one hole given twice: refused.
+    const double d = feed.hole_diameter / geometry.radius;  // angular diameter
+    for (std::size_t a = 0; a < feed.hole_angles.size(); ++a) {
+      for (std::size_t b = a + 1; b < feed.hole_angles.size(); ++b) {
+        const double gap =
+            std::abs(WrapTwoPi(feed.hole_angles[a] - feed.hole_angles[b] + kPi) - kPi);
+        if (gap < d) {
+          throw InputError(
+              prefix + ".feed.hole_angles." + std::to_string(b), FormatValue(feed.hole_angles[b]),
+              "overlaps hole " + std::to_string(a) + " at " + FormatValue(feed.hole_angles[a]) +
+                  " rad: holes must be at least one hole diameter apart (" + FormatValue(d) +
+                  " rad)");
+        }
+      }
+    }
+  }
+  if (feed.kind == OilFeed::Kind::kGroove) {
+    RequireFinite(prefix + ".feed.groove_start", feed.groove_start, "rad");
+    RequireFinite(prefix + ".feed.groove_end", feed.groove_end, "rad");
+    if (!(feed.groove_end > feed.groove_start) ||
+        feed.groove_end - feed.groove_start > 2.0 * kPi + 1e-12) {
+      throw InputError(prefix + ".feed.groove_end", FormatValue(feed.groove_end),
+                       "must lie after groove_start = " + FormatValue(feed.groove_start) +
+                           " [rad] by at most 2 pi (a whole-circle groove)");
+    }
+    RequireInRange(prefix + ".feed.groove_width", feed.groove_width, 0.0, geometry.length, true,
+                   true, "m");
   }
 }
 
@@ -50,6 +79,22 @@ void BearingState::Validate(const std::string& prefix) const {
   RequireFinite(prefix + ".omega_journal", omega_journal, "rad/s");
   RequireFinite(prefix + ".omega_bearing", omega_bearing, "rad/s");
   RequireFinite(prefix + ".bearing_angle", bearing_angle, "rad");
+  RequireFinite(prefix + ".journal_angle", journal_angle, "rad");
+  if (supply_pressure) RequireNonNegative(prefix + ".supply_pressure", *supply_pressure, "Pa");
+}
+
+const char* ToString(OilFeedKind kind) {
+  switch (kind) {
+    case OilFeed::Kind::kLineOfCentres:
+      return "line_of_centres";
+    case OilFeed::Kind::kShellHoles:
+      return "shell_holes";
+    case OilFeed::Kind::kPinHoles:
+      return "pin_holes";
+    case OilFeed::Kind::kGroove:
+      return "groove";
+  }
+  return "?";
 }
 
 std::vector<double> GradedAngles(int n, double ratio) {
@@ -145,6 +190,65 @@ const BearingResult& BearingSolver::Solve(const BearingState& state) {
   return SolveStep(state, 0.0);
 }
 
+void BearingSolver::MarkSupplyNodes(const BearingState& s) {
+  const OilFeed& feed = config_.feed;
+  const BearingGeometry& g = config_.geometry;
+  const TriMesh& m = fem_.mesh();
+  auto& extra = fem_.extra_fixed();
+  Eigen::VectorXd& pb = fem_.boundary_pressure();
+  std::fill(extra.begin(), extra.end(), 0);
+  pb.setZero();
+  const double pressure = s.supply_pressure.value_or(feed.pressure);
+  const double z_mid = 0.5 * g.length;  // the symmetric half's mid-plane is its last row
+  int j_mid = 0;
+  for (int j = 0; j < m.ny_nodes(); ++j)
+    if (std::abs(m.y_lines[j] - z_mid) < std::abs(m.y_lines[j_mid] - z_mid)) j_mid = j;
+  // Angle of a node in the line-of-centres frame (theta from the maximum film at -n) measured
+  // from a body-fixed angle: the frame's theta = body angle + body orientation - (phi + pi).
+  auto frame_angle = [&](double body_angle, double orientation) {
+    return WrapTwoPi(orientation + body_angle - (s.line_of_centres_angle + kPi));
+  };
+  auto distance = [](double a, double b) { return std::abs(WrapTwoPi(a - b + kPi) - kPi); };
+  auto mark = [&](int k) {
+    if (m.fixed[k]) return;
+    extra[k] = 1;
+    pb[k] = pressure;
+  };
+  if (feed.kind == OilFeed::Kind::kGroove) {
+    const double span = feed.groove_end - feed.groove_start;
+    for (int j = 0; j < m.ny_nodes(); ++j) {
+      if (j != j_mid && std::abs(m.y_lines[j] - z_mid) > 0.5 * feed.groove_width) continue;
+      for (int i = 0; i < m.nx_nodes(); ++i) {
+        const int k = m.Node(i, j);
+        // The node's angle in the bearing body, from the groove's start.
+        const double body = WrapTwoPi(theta_[k] + s.line_of_centres_angle + kPi - s.bearing_angle -
+                                      feed.groove_start);
+        if (span >= 2.0 * kPi - 1e-12 || body <= span) mark(k);
+      }
+    }
+    return;
+  }
+  const bool pin = feed.kind == OilFeed::Kind::kPinHoles;
+  const double orientation = pin ? s.journal_angle : s.bearing_angle;
+  const double r_hole = 0.5 * feed.hole_diameter;
+  for (double hole : feed.hole_angles) {
+    const double centre = frame_angle(hole, orientation);
+    int nearest = -1;
+    double best = 1e300;
+    for (int j = 0; j < m.ny_nodes(); ++j) {
+      const double dz = m.y_lines[j] - z_mid;
+      for (int i = 0; i < m.nx_nodes(); ++i) {
+        const int k = m.Node(i, j);
+        const double dx = g.radius * distance(theta_[k], centre);
+        const double d2 = dx * dx + dz * dz;
+        if (d2 <= r_hole * r_hole) mark(k);
+        if (d2 < best) best = d2, nearest = k;
+      }
+    }
+    if (nearest >= 0) mark(nearest);
+  }
+}
+
 const BearingResult& BearingSolver::SolveAt(const BearingState& state, double t) {
   if (!Transient()) return SolveStep(state, 0.0);
   const FilmHistory::Entry* from = history_.Before(t);
@@ -173,46 +277,7 @@ const BearingResult& BearingSolver::SolveStep(const BearingState& s, double time
     h[k] = c * (1.0 + s.eps * cos_[k]);  // paper eq. 13
     hdot[k] = c * s.eps_dot * cos_[k];   // rotating line-of-centres frame
   }
-  // Feed hole / groove fixed in the bearing body: its theta in the line-of-centres frame.
-  if (config_.feed.kind != OilFeed::Kind::kLineOfCentres) {
-    auto& extra = fem_.extra_fixed();
-    Eigen::VectorXd& pb = fem_.boundary_pressure();
-    std::fill(extra.begin(), extra.end(), 0);
-    pb.setZero();
-    const double theta_feed =
-        WrapTwoPi(s.bearing_angle + config_.feed.angle - (s.line_of_centres_angle + kPi));
-    const double half_w = 0.5 * config_.feed.angular_width;
-    const double zc = 0.5 * g.length;
-    int nearest = 0;
-    double best = 1e300;
-    for (int i = 0; i < m.nx_nodes(); ++i) {
-      double d = std::abs(WrapTwoPi(theta_[m.Node(i, 0)] - theta_feed + kPi) - kPi);
-      if (d < best) best = d, nearest = i;
-    }
-    for (int j = 0; j < m.ny_nodes(); ++j) {
-      const double z = m.y_lines[j];
-      const bool in_z = config_.feed.kind == OilFeed::Kind::kGroove ||
-                        std::abs(z - zc) <= 0.5 * config_.feed.axial_width + 1e-15 ||
-                        (config_.mesh.symmetric_half && j == m.ny_nodes() - 1);
-      if (!in_z) continue;
-      for (int i = 0; i < m.nx_nodes(); ++i) {
-        const int k = m.Node(i, j);
-        const double d = std::abs(WrapTwoPi(theta_[k] - theta_feed + kPi) - kPi);
-        if ((d <= half_w || i == nearest) && !m.fixed[k]) {
-          extra[k] = 1;
-          pb[k] = config_.feed.pressure;
-        }
-      }
-    }
-    // A hole narrower than a z-row still gets the nearest row at mid-width.
-    bool any = std::any_of(extra.begin(), extra.end(), [](auto v) { return v != 0; });
-    if (!any) {
-      int jmid = static_cast<int>(
-          std::lround((m.ny_nodes() - 1) * (config_.mesh.symmetric_half ? 1.0 : 0.5)));
-      extra[m.Node(nearest, jmid)] = 1;
-      pb[m.Node(nearest, jmid)] = config_.feed.pressure;
-    }
-  }
+  if (config_.feed.kind != OilFeed::Kind::kLineOfCentres) MarkSupplyNodes(s);
   ReynoldsParams params;
   params.viscosity = config_.viscosity;
   params.u_sum = R * (s.omega_journal + s.omega_bearing - 2.0 * s.line_of_centres_rate);

@@ -11,9 +11,12 @@
 /// counter-clockwise. Default boundary condition: p = 0 on theta = 0 (as the published
 /// finite-bearing tables assume; Raimondi & Boyd 1958).
 #include <memory>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "core/lubrication/film_history.hpp"
+#include "core/lubrication/film_models.hpp"
 #include "core/lubrication/reynolds_fem.hpp"
 
 namespace filmdyn::lubrication {
@@ -50,15 +53,25 @@ std::vector<double> GradedAngles(int n, double ratio);
 /// beta = (ratio - 1) / (ratio + 1).
 std::vector<double> GradedWidth(int n, double length, double ratio, bool half);
 
-/// Oil supply. kLineOfCentres is the default (p = 0 on theta = 0, the film start
-/// following the line of centres). kHole / kGroove are fixed in the bearing body.
+/// Oil supply: where the film is held at the supply pressure (fixed-pressure nodes, a full film
+/// there; with mass-conserving cavitation the oil they pass into the film is the supply flow).
+///  - kLineOfCentres (default): p = 0 on theta = 0, the film start following the line of
+///    centres (the published finite-bearing tables' assumption; no supply hardware).
+///  - kShellHoles: round holes through the bearing shell, fixed in the bearing body.
+///  - kPinHoles: round holes in the crank pin (journal), turning with it.
+///  - kGroove: a groove in the shell of axial width groove_width centred on the mid-width, from
+///    groove_start to groove_end (bearing-body angles, counter-clockwise; a whole-circle groove
+///    when the span is 2 pi).
+/// A hole holds the nodes inside its circle (diameter hole_diameter, centred on the mid-width),
+/// at least the node nearest its centre; a groove at least the mid-width row.
 struct OilFeed {
-  enum class Kind { kLineOfCentres, kHole, kGroove };
+  using Kind = OilFeedKind;
   Kind kind = Kind::kLineOfCentres;
-  double angle = 0.0;          ///< feed position in the bearing body frame [rad]
-  double pressure = 0.0;       ///< supply gauge pressure (>= 0, relative to cavitation) [Pa]
-  double angular_width = 0.1;  ///< circumferential extent of hole/groove [rad]
-  double axial_width = 0.0;    ///< hole: axial extent [m] (0: one node row); groove: full width
+  std::vector<double> hole_angles = {0.0};  ///< bearing body (shell) or journal (pin) frame [rad]
+  double hole_diameter = 4e-3;              ///< [m]
+  double groove_start = 0.0, groove_end = 2.0 * 3.14159265358979323846;  ///< [rad]
+  double groove_width = 2e-3;                                            ///< axial [m]
+  double pressure = 0.0;  ///< supply gauge pressure (>= 0, relative to cavitation) [Pa]
 };
 
 struct BearingConfig {
@@ -82,7 +95,11 @@ struct BearingState {
   double line_of_centres_rate = 0.0;   ///< phi_dot [rad/s]
   double omega_journal = 0.0;          ///< [rad/s]
   double omega_bearing = 0.0;          ///< [rad/s]
-  double bearing_angle = 0.0;          ///< orientation of the bearing body (feed holes) [rad]
+  double bearing_angle = 0.0;          ///< orientation of the bearing body (shell feed) [rad]
+  double journal_angle = 0.0;          ///< orientation of the journal body (pin holes) [rad]
+  /// The supply pressure at this instant when it varies (a curve over crank angle) [Pa];
+  /// none: OilFeed::pressure.
+  std::optional<double> supply_pressure;
   void Validate(const std::string& prefix = "bearing_state") const;
 };
 
@@ -157,6 +174,8 @@ class BearingSolver {
 
  private:
   const BearingResult& SolveStep(const BearingState& state, double time_step);
+  /// Holds the supply's nodes at the supply pressure (extra fixed nodes of this solve).
+  void MarkSupplyNodes(const BearingState& state);
 
   BearingConfig config_;
   ReynoldsFem fem_;

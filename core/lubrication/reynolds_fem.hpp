@@ -44,8 +44,8 @@
 #include <vector>
 
 #include "core/base/stop.hpp"
-#include "core/lubrication/cavitation_model.hpp"
 #include "core/lubrication/film_factors.hpp"
+#include "core/lubrication/film_models.hpp"
 #include "core/lubrication/sparse_ldlt.hpp"
 #include "core/lubrication/sparse_lu.hpp"
 #include "core/lubrication/tri_mesh.hpp"

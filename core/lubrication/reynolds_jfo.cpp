@@ -151,10 +151,10 @@ bool ReynoldsFem::SolveJfo() {
   work_ -= f_;
   double excess = 0.0;
   for (int k = 0; k < n; ++k) {
-    if (!fixed_[k]) {
-      if (transient) work_[k] += lumped_area_[k] * void_old_[k] * inv_dt;
-      excess = std::max({excess, r[k] - 1.0, -r[k]});
-    }
+    // The old void of every node is filled or carried on: on a node fixed now (a supply hole
+    // that has moved onto it) the supply fills it, which its residual (the supply flow) counts.
+    if (transient) work_[k] += lumped_area_[k] * void_old_[k] * inv_dt;
+    if (!fixed_[k]) excess = std::max({excess, r[k] - 1.0, -r[k]});
     if (r[k] == 0.0) continue;
     const double a = boff[k];
     if (!fixed_[k]) {

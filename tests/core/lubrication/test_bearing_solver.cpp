@@ -262,10 +262,10 @@ class TestBearing : public QObject {
 
   void feedHoleHoldsSupplyPressure() {
     BearingConfig cfg = Bearing({72, 12, false});
-    cfg.feed.kind = OilFeed::Kind::kHole;
-    cfg.feed.angle = 0.0;
+    cfg.feed.kind = OilFeed::Kind::kShellHoles;
+    cfg.feed.hole_angles = {0.0};
     cfg.feed.pressure = 3e5;
-    cfg.feed.axial_width = 0.004;
+    cfg.feed.hole_diameter = 0.004;
     BearingSolver solver(cfg);
     BearingState s;
     s.eps = 0.5;

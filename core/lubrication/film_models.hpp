@@ -1,5 +1,6 @@
 #pragma once
-/// @file The cavitation models of the Reynolds solver (ReynoldsFem), named for case files.
+/// @file The named model choices of the film solvers (cavitation, oil supply), kept apart from
+/// the solvers so that a case can name them without the solvers' headers.
 
 namespace filmdyn::lubrication {
 
@@ -10,5 +11,10 @@ enum class CavitationModel { kReynolds, kJfo, kNone };
 
 /// "reynolds", "jfo", "none".
 const char* ToString(CavitationModel model);
+
+/// Where a bearing's film is fed (OilFeed in bearing_solver.hpp says what each means).
+enum class OilFeedKind { kLineOfCentres, kShellHoles, kPinHoles, kGroove };
+/// "line_of_centres", "shell_holes", "pin_holes", "groove" (case-file names).
+const char* ToString(OilFeedKind kind);
 
 }  // namespace filmdyn::lubrication
