@@ -49,6 +49,9 @@ SkirtKinematics LubricatedSkirtElement::Kinematics(const BodyState& piston) cons
   k.state.e0_dot = rates[0];
   k.state.gamma_dot = rates[1];
   k.state.piston_velocity = rates[2];
+  // The pin's height (the CoM's, less the pin arm along the tilted axis): how far the piston
+  // is down the stroke.
+  k.state.stroke_position = mount_.pin_y_at_tdc - (piston.q[1] - arm * c - cg * s);
   const double a_p = solver_->config().geometry.pin_position;
   k.min_gap = 1e300;
   for (std::size_t j = 0; j < edge_y_.size(); ++j) {

@@ -30,6 +30,9 @@ struct SkirtMounting {
   double skirt_top_to_com = 0.0;    ///< b_p [m], + toward the crank
   double skirt_top_to_pin = 0.0;    ///< a_p [m], + toward the crank
   double pin_offset = 0.0;          ///< C_p [m] (reporting only)
+  /// Height of the piston pin at top dead centre [m] (global Y): the stroke position, from which
+  /// a starved skirt reads the liner's oil film (SkirtState::stroke_position).
+  double pin_y_at_tdc = 0.0;
 };
 
 /// Secondary-motion coordinates of the piston (the solver's state) and their Jacobians.

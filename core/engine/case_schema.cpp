@@ -171,6 +171,10 @@ void SetSymbols(std::vector<CaseField>& fields) {
       {"skirt.poisson_liner", "ν_liner"},
       {"skirt.boundary_friction", "μ_f skirt"},
       {"skirt.cavitation", "skirt cavitation"},
+      {"skirt.supply", "skirt oil supply"},
+      {"skirt.oil_film", "h_oil"},
+      {"skirt.oil_film_positions", "liner oil film"},
+      {"skirt.oil_film_values", "liner oil film"},
       {"skirt.mesh_thrust", "skirt mesh Ω₁"},
       {"skirt.mesh_relief", "skirt mesh Ω₂"},
       {"skirt.mesh_anti", "skirt mesh Ω₃"},
@@ -306,6 +310,17 @@ void SetDescriptions(std::vector<CaseField>& fields) {
        "as the paper does; oil is not conserved where the film reforms. \"jfo\": the film's "
        "oil content is tracked from one time step to the next, so a film that broke up earlier "
        "in the cycle refills only as oil arrives (mass-conserving; somewhat slower)."},
+      {"skirt.supply",
+       "How oil reaches the skirt. \"flooded\": as much as the film can take, always (the "
+       "paper's assumption). \"starved\": only the oil film the piston rings leave on the "
+       "liner; the skirt then runs partly dry. Needs the \"jfo\" cavitation model."},
+      {"skirt.oil_film",
+       "Thickness of the oil layer left on the liner that feeds a starved skirt, the same over "
+       "the whole stroke."},
+      {"skirt.oil_film_positions",
+       "Positions along the liner (from where the skirt top is at top dead centre, toward the "
+       "crank) at which the liner's oil film is given; leave empty for a constant film."},
+      {"skirt.oil_film_values", "Thickness of the liner's oil film at each of those positions."},
       {"skirt.mesh_thrust",
        "Number of elements around the thrust panel in the film calculation; more is finer and "
        "slower."},
@@ -544,6 +559,28 @@ std::vector<CaseField> MakeSchema() {
                      {G::kSkirt, "Boundary friction μ_f", "-", "–", 1.0, Between(0.0, 1.0),
                       "friction coefficient of asperity contact; Table I: 0.13"}));
   f.push_back(Cavitation("skirt.cavitation", sk, &S::cavitation, G::kSkirt));
+  f.push_back(Choice(
+      "skirt.supply", sk, &S::supply,
+      {ToString(lubrication::SkirtSupply::kFlooded), ToString(lubrication::SkirtSupply::kStarved)},
+      {G::kSkirt,
+       "Oil supply",
+       "",
+       "",
+       1.0,
+       {},
+       "\"flooded\" (the paper's) or \"starved\" (from the liner's oil film; "
+       "needs cavitation \"jfo\")"}));
+  f.push_back(Scalar(
+      "skirt.oil_film", sk, &S::oil_film,
+      {G::kSkirt, "Oil film on the liner h_oil", "m", "µm", kUm, Open(0.0, 1e-3, true, false),
+       "starved supply: the oil layer the ring pack leaves on the liner"}));
+  f.push_back(List("skirt.oil_film_positions", sk, &S::oil_film_positions,
+                   {G::kSkirt, "Liner oil film: position", "m", "mm", kMm, Between(-1.0, 100.0),
+                    "liner positions from the skirt top at top dead centre, + toward the crank "
+                    "(empty: the constant oil_film)"}));
+  f.push_back(List("skirt.oil_film_values", sk, &S::oil_film_values,
+                   {G::kSkirt, "Liner oil film: thickness", "m", "µm", kUm,
+                    Open(0.0, 1e-3, true, false), "the oil film at each position"}));
   f.push_back(Scalar("skirt.mesh_thrust", sk, &S::mesh_thrust,
                      {G::kSolver, "Skirt mesh: elements over Ω₁ (thrust)", "-", "–", 1.0,
                       Between(2, 2000), "circumferential elements of the thrust panel"}));
@@ -896,6 +933,28 @@ void CheckBigEndSupply(const BigEndCase& b) {
   }
 }
 
+// A starved skirt needs the film fraction of the mass-conserving model and a proper table.
+void CheckSkirtSupply(const SkirtCase& s) {
+  if (s.supply == lubrication::SkirtSupply::kStarved &&
+      s.cavitation != lubrication::CavitationModel::kJfo) {
+    throw InputError("skirt.supply", "\"starved\"",
+                     "needs skirt.cavitation = \"jfo\": the Reynolds condition tracks no "
+                     "partial film");
+  }
+  const auto& x = s.oil_film_positions;
+  if (x.size() != s.oil_film_values.size()) {
+    throw InputError("skirt.oil_film_values", std::to_string(s.oil_film_values.size()) + " values",
+                     "needs as many values as skirt.oil_film_positions (" +
+                         std::to_string(x.size()) + "; both empty = the constant oil_film)");
+  }
+  for (std::size_t k = 1; k < x.size(); ++k) {
+    if (x[k] <= x[k - 1]) {
+      throw InputError("skirt.oil_film_positions." + std::to_string(k), FormatValue(x[k]),
+                       "must increase strictly [m]");
+    }
+  }
+}
+
 }  // namespace
 
 void CheckCaseConsistency(const EngineCase& c) {
@@ -948,6 +1007,7 @@ void CheckCaseConsistency(const EngineCase& c) {
     }
   }
   CheckBigEndSupply(c.big_end);
+  CheckSkirtSupply(c.skirt);
   CheckFilmMeshSizes(c);
 }
 

@@ -67,6 +67,12 @@ struct SkirtCase {
   int mesh_thrust = 15, mesh_relief = 2, mesh_anti = 15, mesh_axial = 20;
   /// Film rupture and reformation: Reynolds (Swift–Stieber, the paper's) or mass-conserving JFO.
   lubrication::CavitationModel cavitation = lubrication::CavitationModel::kReynolds;
+  /// Oil supply (lubrication::SkirtConfig): fully flooded (the paper's) or starved, fed by the
+  /// oil film the ring pack leaves on the liner: a constant thickness, or a table over the liner
+  /// position (from the skirt top's position at top dead centre, + toward the crank).
+  lubrication::SkirtSupply supply = lubrication::SkirtSupply::kFlooded;
+  double oil_film = 5.0e-6;  ///< [m] (assumed: a few µm below the ring pack)
+  std::vector<double> oil_film_positions, oil_film_values;  ///< [m], [m]; empty = oil_film
 };
 
 /// The connecting-rod big-end bearing (Table I); the film data are used when the big end is

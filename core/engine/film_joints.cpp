@@ -8,6 +8,7 @@
 #include "core/coupling/lubricated_big_end_element.hpp"
 #include "core/coupling/lubricated_skirt_element.hpp"
 #include "core/engine/pressure_curve.hpp"
+#include "core/engine/slider_crank_reference.hpp"
 #include "core/lubrication/surface_film.hpp"
 
 namespace filmdyn::engine {
@@ -37,6 +38,10 @@ lubrication::SkirtConfig SkirtConfigFromCase(const EngineCase& c) {
   config.mesh.n_anti = sk.mesh_anti;
   config.mesh.n_axial = sk.mesh_axial;
   config.solver.cavitation = sk.cavitation;
+  config.supply = sk.supply;
+  config.oil_film = sk.oil_film;
+  config.oil_film_table.x = sk.oil_film_positions;
+  config.oil_film_table.y = sk.oil_film_values;
   lubrication::SurfacePair pair;
   pair.sigma1 = sk.roughness_skirt;
   pair.sigma2 = sk.roughness_liner;
@@ -59,6 +64,18 @@ std::unique_ptr<multibody::JointForceElement> MakeLubricatedSkirt(const EngineCa
   mount.skirt_top_to_com = c.geometry.skirt_top_to_com;
   mount.skirt_top_to_pin = c.geometry.skirt_top_to_pin;
   mount.pin_offset = c.geometry.pin_offset;
+  // Top dead centre: the highest pin position over a crank revolution (sampled every 0.05°,
+  // then the parabola through the best three samples).
+  const int n = 7200;
+  auto height = [&](int k) {
+    return ExactSliderCrank(c.geometry, 2.0 * std::numbers::pi * k / n, 0.0, 0.0).piston_position;
+  };
+  int best = 0;
+  for (int k = 1; k < n; ++k)
+    if (height(k) > height(best)) best = k;
+  const double y0 = height(best - 1), y1 = height(best), y2 = height(best + 1);
+  const double den = y0 - 2.0 * y1 + y2;
+  mount.pin_y_at_tdc = den < 0.0 ? y1 - 0.125 * (y2 - y0) * (y2 - y0) / den : y1;
   return std::make_unique<coupling::LubricatedSkirtElement>(SkirtConfigFromCase(c), layout.piston,
                                                             mount);
 }

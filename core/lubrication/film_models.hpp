@@ -17,4 +17,10 @@ enum class OilFeedKind { kLineOfCentres, kShellHoles, kPinHoles, kGroove };
 /// "line_of_centres", "shell_holes", "pin_holes", "groove" (case-file names).
 const char* ToString(OilFeedKind kind);
 
+/// How a piston skirt is fed: fully flooded (a full film enters at its leading edge), or
+/// starved, from the oil film the ring pack leaves on the liner (SkirtConfig).
+enum class SkirtSupply { kFlooded, kStarved };
+/// "flooded", "starved".
+const char* ToString(SkirtSupply supply);
+
 }  // namespace filmdyn::lubrication

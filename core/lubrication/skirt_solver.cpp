@@ -34,6 +34,17 @@ void SkirtConfig::Validate(const std::string& prefix) const {
   RequireInRange(prefix + ".mesh.n_axial", mesh.n_axial, 2, 10000);
   RequirePositive(prefix + ".min_film", min_film, "m");
   RequireInRange(prefix + ".solver.max_iterations", solver.max_iterations, 1, 100000);
+  if (supply == SkirtSupply::kStarved) {
+    if (solver.cavitation != CavitationModel::kJfo) {
+      throw InputError(prefix + ".supply", "\"starved\"",
+                       "needs the mass-conserving cavitation model (cavitation = \"jfo\"): the "
+                       "Reynolds condition tracks no partial film");
+    }
+    oil_film_table.Validate(prefix + ".oil_film_table", true);
+    if (oil_film_table.empty()) RequirePositive(prefix + ".oil_film", oil_film, "m");
+    for (std::size_t k = 0; k < oil_film_table.y.size(); ++k)
+      RequirePositive(prefix + ".oil_film_table." + std::to_string(k), oil_film_table.y[k], "m");
+  }
 }
 
 void SkirtState::Validate(const std::string& prefix) const {
@@ -42,6 +53,11 @@ void SkirtState::Validate(const std::string& prefix) const {
   RequireFinite(prefix + ".e0_dot", e0_dot, "m/s");
   RequireFinite(prefix + ".gamma_dot", gamma_dot, "rad/s");
   RequireFinite(prefix + ".piston_velocity", piston_velocity, "m/s");
+  RequireFinite(prefix + ".stroke_position", stroke_position, "m");
+}
+
+const char* ToString(SkirtSupply supply) {
+  return supply == SkirtSupply::kFlooded ? "flooded" : "starved";
 }
 
 TriMesh SkirtSolver::MakeMesh(const SkirtGeometry& g, const SkirtMeshSpec& spec) {
@@ -161,6 +177,22 @@ void SkirtSolver::SolvePanel(Panel& pa, const SkirtState& s, double time_step) {
   for (int k = 0; k < n; ++k) {
     h[k] = h_[pa.node[k]];
     hdot[k] = hdot_[pa.node[k]];
+  }
+  if (config_.supply == SkirtSupply::kStarved) {
+    // The leading edge (where the liner's oil enters): y = L while the piston moves toward the
+    // crank, y = 0 on the way back; a partial film theta = 2 h_oil / h there (SkirtConfig).
+    Eigen::VectorXd& theta_in = fem.boundary_fraction();
+    theta_in.setOnes();
+    const TriMesh& pm = fem.mesh();
+    const double y_lead = s.piston_velocity > 0.0 ? pm.y_lines.back() : pm.y_lines.front();
+    if (s.piston_velocity != 0.0) {
+      const double at = s.stroke_position + y_lead;
+      const double h_oil =
+          config_.oil_film_table.empty() ? config_.oil_film : config_.oil_film_table(at);
+      for (int k = 0; k < n; ++k) {
+        if (pm.fixed[k] && pm.y[k] == y_lead) theta_in[k] = std::min(1.0, 2.0 * h_oil / h[k]);
+      }
+    }
   }
   ReynoldsParams params;
   params.viscosity = config_.viscosity;

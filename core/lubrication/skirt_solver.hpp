@@ -48,6 +48,16 @@ struct SkirtConfig {
   /// Films thinner than this are clamped (reported in the result) so the solve never fails on
   /// a penetrating state proposed by an integrator [m].
   double min_film = 1e-9;
+  /// Oil supply. Starved (mass-conserving cavitation only): the liner carries an oil layer of
+  /// thickness h_oil at its own speed into the skirt's leading edge (the lower edge while the
+  /// piston moves toward the crank, the upper one on the way back). Its flow |u_p| h_oil enters
+  /// as a partial film that moves at the mean surface speed |u_p|/2, i.e. with the film
+  /// content theta h = 2 h_oil (full when h_oil >= h/2). h_oil is `oil_film`, or the table
+  /// `oil_film_table` over the liner position of that edge (from the skirt top's position at
+  /// top dead centre, + toward the crank).
+  SkirtSupply supply = SkirtSupply::kFlooded;
+  double oil_film = 0.0;   ///< [m]
+  Table1D oil_film_table;  ///< liner position [m] -> h_oil [m]; empty = oil_film
   void Validate(const std::string& prefix = "skirt") const;
 };
 
@@ -56,6 +66,9 @@ struct SkirtState {
   double e0 = 0.0, gamma = 0.0;          ///< lateral displacement [m], tilt [rad]
   double e0_dot = 0.0, gamma_dot = 0.0;  ///< [m/s], [rad/s]
   double piston_velocity = 0.0;          ///< u_p along +y (towards the crank) [m/s]
+  /// The skirt top's displacement from its top-dead-centre position, + toward the crank [m]
+  /// (where the leading edge meets the liner's oil film, SkirtConfig::oil_film_table).
+  double stroke_position = 0.0;
   void Validate(const std::string& prefix = "skirt_state") const;
 };
 
