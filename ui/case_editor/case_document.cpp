@@ -1,6 +1,7 @@
 #include "ui/case_editor/case_document.hpp"
 
 #include <QUndoCommand>
+#include <algorithm>
 
 #include "ui/case_editor/case_json.hpp"
 #include "ui/case_editor/case_parameters.hpp"
@@ -53,12 +54,29 @@ void CaseDocument::edit(const engine::EngineCase& new_case, const QString& descr
 
 void CaseDocument::setParameter(const std::string& path, double si_value) {
   const CaseParameter* p = FindCaseParameter(path);
-  Q_ASSERT(p != nullptr);
+  Q_ASSERT(p != nullptr && !p->choice);
+  if (p == nullptr || p->choice) return;  // a choice is set by name (setChoice)
   engine::EngineCase next = case_;
   p->set(next, si_value);
   // Merge repeated edits of the same cell into one undo step.
   const int key = 1000 + int(p - CaseParameters().data());
   edit(next, QObject::tr("Edit %1").arg(p->label), key);
+}
+
+bool CaseDocument::setChoice(const std::string& path, const std::string& name) {
+  const CaseParameter* p = FindCaseParameter(path);
+  if (p == nullptr || !p->choice) return false;
+  const std::vector<std::string>& choices = p->field->choices;
+  const auto it = std::find(choices.begin(), choices.end(), name);
+  if (it == choices.end()) return false;
+  engine::EngineCase next = case_;
+  p->field->set_choice(next, int(it - choices.begin()));
+  // A choice is one deliberate step: never merged with the next one.
+  const std::string& who = p->field->symbol.empty() ? p->field->label : p->field->symbol;
+  edit(
+      next,
+      QObject::tr("Set %1 to “%2”").arg(QString::fromStdString(who), QString::fromStdString(name)));
+  return true;
 }
 
 void CaseDocument::apply(const engine::EngineCase& engine_case) {

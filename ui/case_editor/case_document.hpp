@@ -32,6 +32,9 @@ class CaseDocument : public QObject {
   void edit(const engine::EngineCase& new_case, const QString& description, int merge_key = -1);
   /// Sets one scalar parameter (SI) by dotted path; undoable.
   void setParameter(const std::string& path, double si_value);
+  /// Sets a choice parameter (CaseParameter::choice) by dotted path to one of its names; undoable,
+  /// one undo step per change. False (the case unchanged) when `name` is not one of its choices.
+  bool setChoice(const std::string& path, const std::string& name);
 
   QString filePath() const { return file_path_; }
   bool isModified() const { return !undo_stack_.isClean(); }

@@ -18,11 +18,13 @@
 #include <QTableView>
 #include <QVBoxLayout>
 #include <QValueAxis>
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
 #include "ui/case_editor/array_table_model.hpp"
 #include "ui/case_editor/case_document.hpp"
+#include "ui/case_editor/choice_delegate.hpp"
 #include "ui/case_editor/parameter_table_model.hpp"
 #include "ui/case_editor/pressure_csv.hpp"
 #include "ui/case_editor/skirt_calculator_panel.hpp"
@@ -122,6 +124,18 @@ QWidget* CaseEditor::makeParameterPage(CaseGroup group) {
                                                   QHeaderView::ResizeToContents);
   table->setColumnWidth(ParameterTableModel::kValue, 110);
   table->setColumnWidth(ParameterTableModel::kUnit, 60);
+  // Choices (core's names): a combo box in the value cell, always open, the column wide enough
+  // for the longest name.
+  table->setItemDelegateForColumn(ParameterTableModel::kValue, new ChoiceDelegate(table));
+  int value_width = table->columnWidth(ParameterTableModel::kValue);
+  for (int row = 0; row < model->rowCount(); ++row) {
+    const QModelIndex value = model->index(row, ParameterTableModel::kValue);
+    if (!ChoiceDelegate::IsChoice(value)) continue;
+    table->openPersistentEditor(value);
+    if (QWidget* editor = table->indexWidget(value))
+      value_width = std::max(value_width, editor->sizeHint().width() + 2);
+  }
+  table->setColumnWidth(ParameterTableModel::kValue, value_width);
   connect(table->selectionModel(), &QItemSelectionModel::currentChanged, this,
           [this](const QModelIndex& current) {
             const QString tip = current.data(Qt::ToolTipRole).toString();

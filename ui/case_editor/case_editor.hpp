@@ -1,5 +1,6 @@
 #pragma once
-/// @file The case editor: one tab per group of scalar inputs (tables with units), the skirt
+/// @file The case editor: one tab per group of scalar inputs (tables with units; a choice such as
+/// a joint's cavitation model as a combo box of core's names in its row), the skirt
 /// profile and ovality (each table + chart) and the cylinder-pressure curves per speed (table +
 /// chart, CSV import and export), with the steady skirt calculator on the skirt tab. All edits go
 /// through the CaseDocument (undo, validation).

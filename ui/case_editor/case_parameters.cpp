@@ -14,25 +14,31 @@ QString CaseGroupTitle(CaseGroup group) {
 
 namespace {
 
-// The editor's rows: every scalar field of core's schema (numbers and integers), with its label,
-// display unit, scale and check; nothing is retyped here.
+// The editor's rows: every scalar field of core's schema (numbers, integers, and the choices the
+// run-model selector does not set), with its label, display unit, scale and check, or its
+// choices; nothing is retyped here.
 std::vector<CaseParameter> MakeParameters() {
   std::vector<CaseParameter> rows;
   for (const engine::CaseField& field : engine::CaseSchema()) {
-    if (field.kind != engine::FieldKind::kNumber && field.kind != engine::FieldKind::kInteger) {
-      continue;
-    }
+    const bool number =
+        field.kind == engine::FieldKind::kNumber || field.kind == engine::FieldKind::kInteger;
+    const bool choice = field.kind == engine::FieldKind::kChoice && !SetByRunModel(field);
+    if (!number && !choice) continue;
     CaseParameter p;
     p.group = field.group;
     p.path = field.path;
     p.label = QString::fromStdString(field.label);
-    p.unit = QString::fromStdString(field.display_unit);
-    p.to_si = field.display_scale;
-    p.integer = field.kind == engine::FieldKind::kInteger;
     p.field = &field;
-    p.get = field.get;
-    p.set = field.set;
-    p.check = [&field](const std::string& name, double si) { field.Check(si, name); };
+    if (choice) {
+      p.choice = true;
+    } else {
+      p.unit = QString::fromStdString(field.display_unit);
+      p.to_si = field.display_scale;
+      p.integer = field.kind == engine::FieldKind::kInteger;
+      p.get = field.get;
+      p.set = field.set;
+      p.check = [&field](const std::string& name, double si) { field.Check(si, name); };
+    }
     rows.push_back(std::move(p));
   }
   return rows;
@@ -76,6 +82,18 @@ void ApplyRunModel(EngineCase& engine_case, const QString& key) {
       engine_case.big_end.model = m.big_end;
     }
   }
+}
+
+bool SetByRunModel(const engine::CaseField& field) {
+  if (field.kind != engine::FieldKind::kChoice) return false;
+  EngineCase c;
+  ApplyRunModel(c, RunModels().front().key);
+  const int first = field.choice(c);
+  for (const RunModel& m : RunModels()) {
+    ApplyRunModel(c, m.key);
+    if (field.choice(c) != first) return true;
+  }
+  return false;
 }
 
 }  // namespace filmdyn::ui

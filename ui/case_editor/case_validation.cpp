@@ -43,6 +43,11 @@ CaseIssues ValidateCase(const engine::EngineCase& c) {
     try {
       if (field.kind == engine::FieldKind::kNumber || field.kind == engine::FieldKind::kInteger) {
         field.Check(field.get(c));
+      } else if (field.kind == engine::FieldKind::kChoice) {
+        const int k = field.choice(c);
+        if (k < 0 || k >= int(field.choices.size())) {
+          throw InputError(field.path, std::to_string(k), "must be " + field.ChoicesText(true));
+        }
       } else if (field.kind == engine::FieldKind::kNumberList) {
         const std::vector<double>& values = field.list(copy);
         for (size_t k = 0; k < values.size(); ++k) {

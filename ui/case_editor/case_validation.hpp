@@ -1,9 +1,10 @@
 #pragma once
 /// @file Validation of a whole EngineCase for the editor: every problem with the dotted path of the
-/// offending value and core's InputError message. Each field is checked against its range in
-/// core's case schema, then core's cross-field rules (engine::CheckCaseConsistency) and core's
-/// PressureCurve constructor run, and finally core's case reader (io::CaseFromJson) checks the
-/// whole case: the GUI accepts exactly what `filmdyn run` accepts.
+/// offending value and core's InputError message. Each field is checked against its range (a
+/// choice: its names) in core's case schema, then core's cross-field rules
+/// (engine::CheckCaseConsistency) and core's PressureCurve constructor run, and finally core's case
+/// reader (io::CaseFromJson) checks the whole case: the GUI accepts exactly what `filmdyn run`
+/// accepts.
 #include <map>
 #include <string>
 

@@ -3,6 +3,7 @@
 #include <QBrush>
 #include <QColor>
 #include <QLocale>
+#include <QStringList>
 #include <cmath>
 #include <limits>
 
@@ -63,6 +64,7 @@ QVariant ParameterTableModel::data(const QModelIndex& index, int role) const {
         case kQuantity:
           return p.label;
         case kValue: {
+          if (p.choice) return choiceText(p);
           const double display = p.get(document_->engineCase()) / p.to_si;
           if (role == Qt::EditRole) return FormatDisplayNumber(display);
           return bad && std::isnan(display) ? tr("(invalid)") : FormatDisplayNumber(display);
@@ -88,17 +90,36 @@ QVariant ParameterTableModel::data(const QModelIndex& index, int role) const {
       if (bad && index.column() == kNote) return QBrush(QColor(170, 0, 0));
       break;
     case Qt::TextAlignmentRole:
-      if (index.column() == kValue) return int(Qt::AlignRight | Qt::AlignVCenter);
+      if (index.column() == kValue && !p.choice) return int(Qt::AlignRight | Qt::AlignVCenter);
       break;
     case Qt::UserRole:
       return QString::fromStdString(p.path);
+    case kChoicesRole:
+      if (p.choice && index.column() == kValue) {
+        QStringList names;
+        for (const std::string& name : p.field->choices) names << QString::fromStdString(name);
+        return names;
+      }
+      break;
   }
   return {};
+}
+
+QString ParameterTableModel::choiceText(const CaseParameter& p) const {
+  const int k = p.field->choice(document_->engineCase());
+  if (k < 0 || k >= int(p.field->choices.size())) return tr("(invalid)");
+  return QString::fromStdString(p.field->choices[size_t(k)]);
 }
 
 bool ParameterTableModel::setData(const QModelIndex& index, const QVariant& value, int role) {
   if (role != Qt::EditRole || index.column() != kValue) return false;
   const CaseParameter& p = *rows_[size_t(index.row())];
+  if (p.choice) {
+    // One of core's names (the combo box offers nothing else); anything else changes nothing.
+    const QString name = value.toString();
+    if (name == choiceText(p)) return true;
+    return document_->setChoice(p.path, name.toStdString());
+  }
   const double display = ParseUserNumber(value.toString());
   const double si = display * p.to_si;
   const double old = p.get(document_->engineCase());

@@ -1,7 +1,8 @@
 #pragma once
 /// @file One group of scalar case parameters as an editable table: Quantity | Value | Unit | Note.
 /// Values are shown in display units; an invalid value is kept (never lose an edit), its row is
-/// tinted and the reason (core's InputError message) is the tooltip.
+/// tinted and the reason (core's InputError message) is the tooltip. A choice row's value is the
+/// chosen name, edited with a combo box of core's choices (ChoiceDelegate, kChoicesRole).
 #include <QAbstractTableModel>
 #include <vector>
 
@@ -16,6 +17,8 @@ class ParameterTableModel : public QAbstractTableModel {
 
  public:
   enum Column { kQuantity, kValue, kUnit, kNote, kColumnCount };
+  /// The value cell of a choice row: its allowed names (QStringList); empty for other rows.
+  static constexpr int kChoicesRole = Qt::UserRole + 1;
 
   ParameterTableModel(CaseDocument* document, CaseGroup group, QObject* parent = nullptr);
 
@@ -31,6 +34,9 @@ class ParameterTableModel : public QAbstractTableModel {
   const CaseParameter& parameter(int row) const { return *rows_[size_t(row)]; }
 
  private:
+  /// The chosen name of a choice row ("(invalid)" for an index outside its choices).
+  QString choiceText(const CaseParameter& p) const;
+
   CaseDocument* document_;
   std::vector<const CaseParameter*> rows_;
 };

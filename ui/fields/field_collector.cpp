@@ -38,6 +38,7 @@ JointFieldFrames MakeSkirt(const lubrication::SkirtSolver& skirt) {
   }
   if (kPi - g.alpha2 > g.alpha1) joint.no_film.push_back({g.alpha1, kPi - g.alpha2});
   joint.mirrored = true;  // symmetric about the pin-axis plane (core solves one half)
+  joint.mass_conserving = skirt.config().solver.cavitation == lubrication::CavitationModel::kJfo;
   return joint;
 }
 
@@ -54,10 +55,12 @@ JointFieldFrames MakeBigEnd(const lubrication::BearingSolver& bearing) {
     joint.mesh.points.push_back(
         {radius * std::cos(angle), radius * std::sin(angle), mesh.y[size_t(n)]});
   }
+  joint.mass_conserving = bearing.config().solver.cavitation == lubrication::CavitationModel::kJfo;
   return joint;
 }
 
-// `source`: the solver node of each displayed node (nullptr = the same numbering).
+// `source`: the solver node of each displayed node (nullptr = the same numbering). The fluid
+// fraction only with mass-conserving cavitation (with Reynolds cavitation core leaves it 1).
 void Append(JointFieldFrames& joint, const lubrication::ReynoldsSolution& fields,
             const Eigen::VectorXd& film, const std::vector<int>* source = nullptr) {
   auto vec = [source](const Eigen::VectorXd& v) {
@@ -69,6 +72,9 @@ void Append(JointFieldFrames& joint, const lubrication::ReynoldsSolution& fields
   joint.frames.push_back({{"pressure", vec(fields.pressure)},
                           {"contact_pressure", vec(fields.contact_pressure)},
                           {"film_thickness", vec(film)}});
+  if (joint.mass_conserving && fields.fluid_fraction.size() == film.size()) {
+    joint.frames.back().push_back({"fluid_fraction", vec(fields.fluid_fraction)});
+  }
 }
 
 }  // namespace

@@ -2,9 +2,10 @@
 /// @file Fills the field view's FieldFrames from core's per-step field callback
 /// (engine::RunConfig::field_callback): per joint the film surface, its tensor grid (angle and
 /// axial lines, the skirt's pin-boss relief as an interval without film) and per frame the nodal
-/// arrays; for the big end also the frame's turn into the rod frame and the crank pin's force on
-/// the rod in that frame. Keeps the newest cycle only (the one a run reports) and at most
-/// kMaxFrames frames of it, so that a 1 °CA run does not hold 720 copies in memory.
+/// arrays (the fluid fraction of a joint solved with JFO cavitation too); for the big end also the
+/// frame's turn into the rod frame and the crank pin's force on the rod in that frame. Keeps the
+/// newest cycle only (the one a run reports) and at most kMaxFrames frames of it, so that a 1 °CA
+/// run does not hold 720 copies in memory.
 #include <memory>
 
 #include "core/engine/engine_case.hpp"

@@ -12,8 +12,16 @@ const std::vector<FieldArrayInfo>& FieldArrays() {
       {"contact_pressure", "Asperity contact pressure [MPa]", 1e-6, "asperity contact pressure",
        "MPa", false},
       {"film_thickness", "Film thickness [µm]", 1e6, "film thickness", "µm", true},
+      {"fluid_fraction", "Fluid fraction θ [-]", 1.0, "fluid fraction θ", "-", true, 0.0, 1.0,
+       "fraction",
+       "The share of the gap filled with oil: 1 = full film, below 1 = cavitated (oil and gas). "
+       "Computed for a joint solved with mass-conserving (JFO) cavitation."},
   };
   return arrays;
+}
+
+bool JointFieldFrames::HasArray(const std::string& name) const {
+  return !frames.empty() && FindFieldArray(frames.front(), name) != nullptr;
 }
 
 bool JointFieldFrames::InNoFilm(double angle) const {

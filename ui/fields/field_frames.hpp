@@ -1,11 +1,14 @@
 #pragma once
 /// @file Film fields of a run for the 3D views: per joint and per output step one triangulated
 /// surface (node coordinates [m]) with nodal arrays in SI named "pressure" [Pa],
-/// "contact_pressure" [Pa] and "film_thickness" [m]. The coupled lubricated run fills
+/// "contact_pressure" [Pa], "film_thickness" [m] and, for a joint solved with mass-conserving
+/// (JFO) cavitation, "fluid_fraction" [-] (θ, 1 = full film). The coupled lubricated run fills
 /// this; the ideal model has no fields. The GUI's exports are core's files
 /// (the run's writers), not these frames.
 #include <QString>
 #include <array>
+#include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -42,6 +45,11 @@ struct JointFieldFrames {
   /// Per frame: the force on the bearing in the body frame (big end: crank pin on the rod, rod
   /// frame) [N]. Empty when not recorded (the skirt).
   std::vector<std::array<double, 2>> load;
+  /// The film was solved with mass-conserving (JFO) cavitation: its frames carry the fluid
+  /// fraction. With Reynolds (Swift–Stieber) cavitation there is none to show.
+  bool mass_conserving = false;
+  /// Whether the frames carry the array `name`.
+  bool HasArray(const std::string& name) const;
   /// Frame k as a complete surface with its arrays.
   io::SurfaceField Frame(size_t k) const;
   /// Whether the angle [rad] lies strictly inside an interval without film.
@@ -67,8 +75,10 @@ struct FieldFrames {
 };
 
 /// The arrays the views offer: array name, title with display unit, display scale, the
-/// quantity in words (for titles), the unit alone (for the colour bar), and whether the
-/// crank-angle map shows its minimum along the axis (film thickness) rather than its maximum.
+/// quantity in words (for titles), the unit alone (for the colour bar), whether the
+/// crank-angle map shows its minimum along the axis (film thickness, fluid fraction) rather than
+/// its maximum, and a fixed colour range for a quantity whose range is known (the fluid
+/// fraction: 0 to 1).
 struct FieldArrayInfo {
   const char* name;
   const char* title;
@@ -76,6 +86,15 @@ struct FieldArrayInfo {
   const char* words;
   const char* unit;
   bool minimum_matters;
+  /// The colour range in display units whatever the values; NaN: from the values (rounded).
+  double fixed_lo = std::numeric_limits<double>::quiet_NaN();
+  double fixed_hi = std::numeric_limits<double>::quiet_NaN();
+  /// The 3D colour bar's title when the unit alone says too little (a dimensionless quantity;
+  /// Latin-1 only: VTK's font has no Greek); nullptr: the unit.
+  const char* bar_title = nullptr;
+  /// What the quantity is, for the selector's tooltip; nullptr: the title says it.
+  const char* description = nullptr;
+  bool HasFixedRange() const { return !std::isnan(fixed_lo) && !std::isnan(fixed_hi); }
 };
 const std::vector<FieldArrayInfo>& FieldArrays();
 

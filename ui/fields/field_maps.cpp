@@ -4,6 +4,9 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <string_view>
+
+#include "core/engine/case_schema.hpp"
 
 namespace filmdyn::ui {
 
@@ -51,6 +54,27 @@ QString JointTitle(const JointFieldFrames& joint) {
   if (joint.name == "skirt") return QObject::tr("Piston skirt");
   if (joint.name == "big_end") return QObject::tr("Big-end bearing");
   return QString::fromStdString(joint.name);
+}
+
+QString MissingArrayText(const JointFieldFrames& joint, const FieldArrayInfo& info) {
+  const QString words = QString::fromUtf8(info.words);
+  const engine::CaseField* field = engine::FindCaseField(joint.name + ".cavitation");
+  if (std::string_view(info.name) == "fluid_fraction" && !joint.mass_conserving &&
+      field != nullptr) {
+    using lubrication::CavitationModel;
+    return QObject::tr(
+               "No %1 for the %2: its film was solved with \"%3\" cavitation "
+               "(Swift–Stieber), which does not track the film's oil content. Choose "
+               "\"%4\" as its %5 (case editor, %6 tab) and run again to see where the "
+               "film is full and where it has broken up.")
+        .arg(words, JointTitle(joint).toLower(),
+             QString::fromUtf8(lubrication::ToString(CavitationModel::kReynolds)),
+             QString::fromUtf8(lubrication::ToString(CavitationModel::kJfo)),
+             QString::fromStdString(field->label).toLower(),
+             QString::fromStdString(engine::FieldGroupTitle(field->group)));
+  }
+  return QObject::tr("The %1 fields of this run have no %2.")
+      .arg(JointTitle(joint).toLower(), words);
 }
 
 std::pair<double, double> ValueRange(const JointFieldFrames& joint, const FieldArrayInfo& info) {

@@ -16,6 +16,11 @@ namespace filmdyn::ui {
 /// The joint's name for people: "Piston skirt", "Big-end bearing".
 QString JointTitle(const JointFieldFrames& joint);
 
+/// Why a joint's frames lack an array, for its pane in place of the views: the fluid fraction of
+/// a joint solved with Reynolds cavitation (naming the case field that chooses JFO, from core's
+/// schema), or an array its stored fields do not have.
+QString MissingArrayText(const JointFieldFrames& joint, const FieldArrayInfo& info);
+
 /// Lowest and highest value of an array over every frame of a joint, in display units, nodes
 /// inside the intervals without film left out; {+inf, −inf} when there is none.
 std::pair<double, double> ValueRange(const JointFieldFrames& joint, const FieldArrayInfo& info);

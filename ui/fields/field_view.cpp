@@ -96,6 +96,10 @@ FieldView::FieldView(QWidget* parent) : QWidget(parent) {
   array_combo_->setObjectName("field_array");
   for (const FieldArrayInfo& info : FieldArrays()) {
     array_combo_->addItem(QString::fromUtf8(info.title), QString::fromUtf8(info.name));
+    if (info.description != nullptr) {
+      array_combo_->setItemData(array_combo_->count() - 1, QString::fromUtf8(info.description),
+                                Qt::ToolTipRole);
+    }
   }
   play_ = new QToolButton(this);
   play_->setObjectName("field_play");
@@ -147,6 +151,7 @@ FieldView::FieldView(QWidget* parent) : QWidget(parent) {
   connect(play_, &QToolButton::toggled, this, &FieldView::setPlaying);
   connect(slider_, &QSlider::valueChanged, this, [this] { showFrame(); });
   connect(array_combo_, &QComboBox::currentIndexChanged, this, [this] {
+    updateAvailability();
     updateRanges();
     updateCrankAngleMaps();
     showFrame();
@@ -174,6 +179,9 @@ FilmMapWidget* FieldView::crankAngleMap(int index) const {
 }
 QTabWidget* FieldView::jointTabs(int index) const {
   return index >= 0 && index < int(panes_.size()) ? panes_[size_t(index)].tabs : nullptr;
+}
+QLabel* FieldView::missingNote(int index) const {
+  return index >= 0 && index < int(panes_.size()) ? panes_[size_t(index)].missing : nullptr;
 }
 std::pair<double, double> FieldView::colourRange(int index) const {
   return index >= 0 && index < int(panes_.size()) ? panes_[size_t(index)].range
@@ -224,12 +232,19 @@ void FieldView::ensurePanes(size_t count) {
     pane.crank_map->setObjectName(QString("crank_angle_map_%1").arg(index));
     pane.crank_map->setToolTip(
         tr("Over the whole cycle: for every angle around the joint the largest value along the "
-           "axis (for the film thickness the smallest) — where and when the film carries load. "
-           "The line marks the crank angle shown."));
+           "axis (for the film thickness and the fluid fraction the smallest) — where and when the "
+           "film carries load or breaks up. The line marks the crank angle shown."));
     pane.tabs->addTab(pane.crank_map, tr("Crank-angle map"));
     if (!pane.view) pane.tabs->setCurrentIndex(kTabUnrolled);
+    pane.missing = new QLabel(pane.box);
+    pane.missing->setObjectName(QString("field_missing_%1").arg(index));
+    pane.missing->setAlignment(Qt::AlignCenter);
+    pane.missing->setWordWrap(true);
+    pane.missing->setMargin(24);
+    pane.missing->hide();
     box_layout->addWidget(pane.header);
     box_layout->addWidget(pane.tabs, 1);
+    box_layout->addWidget(pane.missing, 1);
     views_host_->layout()->addWidget(pane.box);
     panes_.push_back(pane);
   }
@@ -319,6 +334,7 @@ void FieldView::setFrames(std::shared_ptr<const FieldFrames> frames, const QStri
     if (i < frames_->joints.size()) setUpJoint(panes_[i], frames_->joints[i]);
   }
   stack_->setCurrentWidget(views_host_);
+  updateAvailability();
   {
     // The crank angle shown stays: the nearest frame of this run.
     QSignalBlocker block(slider_);
@@ -330,11 +346,33 @@ void FieldView::setFrames(std::shared_ptr<const FieldFrames> frames, const QStri
   showFrame();
 }
 
-void FieldView::updateRanges() {
+const FieldArrayInfo& FieldView::currentArray() const {
+  return FieldArrays()[size_t(std::max(0, array_combo_->currentIndex()))];
+}
+
+void FieldView::updateAvailability() {
   if (!frames_ || frames_->empty()) return;
-  const FieldArrayInfo& info = FieldArrays()[size_t(std::max(0, array_combo_->currentIndex()))];
+  const FieldArrayInfo& info = currentArray();
   for (size_t j = 0; j < panes_.size() && j < frames_->joints.size(); ++j) {
     const JointFieldFrames& joint = frames_->joints[j];
+    const bool has = joint.HasArray(info.name);
+    panes_[j].tabs->setVisible(has);
+    panes_[j].missing->setVisible(!has);
+    panes_[j].missing->setText(has ? QString() : MissingArrayText(joint, info));
+  }
+}
+
+void FieldView::updateRanges() {
+  if (!frames_ || frames_->empty()) return;
+  const FieldArrayInfo& info = currentArray();
+  for (size_t j = 0; j < panes_.size() && j < frames_->joints.size(); ++j) {
+    const JointFieldFrames& joint = frames_->joints[j];
+    if (info.HasFixedRange()) {
+      // A quantity of known range (the fluid fraction): the same colours in every run.
+      panes_[j].range = {info.fixed_lo, info.fixed_hi};
+      if (panes_[j].view) panes_[j].view->setScalarRange(info.fixed_lo, info.fixed_hi);
+      continue;
+    }
     auto [lo, hi] = ValueRange(joint, info);
     if (same_scale_->isChecked()) {
       for (const auto& run : scale_frames_) {
@@ -355,8 +393,9 @@ void FieldView::updateRanges() {
 
 void FieldView::updateCrankAngleMaps() {
   if (!frames_ || frames_->empty()) return;
-  const FieldArrayInfo& info = FieldArrays()[size_t(std::max(0, array_combo_->currentIndex()))];
+  const FieldArrayInfo& info = currentArray();
   for (size_t j = 0; j < panes_.size() && j < frames_->joints.size(); ++j) {
+    if (!frames_->joints[j].HasArray(info.name)) continue;  // its note instead
     FilmMapData d = CrankAngleMap(*frames_, j, info);
     d.scale_lo = panes_[j].range.first;
     d.scale_hi = panes_[j].range.second;
@@ -405,21 +444,22 @@ void FieldView::showFrame() {
   const double angle = frames_->crank_angle_deg[k];
   shown_angle_ = angle;
   angle_label_->setText(tr("%1 °CA").arg(angle, 0, 'f', 1));
-  const FieldArrayInfo& info = FieldArrays()[size_t(std::max(0, array_combo_->currentIndex()))];
+  const FieldArrayInfo& info = currentArray();
   const QString what = tr("%1 at %2 °CA").arg(QString::fromUtf8(info.words)).arg(angle, 0, 'f', 0);
   title_->setText(run_label_.isEmpty() ? what.left(1).toUpper() + what.mid(1)
                                        : tr("%1 — %2").arg(run_label_, what));
   for (size_t j = 0; j < panes_.size() && j < frames_->joints.size(); ++j) {
     const JointFieldFrames& joint = frames_->joints[j];
     Pane& pane = panes_[j];
-    if (k >= joint.frames.size()) continue;
+    if (k >= joint.frames.size() || !joint.HasArray(info.name)) continue;
     FilmMapData d = UnrolledMap(joint, k, info);
     d.scale_lo = pane.range.first;
     d.scale_hi = pane.range.second;
     pane.unrolled->setData(std::move(d));
     pane.crank_map->setYLine(angle);
     if (!pane.view) continue;
-    pane.view->showField(ToPolyData(joint, k, info), info.name, QString::fromUtf8(info.unit));
+    pane.view->showField(ToPolyData(joint, k, info), info.name,
+                         QString::fromUtf8(info.bar_title ? info.bar_title : info.unit));
     if (k < joint.load.size() && joint.radius > 0) {
       // The load line: the crank pin's force on the bearing, from the bearing's centre.
       const auto& f = joint.load[k];

@@ -2,11 +2,13 @@
 /// @file The pressure-field view: per joint (piston skirt, big-end bearing) three views of the
 /// film — the 3D surface, the unrolled map of the frame shown (circumferential angle × axial
 /// position) and the crank-angle map of the cycle (circumferential angle × crank angle, the
-/// largest value along each axial line) — coloured by film pressure, asperity contact pressure or
-/// film thickness on one viridis scale with round numbers. A crank-angle slider and play/pause
-/// drive every view and emit the angle for the plot cursor; the title names the run, the
-/// quantity and the crank angle. The colour range is fixed over the run's cycle (or over every
-/// run with fields: "Same scale for all runs"), so that frames and runs compare.
+/// largest value along each axial line) — coloured by film pressure, asperity contact pressure,
+/// film thickness or the fluid fraction θ of mass-conserving cavitation on one viridis scale with
+/// round numbers. A crank-angle slider and play/pause drive every view and emit the angle for the
+/// plot cursor; the title names the run, the quantity and the crank angle. The colour range is
+/// fixed over the run's cycle (or over every run with fields: "Same scale for all runs"), so that
+/// frames and runs compare; the fluid fraction's is always 0 to 1. A joint whose frames lack the
+/// quantity (the fluid fraction with Reynolds cavitation) says why in place of its views.
 #include <QString>
 #include <QWidget>
 #include <memory>
@@ -63,6 +65,9 @@ class FieldView : public QWidget {
   FilmMapWidget* unrolledMap(int index) const;
   FilmMapWidget* crankAngleMap(int index) const;
   QTabWidget* jointTabs(int index) const;
+  /// The note shown in place of joint `index`'s views when its frames lack the quantity chosen
+  /// (hidden otherwise).
+  QLabel* missingNote(int index) const;
   /// The colour range of joint `index` in display units (rounded; the same in all its views).
   std::pair<double, double> colourRange(int index) const;
 
@@ -83,6 +88,7 @@ class FieldView : public QWidget {
     ScalarFieldView* view = nullptr;  ///< nullptr without GL
     FilmMapWidget* unrolled = nullptr;
     FilmMapWidget* crank_map = nullptr;
+    QLabel* missing = nullptr;  ///< in place of the tabs when the joint lacks the quantity
     std::string joint;  ///< the joint shown (a new one resets the camera and labels)
     std::pair<double, double> range{0.0, 1.0};
   };
@@ -90,6 +96,9 @@ class FieldView : public QWidget {
   void setUpJoint(Pane& pane, const JointFieldFrames& joint);
   void showFrame();
   void updateRanges();
+  /// Shows each joint's views, or the note saying why it lacks the quantity chosen.
+  void updateAvailability();
+  const FieldArrayInfo& currentArray() const;
   void updateCrankAngleMaps();
   size_t nearestFrame(double crank_angle_deg) const;
 

@@ -178,6 +178,18 @@ std::vector<PlotSpec> Make() {
                                {VsAngle("skirt", Column::kSkirtPeakContactPressure, 1e-6),
                                 VsAngle("big end", Column::kBearingPeakContactPressure, 1e-6)},
                                true));
+  // Oil through each film (mass-conserving cavitation makes them balance over a cycle).
+  plots.push_back(VsCrankAngle("bigend_oil_flow", QObject::tr("Big-end oil flow"),
+                               QObject::tr("oil flow [cm³/s]"), "cm³/s",
+                               {VsAngle("supply", Column::kBearingSupplyFlow, 1e6),
+                                VsAngle("side leakage", Column::kBearingSideFlow, 1e6)}));
+  plots.push_back(VsCrankAngle(
+      "skirt_oil_flow", QObject::tr("Skirt oil flow"), QObject::tr("oil flow [cm³/s]"), "cm³/s",
+      {VsAngle("in", Column::kSkirtInflow, 1e6), VsAngle("out", Column::kSkirtOutflow, 1e6)},
+      true));
+  plots.push_back(VsCrankAngle("skirt_wetted_fraction", QObject::tr("Skirt wetted fraction"),
+                               QObject::tr("oil-covered share of the panels [-]"), "",
+                               {VsAngle("skirt", Column::kSkirtWettedFraction, 1.0)}, true));
   {
     PlotSpec eps =
         Portrait("phase_eps", QObject::tr("Big-end phase portrait ε / ε̇"),

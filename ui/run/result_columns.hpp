@@ -40,6 +40,11 @@ enum class Column {
   kBigEndForceRodX,
   kBigEndForceRodY,
   kBearingEpsRate,
+  kSkirtInflow,          ///< oil into the skirt film through its boundary [m^3/s]
+  kSkirtOutflow,         ///< oil out of it [m^3/s]
+  kSkirtWettedFraction,  ///< oil-covered share of the skirt panels [-]
+  kBearingSupplyFlow,    ///< oil into the big-end film through its supply [m^3/s]
+  kBearingSideFlow,      ///< oil out of the big end's edges [m^3/s]
   kCount
 };
 constexpr int kColumnCount = int(Column::kCount);

@@ -14,6 +14,7 @@
 #include <set>
 #include <sstream>
 #include <stdexcept>
+#include <string_view>
 
 #include "core/io/case_file.hpp"
 #include "core/io/field_series.hpp"
@@ -317,24 +318,33 @@ JointFieldFrames JointFromSeries(const io::FieldSeries& series, bool big_end,
     const double a2 = engine_case.skirt.anti_thrust_half_width;
     if (kPi - a2 > a1) joint.no_film.push_back({a1, kPi - a2});
   }
-  static const char* const kArrays[] = {"pressure", "contact_pressure", "film_thickness"};
-  std::vector<int> index;
+  // The fluid fraction with mass-conserving cavitation only (with Reynolds cavitation core's θ,
+  // when written, is 1 everywhere and says nothing).
+  joint.mass_conserving =
+      (big_end ? engine_case.big_end.cavitation : engine_case.skirt.cavitation) ==
+      lubrication::CavitationModel::kJfo;
+  static const char* const kArrays[] = {"pressure", "contact_pressure", "film_thickness",
+                                        "fluid_fraction"};
+  std::vector<std::pair<const char*, std::size_t>> index;  // view name, series array
   for (const char* name : kArrays) {
+    const bool optional = std::string_view(name) == "fluid_fraction";
+    if (optional && !joint.mass_conserving) continue;
     int found = -1;
     for (std::size_t a = 0; a < series.array_names.size(); ++a) {
       if (series.array_names[a].substr(0, series.array_names[a].find('[')) == name) found = int(a);
     }
+    if (found < 0 && optional) continue;  // fields written before core recorded it
     if (found < 0) {
       throw std::runtime_error(series.name + " field series: no array " + name);
     }
-    index.push_back(found);
+    index.push_back({name, std::size_t(found)});
   }
   for (std::size_t k : kept) {
     const io::SeriesFrame& frame = series.frames[k];
     std::vector<std::pair<std::string, std::vector<double>>> arrays;
-    for (std::size_t a = 0; a < index.size(); ++a) {
-      const std::vector<float>& values = frame.arrays[size_t(index[a])];
-      arrays.push_back({kArrays[a], std::vector<double>(values.begin(), values.end())});
+    for (const auto& [name, a] : index) {
+      const std::vector<float>& values = frame.arrays[a];
+      arrays.push_back({name, std::vector<double>(values.begin(), values.end())});
     }
     joint.frames.push_back(std::move(arrays));
     if (big_end) joint.frame_rotation.push_back(std::remainder(frame.rotation_z + kPi, 2 * kPi));

@@ -72,7 +72,9 @@ RunHandle ReadRunFolder(const QString& folder, RunRequest request, int id);
 
 /// The film fields of a run folder's fields/ files (core's HDF5 series) as the field view's
 /// frames, keeping every stride-th frame as a live run does (at most 240 per cycle); `rpm`
-/// gives each frame's time within the cycle. nullptr when the folder has no fields. Throws
+/// gives each frame's time within the cycle, `engine_case` the skirt's relief and each joint's
+/// cavitation model (the fluid fraction is read for a joint with JFO cavitation, when the files
+/// have it). nullptr when the folder has no fields. Throws
 /// std::runtime_error naming the file when one cannot be read.
 std::shared_ptr<const FieldFrames> ReadFieldFrames(const QString& fields_folder,
                                                    const engine::EngineCase& engine_case,

@@ -1,8 +1,10 @@
 // The case editor driven through its real widgets: typing into a table cell changes the case (in
 // SI), undo/redo restore it, an invalid value is marked with core's reason and blocks Run, the
 // skirt profile, ovality and pressure tables edit the arrays, E and ν per surface are edited in
-// GPa, pressure CSV export/import round-trips, and a project round-trips through save/load (core's
-// case file, written atomically).
+// GPa, pressure CSV export/import round-trips, a project round-trips through save/load (core's
+// case file, written atomically), and a choice (a joint's cavitation model) is picked in its
+// row's combo box as one undoable edit, saved and shown again on open.
+#include <QAbstractItemView>
 #include <QAction>
 #include <QApplication>
 #include <QChart>
@@ -18,6 +20,7 @@
 #include <QTemporaryDir>
 #include <QToolTip>
 #include <QUndoStack>
+#include <QWheelEvent>
 #include <QtTest>
 #include <cmath>
 
@@ -367,6 +370,112 @@ class TestCaseEditor : public QObject {
     QVERIFY2(reason.contains("skirt.cold_clearance") && reason.contains("0.04"),
              qPrintable(reason));
     QVERIFY(!window.runAction()->isEnabled());
+  }
+
+  void choosingTheBigEndCavitationModelIsAnUndoableEdit() {
+    using filmdyn::lubrication::CavitationModel;
+    MainWindow window;
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    window.workspace()->setCurrentIndex(0);
+    auto* tabs = window.caseEditor()->findChild<QTabWidget*>("case_tabs");
+    tabs->setCurrentIndex(4);  // Big-end bearing
+    QTableView* table = window.caseEditor()->parameterTable(CaseGroup::kBigEnd);
+    const QModelIndex cell = ValueCell(window, CaseGroup::kBigEnd, "big_end.cavitation");
+    QVERIFY(cell.isValid());
+    const filmdyn::engine::CaseField* field = filmdyn::engine::FindCaseField("big_end.cavitation");
+    QVERIFY(field != nullptr);
+    // The row: core's label, no unit, the chosen name; its editor is a combo box of core's
+    // names, open all the time, whose tooltip is the row's (from the schema).
+    ParameterTableModel* model = window.caseEditor()->parameterModel(CaseGroup::kBigEnd);
+    QCOMPARE(model->index(cell.row(), ParameterTableModel::kQuantity).data().toString(),
+             QString::fromStdString(field->label));
+    QVERIFY(model->index(cell.row(), ParameterTableModel::kUnit).data().toString().isEmpty());
+    QCOMPARE(cell.data().toString(), QString("reynolds"));
+    auto* combo = qobject_cast<QComboBox*>(table->indexWidget(cell));
+    QVERIFY2(combo != nullptr, "no combo box in the cavitation row");
+    QVERIFY(combo->isVisible());
+    QStringList names;
+    for (const std::string& name : field->choices) names << QString::fromStdString(name);
+    QStringList items;
+    for (int i = 0; i < combo->count(); ++i) items << combo->itemText(i);
+    QCOMPARE(items, names);
+    QCOMPARE(combo->currentText(), QString("reynolds"));
+    QVERIFY2(combo->toolTip().contains(QString::fromStdString(field->description).toHtmlEscaped()),
+             qPrintable(combo->toolTip()));
+    QVERIFY(combo->toolTip().contains("In the case file: big_end.cavitation"));
+    // The skirt has its own.
+    QVERIFY(qobject_cast<QComboBox*>(window.caseEditor()
+                                         ->parameterTable(CaseGroup::kSkirt)
+                                         ->indexWidget(ValueCell(window, CaseGroup::kSkirt,
+                                                                 "skirt.cavitation"))) != nullptr);
+
+    // The wheel over a combo without the focus scrolls the table, never changes the choice.
+    {
+      const QPoint centre = combo->rect().center();
+      QWheelEvent wheel(centre, combo->mapToGlobal(centre), {}, {0, -120}, Qt::NoButton,
+                        Qt::NoModifier, Qt::NoScrollPhase, false);
+      QApplication::sendEvent(combo, &wheel);
+      QCOMPARE(combo->currentText(), QString("reynolds"));
+      QVERIFY(!window.document()->isModified());
+    }
+
+    // Pick "jfo" as a user does: open the list, click the item.
+    const filmdyn::engine::EngineCase before = window.document()->engineCase();
+    combo->showPopup();
+    QAbstractItemView* list = combo->view();
+    QTRY_VERIFY(list->isVisible());
+    const QModelIndex jfo = list->model()->index(combo->findText("jfo"), 0);
+    QTest::mouseClick(list->viewport(), Qt::LeftButton, {}, list->visualRect(jfo).center());
+    QTRY_COMPARE(window.document()->engineCase().big_end.cavitation, CavitationModel::kJfo);
+    QCOMPARE(cell.data().toString(), QString("jfo"));
+    QCOMPARE(combo->currentText(), QString("jfo"));
+    QVERIFY(window.document()->isModified());
+    QVERIFY(window.document()->issues().empty());
+    QVERIFY(window.runAction()->isEnabled());
+    QCOMPARE(window.document()->undoStack()->count(), 1);
+    const QString undo_text = window.document()->undoStack()->undoText();
+    QVERIFY2(undo_text.contains(QString::fromStdString(field->symbol)) && undo_text.contains("jfo"),
+             qPrintable(undo_text));
+    // Nothing else changed.
+    filmdyn::engine::EngineCase expected = before;
+    expected.big_end.cavitation = CavitationModel::kJfo;
+    QCOMPARE(filmdyn::ui::CaseToJsonText(window.document()->engineCase()),
+             filmdyn::ui::CaseToJsonText(expected));
+
+    // Undo restores the case and the combo; redo sets it again.
+    window.document()->undoStack()->undo();
+    QCOMPARE(window.document()->engineCase().big_end.cavitation, CavitationModel::kReynolds);
+    QCOMPARE(combo->currentText(), QString("reynolds"));
+    QVERIFY(!window.document()->isModified());
+    window.document()->undoStack()->redo();
+    QCOMPARE(window.document()->engineCase().big_end.cavitation, CavitationModel::kJfo);
+    QCOMPARE(combo->currentText(), QString("jfo"));
+
+    // The keyboard picks too (focus in the combo, arrow up): one more undo step.
+    combo->setFocus();
+    QTest::keyClick(combo, Qt::Key_Up);
+    QCOMPARE(window.document()->engineCase().big_end.cavitation, CavitationModel::kReynolds);
+    QCOMPARE(window.document()->undoStack()->count(), 2);
+    window.document()->undoStack()->undo();
+    QCOMPARE(window.document()->engineCase().big_end.cavitation, CavitationModel::kJfo);
+
+    // Saved as core's case file with the name; opened again, the combo shows it.
+    QTemporaryDir dir;
+    const QString path = dir.filePath("jfo.json");
+    QString error;
+    QVERIFY2(window.saveProjectAs(path, &error), qPrintable(error));
+    QCOMPARE(filmdyn::io::LoadCase(path.toStdString()).value.big_end.cavitation,
+             CavitationModel::kJfo);
+    MainWindow again;
+    QVERIFY2(again.openProject(path, &error), qPrintable(error));
+    const QModelIndex reopened = ValueCell(again, CaseGroup::kBigEnd, "big_end.cavitation");
+    QCOMPARE(reopened.data().toString(), QString("jfo"));
+    auto* reopened_combo = qobject_cast<QComboBox*>(
+        again.caseEditor()->parameterTable(CaseGroup::kBigEnd)->indexWidget(reopened));
+    QVERIFY(reopened_combo != nullptr);
+    QCOMPARE(reopened_combo->currentText(), QString("jfo"));
+    QVERIFY(!again.document()->isModified());
   }
 
   void olderCaseFileWithThePistonRadiusOpens() {

@@ -5,7 +5,10 @@
 // scalar bar beside the surface with round numbers, the sides named, the relief not drawn, the
 // big end's load line along the crank pin's force; the unrolled map holds the nodal values, the
 // crank-angle map the extremes along the axial lines; switching runs keeps the crank angle and
-// "Same scale for all runs" gives them one colour range.
+// "Same scale for all runs" gives them one colour range. With the frames of a real short
+// Only-LBRBE run with mass-conserving (JFO) cavitation, collected live and read back from the
+// fields/ files core writes, the view offers the fluid fraction θ on a fixed 0–1 scale; a joint
+// solved with Reynolds cavitation says why it has none instead of showing its views.
 // SyntheticFrames are analytic test data (pressure bumps), never shown to users.
 #include <vtkNew.h>
 #include <vtkPointData.h>
@@ -25,6 +28,7 @@
 #include <QComboBox>
 #include <QDir>
 #include <QImage>
+#include <QLabel>
 #include <QSet>
 #include <QSlider>
 #include <QTabWidget>
@@ -36,6 +40,7 @@
 
 #include "core/engine/run_job.hpp"
 #include "core/io/case_file.hpp"
+#include "core/io/field_output.hpp"
 #include "ui/charts/color_map.hpp"
 #include "ui/charts/film_map_widget.hpp"
 #include "ui/fields/field_collector.hpp"
@@ -43,6 +48,7 @@
 #include "ui/fields/field_maps.hpp"
 #include "ui/fields/field_view.hpp"
 #include "ui/plots/plot_panel.hpp"
+#include "ui/runs/run_store.hpp"
 #include "ui/vtk/scalar_field_view.hpp"
 #include "ui/vtk/vtk_view_widget.hpp"
 
@@ -127,6 +133,37 @@ std::shared_ptr<const filmdyn::ui::FieldFrames> RealRunFrames() {
   const engine::RunResult result = engine::RunJob(config);
   qInfo("real run: %s, %zu samples, %.1f s", engine::StatusName(result.status).c_str(),
         result.samples.size(), result.wall_time);
+  return collector.Result();
+}
+
+// A real Only-LBRBE run with JFO cavitation on a coarse big-end mesh (6000 rpm, 4 °CA output,
+// one cycle after the run-in): the frames as the GUI collects them live, and core's field files
+// of the same run written to `fields_dir`.
+std::shared_ptr<const filmdyn::ui::FieldFrames> JfoRunFrames(const QString& fields_dir,
+                                                             filmdyn::engine::EngineCase* used) {
+  using namespace filmdyn;
+  const io::LoadedCase loaded = io::LoadCase({});
+  engine::EngineCase c = loaded.value;
+  c.solver.output_interval = 4.0 * M_PI / 180.0;
+  c.solver.max_cycles = 1;
+  c.solver.error_estimate = 0;
+  c.big_end.mesh_theta = 48;
+  c.big_end.mesh_z = 6;
+  c.big_end.cavitation = lubrication::CavitationModel::kJfo;
+  engine::ApplyModel(engine::Model::kOnlyLbrbe, &c);
+  engine::RunConfig config = engine::MakeRunConfig(c, engine::Model::kOnlyLbrbe, 6000.0,
+                                                   io::PressureCurveForSpeed(loaded, 6000.0));
+  ui::FieldCollector collector(180);
+  io::FieldRecorder recorder;
+  config.field_callback = [&collector, record = recorder.Callback()](const engine::FieldFrame& f) {
+    collector.Add(f);
+    record(f);
+  };
+  const engine::RunResult result = engine::RunJob(config);
+  qInfo("JFO run: %s, %zu samples, %.1f s", engine::StatusName(result.status).c_str(),
+        result.samples.size(), result.wall_time);
+  recorder.Write(fields_dir.toStdString());
+  *used = c;
   return collector.Result();
 }
 
@@ -507,6 +544,103 @@ class TestFieldView : public QObject {
       for (int jj = 0; jj < 2; ++jj) view.jointTabs(jj)->setCurrentIndex(0);
       QTest::qWait(400);
       view.grab().save(dir + "/field_view_3d_small.png");
+    }
+  }
+
+  void fluidFractionOfAJfoRunLiveAndReadBack() {
+    QTemporaryDir dir;
+    filmdyn::engine::EngineCase jfo_case;
+    const auto live = JfoRunFrames(dir.path(), &jfo_case);
+    QVERIFY(live && !live->empty());
+    QCOMPARE(int(live->joints.size()), 1);
+    const auto& joint = live->joints[0];
+    QCOMPARE(joint.name, std::string("big_end"));
+    QVERIFY(joint.mass_conserving);
+    QVERIFY(joint.HasArray("fluid_fraction"));
+    // θ within [0, 1] everywhere, and the film breaks up somewhere in the cycle.
+    double lo = INFINITY, hi = -INFINITY;
+    for (const auto& frame : joint.frames) {
+      for (double v : *filmdyn::ui::FindFieldArray(frame, "fluid_fraction")) {
+        lo = std::min(lo, v), hi = std::max(hi, v);
+      }
+    }
+    qInfo("fluid fraction over the cycle: %g … %g", lo, hi);
+    QVERIFY(lo >= -1e-9 && hi <= 1.0 + 1e-9);
+    QVERIFY(lo < 0.9 && hi > 0.999);
+
+    // Read back from core's files (the path of a saved run or a study point): the same values
+    // (single precision).
+    const auto stored = filmdyn::ui::ReadFieldFrames(dir.path(), jfo_case, 6000.0);
+    QVERIFY(stored && stored->joints.size() == 1);
+    const auto& back = stored->joints[0];
+    QVERIFY(back.mass_conserving && back.HasArray("fluid_fraction"));
+    QCOMPARE(back.frames.size(), joint.frames.size());
+    for (size_t k = 0; k < joint.frames.size(); k += 11) {
+      const auto& a = *filmdyn::ui::FindFieldArray(joint.frames[k], "fluid_fraction");
+      const auto& b = *filmdyn::ui::FindFieldArray(back.frames[k], "fluid_fraction");
+      QCOMPARE(a.size(), b.size());
+      for (size_t n = 0; n < a.size(); ++n) QVERIFY(std::abs(a[n] - b[n]) < 1e-6);
+    }
+    // The same files read for a case with Reynolds cavitation carry no fluid fraction.
+    filmdyn::engine::EngineCase reynolds = jfo_case;
+    reynolds.big_end.cavitation = filmdyn::lubrication::CavitationModel::kReynolds;
+    const auto without = filmdyn::ui::ReadFieldFrames(dir.path(), reynolds, 6000.0);
+    QVERIFY(!without->joints[0].mass_conserving && !without->joints[0].HasArray("fluid_fraction"));
+
+    // The view lists the quantity; chosen, it is drawn on a fixed 0–1 scale in every view.
+    filmdyn::ui::FieldView view;
+    view.resize(1200, 700);
+    view.setFrames(live, "Only-LBRBE 6000 rpm");
+    view.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&view));
+    const int fraction = view.arraySelector()->findData("fluid_fraction");
+    QVERIFY(fraction >= 0);
+    QCOMPARE(view.arraySelector()->itemText(fraction), QString("Fluid fraction θ [-]"));
+    QVERIFY(!view.arraySelector()->itemData(fraction, Qt::ToolTipRole).toString().isEmpty());
+    view.arraySelector()->setCurrentIndex(fraction);
+    view.setCrankAngle(380.0);
+    const size_t k = size_t(view.frameIndex());
+    QVERIFY(view.title().startsWith("Only-LBRBE 6000 rpm — fluid fraction θ at "));
+    QVERIFY(view.missingNote(0)->isHidden() && view.jointTabs(0)->isVisible());
+    QCOMPARE(view.colourRange(0), std::make_pair(0.0, 1.0));
+    QCOMPARE(view.unrolledMap(0)->scaleRange(), std::make_pair(0.0, 1.0));
+    QCOMPARE(view.crankAngleMap(0)->scaleRange(), std::make_pair(0.0, 1.0));
+    // The unrolled map holds the nodal values of the frame shown.
+    const filmdyn::ui::FilmMapData& d = view.unrolledMap(0)->data();
+    const auto& values = *filmdyn::ui::FindFieldArray(joint.frames[k], "fluid_fraction");
+    double map_lo = INFINITY, node_lo = INFINITY;
+    for (double v : d.values) map_lo = std::min(map_lo, v);
+    for (double v : values) node_lo = std::min(node_lo, v);
+    QVERIFY(std::abs(map_lo - node_lo) < 1e-12);
+    // The crank-angle map: the smallest θ across the width.
+    QVERIFY(view.crankAngleMap(0)->data().value_title.contains("smallest"));
+    if (filmdyn::ui::ScalarFieldView* v = view.jointView(0)) {
+      QTRY_VERIFY_WITH_TIMEOUT(v->renderedFrames() > 0, 10000);
+      QCOMPARE(v->scalarRange()[0], 0.0);
+      QCOMPARE(v->scalarRange()[1], 1.0);
+      QCOMPARE(v->barLabels().front(), 0.0);
+      QCOMPARE(v->barLabels().back(), 1.0);
+      QVERIFY(DistinctColours(v->grabFramebuffer()) > 20);
+    }
+
+    // A run with Reynolds cavitation (the coupled run): each joint says why it has no fluid
+    // fraction, naming the case field that chooses JFO; back to the pressure, the views return.
+    view.setFrames(real_, "Skirt-LBRBE 6000 rpm");
+    QCOMPARE(view.arraySelector()->currentIndex(), fraction);
+    for (int jj = 0; jj < 2; ++jj) {
+      QVERIFY(view.jointTabs(jj)->isHidden());
+      QVERIFY(view.missingNote(jj)->isVisible());
+      const QString note = view.missingNote(jj)->text();
+      QVERIFY2(note.contains("\"reynolds\"") && note.contains("\"jfo\"") &&
+                   note.contains("cavitation model"),
+               qPrintable(note));
+    }
+    QVERIFY(view.missingNote(0)->text().contains("piston skirt"));
+    QVERIFY(view.missingNote(1)->text().contains("big-end bearing"));
+    view.arraySelector()->setCurrentIndex(0);
+    for (int jj = 0; jj < 2; ++jj) {
+      QVERIFY(view.jointTabs(jj)->isVisible());
+      QVERIFY(view.missingNote(jj)->isHidden());
     }
   }
 

@@ -2,7 +2,8 @@
 // Skirt-LBRBE run on coarse meshes and the Ideal model, whose film quantities are empty): round
 // axis steps, non-negative quantities from zero, a legend that lists colour and line style and
 // only series with data, the journal orbit filling its panel inside the clearance circle, the
-// linked crank-angle cursor with the values of every visible series, hover, zoom and pan.
+// linked crank-angle cursor with the values of every visible series, hover, zoom and pan; the oil
+// flows of each joint (core's flow columns) in their own plots.
 #include <QChart>
 #include <QChartView>
 #include <QLineSeries>
@@ -238,6 +239,65 @@ class TestPlotPanel : public QObject {
     QEvent leave(QEvent::Leave);
     QCoreApplication::sendEvent(view->viewport(), &leave);
     QCOMPARE(panel.shownAngle(), 90.0);
+  }
+
+  void oilFlowPlotsShowEachJointsFlows() {
+    // The flow columns are core's results.csv columns, in core's order.
+    const std::pair<Column, const char*> columns[] = {
+        {Column::kSkirtInflow, "skirt_inflow[m^3/s]"},
+        {Column::kSkirtOutflow, "skirt_outflow[m^3/s]"},
+        {Column::kSkirtWettedFraction, "skirt_wetted_fraction[-]"},
+        {Column::kBearingSupplyFlow, "bearing_supply_flow[m^3/s]"},
+        {Column::kBearingSideFlow, "bearing_side_flow[m^3/s]"}};
+    for (const auto& [column, header] : columns) {
+      QCOMPARE(QString(filmdyn::ui::kColumnHeaders[size_t(column)]), QString(header));
+    }
+    PlotPanel panel;
+    panel.resize(1400, 1200);
+    panel.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&panel));
+    panel.updateRun(coupled_);
+    const filmdyn::ui::RunSample* at = nullptr;
+    for (const auto& s : coupled_.samples) {
+      if (std::abs(s[Column::kCrankAngle] - 400.0) < 1e-9) at = &s;
+    }
+    QVERIFY(at != nullptr);
+    panel.setCursorAngle(400.0);
+    struct Expected {
+      const char* plot;
+      std::vector<std::pair<QString, QString>> series;  // legend name, readout value
+    };
+    const Expected plots[] = {
+        {"bigend_oil_flow",
+         {{"supply", filmdyn::ui::FormatReadout((*at)[Column::kBearingSupplyFlow] * 1e6, "cm³/s")},
+          {"side leakage",
+           filmdyn::ui::FormatReadout((*at)[Column::kBearingSideFlow] * 1e6, "cm³/s")}}},
+        {"skirt_oil_flow",
+         {{"in", filmdyn::ui::FormatReadout((*at)[Column::kSkirtInflow] * 1e6, "cm³/s")},
+          {"out", filmdyn::ui::FormatReadout((*at)[Column::kSkirtOutflow] * 1e6, "cm³/s")}}},
+        {"skirt_wetted_fraction",
+         {{"skirt", filmdyn::ui::FormatReadout((*at)[Column::kSkirtWettedFraction], "")}}}};
+    for (const Expected& e : plots) {
+      const int i = panel.chartIndex(e.plot);
+      QVERIFY2(i >= 0, e.plot);
+      QVERIFY2(!panel.chart(i)->title().contains("no data"), e.plot);
+      QStringList legend;
+      for (const auto& [text, pen] : panel.legendEntries(i)) legend << text;
+      const QString readout = panel.readoutLines(i).join("\n");
+      for (const auto& [name, value] : e.series) {
+        // (A plot of one series names none: its title and axis say what it is.)
+        if (e.series.size() > 1) QVERIFY2(legend.contains(name), qPrintable(legend.join(" | ")));
+        QVERIFY2(readout.contains(value), qPrintable(readout + " lacks " + value));
+      }
+    }
+    // The skirt's flows cannot be negative, nor the oil-covered share: their axes start at 0.
+    QCOMPARE(Axis(panel.chart(panel.chartIndex("skirt_oil_flow")), Qt::Vertical)->min(), 0.0);
+    QCOMPARE(Axis(panel.chart(panel.chartIndex("skirt_wetted_fraction")), Qt::Vertical)->min(),
+             0.0);
+    // The Ideal model has no film: its flow plots say so.
+    PlotPanel ideal;
+    ideal.updateRun(ideal_);
+    QVERIFY(ideal.chart(ideal.chartIndex("bigend_oil_flow"))->title().contains("no data"));
   }
 
   void orbitAndPortraitsFollowTheMotionBetweenOutputSteps() {

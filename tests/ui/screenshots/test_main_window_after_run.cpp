@@ -1,8 +1,10 @@
 // The whole main window on a real X server after real runs (core's run job: Ideal model at 6000
 // and 4000 rpm overlaid, then a coupled Skirt-LBRBE run with its pressure fields): every page
-// draws, the plots hold both runs, the run table compares them. With FILMDYN_SCREENSHOT_DIR set it
+// draws, the plots hold both runs, the run table compares them; a run with JFO cavitation on the
+// big end (picked in the case editor) shows its fluid fraction. With FILMDYN_SCREENSHOT_DIR set it
 // also saves the pictures used in docs/ (scripts/screenshots.sh).
 #include <QAction>
+#include <QComboBox>
 #include <QDir>
 #include <QImage>
 #include <QLabel>
@@ -137,6 +139,49 @@ class TestMainWindowAfterRun : public QObject {
       field_view->slider()->setValue(95);  // 380 °CA, just after firing TDC
       QTest::qWait(500);
       Save(&window, "pressure_fields.png");
+    }
+
+    // A run with mass-conserving cavitation (Only-LBRBE, "jfo" picked in the big end's
+    // cavitation row): the field view shows where the film is full and where it has broken up,
+    // the plots the oil through each film.
+    {
+      window.workspace()->setCurrentIndex(0);
+      tabs->setCurrentIndex(4);
+      auto c = window.document()->engineCase();
+      filmdyn::ui::ApplyRunModel(c, "only-lbrbe");
+      c.solver.error_estimate = 0;
+      window.document()->edit(c, "JFO set-up");
+      auto* model = window.caseEditor()->parameterModel(filmdyn::ui::CaseGroup::kBigEnd);
+      const QModelIndex cell = model->index(model->rowOf("big_end.cavitation"),
+                                            filmdyn::ui::ParameterTableModel::kValue);
+      auto* combo = qobject_cast<QComboBox*>(
+          window.caseEditor()->parameterTable(filmdyn::ui::CaseGroup::kBigEnd)->indexWidget(cell));
+      QVERIFY(combo != nullptr);
+      combo->setFocus();
+      QTest::keyClick(combo, Qt::Key_Down);  // "reynolds" → "jfo"
+      QCOMPARE(window.document()->engineCase().big_end.cavitation,
+               filmdyn::lubrication::CavitationModel::kJfo);
+      QTest::qWait(100);
+      Save(&window, "case_big_end_cavitation.png");
+      QVERIFY(window.runAction()->isEnabled());
+      window.runAction()->trigger();
+      QVERIFY(finished.wait(400000));
+      const RunHandle run = finished.last().first().value<RunHandle>();
+      QCOMPARE(run->status(), filmdyn::ui::RunStatus::kFinished);
+      QVERIFY(std::isfinite(run->samples()[90][filmdyn::ui::Column::kBearingSupplyFlow]));
+      QVERIFY(run->fields() != nullptr);
+      QCOMPARE(int(run->fields()->joints.size()), 1);
+      QVERIFY(run->fields()->joints[0].HasArray("fluid_fraction"));
+      window.runTable()->selectRow(window.runTable()->rowOf(run->id()));
+      window.workspace()->setCurrentIndex(2);
+      auto* field_view = window.fieldView();
+      field_view->arraySelector()->setCurrentIndex(
+          field_view->arraySelector()->findData("fluid_fraction"));
+      field_view->setCrankAngle(380.0);
+      QCOMPARE(field_view->colourRange(0), std::make_pair(0.0, 1.0));
+      QTest::qWait(500);
+      Save(&window, "field_view_fluid_fraction.png");
+      field_view->arraySelector()->setCurrentIndex(0);
     }
 
     // An invalid value: the cell is marked, Run is disabled with the reason in the status bar.
