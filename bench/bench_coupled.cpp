@@ -2,8 +2,10 @@
 // 6000 rpm on the default meshes, from the start through the periodic steady state and the
 // reported cycle; wall time, steps, Reynolds solves, time per solve; a tight-tolerance run for
 // the accuracy check; the price of the paper's explicit 1e-7 s scheme at our cost per step.
+// --jfo-ratio: the same run again with mass-conserving (JFO) cavitation in both joints, back to
+// back, and the ratio of the wall times (docs/performance.md, "Mass-conserving cavitation").
 // Run on demand:
-//   build/bench/bench_coupled [model] [rpm] [--no-tight] [--coarse] [--profile]
+//   build/bench/bench_coupled [model] [rpm] [--no-tight] [--coarse] [--profile] [--jfo-ratio]
 //   [--threads 1|2] [--vtol m/s] [--atol rad] [--wtol rad/s] [--set key=value ...]
 #include <algorithm>
 #include <chrono>
@@ -22,6 +24,7 @@ namespace {
 
 bool g_coarse = false;
 bool g_profile = false;
+bool g_jfo_ratio = false;
 int g_threads = 0;  // --threads; 0 = RunJob's automatic choice
 // Tolerance overrides (--vtol, --atol, --wtol); 0 = the case's.
 double g_velocity_tolerance = 0.0, g_angle_tolerance = 0.0, g_angular_velocity_tolerance = 0.0;
@@ -156,6 +159,8 @@ int main(int argc, char** argv) try {
       g_coarse = true;
     } else if (arg == "--profile") {
       g_profile = true;
+    } else if (arg == "--jfo-ratio") {
+      g_jfo_ratio = true;
     } else if (arg == "--threads") {
       g_threads = std::atoi(value());
     } else if (arg == "--vtol") {
@@ -191,6 +196,20 @@ int main(int argc, char** argv) try {
       "evaluation (one per explicit step) = %.0f s, i.e. %.0f x our %.2f s\n",
       per_cycle_steps, explicit_steps, base.cycles, per_eval * 1e6, explicit_steps * per_eval,
       explicit_steps * per_eval / base.wall_time, base.wall_time);
+  if (g_jfo_ratio) {
+    std::vector<std::string> jfo_sets = sets;
+    jfo_sets.push_back("skirt.cavitation=jfo");
+    jfo_sets.push_back("big_end.cavitation=jfo");
+    const io::LoadedCase jfo_case = io::LoadCase("", jfo_sets);
+    const engine::RunResult jfo =
+        Run(jfo_case, model, rpm, s.relative_tolerance, s.position_tolerance, "jfo");
+    std::printf(
+        "JFO / Reynolds: wall time %.2f (%.2f s / %.2f s), steps %.2f, cycles %d / %d, per "
+        "cycle %.2f\n",
+        jfo.wall_time / base.wall_time, jfo.wall_time, base.wall_time,
+        static_cast<double>(jfo.stats.steps) / std::max(1L, base.stats.steps), jfo.cycles,
+        base.cycles, (jfo.wall_time / jfo.cycles) / (base.wall_time / base.cycles));
+  }
   if (!tight) return 0;
   const engine::RunResult ref =
       Run(loaded, model, rpm, s.relative_tolerance * 1e-2, s.position_tolerance * 1e-2, "tight");
