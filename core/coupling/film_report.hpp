@@ -18,6 +18,17 @@ struct OilAccount {
   double lost = 0.0;         ///< oil out through the edges (big end) / outflow nodes (skirt) [m^3]
   double squeezed = 0.0;     ///< time integral of the full film's storage rate [m^3]
   double void_volume = 0.0;  ///< void (gas) volume of the film at `time` [m^3]
+  /// Books an accepted step ending at t, the film content's backward-Euler step of length dt
+  /// from the last accepted one: the flows [m^3/s] of the film solved at t, its void volume.
+  void Book(double t, double dt, double supply_rate, double loss_rate, double squeeze_rate,
+            double void_now) {
+    kept = true;
+    time = t;
+    supplied += dt * supply_rate;
+    lost += dt * loss_rate;
+    squeezed += dt * squeeze_rate;
+    void_volume = void_now;
+  }
   /// The balance between this account and an earlier one, relative to the oil supplied between
   /// them (0 when none was).
   double BalanceSince(const OilAccount& earlier) const {

@@ -181,13 +181,7 @@ void LubricatedBigEndElement::OnStepAccepted(double t, const multibody::SystemSt
   const lubrication::BearingResult& r = solver_->SolveAt(kin.state, t);
   factorizations_ += r.stats.factorizations;
   ++solves_;
-  // The step's oil account: the film content's backward-Euler step from the last accepted one.
-  oil_.kept = true;
-  oil_.time = t;
-  oil_.supplied += dt * r.feed_flow;
-  oil_.lost += dt * r.side_flow;
-  oil_.squeezed += dt * r.squeeze_rate;
-  oil_.void_volume = r.void_volume;
+  oil_.Book(t, dt, r.feed_flow, r.side_flow, r.squeeze_rate, r.void_volume);
   solver_->AcceptStep(t);
   // Evaluations after this step from the new history; the fields are no longer the cache's.
   cache_valid_ = false;

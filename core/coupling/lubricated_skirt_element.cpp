@@ -140,14 +140,8 @@ void LubricatedSkirtElement::OnStepAccepted(double t, const multibody::SystemSta
   const lubrication::FilmHistory::Entry* from = solver_->history().Before(t);
   const double dt = from != nullptr ? t - from->time : 0.0;
   SolveAt(Kinematics(state.Body(BodyJ())).state);
-  // The step's oil account: the film content's backward-Euler step from the last accepted one.
   const lubrication::SkirtResult& r = solver_->result();
-  oil_.kept = true;
-  oil_.time = t;
-  oil_.supplied += dt * r.inflow;
-  oil_.lost += dt * r.outflow;
-  oil_.squeezed += dt * r.squeeze_rate;
-  oil_.void_volume = r.void_volume;
+  oil_.Book(t, dt, r.inflow, r.outflow, r.squeeze_rate, r.void_volume);
   solver_->AcceptStep(t);
   // Evaluations after this step from the new history; the fields are no longer the cache's.
   cache_valid_ = false;
