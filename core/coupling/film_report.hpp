@@ -3,6 +3,7 @@
 /// filled by the coupling elements and copied into the engine's samples. Knows nothing of the
 /// engine; the engine's crank-train sample holds one of each.
 #include <Eigen/Core>
+#include <algorithm>
 #include <cmath>
 
 namespace filmdyn::coupling {
@@ -13,6 +14,11 @@ namespace filmdyn::coupling {
 /// the film solver's round-off: the film neither creates nor destroys oil.
 struct OilAccount {
   bool kept = false;         ///< false: the joint's cavitation model does not conserve oil
+  /// The largest excursion of the film fraction outside [0, 1] at any accepted step so far
+  /// (ReynoldsStats::fraction_excess). Diagnostic: violent transients (a journal driven onto
+  /// the bearing wall in the start-up) can take it far above 1 at single steps while the film
+  /// at the output steps stays within [0, 1] (docs/validation/cavitation.md).
+  double fraction_excess = 0.0;
   double time = 0.0;         ///< of the last accepted step [s]
   double supplied = 0.0;     ///< oil in through the supply (big end) / inflow nodes (skirt) [m^3]
   double lost = 0.0;         ///< oil out through the edges (big end) / outflow nodes (skirt) [m^3]
@@ -21,8 +27,9 @@ struct OilAccount {
   /// Books an accepted step ending at t, the film content's backward-Euler step of length dt
   /// from the last accepted one: the flows [m^3/s] of the film solved at t, its void volume.
   void Book(double t, double dt, double supply_rate, double loss_rate, double squeeze_rate,
-            double void_now) {
+            double void_now, double excess) {
     kept = true;
+    fraction_excess = std::max(fraction_excess, excess);
     time = t;
     supplied += dt * supply_rate;
     lost += dt * loss_rate;
@@ -70,6 +77,9 @@ struct SkirtFilmSample {
   /// Oil entering / leaving the film through its boundary (skirt edges, relief edges) [m^3/s].
   double inflow = 0.0, outflow = 0.0;
   double wetted_fraction = 1.0;  ///< oil-covered share of the panels (SkirtResult) [-]
+  /// How far the reported film's fraction leaves [0, 1] (ReynoldsStats::fraction_excess); the
+  /// run ends when it exceeds kFractionTolerance.
+  double fraction_excess = 0.0;
   OilAccount oil;
 };
 
@@ -99,8 +109,12 @@ struct BearingFilmSample {
   /// Oil into the film through the feed (or the film-start line) and out through both edges
   /// (BearingResult::feed_flow, side_flow) [m^3/s].
   double supply_flow = 0.0, side_flow = 0.0;
+  double fraction_excess = 0.0;  ///< as SkirtFilmSample::fraction_excess
   OilAccount oil;
 };
+
+/// Largest excursion of a reported film fraction outside [0, 1] a run accepts.
+inline constexpr double kFractionTolerance = 1e-6;
 
 /// Implemented by the lubricated joint elements so that whoever samples a system can fill the
 /// film quantities without knowing their types. Called right after the element was evaluated at

@@ -181,7 +181,8 @@ void LubricatedBigEndElement::OnStepAccepted(double t, const multibody::SystemSt
   const lubrication::BearingResult& r = solver_->SolveAt(kin.state, t);
   factorizations_ += r.stats.factorizations;
   ++solves_;
-  oil_.Book(t, dt, r.feed_flow, r.side_flow, r.squeeze_rate, r.void_volume);
+  oil_.Book(t, dt, r.feed_flow, r.side_flow, r.squeeze_rate, r.void_volume,
+            r.stats.fraction_excess);
   solver_->AcceptStep(t);
   // Evaluations after this step from the new history; the fields are no longer the cache's.
   cache_valid_ = false;
@@ -227,6 +228,7 @@ void LubricatedBigEndElement::ReportFilm(SkirtFilmSample*, BearingFilmSample* be
   b.force_on_rod = -loads_.head<2>();
   b.friction_torque_journal = loads_[2];
   b.friction_torque_bearing = loads_[3];
+  b.fraction_excess = result_.stats.fraction_excess;
   b.supply_flow = result_.feed_flow;
   b.side_flow = result_.side_flow;
   b.oil = oil_;

@@ -141,7 +141,7 @@ void LubricatedSkirtElement::OnStepAccepted(double t, const multibody::SystemSta
   const double dt = from != nullptr ? t - from->time : 0.0;
   SolveAt(Kinematics(state.Body(BodyJ())).state);
   const lubrication::SkirtResult& r = solver_->result();
-  oil_.Book(t, dt, r.inflow, r.outflow, r.squeeze_rate, r.void_volume);
+  oil_.Book(t, dt, r.inflow, r.outflow, r.squeeze_rate, r.void_volume, r.stats.fraction_excess);
   solver_->AcceptStep(t);
   // Evaluations after this step from the new history; the fields are no longer the cache's.
   cache_valid_ = false;
@@ -178,6 +178,7 @@ void LubricatedSkirtElement::ReportFilm(SkirtFilmSample* skirt, BearingFilmSampl
   f.e0_rate = kin_.state.e0_dot;
   f.tilt_rate = kin_.state.gamma_dot;
   f.speed = kin_.state.piston_velocity;
+  f.fraction_excess = result_.stats.fraction_excess;
   f.inflow = result_.inflow;
   f.outflow = result_.outflow;
   f.wetted_fraction = result_.wetted_fraction;

@@ -8,6 +8,7 @@
 #include <numbers>
 #include <optional>
 #include <thread>
+#include <tuple>
 
 #if defined(__linux__)
 #include <sys/resource.h>
@@ -173,6 +174,16 @@ std::string FilmTrouble(const CrankTrainSample& s) {
         "piston skirt touches the liner (smallest gap {:.3g} um): the skirt film cannot carry "
         "the side force with this clearance/profile",
         s.skirt.min_gap * 1e6);
+  }
+  for (const auto& [present, excess, joint] :
+       {std::tuple{s.bearing.present, s.bearing.fraction_excess, "big-end"},
+        std::tuple{s.skirt.present, s.skirt.fraction_excess, "skirt"}}) {
+    if (present && excess > coupling::kFractionTolerance) {
+      return fmt::format(
+          "{} film fraction left [0, 1] by {:.3g} (more than {:g}): the mass-conserving "
+          "cavitation solve failed; refine the film mesh or tighten solver.relative_tolerance",
+          joint, excess, coupling::kFractionTolerance);
+    }
   }
   if (!std::isfinite(s.piston_lateral) || !std::isfinite(s.crank_torque) ||
       !std::isfinite(s.big_end_force_on_rod.norm())) {

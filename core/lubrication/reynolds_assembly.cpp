@@ -227,12 +227,16 @@ void ReynoldsFem::Assemble(const ReynoldsParams& params) {
     const double sum_g = g[0] + g[1] + g[2];
     const double shear_flow = 0.5 * params.u_diff * sigma * dphis * a / 3.0;
     const double wedge = jfo ? 0.0 : 0.5 * params.u_sum * dhds * a / 12.0;  // JFO: see below
+    // JFO: the squeeze term lumped (below), like the void's storage, so that a node's oil
+    // balance holds only its own cell's storage and a cavity cannot give away oil it lacks.
+    const double squeeze = jfo ? 0.0 : 1.0;
     for (int r = 0; r < 3; ++r) {
       const int node = e.node[r];
-      f_[node] -= wedge * (sum_c + phi_c_[node]) + shear_flow + a / 12.0 * (sum_g + g[r]);
+      f_[node] -= wedge * (sum_c + phi_c_[node]) + shear_flow + squeeze * a / 12.0 * (sum_g + g[r]);
     }
   }
   if (jfo) {
+    for (int k = 0; k < n; ++k) f_[k] -= lumped_area_[k] * phi_c_[k] * dhdt_[k];
     // JFO: the Couette transport is written as first-order upwind finite-volume face fluxes on
     // the dual cells, (|U|/2) w_k h_k (1 - r_k) from node k to its downstream neighbour, for the
     // full-film part (here) and the void part (matrix B in SolveJfo) alike. A central full-film
