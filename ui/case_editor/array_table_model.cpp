@@ -2,6 +2,7 @@
 
 #include <QBrush>
 #include <QColor>
+#include <algorithm>
 #include <cmath>
 
 #include "core/engine/case_schema.hpp"
@@ -21,6 +22,34 @@ ArrayTableModel::ArrayTableModel(CaseDocument* document, std::vector<ArrayColumn
       edit_name_(std::move(edit_name)) {
   connect(document_, &CaseDocument::caseChanged, this, &ArrayTableModel::refresh);
   refresh();
+}
+
+namespace {
+
+std::vector<ArrayColumn> SchemaColumns(const CaseListTable& table) {
+  std::vector<ArrayColumn> columns;
+  for (const engine::CaseField* field : table.columns) {
+    columns.push_back({CaseListColumnTitle(*field), field->display_scale,
+                       [field](engine::EngineCase& c) { return &field->list(c); }, field->path});
+  }
+  return columns;
+}
+
+}  // namespace
+
+ArrayTableModel::ArrayTableModel(CaseDocument* document, const CaseListTable& table,
+                                 QObject* parent)
+    : ArrayTableModel(
+          document, SchemaColumns(table), [key = table.key] { return key; },
+          table.columns.front()->symbol.empty()
+              ? table.title.toLower()
+              : QString::fromStdString(table.columns.front()->symbol),
+          parent) {}
+
+QString ArrayTableModel::issue() const {
+  const auto& issues = document_->issues();
+  const auto issue = issues.find(issue_key_());
+  return issue == issues.end() ? QString() : QString::fromStdString(issue->second);
 }
 
 std::vector<double>* ArrayTableModel::column(engine::EngineCase& c, int col) const {
@@ -79,6 +108,8 @@ bool ArrayTableModel::setData(const QModelIndex& index, const QVariant& value, i
   std::vector<double>* values = column(next, index.column());
   if (!values || index.row() >= int(values->size())) return false;
   const double si = ParseUserNumber(value.toString()) * columns_[size_t(index.column())].to_si;
+  const double old = (*values)[size_t(index.row())];
+  if (si == old || (std::isnan(si) && std::isnan(old))) return true;  // no empty undo step
   (*values)[size_t(index.row())] = si;
   document_->edit(next, tr("Edit %1").arg(edit_name_));
   return true;

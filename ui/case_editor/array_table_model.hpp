@@ -1,7 +1,9 @@
 #pragma once
-/// @file A table over parallel arrays of the case (skirt profile y/h, a pressure curve's angle and
-/// pressure), shown in display units. Edits become undoable document edits; the table's issue
-/// (core's message) tints every row and is the tooltip.
+/// @file A table over parallel arrays of the case, shown in display units: a list table of the
+/// case schema (CaseListTable: the skirt profile, a supply-pressure curve, the supply holes, ...;
+/// headers, units and tooltips from core's fields) or arrays outside it (a cylinder-pressure
+/// curve's angle and pressure). Edits become undoable document edits; the table's issue (core's
+/// message) tints every row and is the tooltip.
 #include <QAbstractTableModel>
 #include <QStringList>
 #include <functional>
@@ -9,6 +11,7 @@
 #include <vector>
 
 #include "core/engine/engine_case.hpp"
+#include "ui/case_editor/case_parameters.hpp"
 
 namespace filmdyn::ui {
 
@@ -29,10 +32,13 @@ class ArrayTableModel : public QAbstractTableModel {
   Q_OBJECT
 
  public:
-  /// issue_key(): the validation key of this table ("skirt.profile", "pressure_curves[2]").
+  /// issue_key(): the validation key of this table ("pressure_curves[2]").
   ArrayTableModel(CaseDocument* document, std::vector<ArrayColumn> columns,
                   std::function<std::string()> issue_key, QString edit_name,
                   QObject* parent = nullptr);
+  /// The schema's lists of `table`: one column per list (CaseListColumnTitle, its display scale
+  /// and tooltip), the table's key, the fields' symbol in the undo text ("Edit skirt profile").
+  ArrayTableModel(CaseDocument* document, const CaseListTable& table, QObject* parent = nullptr);
 
   int rowCount(const QModelIndex& parent = {}) const override;
   int columnCount(const QModelIndex& parent = {}) const override;
@@ -46,6 +52,8 @@ class ArrayTableModel : public QAbstractTableModel {
   void removeRowAt(int row);
   /// Re-reads everything (the array behind the columns changed, e.g. another curve selected).
   void refresh();
+  /// Core's message about this table now (empty when it is fine).
+  QString issue() const;
 
  private:
   std::vector<double>* column(engine::EngineCase& c, int col) const;

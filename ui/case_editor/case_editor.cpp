@@ -13,6 +13,7 @@
 #include <QLineSeries>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QScrollBar>
 #include <QSplitter>
 #include <QTabWidget>
 #include <QTableView>
@@ -20,7 +21,6 @@
 #include <QValueAxis>
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 #include "ui/case_editor/array_table_model.hpp"
 #include "ui/case_editor/case_document.hpp"
@@ -44,6 +44,21 @@ QTableView* MakeTable(QAbstractItemModel* model, QWidget* parent) {
   return table;
 }
 
+// Gives an array table the width of its row numbers, every (bold, when current) header and the
+// scroll bar, its columns sharing it; returns that width.
+int FitWidthToHeaders(QTableView* table) {
+  table->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
+  const QFontMetrics metrics = table->horizontalHeader()->fontMetrics();
+  int width = metrics.horizontalAdvance("0000") + 12 + 2 * table->frameWidth() +
+              table->verticalScrollBar()->sizeHint().width();
+  for (int col = 0; col < table->model()->columnCount(); ++col) {
+    const QString header = table->model()->headerData(col, Qt::Horizontal).toString();
+    width += std::max(80, metrics.horizontalAdvance(header) + 24);
+  }
+  table->setMinimumWidth(width);
+  return width;
+}
+
 QChart* MakeChart(const QString& x_title, const QString& y_title) {
   auto* chart = new QChart;
   chart->legend()->hide();
@@ -52,6 +67,7 @@ QChart* MakeChart(const QString& x_title, const QString& y_title) {
   auto* y = new QValueAxis;
   x->setTitleText(x_title);
   y->setTitleText(y_title);
+  x->setLabelFormat("%g");  // "135", not "135.0": room in a narrow chart
   chart->addAxis(x, Qt::AlignBottom);
   chart->addAxis(y, Qt::AlignLeft);
   return chart;
@@ -62,7 +78,81 @@ void FitAxes(QChart* chart, double x0, double x1, double y0, double y1) {
   if (!(y1 > y0)) y1 = y0 + 1;
   const double pad = 0.05 * (y1 - y0);
   chart->axes(Qt::Horizontal).first()->setRange(x0, x1);
-  chart->axes(Qt::Vertical).first()->setRange(y0 - pad, y1 + pad);
+  // Round ticks (a step of 1, 2, 2.5 or 5 × 10^k, at most six), a scale of values ≥ 0 from 0
+  // itself (its first tick exactly 0), labels with as many decimals as the step needs.
+  const double lo = y0 >= 0.0 ? std::max(0.0, y0 - pad) : y0 - pad;
+  const double hi = y1 + pad;
+  const double raw = (hi - lo) / 5.0;
+  const double magnitude = std::pow(10.0, std::floor(std::log10(raw)));
+  double step = 10.0 * magnitude;
+  for (double m : {1.0, 2.0, 2.5, 5.0}) {
+    if (m * magnitude >= raw * (1.0 - 1e-9)) {
+      step = m * magnitude;
+      break;
+    }
+  }
+  const double first = std::floor(lo / step + 1e-9) * step;
+  const double last = std::ceil(hi / step - 1e-9) * step;
+  auto* y = static_cast<QValueAxis*>(chart->axes(Qt::Vertical).first());
+  if (!std::isfinite(first) || !std::isfinite(last) || !(last > first)) {
+    y->setRange(lo, hi);  // values near the double range: no round scale
+    return;
+  }
+  y->setRange(first, last);
+  y->setTickCount(int(std::lround((last - first) / step)) + 1);
+  int decimals = 0;
+  while (decimals < 6 && std::abs(step * std::pow(10.0, decimals) -
+                                  std::round(step * std::pow(10.0, decimals))) > 1e-6) {
+    ++decimals;
+  }
+  y->setLabelFormat(QString("%.%1f").arg(decimals));
+}
+
+QString FieldLabel(const char* path) {
+  const engine::CaseField* field = engine::FindCaseField(path);
+  return field ? QString::fromStdString(field->label).toHtmlEscaped() : QString();
+}
+
+// What the editor says beside a list table's title; the fields' own words are in the tooltips.
+QString ListNote(const CaseListTable& table) {
+  const std::string& key = table.key;
+  if (key == "skirt.profile_y") {
+    return CaseEditor::tr("barrel drop vs. distance from the skirt top");
+  }
+  if (key == "skirt.ovality_alpha") {
+    return CaseEditor::tr("extra radial gap vs. angle from the thrust axis; no rows = round skirt");
+  }
+  if (key == "skirt.oil_film_positions") {
+    return CaseEditor::tr("feeds a starved skirt; no rows = the constant <i>%1</i>")
+        .arg(FieldLabel("skirt.oil_film"));
+  }
+  if (key == "big_end.supply_pressure_angles") {
+    return CaseEditor::tr("over the cycle; no rows = the constant <i>%1</i>")
+        .arg(FieldLabel("big_end.oil_feed_pressure"));
+  }
+  if (key == "big_end.supply_hole_angles") {
+    return CaseEditor::tr("one row per hole");
+  }
+  return {};
+}
+
+// A list chart's horizontal extent in display units: the skirt's length for its profile, the
+// field's own range where that is the natural frame (the ovality's half circle, the supply
+// curve's cycle); otherwise (false) the data's.
+bool ListChartXRange(const CaseListTable& table, const engine::EngineCase& c, double* x0,
+                     double* x1) {
+  const engine::CaseField& x = *table.columns.front();
+  if (table.key == "skirt.profile_y") {
+    *x0 = 0.0;
+    *x1 = c.skirt.length / x.display_scale;
+    return true;
+  }
+  if (table.key == "skirt.ovality_alpha" || table.key == "big_end.supply_pressure_angles") {
+    *x0 = x.range.lo / x.display_scale;
+    *x1 = x.range.hi / x.display_scale;
+    return std::isfinite(x.range.lo) && std::isfinite(x.range.hi);
+  }
+  return false;
 }
 
 }  // namespace
@@ -143,28 +233,71 @@ QWidget* CaseEditor::makeParameterPage(CaseGroup group) {
           });
   models_[group] = model;
   tables_[group] = table;
-  layout->addWidget(table);
+  // The group's number lists below its scalar rows, the rows keeping the room they need.
+  if (QWidget* lists = makeListRow(group, page)) {
+    auto* split = new QSplitter(Qt::Vertical, page);
+    split->setObjectName(QString("parameters_split_%1").arg(int(group)));
+    split->setChildrenCollapsible(false);
+    table->setParent(split);
+    split->addWidget(table);
+    lists->setParent(split);
+    split->addWidget(lists);
+    const int rows_height = table->horizontalHeader()->sizeHint().height() +
+                            model->rowCount() * table->verticalHeader()->defaultSectionSize() +
+                            2 * table->frameWidth();
+    split->setSizes({rows_height, std::max(240, 700 - rows_height)});
+    split->setStretchFactor(0, 0);
+    split->setStretchFactor(1, 1);
+    layout->addWidget(split, 1);
+  } else {
+    layout->addWidget(table);
+  }
   return page;
 }
 
-QWidget* CaseEditor::makeArrayBlock(const QString& title, ArrayTableModel* model,
-                                    const QString& table_name, QChart* chart, QWidget* parent) {
-  auto* block = new QWidget(parent);
-  auto* layout = new QVBoxLayout(block);
+QWidget* CaseEditor::makeListBlock(const CaseListTable& list, QWidget* parent) {
+  ListBlock block;
+  block.table = &list;
+  block.model = new ArrayTableModel(document_, list, this);
+  auto* widget = new QWidget(parent);
+  auto* layout = new QVBoxLayout(widget);
   layout->setContentsMargins(0, 0, 0, 0);
-  layout->addWidget(new QLabel(title, block));
-  auto* tables = new QSplitter(Qt::Horizontal, block);
-  QTableView* table = MakeTable(model, tables);
-  table->setObjectName(table_name);
-  auto* view = new QChartView(chart, tables);
-  view->setRenderHint(QPainter::Antialiasing);
-  tables->addWidget(table);
-  tables->addWidget(view);
-  tables->setStretchFactor(1, 2);
+  QString title = "<b>" + list.title.toHtmlEscaped() + "</b>";
+  if (const QString note = ListNote(list); !note.isEmpty()) title += " (" + note + ")";
+  auto* heading = new QLabel(title, widget);
+  heading->setWordWrap(true);
+  layout->addWidget(heading);
+  auto* tables = new QSplitter(Qt::Horizontal, widget);
+  tables->setChildrenCollapsible(false);
+  block.view = MakeTable(block.model, tables);
+  block.view->setObjectName(QString::fromStdString(list.key) + "_table");
+  const int table_width = FitWidthToHeaders(block.view);
+  tables->addWidget(block.view);
+  if (list.columns.size() == 2) {
+    const QString x = block.model->headerData(0, Qt::Horizontal, Qt::DisplayRole).toString();
+    const QString y = block.model->headerData(1, Qt::Horizontal, Qt::DisplayRole).toString();
+    block.chart = MakeChart(x, y);
+    auto* series = new QLineSeries;
+    series->setPointsVisible(true);
+    block.chart->addSeries(series);
+    for (auto* axis : block.chart->axes()) series->attachAxis(axis);
+    auto* view = new QChartView(block.chart, tables);
+    view->setRenderHint(QPainter::Antialiasing);
+    view->setMinimumWidth(160);
+    tables->addWidget(view);
+    // The table as narrow as its headers allow, the chart taking the rest.
+    tables->setStretchFactor(0, 0);
+    tables->setStretchFactor(1, 1);
+    tables->setSizes({table_width, 4 * table_width});
+  }
   layout->addWidget(tables, 1);
   auto* buttons = new QHBoxLayout;
-  auto* add = new QPushButton(tr("Insert row"), block);
-  auto* remove = new QPushButton(tr("Remove row"), block);
+  auto* add = new QPushButton(tr("Insert row"), widget);
+  auto* remove = new QPushButton(tr("Remove row"), widget);
+  add->setObjectName(QString::fromStdString(list.key) + "_insert");
+  remove->setObjectName(QString::fromStdString(list.key) + "_remove");
+  ArrayTableModel* model = block.model;
+  QTableView* table = block.view;
   connect(add, &QPushButton::clicked, this, [table, model] {
     const int row =
         table->currentIndex().isValid() ? table->currentIndex().row() : model->rowCount() - 1;
@@ -173,11 +306,67 @@ QWidget* CaseEditor::makeArrayBlock(const QString& title, ArrayTableModel* model
   connect(remove, &QPushButton::clicked, this, [table, model] {
     if (table->currentIndex().isValid()) model->removeRowAt(table->currentIndex().row());
   });
+  connect(table->selectionModel(), &QItemSelectionModel::currentChanged, this,
+          [this, model](const QModelIndex& current) {
+            if (current.isValid() && !model->issue().isEmpty()) emit statusMessage(model->issue());
+          });
   buttons->addWidget(add);
   buttons->addWidget(remove);
-  buttons->addStretch();
+  // Core's message about the table, as a parameter row's Note column shows its own.
+  block.issue = new QLabel(widget);
+  block.issue->setObjectName(QString::fromStdString(list.key) + "_issue");
+  block.issue->setTextFormat(Qt::PlainText);
+  block.issue->setWordWrap(true);
+  block.issue->setStyleSheet("color: #aa0000;");
+  block.issue->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+  buttons->addWidget(block.issue, 1);
   layout->addLayout(buttons);
-  return block;
+  lists_[list.key] = block;
+  updateListBlock(block);
+  return widget;
+}
+
+QWidget* CaseEditor::makeListRow(CaseGroup group, QWidget* parent) {
+  QSplitter* row = nullptr;
+  for (const CaseListTable& list : CaseListTables()) {
+    if (list.group != group || lists_.count(list.key)) continue;
+    if (!row) {
+      row = new QSplitter(Qt::Horizontal, parent);
+      row->setObjectName(QString("lists_%1").arg(int(group)));
+      row->setChildrenCollapsible(false);
+    }
+    row->addWidget(makeListBlock(list, row));
+    // A pair with its chart takes the room; a single list keeps to its table's width.
+    row->setStretchFactor(row->count() - 1, list.columns.size() > 1 ? 1 : 0);
+  }
+  return row;
+}
+
+const CaseEditor::ListBlock* CaseEditor::listBlock(const std::string& path) const {
+  const CaseListTable* list = FindCaseListTable(path);
+  if (!list) return nullptr;
+  const auto block = lists_.find(list->key);
+  return block == lists_.end() ? nullptr : &block->second;
+}
+
+ArrayTableModel* CaseEditor::listModel(const std::string& path) const {
+  const ListBlock* block = listBlock(path);
+  return block ? block->model : nullptr;
+}
+
+QTableView* CaseEditor::listTable(const std::string& path) const {
+  const ListBlock* block = listBlock(path);
+  return block ? block->view : nullptr;
+}
+
+QChart* CaseEditor::listChart(const std::string& path) const {
+  const ListBlock* block = listBlock(path);
+  return block ? block->chart : nullptr;
+}
+
+QLabel* CaseEditor::listIssue(const std::string& path) const {
+  const ListBlock* block = listBlock(path);
+  return block ? block->issue : nullptr;
 }
 
 QWidget* CaseEditor::makeProfilePage() {
@@ -185,38 +374,23 @@ QWidget* CaseEditor::makeProfilePage() {
   auto* page = new QSplitter(Qt::Vertical, this);
   page->setObjectName("skirt_page");
   auto* splitter = new QSplitter(Qt::Horizontal, page);
-  splitter->addWidget(makeParameterPage(CaseGroup::kSkirt));
 
-  // Right: the axial profile above the ovality, each as table + chart side by side.
+  // Right: the axial profile above the ovality and the skirt's other lists (the liner's oil
+  // film) side by side, each as table + chart (made first, so that none goes below the scalar
+  // rows on the left).
   auto* right = new QSplitter(Qt::Vertical, splitter);
-  profile_model_ = new ArrayTableModel(
-      document_,
-      {{tr("y [mm]"), 1e-3, [](engine::EngineCase& c) { return &c.skirt.profile_y; },
-        "skirt.profile_y"},
-       {tr("h [µm]"), 1e-6, [](engine::EngineCase& c) { return &c.skirt.profile_h; },
-        "skirt.profile_h"}},
-      [] { return std::string("skirt.profile"); }, tr("skirt profile"), this);
-  profile_chart_ = MakeChart(tr("y from skirt top [mm]"), tr("profile drop h [µm]"));
-  right->addWidget(makeArrayBlock(tr("<b>Skirt profile</b> (barrel drop h_skirt vs. distance "
-                                     "from the skirt top)"),
-                                  profile_model_, "profile_table", profile_chart_, right));
-  profile_table_ = right->findChild<QTableView*>("profile_table");
-  ovality_model_ = new ArrayTableModel(
-      document_,
-      {{tr("α [°]"), std::numbers::pi / 180.0,
-        [](engine::EngineCase& c) { return &c.skirt.ovality_alpha; }, "skirt.ovality_alpha"},
-       {tr("h [µm]"), 1e-6, [](engine::EngineCase& c) { return &c.skirt.ovality_h; },
-        "skirt.ovality_h"}},
-      [] { return std::string("skirt.ovality"); }, tr("skirt ovality"), this);
-  ovality_chart_ = MakeChart(tr("α from the thrust axis [°]"), tr("ovality gap h [µm]"));
-  right->addWidget(makeArrayBlock(tr("<b>Skirt ovality</b> (extra radial gap vs. angle from the "
-                                     "thrust axis; no rows = round skirt)"),
-                                  ovality_model_, "ovality_table", ovality_chart_, right));
-  ovality_table_ = right->findChild<QTableView*>("ovality_table");
+  right->setChildrenCollapsible(false);
+  right->addWidget(makeListBlock(*FindCaseListTable("skirt.profile_y"), right));
+  auto* lower = new QSplitter(Qt::Horizontal, right);
+  lower->setChildrenCollapsible(false);
+  lower->addWidget(makeListBlock(*FindCaseListTable("skirt.ovality_alpha"), lower));
+  if (QWidget* others = makeListRow(CaseGroup::kSkirt, lower)) lower->addWidget(others);
+  right->addWidget(lower);
+  splitter->addWidget(makeParameterPage(CaseGroup::kSkirt));
   splitter->addWidget(right);
   splitter->setStretchFactor(0, 2);
   splitter->setStretchFactor(1, 3);
-  splitter->setSizes({560, 840});
+  splitter->setSizes({530, 1070});
   skirt_calculator_ = new SkirtCalculatorPanel(document_, page);
   page->addWidget(skirt_calculator_);
   page->setStretchFactor(0, 1);
@@ -284,6 +458,7 @@ QWidget* CaseEditor::makePressurePage() {
       tr("pressure curve"), this);
   pressure_table_ = MakeTable(pressure_model_, splitter);
   pressure_table_->setObjectName("pressure_table");
+  const int table_width = FitWidthToHeaders(pressure_table_);
   pressure_chart_ =
       MakeChart(tr("crank angle [°CA] (360 = firing TDC)"), tr("cylinder pressure [MPa]"));
   pressure_chart_->legend()->show();
@@ -291,7 +466,9 @@ QWidget* CaseEditor::makePressurePage() {
   view->setRenderHint(QPainter::Antialiasing);
   splitter->addWidget(pressure_table_);
   splitter->addWidget(view);
-  splitter->setStretchFactor(1, 2);
+  splitter->setStretchFactor(0, 0);
+  splitter->setStretchFactor(1, 1);
+  splitter->setSizes({table_width, 4 * table_width});
   layout->addWidget(splitter, 1);
   return page;
 }
@@ -316,52 +493,7 @@ void CaseEditor::updateCurveSelector() {
 
 void CaseEditor::updateCharts() {
   const engine::EngineCase& c = document_->engineCase();
-  // Profile.
-  {
-    if (profile_chart_->series().isEmpty()) {
-      auto* s = new QLineSeries;
-      s->setPointsVisible(true);
-      profile_chart_->addSeries(s);
-      for (auto* axis : profile_chart_->axes()) s->attachAxis(axis);
-    }
-    auto* s = static_cast<QLineSeries*>(profile_chart_->series().first());
-    QList<QPointF> points;
-    double y0 = 0, y1 = 0;
-    for (size_t i = 0; i < c.skirt.profile_y.size() && i < c.skirt.profile_h.size(); ++i) {
-      const double h = c.skirt.profile_h[i] * 1e6;
-      if (std::isfinite(h) && std::isfinite(c.skirt.profile_y[i])) {
-        points << QPointF(c.skirt.profile_y[i] * 1e3, h);
-        y0 = points.size() == 1 ? h : std::min(y0, h);
-        y1 = points.size() == 1 ? h : std::max(y1, h);
-      }
-    }
-    s->replace(points);
-    FitAxes(profile_chart_, 0.0, c.skirt.length * 1e3, std::min(0.0, y0), y1);
-  }
-  // Ovality over the half skirt α ∈ [0°, 180°].
-  {
-    if (ovality_chart_->series().isEmpty()) {
-      auto* s = new QLineSeries;
-      s->setPointsVisible(true);
-      ovality_chart_->addSeries(s);
-      for (auto* axis : ovality_chart_->axes()) s->attachAxis(axis);
-    }
-    auto* s = static_cast<QLineSeries*>(ovality_chart_->series().first());
-    QList<QPointF> points;
-    double y1 = 0;
-    const auto& alpha = c.skirt.ovality_alpha;
-    const auto& gap = c.skirt.ovality_h;
-    for (size_t i = 0; i < alpha.size() && i < gap.size(); ++i) {
-      const double h = gap[i] * 1e6;
-      const double deg = alpha[i] * 180.0 / std::numbers::pi;
-      if (std::isfinite(h) && std::isfinite(deg)) {
-        points << QPointF(deg, h);
-        y1 = std::max(y1, h);
-      }
-    }
-    s->replace(points);
-    FitAxes(ovality_chart_, 0.0, 180.0, 0.0, y1);
-  }
+  for (const auto& [key, block] : lists_) updateListBlock(block);
   // Pressure curves: one series per speed, the edited one thicker.
   {
     const auto& curves = c.pressure_curves;
@@ -395,6 +527,38 @@ void CaseEditor::updateCharts() {
     }
     FitAxes(pressure_chart_, 0.0, 720.0, 0.0, p_max);
   }
+}
+
+void CaseEditor::updateListBlock(const ListBlock& block) {
+  const QString issue = block.model->issue();
+  block.issue->setText(issue);
+  block.issue->setToolTip(issue);
+  if (!block.chart) return;
+  // The pair in display units, the rows that are numbers.
+  auto& c = const_cast<engine::EngineCase&>(document_->engineCase());  // accessors only locate
+  const engine::CaseField& xf = *block.table->columns[0];
+  const engine::CaseField& yf = *block.table->columns[1];
+  const std::vector<double>& xs = xf.list(c);
+  const std::vector<double>& ys = yf.list(c);
+  QList<QPointF> points;
+  double x0 = 0, x1 = 0, y0 = 0, y1 = 0;
+  for (size_t i = 0; i < xs.size() && i < ys.size(); ++i) {
+    const double x = xs[i] / xf.display_scale;
+    const double y = ys[i] / yf.display_scale;
+    if (!std::isfinite(x) || !std::isfinite(y)) continue;
+    const bool first = points.isEmpty();
+    points << QPointF(x, y);
+    x0 = first ? x : std::min(x0, x);
+    x1 = first ? x : std::max(x1, x);
+    y0 = first ? y : std::min(y0, y);
+    y1 = first ? y : std::max(y1, y);
+  }
+  static_cast<QLineSeries*>(block.chart->series().first())->replace(points);
+  if (double a = 0, b = 0; ListChartXRange(*block.table, c, &a, &b)) {
+    x0 = a;
+    x1 = b;
+  }
+  FitAxes(block.chart, x0, x1, std::min(0.0, y0), y1);
 }
 
 void CaseEditor::addPressureCurve() {

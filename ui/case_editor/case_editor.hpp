@@ -1,15 +1,18 @@
 #pragma once
 /// @file The case editor: one tab per group of scalar inputs (tables with units; a choice such as
-/// a joint's cavitation model as a combo box of core's names in its row), the skirt
-/// profile and ovality (each table + chart) and the cylinder-pressure curves per speed (table +
-/// chart, CSV import and export), with the steady skirt calculator on the skirt tab. All edits go
-/// through the CaseDocument (undo, validation).
+/// a joint's cavitation model as a combo box of core's names in its row), the schema's number
+/// lists below them (CaseListTable: one table per list or pair of lists, a pair with its chart;
+/// the skirt profile and ovality beside the skirt's inputs) and the cylinder-pressure curves per
+/// speed (table + chart, CSV import and export), with the steady skirt calculator on the skirt
+/// tab. All edits go through the CaseDocument (undo, validation).
 #include <QWidget>
 #include <map>
+#include <string>
 
 #include "ui/case_editor/case_parameters.hpp"
 
 class QComboBox;
+class QLabel;
 class QTableView;
 class QTabWidget;
 class QLineSeries;
@@ -32,13 +35,21 @@ class CaseEditor : public QWidget {
 
   QTableView* parameterTable(CaseGroup group) const { return tables_.at(group); }
   ParameterTableModel* parameterModel(CaseGroup group) const { return models_.at(group); }
-  ArrayTableModel* profileModel() const { return profile_model_; }
-  ArrayTableModel* ovalityModel() const { return ovality_model_; }
+  /// The list table (CaseListTable) with a column at `path` ("skirt.profile_h",
+  /// "big_end.supply_pressure_values"): its model, view, chart (a table of two columns; else
+  /// nullptr) and the line beside its buttons showing core's message about it. nullptr for a path
+  /// that is no list.
+  ArrayTableModel* listModel(const std::string& path) const;
+  QTableView* listTable(const std::string& path) const;
+  QChart* listChart(const std::string& path) const;
+  QLabel* listIssue(const std::string& path) const;
+  ArrayTableModel* profileModel() const { return listModel("skirt.profile_y"); }
+  ArrayTableModel* ovalityModel() const { return listModel("skirt.ovality_alpha"); }
   ArrayTableModel* pressureModel() const { return pressure_model_; }
   QComboBox* modelSelector() const { return model_combo_; }
   QComboBox* curveSelector() const { return curve_combo_; }
-  QChart* profileChart() const { return profile_chart_; }
-  QChart* ovalityChart() const { return ovality_chart_; }
+  QChart* profileChart() const { return listChart("skirt.profile_y"); }
+  QChart* ovalityChart() const { return listChart("skirt.ovality_alpha"); }
   QChart* pressureChart() const { return pressure_chart_; }
   /// The steady skirt calculator below the skirt's inputs.
   SkirtCalculatorPanel* skirtCalculator() const { return skirt_calculator_; }
@@ -56,13 +67,26 @@ class CaseEditor : public QWidget {
   void statusMessage(const QString& message);
 
  private:
+  struct ListBlock {
+    const CaseListTable* table = nullptr;
+    ArrayTableModel* model = nullptr;
+    QTableView* view = nullptr;
+    QChart* chart = nullptr;
+    QLabel* issue = nullptr;
+  };
+
+  /// The group's scalar rows, with its list tables not placed elsewhere below them.
   QWidget* makeParameterPage(CaseGroup group);
   QWidget* makeProfilePage();
-  /// A titled table + chart side by side with Insert/Remove row buttons (profile, ovality).
-  QWidget* makeArrayBlock(const QString& title, ArrayTableModel* model, const QString& table_name,
-                          QChart* chart, QWidget* parent);
+  /// A list table's block: its title and a note, the table (and its chart beside it for two
+  /// columns), Insert/Remove row buttons and core's message about it in red.
+  QWidget* makeListBlock(const CaseListTable& table, QWidget* parent);
+  /// The list tables of `group` that have no block yet, side by side; nullptr if none.
+  QWidget* makeListRow(CaseGroup group, QWidget* parent);
+  const ListBlock* listBlock(const std::string& path) const;
   QWidget* makePressurePage();
   void updateCharts();
+  void updateListBlock(const ListBlock& block);
   void updateCurveSelector();
 
   CaseDocument* document_;
@@ -70,12 +94,7 @@ class CaseEditor : public QWidget {
   std::map<CaseGroup, QTableView*> tables_;
   std::map<CaseGroup, ParameterTableModel*> models_;
   QComboBox* model_combo_ = nullptr;
-  ArrayTableModel* profile_model_ = nullptr;
-  QTableView* profile_table_ = nullptr;
-  QChart* profile_chart_ = nullptr;
-  ArrayTableModel* ovality_model_ = nullptr;
-  QTableView* ovality_table_ = nullptr;
-  QChart* ovality_chart_ = nullptr;
+  std::map<std::string, ListBlock> lists_;  ///< by CaseListTable::key
   QComboBox* curve_combo_ = nullptr;
   ArrayTableModel* pressure_model_ = nullptr;
   QTableView* pressure_table_ = nullptr;

@@ -1,6 +1,9 @@
 #include "ui/case_editor/case_parameters.hpp"
 
 #include <QObject>
+#include <algorithm>
+#include <utility>
+
 #include "core/engine/case_schema.hpp"
 
 namespace filmdyn::ui {
@@ -44,7 +47,58 @@ std::vector<CaseParameter> MakeParameters() {
   return rows;
 }
 
+// The label split at its first ": " into the table's title and the column's name.
+std::pair<QString, QString> SplitListLabel(const engine::CaseField& field) {
+  const QString label = QString::fromStdString(field.label);
+  const qsizetype colon = label.indexOf(": ");
+  if (colon < 0) return {label, label};
+  return {label.left(colon), label.mid(colon + 2)};
+}
+
+std::vector<CaseListTable> MakeListTables() {
+  std::vector<CaseListTable> tables;
+  for (const engine::CaseField& field : engine::CaseSchema()) {
+    if (field.kind != engine::FieldKind::kNumberList) continue;
+    auto same = std::find_if(tables.begin(), tables.end(), [&field](const CaseListTable& t) {
+      const engine::CaseField& first = *t.columns.front();
+      return !field.symbol.empty() && first.group == field.group && first.symbol == field.symbol;
+    });
+    if (same != tables.end()) {
+      same->columns.push_back(&field);
+      continue;
+    }
+    tables.push_back({field.group, field.path, SplitListLabel(field).first, {&field}});
+  }
+  return tables;
+}
+
 }  // namespace
+
+const std::vector<CaseListTable>& CaseListTables() {
+  static const std::vector<CaseListTable> tables = MakeListTables();
+  return tables;
+}
+
+const CaseListTable* FindCaseListTable(const std::string& field) {
+  for (const CaseListTable& table : CaseListTables()) {
+    for (const engine::CaseField* column : table.columns) {
+      const std::string& path = column->path;
+      if (field.compare(0, path.size(), path) != 0) continue;
+      // The column itself, or one of its elements: "path.2", "path[2].crank_angle".
+      if (field.size() == path.size() || field[path.size()] == '.' || field[path.size()] == '[') {
+        return &table;
+      }
+    }
+  }
+  return nullptr;
+}
+
+QString CaseListColumnTitle(const engine::CaseField& field) {
+  const QString name = SplitListLabel(field).second;
+  const QString unit = QString::fromStdString(field.display_unit);
+  if (unit.isEmpty() || unit == QStringLiteral("–")) return name;
+  return QString("%1 [%2]").arg(name, unit);
+}
 
 const std::vector<CaseParameter>& CaseParameters() {
   static const std::vector<CaseParameter> parameters = MakeParameters();

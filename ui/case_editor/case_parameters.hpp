@@ -1,9 +1,10 @@
 #pragma once
-/// @file The scalar inputs of an EngineCase as the editor shows them: one row per number, integer
-/// or choice of core's case schema (core/engine/case_schema.hpp) with its dotted path, label,
-/// display unit, factor to SI, help and check. Nothing is retyped here: a field added to the
-/// schema appears in the editor with core's range or core's choices. The joints' models are the
-/// one exception: the run-model selector sets them (RunModels below), not a row.
+/// @file The inputs of an EngineCase as the editor shows them: one row per number, integer or
+/// choice of core's case schema (core/engine/case_schema.hpp) with its dotted path, label,
+/// display unit, factor to SI, help and check, and one table per number list or pair of lists
+/// (CaseListTable). Nothing is retyped here: a field added to the schema appears in the editor
+/// with core's range or core's choices. The joints' models are the one exception: the run-model
+/// selector sets them (RunModels below), not a row.
 #include <QString>
 #include <functional>
 #include <string>
@@ -41,6 +42,30 @@ struct CaseParameter {
 const std::vector<CaseParameter>& CaseParameters();
 /// The parameter with this dotted path, or nullptr.
 const CaseParameter* FindCaseParameter(const std::string& path);
+
+/// A table of the editor over the schema's number lists that go together: the lists of one group
+/// that core names by one symbol (CaseField::symbol, e.g. "skirt profile" for skirt.profile_y and
+/// skirt.profile_h) are the columns, in schema order, one row per index; a list with a symbol of
+/// its own is a table of one column. No rows in every column means none (core's default: a round
+/// skirt, a constant pressure or film). Core's complaints about any column are the table's issue.
+struct CaseListTable {
+  CaseGroup group;
+  /// Its key in the editor's issues (CaseIssues): the first column's path.
+  std::string key;
+  /// The part of the columns' labels before ": " ("Skirt profile", "Supply holes").
+  QString title;
+  std::vector<const engine::CaseField*> columns;
+};
+
+/// Every list table, in schema order.
+const std::vector<CaseListTable>& CaseListTables();
+/// The table with a column at this path, or holding the element a core field name points at
+/// ("skirt.profile_y.2", "big_end.supply_pressure_values[3].crank_angle"); nullptr for any other
+/// field.
+const CaseListTable* FindCaseListTable(const std::string& field);
+/// A column's header: its label after the table's title, and the display unit
+/// ("axial position y [mm]").
+QString CaseListColumnTitle(const engine::CaseField& field);
 
 /// The run models (Skirt-LBRBE, Only-Skirt, Only-LBRBE, Ideal; docs/case-file.md) and how they
 /// set the two joints.

@@ -7,6 +7,7 @@
 #include "core/engine/case_schema.hpp"
 #include "core/engine/pressure_curve.hpp"
 #include "core/io/case_file.hpp"
+#include "ui/case_editor/case_parameters.hpp"
 
 namespace filmdyn::ui {
 
@@ -16,8 +17,9 @@ std::string PressureCurveKey(size_t index) {
   return "pressure_curves[" + std::to_string(index) + "]";
 }
 
-// The editor's key of a core field path: tables are one key each ("skirt.profile",
-// "skirt.ovality", "pressure_curves[i]"), every other field its own path.
+// The editor's key of a core field path: tables are one key each (a list table's key, e.g.
+// "skirt.profile_y" for skirt.profile_h.3 too; "pressure_curves[i]"), every other field its own
+// path.
 std::string EditorKey(std::string key) {
   if (key.rfind("pressure_curves", 0) == 0) {
     // "pressure_curves.2.pressure" → "pressure_curves[2]".
@@ -25,10 +27,8 @@ std::string EditorKey(std::string key) {
     const size_t end = key.find_first_not_of("0123456789", digit);
     if (digit != std::string::npos)
       return PressureCurveKey(std::stoul(key.substr(digit, end - digit)));
-  } else if (key.rfind("skirt.profile", 0) == 0) {
-    return "skirt.profile";
-  } else if (key.rfind("skirt.ovality", 0) == 0) {
-    return "skirt.ovality";
+  } else if (const CaseListTable* table = FindCaseListTable(key)) {
+    return table->key;
   }
   return key;
 }

@@ -13,7 +13,8 @@
 namespace filmdyn::ui {
 
 /// Dotted path (as in case_parameters / the case file) → reason. Paths of tables use the table
-/// key: "skirt.profile" and "pressure_curves[i]" (i = index in engine_case.pressure_curves).
+/// key: a list table's (CaseListTable::key, e.g. "skirt.profile_y" for the whole profile) and
+/// "pressure_curves[i]" (i = index in engine_case.pressure_curves).
 using CaseIssues = std::map<std::string, std::string>;
 
 CaseIssues ValidateCase(const engine::EngineCase& engine_case);

@@ -3,7 +3,10 @@
 // skirt profile, ovality and pressure tables edit the arrays, E and ν per surface are edited in
 // GPa, pressure CSV export/import round-trips, a project round-trips through save/load (core's
 // case file, written atomically), and a choice (a joint's cavitation model) is picked in its
-// row's combo box as one undoable edit, saved and shown again on open.
+// row's combo box as one undoable edit, saved and shown again on open. Every number list of the
+// schema has its table on its tab: the big end's supply-pressure curve and supply-hole angles and
+// the skirt's liner oil film are edited in display units and stored in SI, undoable, with core's
+// message about a bad curve or hole beside the table, and no rows meaning none.
 #include <QAbstractItemView>
 #include <QAction>
 #include <QApplication>
@@ -13,6 +16,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QLineSeries>
+#include <QPushButton>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QStatusBar>
@@ -22,6 +26,7 @@
 #include <QUndoStack>
 #include <QWheelEvent>
 #include <QtTest>
+#include <algorithm>
 #include <cmath>
 
 #include "core/engine/case_schema.hpp"
@@ -30,6 +35,7 @@
 #include "ui/case_editor/case_document.hpp"
 #include "ui/case_editor/case_editor.hpp"
 #include "ui/case_editor/case_json.hpp"
+#include "ui/case_editor/case_parameters.hpp"
 #include "ui/case_editor/parameter_table_model.hpp"
 #include "ui/main_window.hpp"
 
@@ -57,6 +63,27 @@ void TypeIntoCell(QTableView* table, const QModelIndex& index, const QString& te
   QTRY_VERIFY(table->viewport()->findChild<QLineEdit*>() == nullptr ||
               !table->viewport()->findChild<QLineEdit*>()->isVisible());
 }
+
+// The Insert row / Remove row button of the list table with a column at `path`.
+QPushButton* ListButton(MainWindow& window, const std::string& path, const char* which) {
+  const filmdyn::ui::CaseListTable* list = filmdyn::ui::FindCaseListTable(path);
+  if (list == nullptr) return nullptr;
+  return window.caseEditor()->findChild<QPushButton*>(QString::fromStdString(list->key) + "_" +
+                                                      which);
+}
+
+// The case editor's tab (index in "case_tabs") that shows `widget`, or -1.
+int TabOf(MainWindow& window, QWidget* widget) {
+  auto* tabs = window.caseEditor()->findChild<QTabWidget*>("case_tabs");
+  for (int i = 0; i < tabs->count(); ++i) {
+    if (tabs->widget(i)->isAncestorOf(widget)) return i;
+  }
+  return -1;
+}
+
+bool Near(double a, double b, double tolerance) { return std::abs(a - b) <= tolerance; }
+
+constexpr double kDeg = M_PI / 180.0;
 
 QModelIndex ValueCell(MainWindow& window, CaseGroup group, const std::string& path) {
   ParameterTableModel* model = window.caseEditor()->parameterModel(group);
@@ -173,7 +200,7 @@ class TestCaseEditor : public QObject {
     QVERIFY(QTest::qWaitForWindowExposed(&window));
     auto* tabs = window.caseEditor()->findChild<QTabWidget*>("case_tabs");
     tabs->setCurrentIndex(3);
-    auto* profile = window.caseEditor()->findChild<QTableView*>("profile_table");
+    QTableView* profile = window.caseEditor()->listTable("skirt.profile_y");
     ArrayTableModel* model = window.caseEditor()->profileModel();
     QCOMPARE(model->rowCount(), 5);
     TypeIntoCell(profile, model->index(0, 1), "25");  // h at the skirt top [µm]
@@ -230,7 +257,7 @@ class TestCaseEditor : public QObject {
              QString("0.33"));
 
     // Ovality: empty by default (round skirt); rows in ° and µm, stored in rad and m.
-    auto* table = window.caseEditor()->findChild<QTableView*>("ovality_table");
+    QTableView* table = window.caseEditor()->listTable("skirt.ovality_h");
     QVERIFY(table != nullptr);
     ArrayTableModel* model = window.caseEditor()->ovalityModel();
     QCOMPARE(model->rowCount(), 0);
@@ -260,6 +287,277 @@ class TestCaseEditor : public QObject {
     QVERIFY(!window.runAction()->isEnabled());
     window.document()->undoStack()->undo();
     QVERIFY(window.runAction()->isEnabled());
+  }
+
+  void everyListOfTheSchemaHasItsTableOnItsTab() {
+    MainWindow window;
+    int lists = 0;
+    for (const filmdyn::engine::CaseField& field : filmdyn::engine::CaseSchema()) {
+      if (field.kind != filmdyn::engine::FieldKind::kNumberList) continue;
+      ++lists;
+      QTableView* table = window.caseEditor()->listTable(field.path);
+      ArrayTableModel* model = window.caseEditor()->listModel(field.path);
+      QVERIFY2(table != nullptr && model != nullptr && table->model() == model, field.path.c_str());
+      // On the tab of the field's group, titled by core's label and unit, explained by its
+      // schema row.
+      QCOMPARE(TabOf(window, table),
+               TabOf(window, window.caseEditor()->parameterTable(field.group)));
+      const filmdyn::ui::CaseListTable& list = *filmdyn::ui::FindCaseListTable(field.path);
+      const int col =
+          int(std::find(list.columns.begin(), list.columns.end(), &field) - list.columns.begin());
+      const QString header = model->headerData(col, Qt::Horizontal, Qt::DisplayRole).toString();
+      QCOMPARE(header, filmdyn::ui::CaseListColumnTitle(field));
+      QVERIFY2(header.endsWith("[" + QString::fromStdString(field.display_unit) + "]"),
+               qPrintable(header));
+      QVERIFY2(QString::fromStdString(field.label).endsWith(header.section(" [", 0, 0)),
+               qPrintable(header));
+      const QString tip = model->headerData(col, Qt::Horizontal, Qt::ToolTipRole).toString();
+      QVERIFY2(tip.contains("In the case file: " + QString::fromStdString(field.path)),
+               qPrintable(tip));
+      QVERIFY(ListButton(window, field.path, "insert") && ListButton(window, field.path, "remove"));
+    }
+    QVERIFY(lists >= 9);
+    // A pair is one table (with its chart), a single list a table of its own.
+    auto* editor = window.caseEditor();
+    QCOMPARE(editor->listModel("big_end.supply_pressure_angles"),
+             editor->listModel("big_end.supply_pressure_values"));
+    QCOMPARE(editor->listModel("big_end.supply_pressure_values")->columnCount(), 2);
+    QVERIFY(editor->listChart("big_end.supply_pressure_values") != nullptr);
+    QCOMPARE(editor->listModel("skirt.oil_film_positions"),
+             editor->listModel("skirt.oil_film_values"));
+    QCOMPARE(editor->listModel("big_end.supply_hole_angles")->columnCount(), 1);
+    QVERIFY(editor->listChart("big_end.supply_hole_angles") == nullptr);
+    QVERIFY(editor->listModel("skirt.oil_film") == nullptr);  // a scalar: its row
+    QVERIFY(editor->listModel("big_end.supply_pressure_values") !=
+            editor->listModel("big_end.supply_hole_angles"));
+  }
+
+  void bigEndSupplyPressureCurveIsEditedInItsTable() {
+    MainWindow window;
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    window.workspace()->setCurrentIndex(0);
+    auto* tabs = window.caseEditor()->findChild<QTabWidget*>("case_tabs");
+    tabs->setCurrentIndex(4);  // Big-end bearing
+    auto* editor = window.caseEditor();
+    QTableView* table = editor->listTable("big_end.supply_pressure_values");
+    ArrayTableModel* model = editor->listModel("big_end.supply_pressure_values");
+    QLabel* issue = editor->listIssue("big_end.supply_pressure_values");
+    QVERIFY(table != nullptr && model != nullptr && issue != nullptr);
+    QVERIFY(table->isVisible());
+    QCOMPARE(TabOf(window, table), 4);
+    // Core's columns: crank angle in °, gauge pressure in MPa; no rows = the constant pressure.
+    QCOMPARE(model->headerData(0, Qt::Horizontal, Qt::DisplayRole).toString(),
+             QString("crank angle [°]"));
+    QCOMPARE(model->headerData(1, Qt::Horizontal, Qt::DisplayRole).toString(),
+             QString("gauge pressure [MPa]"));
+    QCOMPARE(model->rowCount(), 0);
+    QVERIFY(issue->text().isEmpty());
+
+    // Shell holes and a curve over the cycle every 5 °CA at 0.3 MPa.
+    QVERIFY(window.document()->setChoice("big_end.supply", "shell_holes"));
+    auto c = window.document()->engineCase();
+    for (int a = 0; a < 720; a += 5) {
+      c.big_end.supply_pressure_angles.push_back(a * kDeg);
+      c.big_end.supply_pressure_values.push_back(0.3e6);
+    }
+    window.document()->edit(c, "supply curve");
+    QVERIFY2(window.document()->issues().empty(), qPrintable(window.document()->runBlocker()));
+    QCOMPARE(model->rowCount(), 144);
+    QCOMPARE(model->index(3, 0).data().toString(), QString("15"));
+    QCOMPARE(model->index(3, 1).data().toString(), QString("0.3"));
+    auto* series = static_cast<QLineSeries*>(
+        editor->listChart("big_end.supply_pressure_values")->series().first());
+    QCOMPARE(series->count(), 144);
+
+    // Typed in display units, stored in SI.
+    TypeIntoCell(table, model->index(3, 1), "0.45");
+    const auto& b = window.document()->engineCase().big_end;
+    QVERIFY(Near(b.supply_pressure_values[3], 0.45e6, 1e-6));
+    TypeIntoCell(table, model->index(3, 0), "12.5");
+    QVERIFY(Near(b.supply_pressure_angles[3], 12.5 * kDeg, 1e-15));
+    QVERIFY2(window.document()->issues().empty(), qPrintable(window.document()->runBlocker()));
+    QVERIFY(window.runAction()->isEnabled());
+    QCOMPARE(series->at(3), QPointF(12.5, 0.45));
+    QVERIFY(window.document()->undoStack()->undoText().contains("supply-pressure curve"));
+    // Undo restores each edit, redo repeats it.
+    window.document()->undoStack()->undo();
+    QVERIFY(Near(b.supply_pressure_angles[3], 15 * kDeg, 1e-15));
+    QCOMPARE(model->index(3, 0).data().toString(), QString("15"));
+    window.document()->undoStack()->undo();
+    QCOMPARE(b.supply_pressure_values[3], 0.3e6);
+    QCOMPARE(model->index(3, 1).data().toString(), QString("0.3"));
+    window.document()->undoStack()->redo();
+    QVERIFY(Near(b.supply_pressure_values[3], 0.45e6, 1e-6));
+    window.document()->undoStack()->undo();
+    window.document()->undoStack()->undo();  // the curve's set-up
+    QCOMPARE(model->rowCount(), 0);
+
+    // Two points 700 °CA apart, made with the table's buttons: core's message names the field,
+    // beside the table, in the cells' tooltips and as the run blocker.
+    QPushButton* insert = ListButton(window, "big_end.supply_pressure_values", "insert");
+    QPushButton* remove = ListButton(window, "big_end.supply_pressure_values", "remove");
+    QTest::mouseClick(insert, Qt::LeftButton);
+    QCOMPARE(model->rowCount(), 1);
+    table->setCurrentIndex(model->index(0, 0));
+    QTest::mouseClick(insert, Qt::LeftButton);
+    QCOMPARE(model->rowCount(), 2);
+    TypeIntoCell(table, model->index(0, 1), "0.3");
+    TypeIntoCell(table, model->index(1, 1), "0.3");
+    TypeIntoCell(table, model->index(1, 0), "700");
+    QCOMPARE(b.supply_pressure_angles.size(), size_t(2));
+    QVERIFY(Near(b.supply_pressure_angles[1], 700 * kDeg, 1e-15));
+    QCOMPARE(b.supply_pressure_values[1], 0.3e6);
+    QVERIFY2(issue->text().contains("big_end.supply_pressure_values"), qPrintable(issue->text()));
+    QVERIFY(issue->isVisible());
+    const QString tip = model->index(1, 0).data(Qt::ToolTipRole).toString();
+    QVERIFY2(tip.contains("big_end.supply_pressure_values"), qPrintable(tip));
+    QVERIFY(model->index(0, 1).data(Qt::BackgroundRole).isValid());
+    QVERIFY(!window.runAction()->isEnabled());
+    QVERIFY(window.findChild<QLabel*>("run_blocker")->text().contains("supply_pressure_values"));
+    if (const QString dir = qEnvironmentVariable("FILMDYN_SCREENSHOT_DIR"); !dir.isEmpty()) {
+      QVERIFY(window.grab().save(dir + "/case_big_end_supply_issue.png"));  // for review
+    }
+    // Both rows removed: both lists empty, the constant supply pressure again.
+    table->setCurrentIndex(model->index(1, 0));
+    QTest::mouseClick(remove, Qt::LeftButton);
+    table->setCurrentIndex(model->index(0, 0));
+    QTest::mouseClick(remove, Qt::LeftButton);
+    QCOMPARE(model->rowCount(), 0);
+    QVERIFY(b.supply_pressure_angles.empty() && b.supply_pressure_values.empty());
+    QVERIFY(window.document()->issues().empty());
+    QVERIFY(issue->text().isEmpty());
+    QVERIFY(window.runAction()->isEnabled());
+
+    // With FILMDYN_SCREENSHOT_DIR set: the tab with two holes and a varying curve, for review.
+    if (const QString dir = qEnvironmentVariable("FILMDYN_SCREENSHOT_DIR"); !dir.isEmpty()) {
+      window.resize(1600, 1000);
+      auto shown = window.document()->engineCase();
+      shown.big_end.supply_hole_angles = {0.0, M_PI};
+      for (int a = 0; a < 720; a += 10) {
+        shown.big_end.supply_pressure_angles.push_back(a * kDeg);
+        shown.big_end.supply_pressure_values.push_back(0.3e6 + 0.1e6 * std::sin(2 * a * kDeg));
+      }
+      window.document()->edit(shown, "supply for the picture");
+      QVERIFY(window.document()->issues().empty());
+      QTest::qWait(100);
+      QVERIFY(window.grab().save(dir + "/case_big_end_supply.png"));
+    }
+  }
+
+  void bigEndSupplyHoleAnglesAreEditedInTheirList() {
+    MainWindow window;
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    window.workspace()->setCurrentIndex(0);
+    window.caseEditor()->findChild<QTabWidget*>("case_tabs")->setCurrentIndex(4);
+    auto* editor = window.caseEditor();
+    QTableView* table = editor->listTable("big_end.supply_hole_angles");
+    ArrayTableModel* model = editor->listModel("big_end.supply_hole_angles");
+    QLabel* issue = editor->listIssue("big_end.supply_hole_angles");
+    QVERIFY(table != nullptr && table->isVisible());
+    QCOMPARE(model->columnCount(), 1);
+    QCOMPARE(model->headerData(0, Qt::Horizontal, Qt::DisplayRole).toString(),
+             QString("angles [°]"));
+    QCOMPARE(model->rowCount(), 1);  // the default's one hole on the rod axis
+    QCOMPARE(model->index(0, 0).data().toString(), QString("0"));
+    QVERIFY(window.document()->setChoice("big_end.supply", "shell_holes"));
+    const auto& b = window.document()->engineCase().big_end;
+
+    TypeIntoCell(table, model->index(0, 0), "90");
+    QVERIFY(Near(b.supply_hole_angles[0], M_PI / 2, 1e-15));
+    // A second hole, first a copy of the last one: it overlaps, core says which.
+    table->setCurrentIndex(model->index(0, 0));
+    QTest::mouseClick(ListButton(window, "big_end.supply_hole_angles", "insert"), Qt::LeftButton);
+    QCOMPARE(model->rowCount(), 2);
+    QVERIFY2(issue->text().contains("big_end.supply_hole_angles.1") &&
+                 issue->text().contains("overlaps"),
+             qPrintable(issue->text()));
+    QVERIFY(model->index(1, 0).data(Qt::BackgroundRole).isValid());
+    QVERIFY(!window.runAction()->isEnabled());
+    TypeIntoCell(table, model->index(1, 0), "-90");
+    QCOMPARE(b.supply_hole_angles.size(), size_t(2));
+    QVERIFY(Near(b.supply_hole_angles[1], -M_PI / 2, 1e-15));
+    QVERIFY(issue->text().isEmpty());
+    QVERIFY(window.runAction()->isEnabled());
+    // Undo: the copied angle again, then one hole.
+    window.document()->undoStack()->undo();
+    QVERIFY(Near(b.supply_hole_angles[1], M_PI / 2, 1e-15));
+    window.document()->undoStack()->undo();
+    QCOMPARE(model->rowCount(), 1);
+    // No hole at all: shell holes need one.
+    table->setCurrentIndex(model->index(0, 0));
+    QTest::mouseClick(ListButton(window, "big_end.supply_hole_angles", "remove"), Qt::LeftButton);
+    QCOMPARE(model->rowCount(), 0);
+    QVERIFY2(issue->text().contains("big_end.supply_hole_angles") &&
+                 issue->text().contains("at least one hole"),
+             qPrintable(issue->text()));
+    QVERIFY(!window.runAction()->isEnabled());
+    window.document()->undoStack()->undo();
+    QVERIFY(window.runAction()->isEnabled());
+  }
+
+  void skirtLinerOilFilmIsEditedInItsTable() {
+    MainWindow window;
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    window.workspace()->setCurrentIndex(0);
+    window.caseEditor()->findChild<QTabWidget*>("case_tabs")->setCurrentIndex(3);
+    auto* editor = window.caseEditor();
+    QTableView* table = editor->listTable("skirt.oil_film_values");
+    ArrayTableModel* model = editor->listModel("skirt.oil_film_values");
+    QLabel* issue = editor->listIssue("skirt.oil_film_values");
+    QVERIFY(table != nullptr && table->isVisible());
+    QCOMPARE(TabOf(window, table), 3);
+    QCOMPARE(model->headerData(0, Qt::Horizontal, Qt::DisplayRole).toString(),
+             QString("position [mm]"));
+    QCOMPARE(model->headerData(1, Qt::Horizontal, Qt::DisplayRole).toString(),
+             QString("thickness [µm]"));
+    QCOMPARE(model->rowCount(), 0);  // the constant skirt.oil_film
+    const auto& s = window.document()->engineCase().skirt;
+
+    QTest::mouseClick(ListButton(window, "skirt.oil_film_values", "insert"), Qt::LeftButton);
+    QCOMPARE(model->rowCount(), 1);
+    // A film of 0 µm is not allowed: core's range, beside the table.
+    QVERIFY2(issue->text().contains("skirt.oil_film_values"), qPrintable(issue->text()));
+    QVERIFY(!window.runAction()->isEnabled());
+    TypeIntoCell(table, model->index(0, 1), "8");
+    QVERIFY(Near(s.oil_film_values[0], 8e-6, 1e-18));
+    QVERIFY(issue->text().isEmpty());
+    table->setCurrentIndex(model->index(0, 0));
+    QTest::mouseClick(ListButton(window, "skirt.oil_film_values", "insert"), Qt::LeftButton);
+    // The copy of the last row repeats its position: positions must increase.
+    QVERIFY2(issue->text().contains("skirt.oil_film_positions.1"), qPrintable(issue->text()));
+    TypeIntoCell(table, model->index(1, 0), "30");
+    TypeIntoCell(table, model->index(1, 1), "3.5");
+    QCOMPARE(s.oil_film_positions.size(), size_t(2));
+    QVERIFY(Near(s.oil_film_positions[1], 0.03, 1e-15));
+    QVERIFY(Near(s.oil_film_values[1], 3.5e-6, 1e-18));
+    QVERIFY(window.document()->issues().empty());
+    QVERIFY(window.runAction()->isEnabled());
+    auto* series =
+        static_cast<QLineSeries*>(editor->listChart("skirt.oil_film_values")->series().first());
+    QCOMPARE(series->count(), 2);
+    QVERIFY(Near(series->at(1).x(), 30.0, 1e-9) && Near(series->at(1).y(), 3.5, 1e-9));
+    // Undo restores the thickness, then the position.
+    window.document()->undoStack()->undo();
+    QVERIFY(Near(s.oil_film_values[1], 8e-6, 1e-18));
+    window.document()->undoStack()->undo();
+    QCOMPARE(s.oil_film_positions[1], 0.0);
+    // Saved and read back by core as the table.
+    window.document()->undoStack()->redo();
+    window.document()->undoStack()->redo();
+    const auto back =
+        filmdyn::io::CaseFromJson(filmdyn::io::CaseToJson(window.document()->engineCase()));
+    QCOMPARE(back.skirt.oil_film_positions, s.oil_film_positions);
+    QCOMPARE(back.skirt.oil_film_values, s.oil_film_values);
+
+    // With FILMDYN_SCREENSHOT_DIR set: the skirt tab with the table, for review.
+    if (const QString dir = qEnvironmentVariable("FILMDYN_SCREENSHOT_DIR"); !dir.isEmpty()) {
+      window.resize(1600, 1000);
+      QTest::qWait(100);
+      QVERIFY(window.grab().save(dir + "/case_skirt_oil_film.png"));
+    }
   }
 
   void pressureCsvExportImportRoundTrips() {

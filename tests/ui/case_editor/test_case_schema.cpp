@@ -1,14 +1,16 @@
 // The case schema is the one definition of every case field: each scalar field round-trips
 // through the case file, `--set` and the GUI's editor cell, every list element through the file,
 // every choice (but the joints' models, which the run-model selector sets) through its row of the
-// editor, and at each end of each field's range (and just beyond it) the GUI accepts exactly what
-// core's case reader accepts.
+// editor, every list is a column of exactly one editor table (a pair core names by one symbol
+// being one table) whose key carries core's complaints about it, and at each end of each field's
+// range (and just beyond it) the GUI accepts exactly what core's case reader accepts.
 #include <QApplication>
 #include <QUndoStack>
 #include <QtTest>
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <map>
 
 #include "core/base/input_error.hpp"
 #include "core/engine/case_schema.hpp"
@@ -209,6 +211,71 @@ class TestCaseSchema : public QObject {
       engine::EngineCase a = c, b = back;
       QVERIFY2(field.list(a) == field.list(b), field.path.c_str());
     }
+  }
+
+  void everyListIsAColumnOfOneEditorTable() {
+    std::map<std::string, int> columns;
+    for (const ui::CaseListTable& table : ui::CaseListTables()) {
+      QVERIFY(!table.columns.empty());
+      QCOMPARE(table.key, table.columns.front()->path);
+      QVERIFY(!table.title.isEmpty());
+      for (const engine::CaseField* field : table.columns) {
+        QCOMPARE(field->kind, engine::FieldKind::kNumberList);
+        QCOMPARE(field->group, table.group);
+        QVERIFY2(QString::fromStdString(field->label).startsWith(table.title), field->path.c_str());
+        ++columns[field->path];
+        // The column, an element of it, a pressure curve's point: all the table's.
+        QCOMPARE(ui::FindCaseListTable(field->path), &table);
+        QCOMPARE(ui::FindCaseListTable(field->path + ".3"), &table);
+        QCOMPARE(ui::FindCaseListTable(field->path + "[3].crank_angle"), &table);
+      }
+    }
+    for (const engine::CaseField& field : engine::CaseSchema()) {
+      if (field.kind == engine::FieldKind::kNumberList) {
+        QVERIFY2(columns[field.path] == 1, field.path.c_str());
+      } else {
+        QVERIFY2(ui::FindCaseListTable(field.path) == nullptr, field.path.c_str());
+      }
+    }
+    // The pairs and the single list, in schema order.
+    const std::vector<std::vector<std::string>> expected = {
+        {"skirt.oil_film_positions", "skirt.oil_film_values"},
+        {"skirt.profile_y", "skirt.profile_h"},
+        {"skirt.ovality_alpha", "skirt.ovality_h"},
+        {"big_end.supply_pressure_angles", "big_end.supply_pressure_values"},
+        {"big_end.supply_hole_angles"}};
+    QCOMPARE(ui::CaseListTables().size(), expected.size());
+    for (size_t t = 0; t < expected.size(); ++t) {
+      const ui::CaseListTable& table = ui::CaseListTables()[t];
+      QCOMPARE(table.columns.size(), expected[t].size());
+      for (size_t k = 0; k < expected[t].size(); ++k) {
+        QCOMPARE(table.columns[k]->path, expected[t][k]);
+      }
+    }
+    QCOMPARE(ui::CaseListTables()[3].title, QString("Supply pressure curve"));
+    QCOMPARE(ui::CaseListColumnTitle(*engine::FindCaseField("big_end.supply_pressure_values")),
+             QString("gauge pressure [MPa]"));
+    QVERIFY(ui::FindCaseListTable("skirt.oil_film") == nullptr);  // the scalar beside the table
+    QVERIFY(ui::FindCaseListTable("skirt.profile") == nullptr);
+
+    // Core's complaints about a list are the table's issue, naming the field.
+    engine::EngineCase c = DefaultCase();
+    c.big_end.supply = lubrication::OilFeedKind::kShellHoles;
+    c.big_end.supply_pressure_angles = {0.0, 700.0 * M_PI / 180.0};
+    c.big_end.supply_pressure_values = {3e5, 3e5};
+    ui::CaseIssues issues = ui::ValidateCase(c);
+    QCOMPARE(issues.size(), size_t(1));
+    QCOMPARE(issues.begin()->first, std::string("big_end.supply_pressure_angles"));
+    QVERIFY2(issues.begin()->second.find("big_end.supply_pressure_values") != std::string::npos,
+             issues.begin()->second.c_str());
+    c = DefaultCase();
+    c.skirt.oil_film_positions = {0.0};
+    c.skirt.oil_film_values = {0.0};
+    issues = ui::ValidateCase(c);
+    QCOMPARE(issues.size(), size_t(1));
+    QCOMPARE(issues.begin()->first, std::string("skirt.oil_film_positions"));
+    QVERIFY2(issues.begin()->second.find("skirt.oil_film_values.0") != std::string::npos,
+             issues.begin()->second.c_str());
   }
 
   void guiAndCoreAgreeAtEveryBoundary() {

@@ -1,8 +1,9 @@
 // The whole main window on a real X server after real runs (core's run job: Ideal model at 6000
 // and 4000 rpm overlaid, then a coupled Skirt-LBRBE run with its pressure fields): every page
 // draws, the plots hold both runs, the run table compares them; a run with JFO cavitation on the
-// big end (picked in the case editor) shows its fluid fraction. With FILMDYN_SCREENSHOT_DIR set it
-// also saves the pictures used in docs/ (scripts/screenshots.sh).
+// big end (picked in the case editor) shows its fluid fraction; the big-end tab shows its supply
+// tables (holes, supply-pressure curve) below the rows. With FILMDYN_SCREENSHOT_DIR set it also
+// saves the pictures used in docs/ (scripts/screenshots.sh).
 #include <QAction>
 #include <QComboBox>
 #include <QDir>
@@ -15,7 +16,9 @@
 #include <QTabWidget>
 #include <QTableView>
 #include <QtTest>
+#include <cmath>
 
+#include "ui/case_editor/array_table_model.hpp"
 #include "ui/case_editor/case_document.hpp"
 #include "ui/case_editor/case_editor.hpp"
 #include "ui/case_editor/case_parameters.hpp"
@@ -161,8 +164,25 @@ class TestMainWindowAfterRun : public QObject {
       QTest::keyClick(combo, Qt::Key_Down);  // "reynolds" → "jfo"
       QCOMPARE(window.document()->engineCase().big_end.cavitation,
                filmdyn::lubrication::CavitationModel::kJfo);
-      QTest::qWait(100);
-      Save(&window, "case_big_end_cavitation.png");
+      // For the picture, the supply tables below the rows filled: two shell holes and a
+      // supply-pressure curve over the cycle (undone: the run keeps the paper's film start).
+      {
+        auto shown = window.document()->engineCase();
+        shown.big_end.supply = filmdyn::lubrication::OilFeedKind::kShellHoles;
+        shown.big_end.supply_hole_angles = {0.0, M_PI};
+        for (int a = 0; a < 720; a += 10) {
+          const double phi = a * M_PI / 180.0;
+          shown.big_end.supply_pressure_angles.push_back(phi);
+          shown.big_end.supply_pressure_values.push_back(0.3e6 + 0.05e6 * std::sin(2.0 * phi));
+        }
+        window.document()->edit(shown, "supply for the picture");
+        QVERIFY(window.document()->issues().empty());
+        QVERIFY(window.caseEditor()->listModel("big_end.supply_pressure_values")->rowCount() == 72);
+        QTest::qWait(100);
+        Save(&window, "case_big_end_cavitation.png");
+        window.document()->undoStack()->undo();
+        QVERIFY(window.document()->engineCase().big_end.supply_pressure_angles.empty());
+      }
       QVERIFY(window.runAction()->isEnabled());
       window.runAction()->trigger();
       QVERIFY(finished.wait(400000));
