@@ -389,7 +389,7 @@ class TestCli : public QObject {
     const Result result = Run({"validate", "--suite", "nope"});
     QCOMPARE(result.exit_code, 2);
     QVERIFY(result.err.contains("--suite = nope"));
-    QVERIFY(result.err.contains("lubrication, multibody"));
+    QVERIFY(result.err.contains("lubrication, cavitation, multibody"));
   }
 
   // The parser itself, in process.
