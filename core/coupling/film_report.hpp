@@ -6,6 +6,11 @@
 #include <algorithm>
 #include <cmath>
 
+namespace filmdyn::lubrication {
+struct ReynoldsStats;
+enum class CavitationModel;
+}  // namespace filmdyn::lubrication
+
 namespace filmdyn::coupling {
 
 /// A mass-conserving (JFO) film's oil account, updated at every accepted time step of the
@@ -13,7 +18,7 @@ namespace filmdyn::coupling {
 /// Between any two accounts, (supplied - lost) - (squeezed - change of void_volume) is zero to
 /// the film solver's round-off: the film neither creates nor destroys oil.
 struct OilAccount {
-  bool kept = false;         ///< false: the joint's cavitation model does not conserve oil
+  bool kept = false;  ///< false: the joint's cavitation model does not conserve oil
   /// The largest excursion of the film fraction outside [0, 1] at any accepted step so far
   /// (ReynoldsStats::fraction_excess). Diagnostic: violent transients (a journal driven onto
   /// the bearing wall in the start-up) can take it far above 1 at single steps while the film
@@ -102,9 +107,9 @@ struct BearingFilmSample {
   /// Asperity part of fpl: fpl · contact_friction_force / friction_force (0 without friction),
   /// so that the two parts of the loss add up to fpl exactly [W].
   double contact_fpl = 0.0;
-  Eigen::Vector2d force_on_rod = Eigen::Vector2d::Zero();        ///< film (crank pin) → rod [N]
-  double friction_torque_journal = 0.0;                          ///< on the crank [N·m]
-  double friction_torque_bearing = 0.0;                          ///< on the rod [N·m]
+  Eigen::Vector2d force_on_rod = Eigen::Vector2d::Zero();  ///< film (crank pin) → rod [N]
+  double friction_torque_journal = 0.0;                    ///< on the crank [N·m]
+  double friction_torque_bearing = 0.0;                    ///< on the rod [N·m]
   double power = 0.0;  ///< power of the film on crank + rod, F·ė + T_j ω_j + T_b ω_b [W] (≤ 0)
   /// Oil into the film through the feed (or the film-start line) and out through both edges
   /// (BearingResult::feed_flow, side_flow) [m^3/s].
@@ -115,6 +120,13 @@ struct BearingFilmSample {
 
 /// Largest excursion of a reported film fraction outside [0, 1] a run accepts.
 inline constexpr double kFractionTolerance = 1e-6;
+
+/// A film solve that did not converge is never used as a force: throws
+/// multibody::EvaluationFailure naming the joint, the status and the iterations, so that the
+/// integrator retries the step smaller (the solve usually converges closer to the last accepted
+/// state) and names this failure if it gives up.
+void RequireConvergedFilm(const lubrication::ReynoldsStats& stats, const char* joint,
+                          lubrication::CavitationModel model);
 
 /// Implemented by the lubricated joint elements so that whoever samples a system can fill the
 /// film quantities without knowing their types. Called right after the element was evaluated at

@@ -93,6 +93,7 @@ Eigen::Vector4d LubricatedBigEndElement::Loads(const Eigen::Matrix<double, 6, 1>
   factorizations_ += solver_->SolveAt(kin->state, eval_time_).stats.factorizations;
   ++solves_;
   const lubrication::BearingResult& r = solver_->result();
+  RequireConvergedFilm(r.stats, "big-end", solver_->config().solver.cavitation);
   Eigen::Vector4d g(r.force_x, r.force_y, r.friction_torque_journal, r.friction_torque_bearing);
   const double over = kin->eps_true - kEpsMax;
   if (over > 0.0) {  // contact penalty along −n
@@ -184,6 +185,7 @@ void LubricatedBigEndElement::OnStepAccepted(double t, const multibody::SystemSt
     const BigEndKinematics kin = Kinematics(state.Body(BodyI()), state.Body(BodyJ()));
     factorizations_ += solver_->SolveAt(kin.state, t).stats.factorizations;
     ++solves_;
+    RequireConvergedFilm(solver_->result().stats, "big-end", solver_->config().solver.cavitation);
   }
   const lubrication::BearingResult& r = solver_->result();
   oil_.Book(t, dt, r.feed_flow, r.side_flow, r.squeeze_rate, r.void_volume,

@@ -64,6 +64,7 @@ SkirtKinematics LubricatedSkirtElement::Kinematics(const BodyState& piston) cons
 void LubricatedSkirtElement::SolveAt(const lubrication::SkirtState& state) {
   factorizations_ += solver_->SolveAt(state, eval_time_).stats.factorizations;
   ++solves_;
+  RequireConvergedFilm(solver_->result().stats, "skirt", solver_->config().solver.cavitation);
 }
 
 Eigen::Vector3d LubricatedSkirtElement::Generalised(const lubrication::SkirtResult& r) const {

@@ -3,6 +3,7 @@
 /// gravity, the gas force, and the lubricated clearance joints (which the paper models as
 /// "force constraints" instead of kinematic ones, §3).
 #include <Eigen/Dense>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,14 @@ struct ForceJacobian {
     dq.setZero(num_coordinates, num_coordinates);
     dv.setZero(num_coordinates, num_coordinates);
   }
+};
+
+/// An evaluation that failed at a trial state in a way a smaller step may cure (e.g. a film
+/// solve that did not converge there): the integrator retries the step smaller and, when it gives
+/// up, reports this message with its own. The message names the element and the failure.
+class EvaluationFailure : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
 };
 
 class ForceElement {

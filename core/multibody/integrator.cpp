@@ -24,6 +24,7 @@ struct Integrator::Impl {
   int n = 0;  // coordinates
   std::exception_ptr error;
   std::string cvode_message;
+  std::string last_failure;  // the last EvaluationFailure CVODE recovered from (or not)
   SystemState scratch;
   SystemState accepted;  // the end of the last accepted step (AdvanceTo, step by step)
 
@@ -50,6 +51,9 @@ struct Integrator::Impl {
       Eigen::Map<Eigen::VectorXd>(out, self->n) = self->scratch.v;
       Eigen::Map<Eigen::VectorXd>(out + self->n, self->n) = eval.acceleration;
       return eval.acceleration.allFinite() ? 0 : 1;  // recoverable: CVODE retries smaller
+    } catch (const EvaluationFailure& failure) {
+      self->last_failure = failure.what();
+      return 1;
     } catch (...) {
       self->error = std::current_exception();
       return -1;
@@ -73,6 +77,9 @@ struct Integrator::Impl {
         }
       }
       return 0;
+    } catch (const EvaluationFailure& failure) {
+      self->last_failure = failure.what();
+      return 1;  // recoverable: CVODE retries the step smaller
     } catch (...) {
       self->error = std::current_exception();
       return -1;
@@ -106,8 +113,9 @@ struct Integrator::Impl {
 
   void Check(int flag, const char* what) const {
     if (flag < 0)
-      throw std::runtime_error(std::string("CVODE ") + what + " failed (" + std::to_string(flag) +
-                               ") " + cvode_message);
+      throw std::runtime_error(
+          std::string("CVODE ") + what + " failed (" + std::to_string(flag) + ") " + cvode_message +
+          (last_failure.empty() ? "" : "; the last failed evaluation: " + last_failure));
   }
 };
 
@@ -151,6 +159,7 @@ SystemState Integrator::AdvanceTo(double t_out) {
   Impl& m = *impl_;
   double t_reached = t_;
   m.error = nullptr;
+  m.last_failure.clear();
   if (!m.system->WantsAcceptedSteps()) {
     const int flag = CVode(m.cvode, t_out, m.y, &t_reached, CV_NORMAL);
     if (m.error) std::rethrow_exception(m.error);

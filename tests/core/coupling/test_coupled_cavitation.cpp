@@ -2,15 +2,18 @@
 // oil account over a cycle (supply − side leakage − change of stored oil = 0 to round-off), its
 // film fraction stays in [0, 1], the supply flow follows a supply-pressure curve through crank-pin
 // holes, both joints together keep their accounts, and bad supply input is refused naming the
-// field. The oscillatory squeeze benchmark and the starved skirt are in the lubrication and
-// skirt-calculator suites; docs/validation/cavitation.md has the figures.
+// field; a film solve that does not converge is never used: the run ends naming the joint, with
+// what was computed kept. The oscillatory squeeze benchmark and the starved skirt are in the
+// lubrication and skirt-calculator suites; docs/validation/cavitation.md has the figures.
 #include <QtTest>
 
 #include <cmath>
 #include <numbers>
 
 #include "core/base/input_error.hpp"
+#include "core/coupling/lubricated_big_end_element.hpp"
 #include "core/engine/case_schema.hpp"
+#include "core/engine/film_joints.hpp"
 #include "core/engine/run_job.hpp"
 #include "core/io/case_file.hpp"
 #include "core/io/resources.hpp"
@@ -167,6 +170,33 @@ class TestCoupledCavitation : public QObject {
               io::LoadCaseText(io::ReadResource("cases/default.json").value(), "default",
                                {"big_end.cavitation=elrod"});
             }).contains("\"reynolds\" or \"jfo\""));
+  }
+
+  // A big end whose mass-conserving solve may take one iteration only cannot converge where its
+  // cavitated set moves: the integrator retries smaller steps, then gives up, and the run ends
+  // failed, naming the joint's film solve and where (here at the very first evaluation).
+  void aFilmSolveThatDoesNotConvergeEndsTheRunNamingTheJoint() {
+    engine::EngineCase c = CoarseCase();
+    c.solver.max_cycles = 1;
+    engine::RunConfig config = Config(c, engine::Model::kOnlyLbrbe);
+    config.factories.big_end = [](const engine::EngineCase& ec,
+                                  const engine::CrankTrainLayout& layout)
+        -> std::unique_ptr<multibody::JointForceElement> {
+      lubrication::BearingConfig bc = engine::BearingConfigFromCase(ec);
+      bc.solver.max_iterations = 1;
+      coupling::BigEndMounting mount;
+      mount.journal_point = layout.crank_pin;
+      mount.bearing_point = layout.rod_big_end;
+      return std::make_unique<coupling::LubricatedBigEndElement>(std::move(bc), layout.crank,
+                                                                 layout.rod, mount);
+    };
+    const engine::RunResult r = engine::RunJob(config);
+    qInfo("%s: %s", engine::StatusName(r.status).c_str(), r.message.c_str());
+    QCOMPARE(r.status, engine::RunStatus::kFailed);
+    const QString message = QString::fromStdString(r.message);
+    QVERIFY2(message.contains("big-end film solve not-converged"), qPrintable(message));
+    QVERIFY2(message.contains("jfo cavitation"), qPrintable(message));
+    QVERIFY2(message.contains("°CA"), qPrintable(message));
   }
 };
 

@@ -1,0 +1,19 @@
+#include "core/coupling/film_report.hpp"
+
+#include <string>
+
+#include "core/lubrication/reynolds_fem.hpp"
+#include "core/multibody/force_element.hpp"
+
+namespace filmdyn::coupling {
+
+void RequireConvergedFilm(const lubrication::ReynoldsStats& stats, const char* joint,
+                          lubrication::CavitationModel model) {
+  if (stats.status == lubrication::SolveStatus::kConverged) return;
+  throw multibody::EvaluationFailure(std::string(joint) + " film solve " +
+                                     lubrication::ToString(stats.status) + " (" +
+                                     lubrication::ToString(model) + " cavitation, " +
+                                     std::to_string(stats.iterations) + " iterations)");
+}
+
+}  // namespace filmdyn::coupling
