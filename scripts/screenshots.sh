@@ -14,7 +14,8 @@ if [ ! -f "$build/CMakeCache.txt" ]; then
   cmake -S "$root" -B "$build" "${generator[@]}" -DCMAKE_BUILD_TYPE=Release
 fi
 cmake --build "$build" -j "$jobs" --target test_ui_main_window_after_run test_ui_skirt_calculator \
-  test_ui_field_view test_ui_help test_ui_project_runs test_ui_run_warnings_column test_ui_study_view
+  test_ui_field_view test_ui_help test_ui_project_runs test_ui_run_warnings_column test_ui_study_view \
+  test_ui_case_editor_lists
 mkdir -p "$out"
 export FILMDYN_SCREENSHOT_DIR="$out" QT_QPA_PLATFORM=xcb
 for exe in "$build/tests/ui/screenshots/test_ui_main_window_after_run" \
@@ -23,7 +24,8 @@ for exe in "$build/tests/ui/screenshots/test_ui_main_window_after_run" \
            "$build/tests/ui/help/test_ui_help" \
            "$build/tests/ui/main_window/test_ui_project_runs" \
            "$build/tests/ui/run/test_ui_run_warnings_column" \
-           "$build/tests/ui/main_window/test_ui_study_view"; do
+           "$build/tests/ui/main_window/test_ui_study_view" \
+           "$build/tests/ui/case_editor/test_ui_case_editor_lists"; do
   if [ -n "${DISPLAY:-}" ]; then
     "$exe"
   else

@@ -161,4 +161,20 @@ void ArrayTableModel::removeRowAt(int row) {
   document_->edit(next, tr("Remove %1 row").arg(edit_name_));
 }
 
+bool ArrayTableModel::replaceColumns(const std::vector<std::vector<double>>& si,
+                                     const QString& description) {
+  if (int(si.size()) != columnCount()) return false;
+  engine::EngineCase next = document_->engineCase();
+  bool changed = false;
+  for (int col = 0; col < columnCount(); ++col) {
+    std::vector<double>* v = column(next, col);
+    if (!v) return false;
+    changed = changed || *v != si[size_t(col)];
+    *v = si[size_t(col)];
+  }
+  if (!changed) return false;
+  document_->edit(next, description);
+  return true;
+}
+
 }  // namespace filmdyn::ui

@@ -50,6 +50,12 @@ class ArrayTableModel : public QAbstractTableModel {
   /// Inserts a row after `row` (interpolated between neighbours) / removes a row; undoable.
   void insertRowAfter(int row);
   void removeRowAt(int row);
+  /// Replaces every column by `si` (one list per column, in SI, all of one length) as one
+  /// undoable edit named `description` (an import). False, with no undo step, when the columns
+  /// hold exactly these values already or have no array now.
+  bool replaceColumns(const std::vector<std::vector<double>>& si, const QString& description);
+  /// The table's name in undo texts ("supply-pressure curve", "skirt profile").
+  QString editName() const { return edit_name_; }
   /// Re-reads everything (the array behind the columns changed, e.g. another curve selected).
   void refresh();
   /// Core's message about this table now (empty when it is fine).

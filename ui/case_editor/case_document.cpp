@@ -2,7 +2,9 @@
 
 #include <QUndoCommand>
 #include <algorithm>
+#include <cmath>
 
+#include "core/engine/case_schema.hpp"
 #include "ui/case_editor/case_json.hpp"
 #include "ui/case_editor/case_parameters.hpp"
 
@@ -34,6 +36,56 @@ class CaseSnapshotCommand : public QUndoCommand {
   int merge_key_;
 };
 
+namespace {
+
+bool SameNumber(double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); }
+
+// Whether the field holds the same value in both cases.
+bool SameValue(const engine::CaseField& f, const engine::EngineCase& a,
+               const engine::EngineCase& b) {
+  // The list and text accessors take a mutable case; they only locate the member.
+  auto& ma = const_cast<engine::EngineCase&>(a);
+  auto& mb = const_cast<engine::EngineCase&>(b);
+  switch (f.kind) {
+    case engine::FieldKind::kNumber:
+    case engine::FieldKind::kInteger:
+      return SameNumber(f.get(a), f.get(b));
+    case engine::FieldKind::kChoice:
+      return f.choice(a) == f.choice(b);
+    case engine::FieldKind::kText:
+      return f.text(ma) == f.text(mb);
+    case engine::FieldKind::kNumberList: {
+      const std::vector<double>& x = f.list(ma);
+      const std::vector<double>& y = f.list(mb);
+      return std::equal(x.begin(), x.end(), y.begin(), y.end(), SameNumber);
+    }
+  }
+  return false;
+}
+
+// An edit makes the "assumed" note of every field it changes stale: the value is the user's now,
+// so the note goes with the edit (undo brings it back) and is neither shown nor saved. The
+// columns of a list table go together: a change to any of them (a cell, a row, an import) drops
+// the notes of all (the skirt profile's y and h, say).
+void DropStaleAssumptions(const engine::EngineCase& before, engine::EngineCase* after) {
+  if (after->assumed.empty()) return;
+  std::vector<std::string> stale;
+  for (const engine::CaseField& f : engine::CaseSchema()) {
+    if (f.kind == engine::FieldKind::kNumberList || SameValue(f, before, *after)) continue;
+    stale.push_back(f.path);
+  }
+  for (const CaseListTable& table : CaseListTables()) {
+    const bool changed =
+        std::any_of(table.columns.begin(), table.columns.end(),
+                    [&](const engine::CaseField* f) { return !SameValue(*f, before, *after); });
+    if (!changed) continue;
+    for (const engine::CaseField* f : table.columns) stale.push_back(f->path);
+  }
+  for (const std::string& path : stale) after->assumed.erase(path);
+}
+
+}  // namespace
+
 CaseDocument::CaseDocument(QObject* parent) : QObject(parent) {
   connect(&undo_stack_, &QUndoStack::cleanChanged, this,
           [this](bool clean) { emit modifiedChanged(!clean); });
@@ -49,7 +101,9 @@ CaseDocument::~CaseDocument() {
 
 void CaseDocument::edit(const engine::EngineCase& new_case, const QString& description,
                         int merge_key) {
-  undo_stack_.push(new CaseSnapshotCommand(this, case_, new_case, description, merge_key));
+  engine::EngineCase after = new_case;
+  DropStaleAssumptions(case_, &after);
+  undo_stack_.push(new CaseSnapshotCommand(this, case_, std::move(after), description, merge_key));
 }
 
 void CaseDocument::setParameter(const std::string& path, double si_value) {

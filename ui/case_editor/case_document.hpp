@@ -28,7 +28,9 @@ class CaseDocument : public QObject {
   QString runBlocker() const { return run_blocker_; }
 
   /// Replaces the case through an undoable command. merge_key > 0 merges consecutive edits with
-  /// the same key (typing in one cell several times is one undo step).
+  /// the same key (typing in one cell several times is one undo step). The "assumed" notes of
+  /// the fields the edit changes are dropped with it (a list table's columns together): the
+  /// values are the user's now; undo brings the notes back.
   void edit(const engine::EngineCase& new_case, const QString& description, int merge_key = -1);
   /// Sets one scalar parameter (SI) by dotted path; undoable.
   void setParameter(const std::string& path, double si_value);

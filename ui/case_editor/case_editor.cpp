@@ -1,5 +1,6 @@
 #include "ui/case_editor/case_editor.hpp"
 
+#include <QAction>
 #include <QChart>
 #include <QChartView>
 #include <QComboBox>
@@ -13,6 +14,7 @@
 #include <QLineSeries>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QScrollBar>
 #include <QSplitter>
 #include <QTabWidget>
@@ -25,6 +27,7 @@
 #include "ui/case_editor/array_table_model.hpp"
 #include "ui/case_editor/case_document.hpp"
 #include "ui/case_editor/choice_delegate.hpp"
+#include "ui/case_editor/list_csv.hpp"
 #include "ui/case_editor/parameter_table_model.hpp"
 #include "ui/case_editor/pressure_csv.hpp"
 #include "ui/case_editor/skirt_calculator_panel.hpp"
@@ -259,6 +262,7 @@ QWidget* CaseEditor::makeListBlock(const CaseListTable& list, QWidget* parent) {
   ListBlock block;
   block.table = &list;
   block.model = new ArrayTableModel(document_, list, this);
+  const QString key = QString::fromStdString(list.key);
   auto* widget = new QWidget(parent);
   auto* layout = new QVBoxLayout(widget);
   layout->setContentsMargins(0, 0, 0, 0);
@@ -267,10 +271,28 @@ QWidget* CaseEditor::makeListBlock(const CaseListTable& list, QWidget* parent) {
   auto* heading = new QLabel(title, widget);
   heading->setWordWrap(true);
   layout->addWidget(heading);
-  auto* tables = new QSplitter(Qt::Horizontal, widget);
+  // Its columns' "assumed" notes, and why no run reads it now: a line each, in grey, outside the
+  // part that is disabled so that they stay readable.
+  block.assumed = new QLabel(widget);
+  block.assumed->setObjectName(key + "_assumed");
+  block.assumed->setTextFormat(Qt::PlainText);
+  block.assumed->setWordWrap(true);
+  block.assumed->setStyleSheet("color: #666666;");
+  layout->addWidget(block.assumed);
+  block.hint = new QLabel(widget);
+  block.hint->setObjectName(key + "_hint");
+  block.hint->setTextFormat(Qt::PlainText);
+  block.hint->setWordWrap(true);
+  block.hint->setStyleSheet("color: #666666; font-style: italic;");
+  layout->addWidget(block.hint);
+  block.body = new QWidget(widget);
+  block.body->setObjectName(key + "_body");
+  auto* body = new QVBoxLayout(block.body);
+  body->setContentsMargins(0, 0, 0, 0);
+  auto* tables = new QSplitter(Qt::Horizontal, block.body);
   tables->setChildrenCollapsible(false);
   block.view = MakeTable(block.model, tables);
-  block.view->setObjectName(QString::fromStdString(list.key) + "_table");
+  block.view->setObjectName(key + "_table");
   const int table_width = FitWidthToHeaders(block.view);
   tables->addWidget(block.view);
   if (list.columns.size() == 2) {
@@ -290,37 +312,65 @@ QWidget* CaseEditor::makeListBlock(const CaseListTable& list, QWidget* parent) {
     tables->setStretchFactor(1, 1);
     tables->setSizes({table_width, 4 * table_width});
   }
-  layout->addWidget(tables, 1);
+  body->addWidget(tables, 1);
   auto* buttons = new QHBoxLayout;
-  auto* add = new QPushButton(tr("Insert row"), widget);
-  auto* remove = new QPushButton(tr("Remove row"), widget);
-  add->setObjectName(QString::fromStdString(list.key) + "_insert");
-  remove->setObjectName(QString::fromStdString(list.key) + "_remove");
+  auto* add = new QPushButton(tr("Insert row"), block.body);
+  auto* remove = new QPushButton(tr("Remove row"), block.body);
+  auto* import = new QPushButton(tr("Import CSV…"), block.body);
+  auto* export_csv = new QPushButton(tr("Export CSV…"), block.body);
+  add->setObjectName(key + "_insert");
+  remove->setObjectName(key + "_remove");
+  import->setObjectName(key + "_import");
+  export_csv->setObjectName(key + "_export");
+  const QString header = QString::fromStdString(ListCsvHeader(list)).toHtmlEscaped();
+  import->setToolTip(tr("<qt>Replace all rows by those of a CSV file (one undoable edit): a "
+                        "header <tt>%1</tt>, then one row per line in the units of the header; "
+                        "lines starting with # are comments.</qt>")
+                         .arg(header));
+  export_csv->setToolTip(tr("<qt>Write the rows to a CSV file: the header <tt>%1</tt>, then one "
+                            "row per line in the units of the header.</qt>")
+                             .arg(header));
   ArrayTableModel* model = block.model;
   QTableView* table = block.view;
-  connect(add, &QPushButton::clicked, this, [table, model] {
+  const std::string path = list.key;
+  auto insert_row = [table, model] {
     const int row =
         table->currentIndex().isValid() ? table->currentIndex().row() : model->rowCount() - 1;
     model->insertRowAfter(row);
-  });
-  connect(remove, &QPushButton::clicked, this, [table, model] {
+  };
+  auto remove_row = [table, model] {
     if (table->currentIndex().isValid()) model->removeRowAt(table->currentIndex().row());
-  });
+  };
+  connect(add, &QPushButton::clicked, this, insert_row);
+  connect(remove, &QPushButton::clicked, this, remove_row);
+  connect(import, &QPushButton::clicked, this, [this, path] { importListCsv(path); });
+  connect(export_csv, &QPushButton::clicked, this, [this, path] { exportListCsv(path); });
+  // The same four in the table's context menu.
+  table->setContextMenuPolicy(Qt::ActionsContextMenu);
+  table->addAction(tr("Insert row"), this, insert_row);
+  table->addAction(tr("Remove row"), this, remove_row);
+  auto* separator = new QAction(table);
+  separator->setSeparator(true);
+  table->addAction(separator);
+  table->addAction(tr("Import CSV…"), this, [this, path] { importListCsv(path); });
+  table->addAction(tr("Export CSV…"), this, [this, path] { exportListCsv(path); });
   connect(table->selectionModel(), &QItemSelectionModel::currentChanged, this,
           [this, model](const QModelIndex& current) {
             if (current.isValid() && !model->issue().isEmpty()) emit statusMessage(model->issue());
           });
-  buttons->addWidget(add);
-  buttons->addWidget(remove);
-  // Core's message about the table, as a parameter row's Note column shows its own.
-  block.issue = new QLabel(widget);
-  block.issue->setObjectName(QString::fromStdString(list.key) + "_issue");
+  for (QPushButton* button : {add, remove, import, export_csv}) buttons->addWidget(button);
+  buttons->addStretch(1);
+  body->addLayout(buttons);
+  // Core's message about the table, as a parameter row's Note column shows its own: below the
+  // buttons, the block's whole width (a single list's buttons fill its own).
+  block.issue = new QLabel(block.body);
+  block.issue->setObjectName(key + "_issue");
   block.issue->setTextFormat(Qt::PlainText);
   block.issue->setWordWrap(true);
   block.issue->setStyleSheet("color: #aa0000;");
   block.issue->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
-  buttons->addWidget(block.issue, 1);
-  layout->addLayout(buttons);
+  body->addWidget(block.issue);
+  layout->addWidget(block.body, 1);
   lists_[list.key] = block;
   updateListBlock(block);
   return widget;
@@ -367,6 +417,21 @@ QChart* CaseEditor::listChart(const std::string& path) const {
 QLabel* CaseEditor::listIssue(const std::string& path) const {
   const ListBlock* block = listBlock(path);
   return block ? block->issue : nullptr;
+}
+
+QLabel* CaseEditor::listHint(const std::string& path) const {
+  const ListBlock* block = listBlock(path);
+  return block ? block->hint : nullptr;
+}
+
+QLabel* CaseEditor::listAssumed(const std::string& path) const {
+  const ListBlock* block = listBlock(path);
+  return block ? block->assumed : nullptr;
+}
+
+bool CaseEditor::listEnabled(const std::string& path) const {
+  const ListBlock* block = listBlock(path);
+  return block && block->body->isEnabled();
 }
 
 QWidget* CaseEditor::makeProfilePage() {
@@ -530,9 +595,27 @@ void CaseEditor::updateCharts() {
 }
 
 void CaseEditor::updateListBlock(const ListBlock& block) {
+  const engine::EngineCase& current = document_->engineCase();
   const QString issue = block.model->issue();
   block.issue->setText(issue);
   block.issue->setToolTip(issue);
+  block.issue->setVisible(!issue.isEmpty());
+  // Unused now: greyed with the reason, unless core refuses its rows (they must stay fixable).
+  const QString unused = ListUnusedReason(*block.table, current);
+  block.hint->setText(unused);
+  block.hint->setVisible(!unused.isEmpty());
+  block.body->setEnabled(unused.isEmpty() || !issue.isEmpty());
+  // The columns' "assumed" notes (an edit of the table drops them: CaseDocument::edit).
+  QStringList notes;
+  for (const engine::CaseField* column : block.table->columns) {
+    const auto note = current.assumed.find(column->path);
+    if (note == current.assumed.end()) continue;
+    const QString text = QString::fromStdString(note->second);
+    if (!notes.contains(text)) notes << text;
+  }
+  const QString assumed = notes.isEmpty() ? QString() : tr("assumed: %1").arg(notes.join("; "));
+  block.assumed->setText(assumed);
+  block.assumed->setVisible(!assumed.isEmpty());
   if (!block.chart) return;
   // The pair in display units, the rows that are numbers.
   auto& c = const_cast<engine::EngineCase&>(document_->engineCase());  // accessors only locate
@@ -645,6 +728,64 @@ void CaseEditor::exportPressureCsv(const QString& given_path) {
     return;
   }
   emit statusMessage(tr("Wrote %1").arg(path));
+}
+
+namespace {
+
+// "supply_pressure_curve.csv" for the "Supply pressure curve" table.
+QString ListCsvFileName(const CaseListTable& list) {
+  QString name = list.title.toLower();
+  name.replace(QRegularExpression("[^a-z0-9]+"), "_");
+  return name + ".csv";
+}
+
+}  // namespace
+
+bool CaseEditor::importListCsv(const std::string& path, const QString& given_file) {
+  const ListBlock* block = listBlock(path);
+  if (!block) return false;
+  QString file = given_file;
+  if (file.isEmpty()) {
+    file = QFileDialog::getOpenFileName(this, tr("Import %1").arg(block->table->title.toLower()),
+                                        {}, tr("CSV files (*.csv *.txt);;All files (*)"));
+    if (file.isEmpty()) return false;
+  }
+  std::vector<std::vector<double>> columns;
+  QString error;
+  if (!ReadListCsv(*block->table, file, &columns, &error)) {
+    emit statusMessage(error);
+    if (given_file.isEmpty()) QMessageBox::warning(this, tr("Import failed"), error);
+    return false;
+  }
+  const size_t rows = columns.empty() ? 0 : columns.front().size();
+  const bool changed = block->model->replaceColumns(
+      columns, tr("Import %1 from %2").arg(block->model->editName(), QFileInfo(file).fileName()));
+  emit statusMessage(
+      changed
+          ? (rows == 1 ? tr("Imported 1 row into the %1 from %2")
+                       : tr("Imported %1 rows into the %2 from %3").arg(rows))
+                .arg(block->model->editName(), file)
+          : tr("%1 holds the rows of %2 already: nothing changed").arg(block->table->title, file));
+  return true;
+}
+
+bool CaseEditor::exportListCsv(const std::string& path, const QString& given_file) {
+  const ListBlock* block = listBlock(path);
+  if (!block) return false;
+  QString file = given_file;
+  if (file.isEmpty()) {
+    file = QFileDialog::getSaveFileName(this, tr("Export %1").arg(block->table->title.toLower()),
+                                        ListCsvFileName(*block->table), tr("CSV files (*.csv)"));
+    if (file.isEmpty()) return false;
+  }
+  QString error;
+  if (!WriteListCsv(*block->table, document_->engineCase(), file, &error)) {
+    emit statusMessage(error);
+    if (given_file.isEmpty()) QMessageBox::warning(this, tr("Export failed"), error);
+    return false;
+  }
+  emit statusMessage(tr("Wrote %1").arg(file));
+  return true;
 }
 
 }  // namespace filmdyn::ui

@@ -37,12 +37,28 @@ class CaseEditor : public QWidget {
   ParameterTableModel* parameterModel(CaseGroup group) const { return models_.at(group); }
   /// The list table (CaseListTable) with a column at `path` ("skirt.profile_h",
   /// "big_end.supply_pressure_values"): its model, view, chart (a table of two columns; else
-  /// nullptr) and the line beside its buttons showing core's message about it. nullptr for a path
+  /// nullptr) and the line below its buttons showing core's message about it. nullptr for a path
   /// that is no list.
   ArrayTableModel* listModel(const std::string& path) const;
   QTableView* listTable(const std::string& path) const;
   QChart* listChart(const std::string& path) const;
   QLabel* listIssue(const std::string& path) const;
+  /// The list block's line saying why the table is unused now (ListUnusedReason; hidden when it
+  /// is used) and the line with its columns' "assumed" notes (hidden when none).
+  QLabel* listHint(const std::string& path) const;
+  QLabel* listAssumed(const std::string& path) const;
+  /// Whether the list block's table and buttons are enabled: a table no run reads now is greyed,
+  /// unless core refuses its rows (then it stays editable, to fix them).
+  bool listEnabled(const std::string& path) const;
+
+  /// Reads a CSV file (list_csv.hpp; a file dialog when `file` is empty) into the list table with
+  /// a column at `path`, replacing all its rows as one undoable edit. A bad file changes nothing:
+  /// the message (file, line, value, what is allowed) goes to the status bar and, from the
+  /// dialog, a message box. True when the table now holds the file's rows.
+  bool importListCsv(const std::string& path, const QString& file = {});
+  /// Writes the list table with a column at `path` as CSV (a dialog when `file` is empty),
+  /// atomically. True when written.
+  bool exportListCsv(const std::string& path, const QString& file = {});
   ArrayTableModel* profileModel() const { return listModel("skirt.profile_y"); }
   ArrayTableModel* ovalityModel() const { return listModel("skirt.ovality_alpha"); }
   ArrayTableModel* pressureModel() const { return pressure_model_; }
@@ -73,13 +89,18 @@ class CaseEditor : public QWidget {
     QTableView* view = nullptr;
     QChart* chart = nullptr;
     QLabel* issue = nullptr;
+    QLabel* hint = nullptr;     ///< why the table is unused now
+    QLabel* assumed = nullptr;  ///< its columns' "assumed" notes
+    QWidget* body = nullptr;    ///< the table, its chart and buttons: disabled while unused
   };
 
   /// The group's scalar rows, with its list tables not placed elsewhere below them.
   QWidget* makeParameterPage(CaseGroup group);
   QWidget* makeProfilePage();
-  /// A list table's block: its title and a note, the table (and its chart beside it for two
-  /// columns), Insert/Remove row buttons and core's message about it in red.
+  /// A list table's block: its title and a note, its "assumed" notes and why it is unused now
+  /// (each a line, when there is one), the table (and its chart beside it for two columns),
+  /// Insert/Remove row and Import/Export CSV buttons (also the table's context menu) and below
+  /// them core's message about it in red.
   QWidget* makeListBlock(const CaseListTable& table, QWidget* parent);
   /// The list tables of `group` that have no block yet, side by side; nullptr if none.
   QWidget* makeListRow(CaseGroup group, QWidget* parent);

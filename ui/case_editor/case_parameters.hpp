@@ -66,6 +66,12 @@ const CaseListTable* FindCaseListTable(const std::string& field);
 /// A column's header: its label after the table's title, and the display unit
 /// ("axial position y [mm]").
 QString CaseListColumnTitle(const engine::CaseField& field);
+/// Why a run of `c` does not read the list table, from the choice that decides it as core's film
+/// joints and checks do (CheckBigEndSupply, CheckSkirtSupply): the supply holes only for
+/// "shell_holes" or "pin_holes", a supply-pressure curve only with holes or a groove, the liner's
+/// oil film only for a "starved" skirt. Empty when the table is used. A supply-pressure curve with
+/// rows under "line_of_centres" counts as used: core refuses it, so its table stays editable.
+QString ListUnusedReason(const CaseListTable& table, const engine::EngineCase& c);
 
 /// The run models (Skirt-LBRBE, Only-Skirt, Only-LBRBE, Ideal; docs/case-file.md) and how they
 /// set the two joints.

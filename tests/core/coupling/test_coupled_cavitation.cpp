@@ -69,6 +69,7 @@ class TestCoupledCavitation : public QObject {
       theta_max = std::max(theta_max, theta.maxCoeff());
     };
     const engine::RunResult r = engine::RunJob(config);
+    qInfo("%s: %s", engine::StatusName(r.status).c_str(), r.message.c_str());
     QCOMPARE(r.status, engine::RunStatus::kCompleted);
     const io::RunKpis k = io::RunKpisOf(config, r);
     QVERIFY(k.big_end && k.big_end->oil_balance);

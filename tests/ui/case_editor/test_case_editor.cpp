@@ -315,6 +315,7 @@ class TestCaseEditor : public QObject {
       QVERIFY2(tip.contains("In the case file: " + QString::fromStdString(field.path)),
                qPrintable(tip));
       QVERIFY(ListButton(window, field.path, "insert") && ListButton(window, field.path, "remove"));
+      QVERIFY(ListButton(window, field.path, "import") && ListButton(window, field.path, "export"));
     }
     QVERIFY(lists >= 9);
     // A pair is one table (with its chart), a single list a table of its own.
@@ -515,6 +516,11 @@ class TestCaseEditor : public QObject {
              QString("thickness [µm]"));
     QCOMPARE(model->rowCount(), 0);  // the constant skirt.oil_film
     const auto& s = window.document()->engineCase().skirt;
+    // The table feeds a starved skirt only (greyed for a flooded one), which needs JFO.
+    QVERIFY(!editor->listEnabled("skirt.oil_film_values"));
+    QVERIFY(window.document()->setChoice("skirt.cavitation", "jfo"));
+    QVERIFY(window.document()->setChoice("skirt.supply", "starved"));
+    QVERIFY(editor->listEnabled("skirt.oil_film_values"));
 
     QTest::mouseClick(ListButton(window, "skirt.oil_film_values", "insert"), Qt::LeftButton);
     QCOMPARE(model->rowCount(), 1);
