@@ -8,6 +8,7 @@
 #include "core/base/input_error.hpp"
 #include "core/engine/pressure_curve.hpp"
 #include "core/engine/run_memory.hpp"
+#include "core/lubrication/bearing_solver.hpp"
 
 namespace filmdyn::engine {
 
@@ -25,8 +26,8 @@ FieldRange Length() { return {0.0, 100.0, true, false}; }
 FieldRange Mass() { return {0.0, 1e5, true, false}; }       // [kg]; the largest marine pistons ~5 t
 FieldRange Inertia() { return {0.0, 1e5, true, false}; }    // [kg·m²]
 FieldRange Offset() { return {0.0, 100.0, false, false}; }  // a non-negative length [m]
-FieldRange Roughness() { return {0.0, 1e-4, true, false}; }      // RMS [m]; engine surfaces < 2 µm
-FieldRange Gap() { return {0.0, 0.01, false, false}; }           // profile/ovality gap [m]
+FieldRange Roughness() { return {0.0, 1e-4, true, false}; }  // RMS [m]; engine surfaces < 2 µm
+FieldRange Gap() { return {0.0, 0.01, false, false}; }       // profile/ovality gap [m]
 // A radial clearance [m]: > 0, at most 10 mm (large marine pistons run about 1 mm); the
 // cross-field rule adds < liner radius.
 FieldRange Clearance() { return {0.0, 0.01, true, false}; }
@@ -752,11 +753,11 @@ std::vector<CaseField> MakeSchema() {
       "solver.run_in_angle", sol, &SolverCase::run_in_angle,
       {G::kSolver, "Run-in before the first cycle", "rad", "°CA", kDeg, Between(0.0, 8 * kPi),
        "integrated at 10× looser tolerances before the first monitored cycle"}));
-  f.push_back(Scalar("solver.error_estimate", sol, &SolverCase::error_estimate,
-                     {G::kSolver, "Discretisation-error estimate (1 = on)", "-", "–", 1.0,
-                      Between(0, 1),
-                      "1: a companion run on meshes with half the elements estimates the error "
-                      "of the headline figures; 0: off"}));
+  f.push_back(
+      Scalar("solver.error_estimate", sol, &SolverCase::error_estimate,
+             {G::kSolver, "Discretisation-error estimate (1 = on)", "-", "–", 1.0, Between(0, 1),
+              "1: a companion run on meshes with half the elements estimates the error "
+              "of the headline figures; 0: off"}));
   SetSymbols(f);
   SetDescriptions(f);
   return f;
@@ -896,41 +897,20 @@ void CheckBigEndSupply(const BigEndCase& b) {
     PressureCurve(b.supply_pressure_angles, b.supply_pressure_values,
                   "big_end.supply_pressure_values");
   }
-  const double radius = b.bearing_radius;
-  if (b.supply == OilFeedKind::kShellHoles || b.supply == OilFeedKind::kPinHoles) {
-    if (b.supply_hole_angles.empty())
-      throw InputError("big_end.supply_hole_angles", "[]", "needs at least one hole");
-    if (b.supply_hole_diameter >= b.width) {
-      throw InputError("big_end.supply_hole_diameter", FormatValue(b.supply_hole_diameter),
-                       "must be smaller than big_end.width = " + FormatValue(b.width) + " [m]");
-    }
-    const double apart = b.supply_hole_diameter / radius;  // angular diameter [rad]
-    const auto& a = b.supply_hole_angles;
-    for (std::size_t i = 0; i < a.size(); ++i) {
-      for (std::size_t j = i + 1; j < a.size(); ++j) {
-        const double d = std::abs(std::remainder(a[i] - a[j], 2.0 * kPi));
-        if (d < apart) {
-          throw InputError("big_end.supply_hole_angles." + std::to_string(j), FormatValue(a[j]),
-                           "overlaps hole " + std::to_string(i) + " at " + FormatValue(a[i]) +
-                               " rad: holes must be at least one diameter apart (" +
-                               FormatValue(apart) + " rad at this radius)");
-        }
-      }
-    }
-  }
-  if (b.supply == OilFeedKind::kGroove) {
-    const double span = b.groove_end_angle - b.groove_start_angle;
-    if (!(span > 0.0) || span > 2.0 * kPi + 1e-9) {
-      throw InputError(
-          "big_end.groove_end_angle", FormatValue(b.groove_end_angle),
-          "must lie after big_end.groove_start_angle = " + FormatValue(b.groove_start_angle) +
-              " [rad] by at most 2π (a whole-circle groove)");
-    }
-    if (b.groove_width >= b.width) {
-      throw InputError("big_end.groove_width", FormatValue(b.groove_width),
-                       "must be smaller than big_end.width = " + FormatValue(b.width) + " [m]");
-    }
-  }
+  lubrication::OilFeed feed;
+  feed.kind = b.supply;
+  feed.hole_angles = b.supply_hole_angles;
+  feed.hole_diameter = b.supply_hole_diameter;
+  feed.groove_start = b.groove_start_angle;
+  feed.groove_end = b.groove_end_angle;
+  feed.groove_width = b.groove_width;
+  lubrication::ValidateOilFeed(feed, b.bearing_radius, b.width,
+                               {.hole_angles = "big_end.supply_hole_angles",
+                                .hole_diameter = "big_end.supply_hole_diameter",
+                                .groove_start = "big_end.groove_start_angle",
+                                .groove_end = "big_end.groove_end_angle",
+                                .groove_width = "big_end.groove_width",
+                                .width = "big_end.width"});
 }
 
 // A starved skirt needs the film fraction of the mass-conserving model and a proper table.

@@ -34,40 +34,55 @@ void BearingConfig::Validate(const std::string& prefix) const {
   RequireInRange(prefix + ".mesh.z_grading", mesh.z_grading, 1.0, 100.0, false, false, "-");
   RequireInRange(prefix + ".solver.max_iterations", solver.max_iterations, 1, 100000);
   RequireNonNegative(prefix + ".feed.pressure", feed.pressure, "Pa");
+  ValidateOilFeed(feed, geometry.radius, geometry.length,
+                  {.hole_angles = prefix + ".feed.hole_angles",
+                   .hole_diameter = prefix + ".feed.hole_diameter",
+                   .groove_start = prefix + ".feed.groove_start",
+                   .groove_end = prefix + ".feed.groove_end",
+                   .groove_width = prefix + ".feed.groove_width",
+                   .width = prefix + ".length"});
+}
+
+void ValidateOilFeed(const OilFeed& feed, double radius, double width, const OilFeedFields& names) {
   if (feed.kind == OilFeed::Kind::kShellHoles || feed.kind == OilFeed::Kind::kPinHoles) {
     if (feed.hole_angles.empty())
-      throw InputError(prefix + ".feed.hole_angles", "[]", "needs at least one hole angle");
+      throw InputError(names.hole_angles, "[]", "needs at least one hole angle");
     for (std::size_t k = 0; k < feed.hole_angles.size(); ++k)
-      RequireFinite(prefix + ".feed.hole_angles." + std::to_string(k), feed.hole_angles[k], "rad");
-    RequireInRange(prefix + ".feed.hole_diameter", feed.hole_diameter, 0.0, geometry.length, true,
-                   false, "m");
+      RequireFinite(names.hole_angles + "." + std::to_string(k), feed.hole_angles[k], "rad");
+    if (!(feed.hole_diameter > 0.0 && feed.hole_diameter < width)) {
+      throw InputError(names.hole_diameter, FormatValue(feed.hole_diameter),
+                       "must lie in (0, " + names.width + " = " + FormatValue(width) + ") [m]");
+    }
     // Holes whose circles overlap are one hole given twice: refused.
-    const double d = feed.hole_diameter / geometry.radius;  // angular diameter
+    const double d = feed.hole_diameter / radius;  // angular diameter
     for (std::size_t a = 0; a < feed.hole_angles.size(); ++a) {
       for (std::size_t b = a + 1; b < feed.hole_angles.size(); ++b) {
         const double gap =
             std::abs(WrapTwoPi(feed.hole_angles[a] - feed.hole_angles[b] + kPi) - kPi);
         if (gap < d) {
           throw InputError(
-              prefix + ".feed.hole_angles." + std::to_string(b), FormatValue(feed.hole_angles[b]),
+              names.hole_angles + "." + std::to_string(b), FormatValue(feed.hole_angles[b]),
               "overlaps hole " + std::to_string(a) + " at " + FormatValue(feed.hole_angles[a]) +
                   " rad: holes must be at least one hole diameter apart (" + FormatValue(d) +
-                  " rad)");
+                  " rad at this radius)");
         }
       }
     }
   }
   if (feed.kind == OilFeed::Kind::kGroove) {
-    RequireFinite(prefix + ".feed.groove_start", feed.groove_start, "rad");
-    RequireFinite(prefix + ".feed.groove_end", feed.groove_end, "rad");
+    RequireFinite(names.groove_start, feed.groove_start, "rad");
+    RequireFinite(names.groove_end, feed.groove_end, "rad");
     if (!(feed.groove_end > feed.groove_start) ||
-        feed.groove_end - feed.groove_start > 2.0 * kPi + 1e-12) {
-      throw InputError(prefix + ".feed.groove_end", FormatValue(feed.groove_end),
-                       "must lie after groove_start = " + FormatValue(feed.groove_start) +
-                           " [rad] by at most 2 pi (a whole-circle groove)");
+        feed.groove_end - feed.groove_start > 2.0 * kPi + 1e-9) {
+      throw InputError(names.groove_end, FormatValue(feed.groove_end),
+                       "must lie after " + names.groove_start + " = " +
+                           FormatValue(feed.groove_start) +
+                           " [rad] by at most 2π (a whole-circle groove)");
     }
-    RequireInRange(prefix + ".feed.groove_width", feed.groove_width, 0.0, geometry.length, true,
-                   true, "m");
+    if (!(feed.groove_width > 0.0 && feed.groove_width < width)) {
+      throw InputError(names.groove_width, FormatValue(feed.groove_width),
+                       "must lie in (0, " + names.width + " = " + FormatValue(width) + ") [m]");
+    }
   }
 }
 
@@ -173,8 +188,7 @@ BearingSolver::BearingSolver(BearingConfig config)
     const int ny = m.ny_nodes();
     std::vector<double> ys = m.y_lines;
     for (int j = ny - 2; j >= 0; --j) ys.push_back(config_.geometry.length - m.y_lines[j]);
-    full_width_.mesh =
-        MakeTensorMesh(m.x_lines, std::move(ys), m.periodic_x, m.x_period);
+    full_width_.mesh = MakeTensorMesh(m.x_lines, std::move(ys), m.periodic_x, m.x_period);
     const TriMesh& f = full_width_.mesh;
     full_width_.source.resize(static_cast<std::size_t>(f.NodeCount()));
     for (int j = 0; j < f.ny_nodes(); ++j) {

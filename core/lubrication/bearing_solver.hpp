@@ -74,6 +74,18 @@ struct OilFeed {
   double pressure = 0.0;  ///< supply gauge pressure (>= 0, relative to cavitation) [Pa]
 };
 
+/// The field names ValidateOilFeed's messages use (the solver's own configuration or a case file).
+struct OilFeedFields {
+  std::string hole_angles, hole_diameter, groove_start, groove_end, groove_width;
+  std::string width;  ///< the bearing width the hole and groove must fit in
+};
+
+/// The supply hardware's own rules, one definition for the solver and the case: holes (shell or
+/// pin) need at least one finite angle, a diameter in (0, width) and must not overlap (centres at
+/// least one hole diameter apart around the circumference); a groove ends after it starts by at
+/// most 2 pi and has an axial width in (0, width). Throws InputError naming the field.
+void ValidateOilFeed(const OilFeed& feed, double radius, double width, const OilFeedFields& names);
+
 struct BearingConfig {
   BearingGeometry geometry;
   double viscosity = 0.0;  ///< [Pa s]
@@ -112,9 +124,9 @@ struct BearingResult {
   double contact_force_n = 0.0, contact_force_t = 0.0;  ///< asperity part [N]
   double load = 0.0;                                    ///< |F| [N]
   double attitude_deg = 0.0;  ///< angle from the load line (-F) to the line of centres [deg]
-  double friction_torque_journal = 0.0;   ///< torque on the journal about its centre [N m]
-  double friction_torque_bearing = 0.0;   ///< torque on the bearing about its centre [N m]
-  double friction_power_loss = 0.0;       ///< |T_journal (omega_j - omega_b)| [W]
+  double friction_torque_journal = 0.0;  ///< torque on the journal about its centre [N m]
+  double friction_torque_bearing = 0.0;  ///< torque on the bearing about its centre [N m]
+  double friction_power_loss = 0.0;      ///< |T_journal (omega_j - omega_b)| [W]
   /// Friction force on the journal surface along +theta: T_journal / R [N], and its asperity
   /// (boundary-friction, mu_f p_c) part [N]; the rest is the hydrodynamic shear.
   double friction_force_journal = 0.0;

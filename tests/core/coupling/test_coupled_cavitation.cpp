@@ -151,6 +151,21 @@ class TestCoupledCavitation : public QObject {
     QVERIFY(
         ErrorOf([&] { engine::CheckCaseConsistency(c); }).contains("big_end.supply_hole_angles.1"));
     c.big_end.supply_hole_angles = {0.0};
+    c.big_end.supply_hole_diameter = c.big_end.width;  // a hole as wide as the bearing
+    QVERIFY(
+        ErrorOf([&] { engine::CheckCaseConsistency(c); }).contains("big_end.supply_hole_diameter"));
+    c.big_end.supply_hole_diameter = 4e-3;
+    // The groove's rules, shared with the bearing solver's own validation.
+    c.big_end.supply = lubrication::OilFeedKind::kGroove;
+    c.big_end.groove_start_angle = 1.0;
+    c.big_end.groove_end_angle = 0.5;
+    QVERIFY(ErrorOf([&] { engine::CheckCaseConsistency(c); }).contains("big_end.groove_end_angle"));
+    c.big_end.groove_end_angle = 2.0;
+    c.big_end.groove_width = 1.5 * c.big_end.width;
+    QVERIFY(ErrorOf([&] { engine::CheckCaseConsistency(c); }).contains("big_end.groove_width"));
+    c.big_end.groove_width = 2e-3;
+    QVERIFY(ErrorOf([&] { engine::CheckCaseConsistency(c); }).isEmpty());
+    c.big_end.supply = lubrication::OilFeedKind::kShellHoles;
     c.big_end.supply_pressure_angles = {0.0, 1.0};
     c.big_end.supply_pressure_values = {1e5, std::nan("")};
     QVERIFY(!ErrorOf([&] { engine::CheckCaseConsistency(c); }).isEmpty());
