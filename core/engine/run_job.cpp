@@ -160,38 +160,6 @@ Tracked TrackedFor(const EngineCase& c) {
   return t;
 }
 
-// Physical failure of a film joint at a sample: the reason, or empty.
-std::string FilmTrouble(const CrankTrainSample& s) {
-  if (s.bearing.present && (!std::isfinite(s.bearing.eps) ||
-                            s.bearing.eps >= coupling::LubricatedBigEndElement::kEpsMax)) {
-    return fmt::format(
-        "big-end journal touches the bearing (eps = {:.5f}): the film cannot carry the load "
-        "with this clearance/viscosity",
-        s.bearing.eps);
-  }
-  if (s.skirt.present && (!std::isfinite(s.skirt.min_gap) || s.skirt.min_gap <= 0.0)) {
-    return fmt::format(
-        "piston skirt touches the liner (smallest gap {:.3g} um): the skirt film cannot carry "
-        "the side force with this clearance/profile",
-        s.skirt.min_gap * 1e6);
-  }
-  for (const auto& [present, excess, joint] :
-       {std::tuple{s.bearing.present, s.bearing.fraction_excess, "big-end"},
-        std::tuple{s.skirt.present, s.skirt.fraction_excess, "skirt"}}) {
-    if (present && excess > coupling::kFractionTolerance) {
-      return fmt::format(
-          "{} film fraction left [0, 1] by {:.3g} (more than {:g}): the mass-conserving "
-          "cavitation solve failed; refine the film mesh or tighten solver.relative_tolerance",
-          joint, excess, coupling::kFractionTolerance);
-    }
-  }
-  if (!std::isfinite(s.piston_lateral) || !std::isfinite(s.crank_torque) ||
-      !std::isfinite(s.big_end_force_on_rod.norm())) {
-    return "the solution diverged (non-finite state)";
-  }
-  return {};
-}
-
 // Where the run stands, for messages: " (cycle 2, 123.0 °CA)"; cycle 0 is the run-in, whose
 // angles count (negative) towards the first cycle.
 std::string AtAngle(int cycle, double crank_deg) {
@@ -557,6 +525,37 @@ void CheckRunMemory(const RunConfig& config) {
                 AvailableMemoryBytes());
 }
 
+std::string FilmTrouble(const CrankTrainSample& s) {
+  if (s.bearing.present && (!std::isfinite(s.bearing.eps) ||
+                            s.bearing.eps >= coupling::LubricatedBigEndElement::kEpsMax)) {
+    return fmt::format(
+        "big-end journal touches the bearing (eps = {:.5f}): the film cannot carry the load "
+        "with this clearance/viscosity",
+        s.bearing.eps);
+  }
+  if (s.skirt.present && (!std::isfinite(s.skirt.min_gap) || s.skirt.min_gap <= 0.0)) {
+    return fmt::format(
+        "piston skirt touches the liner (smallest gap {:.3g} um): the skirt film cannot carry "
+        "the side force with this clearance/profile",
+        s.skirt.min_gap * 1e6);
+  }
+  for (const auto& [present, excess, joint] :
+       {std::tuple{s.bearing.present, s.bearing.fraction_excess, "big-end"},
+        std::tuple{s.skirt.present, s.skirt.fraction_excess, "skirt"}}) {
+    if (present && excess > coupling::kFractionTolerance) {
+      return fmt::format(
+          "{} film fraction left [0, 1] by {:.3g} (more than {:g}): the mass-conserving "
+          "cavitation solve failed; refine the film mesh or tighten solver.relative_tolerance",
+          joint, excess, coupling::kFractionTolerance);
+    }
+  }
+  if (!std::isfinite(s.piston_lateral) || !std::isfinite(s.crank_torque) ||
+      !std::isfinite(s.big_end_force_on_rod.norm())) {
+    return "the solution diverged (non-finite state)";
+  }
+  return {};
+}
+
 RunResult RunJob(const RunConfig& config, const RunMonitor& monitor,
                  const std::atomic<bool>* cancel) {
   CheckRunMemory(config);
@@ -583,10 +582,10 @@ RunResult RunJob(const RunConfig& config, const RunMonitor& monitor,
   RunResult coarse_result;
   std::string coarse_error;
   std::thread coarse_thread([&] {
-    // Lower priority (nice +10): the companion takes the cycles the run and the GUI leave idle
-    // instead of taking them from them — a desktop's event loop must stay responsive with the
-    // run's two film threads and the companion busy. On Linux, setpriority with a thread id
-    // affects that thread only; elsewhere the companion runs at normal priority.
+  // Lower priority (nice +10): the companion takes the cycles the run and the GUI leave idle
+  // instead of taking them from them — a desktop's event loop must stay responsive with the
+  // run's two film threads and the companion busy. On Linux, setpriority with a thread id
+  // affects that thread only; elsewhere the companion runs at normal priority.
 #if defined(__linux__)
     setpriority(PRIO_PROCESS, static_cast<id_t>(syscall(SYS_gettid)), 10);
 #endif

@@ -10,8 +10,8 @@
 #include <optional>
 #include <sstream>
 
-#include "core/engine/run_job.hpp"
 #include "core/base/input_error.hpp"
+#include "core/engine/run_job.hpp"
 #include "core/io/case_file.hpp"
 #include "core/io/results_writer.hpp"
 
@@ -27,6 +27,26 @@ engine::RunConfig DefaultConfig(double rpm, engine::Model model = engine::Model:
 class TestRunJob : public QObject {
   Q_OBJECT
  private slots:
+  // The check that ends a run at an output sample: a mass-conserving film fraction outside
+  // [0, 1] by more than the tolerance names the joint and the excess; within it, nothing.
+  void filmFractionOutsideItsRangeIsTrouble() {
+    engine::CrankTrainSample s;
+    s.piston_lateral = s.crank_torque = 0.0;
+    s.bearing.present = true;
+    s.bearing.eps = 0.5;
+    QVERIFY(engine::FilmTrouble(s).empty());
+    s.bearing.fraction_excess = 0.9 * coupling::kFractionTolerance;
+    QVERIFY(engine::FilmTrouble(s).empty());
+    s.bearing.fraction_excess = 2e-3;
+    const QString bearing = QString::fromStdString(engine::FilmTrouble(s));
+    QVERIFY2(bearing.contains("big-end film fraction left [0, 1] by 0.002"), qPrintable(bearing));
+    s.bearing.fraction_excess = 0.0;
+    s.skirt.present = true;
+    s.skirt.min_gap = 5e-6;
+    s.skirt.fraction_excess = 0.5;
+    const QString skirt = QString::fromStdString(engine::FilmTrouble(s));
+    QVERIFY2(skirt.contains("skirt film fraction left [0, 1] by 0.5"), qPrintable(skirt));
+  }
   void idealRunReachesSteadyStateAndWritesFolder() {
     const engine::RunConfig config = DefaultConfig(6000);
     int calls = 0;
