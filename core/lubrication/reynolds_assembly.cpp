@@ -220,19 +220,25 @@ void ReynoldsFem::Assemble(const ReynoldsParams& params) {
     // Right-hand side, integrated exactly for P1 nodal fields (int N_a N_b = A/12 (1 + d_ab)).
     const auto& ds = axis_ == 0 ? e.dndx : e.dndy;
     const double dhds = ds[0] * h_[n0] + ds[1] * h_[n1] + ds[2] * h_[n2];
-    const double dphis = ds[0] * factors_[n0].phi_shear + ds[1] * factors_[n1].phi_shear +
-                         ds[2] * factors_[n2].phi_shear;
     const double sum_c = phi_c_[n0] + phi_c_[n1] + phi_c_[n2];
     const double g[3] = {phi_c_[n0] * dhdt_[n0], phi_c_[n1] * dhdt_[n1], phi_c_[n2] * dhdt_[n2]};
     const double sum_g = g[0] + g[1] + g[2];
-    const double shear_flow = 0.5 * params.u_diff * sigma * dphis * a / 3.0;
+    // The roughness shear flow q = (U1 - U2)/2 sigma phi_s, weak form integrated by parts:
+    // -int q dN_r/ds over the element (q at its mean: P1). Free nodes get the same as the source
+    // form int N_r dq/ds; a fixed node's reaction then holds the shear flow through the boundary
+    // too, so that the boundary flows add up to the change of stored oil (without it, a skirt,
+    // open along the sliding direction, lost the oil its edges' shear flows carry).
+    const double q_mean =
+        0.5 * params.u_diff * sigma *
+        (factors_[n0].phi_shear + factors_[n1].phi_shear + factors_[n2].phi_shear) / 3.0;
     const double wedge = jfo ? 0.0 : 0.5 * params.u_sum * dhds * a / 12.0;  // JFO: see below
     // JFO: the squeeze term lumped (below), like the void's storage, so that a node's oil
     // balance holds only its own cell's storage and a cavity cannot give away oil it lacks.
     const double squeeze = jfo ? 0.0 : 1.0;
     for (int r = 0; r < 3; ++r) {
       const int node = e.node[r];
-      f_[node] -= wedge * (sum_c + phi_c_[node]) + shear_flow + squeeze * a / 12.0 * (sum_g + g[r]);
+      f_[node] -=
+          wedge * (sum_c + phi_c_[node]) - a * ds[r] * q_mean + squeeze * a / 12.0 * (sum_g + g[r]);
     }
   }
   if (jfo) {

@@ -126,10 +126,21 @@ class TestCoupledCavitation : public QObject {
     QVERIFY(high / n_high > low / n_low);
   }
 
+  // Both joints flooded, then a starved skirt (the liner's 5 µm film entering at its leading
+  // edge): every account closes to round-off. The skirt is open along its sliding direction, so
+  // the roughness shear flow through its edges is part of what its edges pass (it was missing
+  // from the edge flows once: a starved skirt then lost 8e-5 of its inflow).
+  void bothJointsKeepTheirAccounts_data() {
+    QTest::addColumn<bool>("starved");
+    QTest::newRow("flooded skirt") << false;
+    QTest::newRow("starved skirt") << true;
+  }
   void bothJointsKeepTheirAccounts() {
+    QFETCH(bool, starved);
     engine::EngineCase c = CoarseCase();
     c.skirt.cavitation = lubrication::CavitationModel::kJfo;
-    c.solver.max_cycles = 2;
+    if (starved) c.skirt.supply = lubrication::SkirtSupply::kStarved;
+    c.solver.max_cycles = starved ? 1 : 2;
     const engine::RunConfig config = Config(c, engine::Model::kSkirtLbrbe);
     const engine::RunResult r = engine::RunJob(config);
     QVERIFY2(
@@ -140,8 +151,9 @@ class TestCoupledCavitation : public QObject {
     qInfo("balance: big end %.2g, skirt %.2g; skirt wetted %.3f", *k.big_end->oil_balance,
           *k.skirt->oil_balance, *k.skirt->mean_wetted_fraction);
     QVERIFY(std::abs(*k.big_end->oil_balance) < 1e-9);
-    QVERIFY(std::abs(*k.skirt->oil_balance) < 1e-6);
+    QVERIFY(std::abs(*k.skirt->oil_balance) < 1e-9);
     QVERIFY(*k.skirt->mean_wetted_fraction > 0.0 && *k.skirt->mean_wetted_fraction <= 1.0);
+    if (starved) QVERIFY(*k.skirt->mean_wetted_fraction < 0.9);
   }
 
   void badSupplyInputNamesTheField() {
