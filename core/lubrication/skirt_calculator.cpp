@@ -138,6 +138,10 @@ std::vector<SkirtPoint> SkirtCalculator::Map(const std::vector<double>& e0_value
   return points;
 }
 
+namespace {
+constexpr double kSecantStep = 1e-2;  // Newton's difference step after a stall (see Newton)
+}  // namespace
+
 bool SkirtCalculator::Newton(const SkirtLoad& load, double e0, double tilt, SkirtEquilibrium* eq) {
   const double L = solver_.config().geometry.skirt_length;
   const double floor = min_equilibrium_film();
@@ -158,8 +162,13 @@ bool SkirtCalculator::Newton(const SkirtLoad& load, double e0, double tilt, Skir
   Eigen::Vector2d x(e0, tilt);
   SkirtPoint point = evaluate(x);
   Eigen::Vector2d r = residual(point);
-  eq->converged = false;  // every way out of the loop below sets the status
+  eq->converged = false;        // every way out of the loop below sets the status
   std::vector<double> history;  // |r| after each Newton step
+  // Forward-difference step of the Jacobian, relative to the film. A mass-conserving film's force
+  // is only piecewise smooth (nodes switch between full and cavitated, each switch a small jump):
+  // a difference of 1e-5 of the film can straddle one switch and point Newton nowhere. When the
+  // iteration stalls it goes on once with differences of 1 % of the film, a secant over them.
+  double fd_step = 1e-5;
   for (int it = 0;; ++it) {
     eq->point = point;
     eq->force_residual = r[0] * scale;
@@ -177,7 +186,7 @@ bool SkirtCalculator::Newton(const SkirtLoad& load, double e0, double tilt, Skir
     }
     eq->iterations = it + 1;
     // Jacobian by forward differences: the film force changes on the scale of the film itself.
-    const double de = 1e-5 * std::max(point.min_gap.gap, floor);
+    const double de = fd_step * std::max(point.min_gap.gap, floor);
     Eigen::Matrix2d jac;
     jac.col(0) = (residual(evaluate(x + Eigen::Vector2d(de, 0.0))) - r) / de;
     jac.col(1) = (residual(evaluate(x + Eigen::Vector2d(0.0, de / L))) - r) / (de / L);
@@ -210,6 +219,11 @@ bool SkirtCalculator::Newton(const SkirtLoad& load, double e0, double tilt, Skir
     // Stalled: the residual fell by less than 1 % over the last 5 Newton steps.
     history.push_back(r.norm());
     if (history.size() > 5 && history.back() > 0.99 * history[history.size() - 6]) {
+      if (fd_step < kSecantStep) {
+        fd_step = kSecantStep;
+        history.clear();
+        continue;
+      }
       eq->status = fmt::format("Newton's method stalled (scaled residual {:.2g})",
                                r.lpNorm<Eigen::Infinity>());
       return false;
