@@ -14,7 +14,6 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QProgressBar>
-#include <QSaveFile>
 #include <QSettings>
 #include <QSplitter>
 #include <QStandardPaths>
@@ -39,6 +38,7 @@
 #include "ui/run/run_controller.hpp"
 #include "ui/runs/run_store.hpp"
 #include "ui/runs/run_table.hpp"
+#include "ui/save_text.hpp"
 #include "ui/study/study_view.hpp"
 
 namespace filmdyn::ui {
@@ -666,13 +666,7 @@ bool MainWindow::exportResultsCsv(const RunHandle& run, const QString& path, QSt
       return false;
     }
   }
-  QSaveFile file(path);
-  if (!file.open(QIODevice::WriteOnly) || file.write(core_csv) != core_csv.size() ||
-      !file.commit()) {
-    if (error) *error = tr("Cannot write %1: %2").arg(path, file.errorString());
-    return false;
-  }
-  return true;
+  return SaveTextFile(path, std::string_view(core_csv.constData(), core_csv.size()), error);
 }
 
 bool MainWindow::exportRunFolder(const RunHandle& run, const QString& directory, QString* error) {

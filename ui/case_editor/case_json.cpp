@@ -1,12 +1,12 @@
 #include "ui/case_editor/case_json.hpp"
 
 #include <QObject>
-#include <QSaveFile>
 #include <nlohmann/json.hpp>
 #include <numbers>
 
 #include "core/base/input_error.hpp"
 #include "core/io/case_file.hpp"
+#include "ui/save_text.hpp"
 
 namespace filmdyn::ui {
 
@@ -23,14 +23,7 @@ engine::EngineCase CaseFromJsonText(const std::string& text) {
 }
 
 bool SaveCaseFile(const engine::EngineCase& c, const QString& path, QString* error) {
-  QSaveFile file(path);
-  const std::string text = CaseToJsonText(c);
-  if (!file.open(QIODevice::WriteOnly) ||
-      file.write(text.data(), qint64(text.size())) != qint64(text.size()) || !file.commit()) {
-    if (error) *error = QObject::tr("Cannot write %1: %2").arg(path, file.errorString());
-    return false;
-  }
-  return true;
+  return SaveTextFile(path, CaseToJsonText(c), error);
 }
 
 bool LoadCaseFile(const QString& path, engine::EngineCase* c, QString* error, QStringList* notes) {

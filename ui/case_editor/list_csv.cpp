@@ -1,7 +1,6 @@
 #include "ui/case_editor/list_csv.hpp"
 
 #include <QObject>
-#include <QSaveFile>
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -11,6 +10,7 @@
 #include "core/base/input_error.hpp"
 #include "core/io/output_files.hpp"
 #include "ui/case_editor/field_tooltip.hpp"
+#include "ui/save_text.hpp"
 
 namespace filmdyn::ui {
 
@@ -203,13 +203,7 @@ bool WriteListCsv(const CaseListTable& table, const engine::EngineCase& c, const
     *error = QString::fromStdString(e.what());
     return false;
   }
-  QSaveFile file(path);
-  if (!file.open(QIODevice::WriteOnly) ||
-      file.write(text.data(), qint64(text.size())) != qint64(text.size()) || !file.commit()) {
-    *error = QObject::tr("Cannot write %1: %2").arg(path, file.errorString());
-    return false;
-  }
-  return true;
+  return SaveTextFile(path, text, error);
 }
 
 }  // namespace filmdyn::ui

@@ -1,11 +1,11 @@
 #include "ui/case_editor/pressure_csv.hpp"
 
 #include <QFile>
-#include <QSaveFile>
 #include <numbers>
 #include <sstream>
 
 #include "core/io/pressure_csv.hpp"
+#include "ui/save_text.hpp"
 
 namespace filmdyn::ui {
 
@@ -37,14 +37,7 @@ bool ExportPressureCsv(const engine::PressureCurveSource& curve, const QString& 
   io::WritePressureCsv(
       out, curve.crank_angle_deg, curve.pressure,
       "cylinder pressure at " + std::to_string(int(curve.rpm)) + " rpm, exported by FilmDyn");
-  const std::string text = out.str();
-  QSaveFile file(path);
-  if (!file.open(QIODevice::WriteOnly) ||
-      file.write(text.data(), qint64(text.size())) != qint64(text.size()) || !file.commit()) {
-    *error = QObject::tr("Cannot write %1: %2").arg(path, file.errorString());
-    return false;
-  }
-  return true;
+  return SaveTextFile(path, out.str(), error);
 }
 
 }  // namespace filmdyn::ui

@@ -31,6 +31,7 @@
 
 #include "core/engine/case_schema.hpp"
 #include "core/io/case_file.hpp"
+#include "editor_test_util.hpp"
 #include "ui/case_editor/array_table_model.hpp"
 #include "ui/case_editor/case_document.hpp"
 #include "ui/case_editor/case_editor.hpp"
@@ -39,38 +40,14 @@
 #include "ui/case_editor/parameter_table_model.hpp"
 #include "ui/main_window.hpp"
 
+using editor_test::ListButton;
+using editor_test::TypeIntoCell;
 using filmdyn::ui::ArrayTableModel;
 using filmdyn::ui::CaseGroup;
 using filmdyn::ui::MainWindow;
 using filmdyn::ui::ParameterTableModel;
 
 namespace {
-
-// Types `text` into the cell like a user: select it, start editing, type, press Enter.
-void TypeIntoCell(QTableView* table, const QModelIndex& index, const QString& text) {
-  QWidget* window = table->window();
-  window->activateWindow();
-  table->setFocus();
-  table->setCurrentIndex(index);
-  table->edit(index);
-  // The delegate's editor is a QLineEdit child of the viewport.
-  QLineEdit* editor = table->viewport()->findChild<QLineEdit*>();
-  QVERIFY2(editor != nullptr, "no line editor opened on the cell");
-  editor->selectAll();
-  QTest::keyClicks(editor, text);
-  QTest::keyClick(editor, Qt::Key_Return);
-  // The delegate commits on a queued call after Return.
-  QTRY_VERIFY(table->viewport()->findChild<QLineEdit*>() == nullptr ||
-              !table->viewport()->findChild<QLineEdit*>()->isVisible());
-}
-
-// The Insert row / Remove row button of the list table with a column at `path`.
-QPushButton* ListButton(MainWindow& window, const std::string& path, const char* which) {
-  const filmdyn::ui::CaseListTable* list = filmdyn::ui::FindCaseListTable(path);
-  if (list == nullptr) return nullptr;
-  return window.caseEditor()->findChild<QPushButton*>(QString::fromStdString(list->key) + "_" +
-                                                      which);
-}
 
 // The case editor's tab (index in "case_tabs") that shows `widget`, or -1.
 int TabOf(MainWindow& window, QWidget* widget) {

@@ -24,6 +24,7 @@
 
 #include "core/engine/case_schema.hpp"
 #include "core/io/case_file.hpp"
+#include "editor_test_util.hpp"
 #include "ui/case_editor/array_table_model.hpp"
 #include "ui/case_editor/case_document.hpp"
 #include "ui/case_editor/case_editor.hpp"
@@ -31,6 +32,8 @@
 #include "ui/case_editor/parameter_table_model.hpp"
 #include "ui/main_window.hpp"
 
+using editor_test::ListButton;
+using editor_test::TypeIntoCell;
 using filmdyn::ui::ArrayTableModel;
 using filmdyn::ui::CaseGroup;
 using filmdyn::ui::MainWindow;
@@ -52,29 +55,6 @@ QByteArray ReadFile(const QString& path) {
   QFile file(path);
   if (!file.open(QIODevice::ReadOnly)) return {};
   return file.readAll();
-}
-
-// Types `text` into the cell like a user: select it, start editing, type, press Enter.
-void TypeIntoCell(QTableView* table, const QModelIndex& index, const QString& text) {
-  table->window()->activateWindow();
-  table->setFocus();
-  table->setCurrentIndex(index);
-  table->edit(index);
-  QLineEdit* editor = table->viewport()->findChild<QLineEdit*>();
-  QVERIFY2(editor != nullptr, "no line editor opened on the cell");
-  editor->selectAll();
-  QTest::keyClicks(editor, text);
-  QTest::keyClick(editor, Qt::Key_Return);
-  QTRY_VERIFY(table->viewport()->findChild<QLineEdit*>() == nullptr ||
-              !table->viewport()->findChild<QLineEdit*>()->isVisible());
-}
-
-// The list block's button ("import", "export", "insert", "remove") of the table at `path`.
-QPushButton* ListButton(MainWindow& window, const std::string& path, const char* which) {
-  const filmdyn::ui::CaseListTable* list = filmdyn::ui::FindCaseListTable(path);
-  if (list == nullptr) return nullptr;
-  return window.caseEditor()->findChild<QPushButton*>(QString::fromStdString(list->key) + "_" +
-                                                      which);
 }
 
 // A supply-pressure curve over the cycle every 10 °CA, pressures with four decimals in MPa: the
