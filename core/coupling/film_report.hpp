@@ -107,9 +107,9 @@ struct BearingFilmSample {
   /// Asperity part of fpl: fpl · contact_friction_force / friction_force (0 without friction),
   /// so that the two parts of the loss add up to fpl exactly [W].
   double contact_fpl = 0.0;
-  Eigen::Vector2d force_on_rod = Eigen::Vector2d::Zero();  ///< film (crank pin) → rod [N]
-  double friction_torque_journal = 0.0;                    ///< on the crank [N·m]
-  double friction_torque_bearing = 0.0;                    ///< on the rod [N·m]
+  Eigen::Vector2d force_on_rod = Eigen::Vector2d::Zero();        ///< film (crank pin) → rod [N]
+  double friction_torque_journal = 0.0;                          ///< on the crank [N·m]
+  double friction_torque_bearing = 0.0;                          ///< on the rod [N·m]
   double power = 0.0;  ///< power of the film on crank + rod, F·ė + T_j ω_j + T_b ω_b [W] (≤ 0)
   /// Oil into the film through the feed (or the film-start line) and out through both edges
   /// (BearingResult::feed_flow, side_flow) [m^3/s].

@@ -26,8 +26,8 @@ FieldRange Length() { return {0.0, 100.0, true, false}; }
 FieldRange Mass() { return {0.0, 1e5, true, false}; }       // [kg]; the largest marine pistons ~5 t
 FieldRange Inertia() { return {0.0, 1e5, true, false}; }    // [kg·m²]
 FieldRange Offset() { return {0.0, 100.0, false, false}; }  // a non-negative length [m]
-FieldRange Roughness() { return {0.0, 1e-4, true, false}; }  // RMS [m]; engine surfaces < 2 µm
-FieldRange Gap() { return {0.0, 0.01, false, false}; }       // profile/ovality gap [m]
+FieldRange Roughness() { return {0.0, 1e-4, true, false}; }      // RMS [m]; engine surfaces < 2 µm
+FieldRange Gap() { return {0.0, 0.01, false, false}; }           // profile/ovality gap [m]
 // A radial clearance [m]: > 0, at most 10 mm (large marine pistons run about 1 mm); the
 // cross-field rule adds < liner radius.
 FieldRange Clearance() { return {0.0, 0.01, true, false}; }
@@ -753,11 +753,11 @@ std::vector<CaseField> MakeSchema() {
       "solver.run_in_angle", sol, &SolverCase::run_in_angle,
       {G::kSolver, "Run-in before the first cycle", "rad", "°CA", kDeg, Between(0.0, 8 * kPi),
        "integrated at 10× looser tolerances before the first monitored cycle"}));
-  f.push_back(
-      Scalar("solver.error_estimate", sol, &SolverCase::error_estimate,
-             {G::kSolver, "Discretisation-error estimate (1 = on)", "-", "–", 1.0, Between(0, 1),
-              "1: a companion run on meshes with half the elements estimates the error "
-              "of the headline figures; 0: off"}));
+  f.push_back(Scalar("solver.error_estimate", sol, &SolverCase::error_estimate,
+                     {G::kSolver, "Discretisation-error estimate (1 = on)", "-", "–", 1.0,
+                      Between(0, 1),
+                      "1: a companion run on meshes with half the elements estimates the error "
+                      "of the headline figures; 0: off"}));
   SetSymbols(f);
   SetDescriptions(f);
   return f;

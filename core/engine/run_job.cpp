@@ -582,10 +582,10 @@ RunResult RunJob(const RunConfig& config, const RunMonitor& monitor,
   RunResult coarse_result;
   std::string coarse_error;
   std::thread coarse_thread([&] {
-  // Lower priority (nice +10): the companion takes the cycles the run and the GUI leave idle
-  // instead of taking them from them — a desktop's event loop must stay responsive with the
-  // run's two film threads and the companion busy. On Linux, setpriority with a thread id
-  // affects that thread only; elsewhere the companion runs at normal priority.
+    // Lower priority (nice +10): the companion takes the cycles the run and the GUI leave idle
+    // instead of taking them from them — a desktop's event loop must stay responsive with the
+    // run's two film threads and the companion busy. On Linux, setpriority with a thread id
+    // affects that thread only; elsewhere the companion runs at normal priority.
 #if defined(__linux__)
     setpriority(PRIO_PROCESS, static_cast<id_t>(syscall(SYS_gettid)), 10);
 #endif

@@ -102,8 +102,8 @@ struct RunProgress {
   /// at most kRemainingMaxStep × (elapsed + that count-down), so it counts down steadily instead
   /// of jumping when a cycle starts.
   double remaining = 0.0;
-  long steps = 0;                            ///< integrator steps so far
-  long reynolds_solves = 0;                  ///< film solves so far (both joints)
+  long steps = 0;                 ///< integrator steps so far
+  long reynolds_solves = 0;       ///< film solves so far (both joints)
   const CrankTrainSample* sample = nullptr;  ///< the step just computed
 };
 
@@ -129,12 +129,12 @@ struct RunResult {
   /// RunConfig::motion_interval between them (the integrator's interpolation; none before the
   /// integrator's first step).
   std::vector<MotionSample> motion;
-  int cycles = 0;                    ///< cycles computed
-  int cycles_to_steady_state = 0;    ///< 0 when not reached
-  double cycle_change = 0.0;         ///< last cycle-to-cycle change / range (largest quantity)
-  std::string worst_quantity;        ///< the quantity furthest from periodicity (last cycle)
-  long reynolds_solves = 0;          ///< Reynolds (FEM + cavitation) solves, both joints
-  long reynolds_factorizations = 0;  ///< their numeric LDLᵀ factorisations
+  int cycles = 0;                         ///< cycles computed
+  int cycles_to_steady_state = 0;         ///< 0 when not reached
+  double cycle_change = 0.0;              ///< last cycle-to-cycle change / range (largest quantity)
+  std::string worst_quantity;             ///< the quantity furthest from periodicity (last cycle)
+  long reynolds_solves = 0;               ///< Reynolds (FEM + cavitation) solves, both joints
+  long reynolds_factorizations = 0;       ///< their numeric LDLᵀ factorisations
   multibody::SolverStats stats;
   double wall_time = 0.0;  ///< [s], start to end (with the error estimate's companion run)
   double max_constraint_violation = 0.0;

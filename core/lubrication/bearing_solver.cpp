@@ -188,7 +188,8 @@ BearingSolver::BearingSolver(BearingConfig config)
     const int ny = m.ny_nodes();
     std::vector<double> ys = m.y_lines;
     for (int j = ny - 2; j >= 0; --j) ys.push_back(config_.geometry.length - m.y_lines[j]);
-    full_width_.mesh = MakeTensorMesh(m.x_lines, std::move(ys), m.periodic_x, m.x_period);
+    full_width_.mesh =
+        MakeTensorMesh(m.x_lines, std::move(ys), m.periodic_x, m.x_period);
     const TriMesh& f = full_width_.mesh;
     full_width_.source.resize(static_cast<std::size_t>(f.NodeCount()));
     for (int j = 0; j < f.ny_nodes(); ++j) {

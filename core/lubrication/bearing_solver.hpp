@@ -124,9 +124,9 @@ struct BearingResult {
   double contact_force_n = 0.0, contact_force_t = 0.0;  ///< asperity part [N]
   double load = 0.0;                                    ///< |F| [N]
   double attitude_deg = 0.0;  ///< angle from the load line (-F) to the line of centres [deg]
-  double friction_torque_journal = 0.0;  ///< torque on the journal about its centre [N m]
-  double friction_torque_bearing = 0.0;  ///< torque on the bearing about its centre [N m]
-  double friction_power_loss = 0.0;      ///< |T_journal (omega_j - omega_b)| [W]
+  double friction_torque_journal = 0.0;   ///< torque on the journal about its centre [N m]
+  double friction_torque_bearing = 0.0;   ///< torque on the bearing about its centre [N m]
+  double friction_power_loss = 0.0;       ///< |T_journal (omega_j - omega_b)| [W]
   /// Friction force on the journal surface along +theta: T_journal / R [N], and its asperity
   /// (boundary-friction, mu_f p_c) part [N]; the rest is the hydrodynamic shear.
   double friction_force_journal = 0.0;

@@ -162,7 +162,7 @@ bool SkirtCalculator::Newton(const SkirtLoad& load, double e0, double tilt, Skir
   Eigen::Vector2d x(e0, tilt);
   SkirtPoint point = evaluate(x);
   Eigen::Vector2d r = residual(point);
-  eq->converged = false;        // every way out of the loop below sets the status
+  eq->converged = false;  // every way out of the loop below sets the status
   std::vector<double> history;  // |r| after each Newton step
   // Forward-difference step of the Jacobian, relative to the film. A mass-conserving film's force
   // is only piecewise smooth (nodes switch between full and cavitated, each switch a small jump):
