@@ -5,7 +5,9 @@
 #include <cmath>
 #include <iomanip>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <ostream>
+#include <vector>
 
 #include "app/commands/commands.hpp"
 #include "core/base/input_error.hpp"
@@ -43,6 +45,12 @@ Command MakeBearingCommand() {
       {"length", "M", "bearing width [m] (default 2 * radius * L/D)"},
       {"clearance", "M", "radial clearance [m] (default 25e-6)"},
       {"viscosity", "PAS", "dynamic viscosity [Pa s] (default 0.01)"},
+      {"vogel", "A,B,C",
+       "viscosity from Vogel's law mu = A exp(B / (T - C)): A [Pa s], B and C [K], T in kelvin "
+       "(with --temperature; instead of --viscosity)"},
+      {"temperature", "C", "oil temperature [°C] for --vogel"},
+      {"barus", "ALPHA", "pressure-viscosity coefficient of Barus' law mu0 exp(alpha p) [1/Pa]"},
+      {"roelands", "Z", "pressure-viscosity index z of Roelands' law (typically 0.4-0.8)"},
       {"cavitation", "MODEL", "reynolds (Swift-Stieber, default) or jfo (mass-conserving)"},
       {"mesh", "NTxNZ", "elements around x across the full width (default 240x40)"},
       {"sigma1", "M", "rms roughness of the journal [m] (enables mixed lubrication)"},
@@ -68,6 +76,33 @@ Command MakeBearingCommand() {
     in.length = args.Double("length").value_or(2.0 * in.radius * ld);
     if (auto v = args.Double("clearance")) in.radial_clearance = *v;
     if (auto v = args.Double("viscosity")) in.viscosity = *v;
+    std::optional<double> temperature;
+    if (args.Has("vogel")) {
+      if (args.Has("viscosity"))
+        throw InputError("--vogel", *args.Value("vogel"),
+                         "either --vogel or --viscosity, not both");
+      const std::vector<double> abc = ParseDoubleList("--vogel", *args.Value("vogel"));
+      if (abc.size() != 3) throw InputError("--vogel", *args.Value("vogel"), "three numbers A,B,C");
+      const lubrication::VogelLaw law{abc[0], abc[1], abc[2]};
+      law.Validate("--vogel");
+      if (!args.Has("temperature"))
+        throw InputError("--temperature", "(missing)", "the oil temperature [°C] for --vogel");
+      temperature = *args.Double("temperature");
+      in.viscosity = law.At(*temperature + 273.15, "--temperature");
+    } else if (args.Has("temperature")) {
+      throw InputError("--temperature", *args.Value("temperature"),
+                       "only with a temperature law (--vogel)");
+    }
+    if (args.Has("barus") && args.Has("roelands"))
+      throw InputError("--barus", *args.Value("barus"), "either --barus or --roelands, not both");
+    if (auto v = args.Double("barus")) {
+      in.pressure_law = lubrication::PressureLaw::kBarus;
+      in.barus_alpha = *v;
+    }
+    if (auto v = args.Double("roelands")) {
+      in.pressure_law = lubrication::PressureLaw::kRoelands;
+      in.roelands_z = *v;
+    }
     if (auto v = args.Double("rpm")) in.speed_rpm = *v;
     in.eps = args.Double("eps");
     in.load = args.Double("load");
@@ -113,6 +148,13 @@ Command MakeBearingCommand() {
       j["max_pressure"] = r.max_pressure;
       j["cavitated_fraction"] = r.cavitated_fraction;
       j["cavitation"] = lubrication::ToString(in.cavitation);
+      j["viscosity_used"] = in.viscosity;
+      j["viscosity_used_definition"] = "Pa s, at zero gauge pressure and the temperature used";
+      if (temperature) j["temperature"] = *temperature;
+      j["pressure_viscosity"] = lubrication::ToString(in.pressure_law);
+      if (in.pressure_law != lubrication::PressureLaw::kNone)
+        j["pressure_viscosity_coefficient"] =
+            lubrication::PressureViscosityOf(in).InitialCoefficient();
       j["mesh"] = std::to_string(in.mesh.n_theta) + "x" + std::to_string(in.mesh.n_z);
       j["l_over_d"] = in.length / (2.0 * in.radius);
       j["reynolds_solves"] = r.reynolds_solves;
@@ -125,6 +167,7 @@ Command MakeBearingCommand() {
       auto& o = streams.out;
       o << std::setprecision(6);
       o << "L/D                      " << in.length / (2.0 * in.radius) << "\n";
+      o << "viscosity used [Pa s]    " << in.viscosity << "\n";
       o << "eccentricity ratio       " << r.eps << "\n";
       o << "attitude angle [deg]     " << r.attitude_deg << "\n";
       o << "Sommerfeld number S      " << r.sommerfeld << "\n";

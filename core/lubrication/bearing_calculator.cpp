@@ -23,6 +23,19 @@ void BearingCalcInput::Validate() const {
   if (eps) RequireInRange("bearing.eps", *eps, 0.0, 1.0, false, true);
   if (load) RequirePositive("bearing.load", *load, "N");
   if (surfaces) surfaces->Validate("bearing.surface");
+  PressureViscosityOf(*this);  // validates the law's constants
+}
+
+PressureViscosity PressureViscosityOf(const BearingCalcInput& in) {
+  switch (in.pressure_law) {
+    case PressureLaw::kNone:
+      return {};
+    case PressureLaw::kBarus:
+      return PressureViscosity::Barus(in.barus_alpha, "bearing.");
+    case PressureLaw::kRoelands:
+      return PressureViscosity::Roelands(in.roelands_z, in.viscosity, "bearing.");
+  }
+  return {};
 }
 
 BearingCalcResult RunBearingCalculator(const BearingCalcInput& in) {
@@ -30,6 +43,7 @@ BearingCalcResult RunBearingCalculator(const BearingCalcInput& in) {
   BearingConfig cfg;
   cfg.geometry = {in.radius, in.length, in.radial_clearance};
   cfg.viscosity = in.viscosity;
+  cfg.pressure_viscosity = PressureViscosityOf(in);
   cfg.mesh = in.mesh;
   cfg.solver.cavitation = in.cavitation;
   if (in.surfaces) cfg.film = MakeSurfaceFilm(*in.surfaces);

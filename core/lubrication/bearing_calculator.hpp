@@ -15,7 +15,11 @@ struct BearingCalcInput {
   double radius = 0.025;            ///< journal radius R [m]
   double length = 0.025;            ///< bearing width L [m]
   double radial_clearance = 25e-6;  ///< c [m]
-  double viscosity = 0.01;          ///< [Pa s]
+  double viscosity = 0.01;          ///< at zero gauge pressure [Pa s]
+  /// Pressure-viscosity law: kBarus uses barus_alpha [1/Pa], kRoelands roelands_z [-] (oil.hpp).
+  PressureLaw pressure_law = PressureLaw::kNone;
+  double barus_alpha = 0.0;
+  double roelands_z = 0.0;
   double speed_rpm = 3000.0;        ///< journal speed [rev/min]
   BearingMeshSpec mesh{100, 20, true};
   CavitationModel cavitation = CavitationModel::kReynolds;
@@ -47,6 +51,9 @@ struct BearingCalcResult {
   std::string status = "converged";
   ReynoldsStats last_stats;
 };
+
+/// The input's pressure-viscosity law (kNone: an inactive one). Throws filmdyn::InputError.
+PressureViscosity PressureViscosityOf(const BearingCalcInput& input);
 
 /// Runs mode 1 (eps set) or mode 2 (load set). Bad input throws filmdyn::InputError; numerical
 /// trouble is reported in status/converged.

@@ -88,7 +88,8 @@ void ValidateOilFeed(const OilFeed& feed, double radius, double width, const Oil
 
 struct BearingConfig {
   BearingGeometry geometry;
-  double viscosity = 0.0;  ///< [Pa s]
+  double viscosity = 0.0;                ///< at zero gauge pressure [Pa s]
+  PressureViscosity pressure_viscosity;  ///< how it rises with the film pressure (oil.hpp)
   BearingMeshSpec mesh;
   OilFeed feed;
   ReynoldsOptions solver;

@@ -59,10 +59,14 @@ FilmIntegrals IntegrateFilm(const ReynoldsFem& fem, const ReynoldsSolution& fiel
   // Per node once (a node belongs to up to six elements): the Couette terms, and the data of the
   // caller's fields.
   std::vector<double> couette(2 * static_cast<size_t>(n));
+  // With a pressure-dependent viscosity the Couette shear of a node takes its own mu(p): the
+  // terms carry mu(p)/mu0, and mu (params.viscosity) stays mu0.
+  const PressureViscosity* pv = params.pressure_viscosity;
   for (int k = 0; k < n; ++k) {
     const double theta_f = jfo ? fields.fluid_fraction[k] : 1.0;
-    couette[2 * k] = theta_f * (fac[k].shear_f + fac[k].shear_fs) / h[k];
-    couette[2 * k + 1] = theta_f * (fac[k].shear_f - fac[k].shear_fs) / h[k];
+    const double ratio = pv != nullptr ? pv->Ratio(p[k]) : 1.0;
+    couette[2 * k] = ratio * theta_f * (fac[k].shear_f + fac[k].shear_fs) / h[k];
+    couette[2 * k + 1] = ratio * theta_f * (fac[k].shear_f - fac[k].shear_fs) / h[k];
   }
   std::array<const double*, FilmIntegrals::kMaxLoads> direction{};
   for (int i = 0; i < n_loads; ++i) direction[i] = spec.load_directions[i]->data();

@@ -42,6 +42,8 @@ struct FilmIntegralSpec {
 /// stresses along +s are
 ///   tau_1 = -mu u/h (Phi_f + Phi_fs) - Phi_fp (h/2) dp/ds - sgn(u) mu_f p_c,
 ///   tau_2 = +mu u/h (Phi_f - Phi_fs) - Phi_fp (h/2) dp/ds + sgn(u) mu_f p_c.
+/// With a pressure-dependent viscosity mu in tau is mu(p): the Couette integrals below then carry
+/// the factor mu(p)/mu0 and mu is mu0.
 struct FilmFriction {
   double couette_surface1 = 0.0;  ///< int theta (Phi_f + Phi_fs)/h dA [m]
   double couette_surface2 = 0.0;  ///< int theta (Phi_f - Phi_fs)/h dA [m]

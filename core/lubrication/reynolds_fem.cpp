@@ -23,6 +23,8 @@ const char* ToString(SolveStatus status) {
       return "not-converged";
     case SolveStatus::kFactorizationFailed:
       return "factorization-failed";
+    case SolveStatus::kPressureViscosityLimit:
+      return "beyond the pressure-viscosity limit";
   }
   return "?";
 }
@@ -68,6 +70,15 @@ const ReynoldsSolution& ReynoldsFem::Solve(const ReynoldsParams& params) {
   sol_.stats.assembly_s = Seconds(t0, Clock::now());
   sol_.fluid_fraction.setOnes();
   sol_.void_content.setZero();
+  // Pressure-dependent viscosity: solve for the reduced pressure q (boundary values and the
+  // previous solution, the warm start, in q too), then recover p node by node.
+  const PressureViscosity* pv = params.pressure_viscosity;
+  if (pv != nullptr && !pv->active()) pv = nullptr;
+  if (pv != nullptr) {
+    boundary_saved_ = p_fixed_;
+    for (int k = 0; k < n; ++k) p_fixed_[k] = pv->Reduced(p_fixed_[k]);
+    if (reduced_.size() == n) sol_.pressure.swap(reduced_);
+  }
   switch (options_.cavitation) {
     case CavitationModel::kNone:
       SolveReynoldsLcp(true);
@@ -79,7 +90,19 @@ const ReynoldsSolution& ReynoldsFem::Solve(const ReynoldsParams& params) {
       SolveJfo();
       break;
   }
-  FinishStats();
+  FinishStats();  // residuals (flows) and complementarity: the same in q as in p
+  if (pv != nullptr) {
+    p_fixed_ = boundary_saved_;
+    reduced_ = sol_.pressure;
+    // A film beyond the limit keeps the largest finite pressure of the law there, and fails.
+    const double q_top = pv->ReducedLimit() * (1.0 - 1e-12);
+    bool beyond = false;
+    for (int k = 0; k < n; ++k) {
+      beyond |= reduced_[k] >= q_top;
+      sol_.pressure[k] = pv->Pressure(std::min(reduced_[k], q_top));
+    }
+    if (beyond) sol_.stats.status = SolveStatus::kPressureViscosityLimit;
+  }
   double squeeze = 0.0, voids = 0.0, wetted = 0.0;
   for (const Element& e : elements_) {
     const auto& nd = e.node;

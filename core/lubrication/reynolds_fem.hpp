@@ -46,14 +46,17 @@
 #include "core/base/stop.hpp"
 #include "core/lubrication/film_factors.hpp"
 #include "core/lubrication/film_models.hpp"
+#include "core/lubrication/oil.hpp"
 #include "core/lubrication/sparse_ldlt.hpp"
 #include "core/lubrication/sparse_lu.hpp"
 #include "core/lubrication/tri_mesh.hpp"
 
 namespace filmdyn::lubrication {
 
-/// Numerical status of one solve (numerical trouble is a status, never an exception: docs/conventions.md).
-enum class SolveStatus { kConverged, kNotConverged, kFactorizationFailed };
+/// Numerical status of one solve (numerical trouble is a status, never an exception:
+/// docs/conventions.md). kPressureViscosityLimit: the film needs a reduced pressure at or beyond
+/// the pressure-viscosity law's limit (the pressure would be infinite, see oil.hpp).
+enum class SolveStatus { kConverged, kNotConverged, kFactorizationFailed, kPressureViscosityLimit };
 const char* ToString(SolveStatus status);
 
 struct ReynoldsOptions {
@@ -88,6 +91,10 @@ struct ReynoldsParams {
   /// JFO only: 0 = quasi-static; > 0 = transient, the time [s] since the state whose void
   /// content is in ReynoldsFem::void_history().
   double time_step = 0.0;
+  /// Pressure-dependent viscosity (nullptr or law kNone: mu = viscosity everywhere): the film is
+  /// solved for the reduced pressure and the pressure recovered (oil.hpp); `viscosity` is mu at
+  /// zero gauge pressure.
+  const PressureViscosity* pressure_viscosity = nullptr;
 };
 
 /// Statistics of one solve.
@@ -223,6 +230,7 @@ class ReynoldsFem {
   std::unique_ptr<SparseLdlt> ldlt_;
   std::unique_ptr<SparseLu> lu_;  // JFO: the mixed (p, r) system
   Eigen::VectorXd h_, dhdt_, p_fixed_, f_, rhs_, x_, work_, theta_fixed_, void_old_;
+  Eigen::VectorXd reduced_, boundary_saved_;  // pressure-dependent viscosity: q, and p_fixed_
   double time_step_ = 0.0;
   std::vector<std::uint8_t> extra_fixed_, fixed_, active_, prev_active_, next_active_;
   bool have_prev_ = false;

@@ -7,6 +7,7 @@
 #include "core/base/input_error.hpp"
 #include "core/engine/validation_cases.hpp"
 #include "core/lubrication/cavitation_validation.hpp"
+#include "core/lubrication/oil_validation.hpp"
 #include "core/lubrication/skirt_validation.hpp"
 #include "core/lubrication/validation_cases.hpp"
 #include "core/multibody/validation_cases.hpp"
@@ -25,7 +26,8 @@ const std::vector<std::pair<std::string, std::function<std::vector<ValidationRow
                    for (auto& row : multibody::MultibodyValidationRows()) rows.push_back(row);
                    return rows;
                  }},
-                {"skirt", [] { return lubrication::SkirtValidationRows(); }}};
+                {"skirt", [] { return lubrication::SkirtValidationRows(); }},
+                {"lubricant", [] { return lubrication::LubricantValidationRows(); }}};
   return suites;
 }
 

@@ -12,6 +12,8 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include <cmath>
+
 #include <sys/types.h>
 #include <csignal>
 
@@ -422,6 +424,43 @@ class TestCli : public QObject {
     expect_error({"--rpm", "1", "--rpm", "2"}, "only once");
     expect_error({"extra"}, "takes no positional");
     QCOMPARE(filmdyn::cli::ParseDoubleList("--rpm", "1000,2000").size(), std::size_t(2));
+  }
+
+  // The calculator's oil options: the viscosity a Vogel law gives at the temperature (reported
+  // as viscosity_used), Barus raising the load, and clear errors for what does not fit.
+  void bearingTakesOilTemperatureAndPressureLaws() {
+    const Result vogel = Run(
+        {"bearing", "--eps", "0.6", "--vogel", "6.9e-5,1050,165", "--temperature", "90", "--json"});
+    QCOMPARE(vogel.exit_code, 0);
+    const QJsonObject v = QJsonDocument::fromJson(vogel.out.toUtf8()).object();
+    const double expected = 6.9e-5 * std::exp(1050.0 / (363.15 - 165.0));
+    QVERIFY(std::abs(v["viscosity_used"].toDouble() / expected - 1.0) < 1e-12);
+    QCOMPARE(v["temperature"].toDouble(), 90.0);
+    QCOMPARE(v["pressure_viscosity"].toString(), QString("none"));
+    const Result barus = Run({"bearing", "--eps", "0.6", "--vogel", "6.9e-5,1050,165",
+                              "--temperature", "90", "--barus", "2e-8", "--json"});
+    QCOMPARE(barus.exit_code, 0);
+    const QJsonObject b = QJsonDocument::fromJson(barus.out.toUtf8()).object();
+    QCOMPARE(b["pressure_viscosity"].toString(), QString("barus"));
+    QCOMPARE(b["viscosity_used"].toDouble(), v["viscosity_used"].toDouble());
+    QVERIFY(b["load"].toDouble() > 1.01 * v["load"].toDouble());
+    struct Bad {
+      QStringList args;
+      QString field;
+    };
+    const QList<Bad> bad = {
+        {{"--vogel", "6.9e-5,1050,165"}, "--temperature"},
+        {{"--vogel", "6.9e-5,1050,165", "--temperature", "-120"}, "--temperature"},
+        {{"--vogel", "6.9e-5,1050"}, "--vogel"},
+        {{"--vogel", "-1,1050,165", "--temperature", "90"}, "--vogel.a"},
+        {{"--viscosity", "0.01", "--temperature", "90"}, "--temperature"},
+        {{"--barus", "-2e-8"}, "barus_alpha"},
+        {{"--barus", "2e-8", "--roelands", "0.6"}, "--barus"}};
+    for (const Bad& c : bad) {
+      const Result r = Run(QStringList{"bearing", "--eps", "0.6"} + c.args);
+      QVERIFY2(r.exit_code == 2, qPrintable(c.args.join(' ') + ": " + r.err));
+      QVERIFY2(r.err.contains(c.field), qPrintable(c.args.join(' ') + ": " + r.err));
+    }
   }
 };
 

@@ -1,0 +1,160 @@
+#include "core/lubrication/oil.hpp"
+
+#include <algorithm>
+#include <boost/math/quadrature/gauss.hpp>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "core/base/input_error.hpp"
+
+namespace filmdyn::lubrication {
+
+namespace {
+std::string Kelvin(double t) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.6g K (%.4g °C)", t, t - 273.15);
+  return buf;
+}
+
+// Cubic Hermite on [x0, x1] with values y0, y1 and slopes d0, d1.
+double Hermite(double x, double x0, double x1, double y0, double y1, double d0, double d1) {
+  const double h = x1 - x0, s = (x - x0) / h, s2 = s * s, s3 = s2 * s;
+  return (2 * s3 - 3 * s2 + 1) * y0 + (s3 - 2 * s2 + s) * h * d0 + (-2 * s3 + 3 * s2) * y1 +
+         (s3 - s2) * h * d1;
+}
+}  // namespace
+
+double VogelLaw::At(double temperature, const std::string& field) const {
+  if (!std::isfinite(temperature) || !(temperature > c)) {
+    throw InputError(field, Kelvin(temperature), "above the Vogel law's pole c = " + Kelvin(c));
+  }
+  return a * std::exp(b / (temperature - c));
+}
+
+void VogelLaw::Validate(const std::string& prefix) const {
+  RequirePositive(prefix + ".a", a, "Pa*s");
+  RequirePositive(prefix + ".b", b, "K");
+  RequireFinite(prefix + ".c", c, "K");
+}
+
+VogelLaw VogelLaw::Through(double t1, double mu1, double t2, double mu2, double t3, double mu3) {
+  if (!(t1 < t2 && t2 < t3) || !(mu1 > mu2 && mu2 > mu3 && mu3 > 0.0)) {
+    throw InputError("vogel points", "(" + Kelvin(t1) + ", " + Kelvin(t2) + ", " + Kelvin(t3) + ")",
+                     "rising temperatures with falling positive viscosities");
+  }
+  // ln mu = ln a + b / (T - c): the ratio of the two log-differences fixes c in closed form.
+  const double r = (std::log(mu1) - std::log(mu2)) / (std::log(mu2) - std::log(mu3));
+  const double den = (t2 - t1) - r * (t3 - t2);
+  const double c = ((t2 - t1) * t3 - r * (t3 - t2) * t1) / den;
+  const double b = (std::log(mu1) - std::log(mu2)) * (t1 - c) * (t2 - c) / (t2 - t1);
+  if (!std::isfinite(c) || !(c < t1) || !(b > 0.0)) {
+    throw InputError("vogel points", "c = " + FormatValue(c) + " K, b = " + FormatValue(b),
+                     "a Vogel law with b > 0 and its pole below the lowest temperature");
+  }
+  return {mu1 * std::exp(-b / (t1 - c)), b, c};
+}
+
+const char* ToString(PressureLaw law) {
+  switch (law) {
+    case PressureLaw::kNone:
+      return "none";
+    case PressureLaw::kBarus:
+      return "barus";
+    case PressureLaw::kRoelands:
+      return "roelands";
+  }
+  return "?";
+}
+
+PressureViscosity PressureViscosity::Barus(double alpha, const std::string& prefix) {
+  RequirePositive(prefix + "barus_alpha", alpha, "1/Pa");
+  PressureViscosity v;
+  v.law_ = PressureLaw::kBarus;
+  v.alpha_ = alpha;
+  v.q_max_ = 1.0 / alpha;
+  return v;
+}
+
+PressureViscosity PressureViscosity::Roelands(double z, double mu0, const std::string& prefix) {
+  RequirePositive(prefix + "roelands_z", z);
+  if (!std::isfinite(mu0) || !(mu0 > kRoelandsViscosity)) {
+    throw InputError(prefix + "viscosity", FormatValue(mu0) + " Pa*s",
+                     "above Roelands' reference viscosity 6.31e-5 Pa*s (with the Roelands law)");
+  }
+  PressureViscosity v;
+  v.law_ = PressureLaw::kRoelands;
+  v.z_ = z;
+  v.log_ratio_ = std::log(mu0 / kRoelandsViscosity);
+  // Tabulate q(p) up to where mu0/mu < 1e-17 (the rest of the integral is below rounding):
+  // L [(1 + p/p_r)^z - 1] = 39. The grid is uniform in ln(1 + p / 1 MPa): fine where the
+  // integrand is ~1, 0.25 % steps at GPa.
+  const double p_end = kRoelandsPressure * (std::pow(1.0 + 39.0 / v.log_ratio_, 1.0 / z) - 1.0);
+  constexpr int kIntervals = 4096;
+  constexpr double kScale = 1e6;
+  const double step = std::log1p(p_end / kScale) / kIntervals;
+  v.p_grid_.resize(kIntervals + 1);
+  v.q_grid_.resize(kIntervals + 1);
+  v.dqdp_.resize(kIntervals + 1);
+  auto integrand = [&v](double p) { return v.RoelandsIntegrand(p); };
+  for (int i = 0; i <= kIntervals; ++i) {
+    v.p_grid_[i] = kScale * std::expm1(i * step);
+    v.dqdp_[i] = v.RoelandsIntegrand(v.p_grid_[i]);
+    v.q_grid_[i] = i == 0
+                       ? 0.0
+                       : v.q_grid_[i - 1] + boost::math::quadrature::gauss<double, 10>::integrate(
+                                                integrand, v.p_grid_[i - 1], v.p_grid_[i]);
+  }
+  v.q_max_ = v.q_grid_.back();
+  return v;
+}
+
+double PressureViscosity::RoelandsIntegrand(double p) const {
+  return std::exp(-log_ratio_ * (std::pow(1.0 + p / kRoelandsPressure, z_) - 1.0));
+}
+
+double PressureViscosity::InitialCoefficient() const {
+  switch (law_) {
+    case PressureLaw::kNone:
+      return 0.0;
+    case PressureLaw::kBarus:
+      return alpha_;
+    case PressureLaw::kRoelands:
+      return z_ * log_ratio_ / kRoelandsPressure;
+  }
+  return 0.0;
+}
+
+double PressureViscosity::Ratio(double p) const {
+  if (!(p > 0.0)) return 1.0;
+  switch (law_) {
+    case PressureLaw::kNone:
+      return 1.0;
+    case PressureLaw::kBarus:
+      return std::exp(alpha_ * p);
+    case PressureLaw::kRoelands:
+      return 1.0 / RoelandsIntegrand(p);
+  }
+  return 1.0;
+}
+
+double PressureViscosity::Reduced(double p) const {
+  if (!(p > 0.0) || law_ == PressureLaw::kNone) return p;
+  if (law_ == PressureLaw::kBarus) return -std::expm1(-alpha_ * p) / alpha_;
+  if (p >= p_grid_.back()) return q_max_;
+  const auto it = std::upper_bound(p_grid_.begin(), p_grid_.end(), p);
+  const size_t i = static_cast<size_t>(it - p_grid_.begin()) - 1;
+  return Hermite(p, p_grid_[i], p_grid_[i + 1], q_grid_[i], q_grid_[i + 1], dqdp_[i], dqdp_[i + 1]);
+}
+
+double PressureViscosity::Pressure(double q) const {
+  if (!(q > 0.0) || law_ == PressureLaw::kNone) return q;
+  if (q >= q_max_) return std::numeric_limits<double>::infinity();
+  if (law_ == PressureLaw::kBarus) return -std::log1p(-alpha_ * q) / alpha_;
+  const auto it = std::upper_bound(q_grid_.begin(), q_grid_.end(), q);
+  const size_t i = static_cast<size_t>(it - q_grid_.begin()) - 1;
+  return Hermite(q, q_grid_[i], q_grid_[i + 1], p_grid_[i], p_grid_[i + 1], 1.0 / dqdp_[i],
+                 1.0 / dqdp_[i + 1]);
+}
+
+}  // namespace filmdyn::lubrication

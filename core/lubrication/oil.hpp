@@ -1,0 +1,78 @@
+#pragma once
+/// @file How the oil's viscosity follows temperature and pressure (docs/equations.md, "Oil").
+///
+/// Temperature: Vogel's law  mu(T) = a exp(b / (T - c)), T in kelvin, a in Pa s, b and c in K.
+/// Pressure (the film's gauge pressure p >= 0):
+///   Barus     mu(p) = mu0 exp(alpha p);
+///   Roelands  mu(p) = mu0 exp( ln(mu0 / mu_r) [ (1 + p / p_r)^z - 1 ] ),
+///             mu_r = 6.31e-5 Pa s, p_r = 1.96e8 Pa (Roelands 1966, in the SI form of Hamrock,
+///             Schmid & Jacobson, Fundamentals of Machine Elements / Fluid Film Lubrication).
+/// A viscosity that depends on pressure only (uniform temperature over the film) leaves the
+/// Reynolds equation linear in the reduced pressure  q(p) = int_0^p mu0 / mu(s) ds :
+///   div( h^3 / (12 mu(p)) grad p ) = div( h^3 / (12 mu0) grad q ),
+/// and q >= 0 exactly where p >= 0, so the cavitation conditions carry over unchanged. The film
+/// is solved for q and p = q^-1(q) recovered node by node: an exact treatment of the nonlinear
+/// equation, with no iteration. q is bounded: q < q_max = int_0^inf mu0 / mu (1 / alpha for
+/// Barus); a film that needs more is beyond the pressure-viscosity limit (the pressure would be
+/// infinite) and its solve fails with that status.
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace filmdyn::lubrication {
+
+/// mu(T) = a exp(b / (T - c)).
+struct VogelLaw {
+  double a = 0.0;  ///< [Pa s]
+  double b = 0.0;  ///< [K]
+  double c = 0.0;  ///< [K], the pole: the law holds for T > c
+  /// Viscosity at T [K]. Throws filmdyn::InputError (field `field`) for T <= c.
+  double At(double temperature, const std::string& field = "temperature") const;
+  /// Throws filmdyn::InputError naming `prefix`.a/.b/.c for a <= 0, b <= 0 or non-finite values.
+  void Validate(const std::string& prefix) const;
+  /// The law through three (T [K], mu [Pa s]) points with T1 < T2 < T3 and mu1 > mu2 > mu3
+  /// (exact; a Newton iteration on c). Throws filmdyn::InputError when no Vogel law with
+  /// b > 0 passes through them.
+  static VogelLaw Through(double t1, double mu1, double t2, double mu2, double t3, double mu3);
+};
+
+enum class PressureLaw { kNone, kBarus, kRoelands };
+const char* ToString(PressureLaw law);
+
+/// mu(p) / mu0 and the reduced pressure of one oil at one temperature.
+class PressureViscosity {
+ public:
+  static constexpr double kRoelandsViscosity = 6.31e-5;  ///< mu_r [Pa s]
+  static constexpr double kRoelandsPressure = 1.96e8;    ///< p_r [Pa]
+
+  PressureViscosity() = default;  ///< kNone: mu independent of p
+  /// alpha [1/Pa] > 0. Throws filmdyn::InputError naming `prefix`barus_alpha.
+  static PressureViscosity Barus(double alpha, const std::string& prefix = "");
+  /// z [-] > 0; mu0 [Pa s] > mu_r (the law's own reference viscosity). Throws
+  /// filmdyn::InputError naming `prefix`roelands_z or `prefix`viscosity.
+  static PressureViscosity Roelands(double z, double mu0, const std::string& prefix = "");
+
+  PressureLaw law() const { return law_; }
+  bool active() const { return law_ != PressureLaw::kNone; }
+  /// Pressure-viscosity coefficient at p = 0: dln(mu)/dp [1/Pa] (alpha; for Roelands
+  /// z ln(mu0/mu_r) / p_r).
+  double InitialCoefficient() const;
+  /// mu(p) / mu0 (p < 0 is taken as 0: a cavitated film).
+  double Ratio(double p) const;
+  /// q(p) [Pa]; q(p) = p for kNone. Negative p (none in a solved film) map to themselves.
+  double Reduced(double p) const;
+  /// p(q), the inverse; +infinity for q >= ReducedLimit().
+  double Pressure(double q) const;
+  /// q_max = lim q(p) as p -> infinity [Pa] (+infinity for kNone).
+  double ReducedLimit() const { return q_max_; }
+
+ private:
+  PressureLaw law_ = PressureLaw::kNone;
+  double alpha_ = 0.0, z_ = 0.0, log_ratio_ = 0.0;
+  double q_max_ = 1e300;
+  // Roelands: q(p) tabulated on a graded grid with dq/dp = mu0/mu (cubic Hermite both ways).
+  std::vector<double> p_grid_, q_grid_, dqdp_;
+  double RoelandsIntegrand(double p) const;
+};
+
+}  // namespace filmdyn::lubrication

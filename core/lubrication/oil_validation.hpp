@@ -1,0 +1,39 @@
+#pragma once
+/// @file Verification of the oil's pressure-viscosity laws in the film (suite "lubricant" of
+/// `filmdyn validate`, docs/validation/lubricant.md): the plane inclined slider with Barus
+/// viscosity against its semi-analytic solution, and Roelands' reduced pressure against an
+/// independent adaptive quadrature.
+#include <vector>
+
+#include "core/base/validation_row.hpp"
+#include "core/lubrication/oil.hpp"
+
+namespace filmdyn::lubrication {
+
+/// A plane inclined slider of length L, one surface sliding at U, the film thinning linearly
+/// from h_inlet (x = 0) to h_outlet (x = L), p = 0 at both ends, no side leakage.
+struct InclinedSlider {
+  double length = 0.01, speed = 10.0, viscosity = 0.01;
+  double h_inlet = 10e-6, h_outlet = 5e-6;
+  /// The isoviscous pressure, closed form: with h(x) linear of slope m and the flow per width
+  /// Q = U h_i h_o / (h_i + h_o),  q(x) = (6 mu / m) [U (1/h_i - 1/h) - Q (1/h_i^2 - 1/h^2)].
+  /// With a pressure-dependent viscosity it is the reduced pressure (oil.hpp).
+  double IsoviscousPressure(double x) const;
+  /// Load per unit width int_0^L p dx for the law (p = law.Pressure(q(x))), by 64-point
+  /// Gauss-Legendre quadrature on 16 equal panels [N/m].
+  double Load(const PressureViscosity& law) const;
+  /// The largest pressure, at h = 2 Q / U (where dq/dx = 0) [Pa].
+  double PeakPressure(const PressureViscosity& law) const;
+};
+
+/// Load per unit width and peak pressure of the slider solved by ReynoldsFem on a strip of n
+/// elements along x.
+struct SliderFem {
+  double load = 0.0, peak_pressure = 0.0;
+};
+SliderFem SolveSliderFem(const InclinedSlider& slider, const PressureViscosity& law, int n);
+
+/// The rows of `filmdyn validate --suite lubricant` (~0.05 s).
+std::vector<verification::ValidationRow> LubricantValidationRows();
+
+}  // namespace filmdyn::lubrication
