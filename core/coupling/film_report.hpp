@@ -85,6 +85,8 @@ struct SkirtFilmSample {
   /// How far the reported film's fraction leaves [0, 1] (ReynoldsStats::fraction_excess); the
   /// run ends when it exceeds kFractionTolerance.
   double fraction_excess = 0.0;
+  /// Nodes at the pressure-viscosity limit (ReynoldsStats::capped_nodes); the run ends when > 0.
+  int capped_nodes = 0;
   OilAccount oil;
 };
 
@@ -115,6 +117,7 @@ struct BearingFilmSample {
   /// (BearingResult::feed_flow, side_flow) [m^3/s].
   double supply_flow = 0.0, side_flow = 0.0;
   double fraction_excess = 0.0;  ///< as SkirtFilmSample::fraction_excess
+  int capped_nodes = 0;          ///< as SkirtFilmSample::capped_nodes
   OilAccount oil;
 };
 

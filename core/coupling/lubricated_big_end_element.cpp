@@ -236,6 +236,7 @@ void LubricatedBigEndElement::ReportFilm(SkirtFilmSample*, BearingFilmSample* be
   b.friction_torque_journal = loads_[2];
   b.friction_torque_bearing = loads_[3];
   b.fraction_excess = result_.stats.fraction_excess;
+  b.capped_nodes = result_.stats.capped_nodes;
   b.supply_flow = result_.feed_flow;
   b.side_flow = result_.side_flow;
   b.oil = oil_;

@@ -185,6 +185,7 @@ void LubricatedSkirtElement::ReportFilm(SkirtFilmSample* skirt, BearingFilmSampl
   f.tilt_rate = kin_.state.gamma_dot;
   f.speed = kin_.state.piston_velocity;
   f.fraction_excess = result_.stats.fraction_excess;
+  f.capped_nodes = result_.stats.capped_nodes;
   f.inflow = result_.inflow;
   f.outflow = result_.outflow;
   f.wetted_fraction = result_.wetted_fraction;

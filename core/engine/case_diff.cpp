@@ -28,7 +28,7 @@ std::pair<std::string, std::string> DisplayPair(const CaseField& field, double a
   if (field.kind == FieldKind::kInteger) {
     return {fmt::format("{}{}", std::llround(a), unit), fmt::format("{}{}", std::llround(b), unit)};
   }
-  const double da = a / field.display_scale, db = b / field.display_scale;
+  const double da = field.ToDisplay(a), db = field.ToDisplay(b);
   std::string ta, tb;
   for (int digits = kDigits; digits <= 17; ++digits) {
     ta = FormatSignificant(da, digits);

@@ -129,6 +129,146 @@ CaseField Cavitation(std::string path, Section EngineCase::*section,
                  "the film's oil content carried from step to step)"});
 }
 
+// The fields of one oil (lubrication::OilSpec) named prefix + "viscosity_model", ...: the case's
+// (prefix "lubricant.") or a joint's own ("skirt.oil.", "big_end.oil."). `whose` ends each help.
+using OilOf = lubrication::OilSpec& (*)(EngineCase&);
+void AddOilFields(std::vector<CaseField>& f, const std::string& prefix, FieldGroup group, OilOf oil,
+                  const std::string& whose, const std::string& symbol_prefix) {
+  using lubrication::OilSpec;
+  static const std::map<std::string_view, const char*> kSymbol = {
+      {"viscosity_model", "oil model"},
+      {"viscosity", "μ"},
+      {"vogel_a", "Vogel a"},
+      {"vogel_b", "Vogel b"},
+      {"vogel_c", "Vogel c"},
+      {"pressure_viscosity", "pressure law"},
+      {"barus_alpha", "α"},
+      {"roelands_z", "z"}};
+  auto number = [&](const char* name, double OilSpec::*member, const Info& info,
+                    std::string description) {
+    CaseField field = Base(prefix + name, FieldKind::kNumber, info);
+    field.symbol = symbol_prefix + kSymbol.at(name);
+    field.get = [oil, member](const EngineCase& c) {
+      return oil(const_cast<EngineCase&>(c)).*member;
+    };
+    field.set = [oil, member](EngineCase& c, double v) { oil(c).*member = v; };
+    field.description = std::move(description);
+    f.push_back(std::move(field));
+  };
+  auto choice = [&](const char* name, auto OilSpec::*member, std::vector<std::string> names,
+                    const Info& info, std::string description) {
+    CaseField field = Base(prefix + name, FieldKind::kChoice, info);
+    field.symbol = symbol_prefix + kSymbol.at(name);
+    field.choices = std::move(names);
+    field.choice = [oil, member](const EngineCase& c) {
+      return static_cast<int>(oil(const_cast<EngineCase&>(c)).*member);
+    };
+    field.set_choice = [oil, member](EngineCase& c, int k) {
+      using Enum = std::remove_reference_t<decltype(oil(c).*member)>;
+      oil(c).*member = static_cast<Enum>(k);
+    };
+    field.description = std::move(description);
+    f.push_back(std::move(field));
+  };
+  using lubrication::PressureLaw;
+  using lubrication::ViscosityModel;
+  choice("viscosity_model", &OilSpec::model,
+         {ToString(ViscosityModel::kConstant), ToString(ViscosityModel::kVogel)},
+         {group, "Viscosity model", "", "", 1.0, {}, "\"constant\" or \"vogel\" (temperature)"},
+         "How the viscosity follows the film temperature: a constant, or Vogel's law " + whose);
+  number(
+      "viscosity", &OilSpec::viscosity,
+      {group, "Dynamic viscosity μ", "Pa*s", "mPa·s", 1e-3, Viscosity(),
+       "with the constant model; Table I: 0.02 Pa·s"},
+      "Dynamic viscosity of the oil at its running temperature, with the constant model " + whose);
+  number("vogel_a", &OilSpec::vogel_a,
+         {group,
+          "Vogel's law: factor a",
+          "Pa*s",
+          "mPa·s",
+          1e-3,
+          {0.0, 1e3, false, false},
+          "μ = a exp(b / (T − c)), T in kelvin; > 0"},
+         "Vogel's law μ = a·exp(b / (T − c)): the factor a " + whose);
+  number("vogel_b", &OilSpec::vogel_b,
+         {group, "Vogel's law: b", "K", "K", 1.0, {0.0, 1e5, false, false}, "> 0"},
+         "Vogel's law: the constant b in the exponent " + whose);
+  number("vogel_c", &OilSpec::vogel_c,
+         {group, "Vogel's law: pole c", "K", "K", 1.0, Between(-1e4, 1e4),
+          "the pole: temperatures must stay above it"},
+         "Vogel's law: the pole temperature c (in kelvin; a constant given in °C plus 273.15) " +
+             whose);
+  choice("pressure_viscosity", &OilSpec::pressure_law,
+         {ToString(PressureLaw::kNone), ToString(PressureLaw::kBarus),
+          ToString(PressureLaw::kRoelands)},
+         {group, "Pressure–viscosity law", "", "", 1.0, {}, "\"none\", \"barus\" or \"roelands\""},
+         "How the viscosity rises with the film pressure: not at all, Barus' exponential or "
+         "Roelands' law " +
+             whose);
+  number("barus_alpha", &OilSpec::barus_alpha,
+         {group,
+          "Barus coefficient α",
+          "1/Pa",
+          "1/GPa",
+          1e-9,
+          {0.0, 1e-6, false, false},
+          "μ₀ exp(α p); mineral oils of engine-oil viscosity: 16–26 1/GPa at 60–100 °C "
+          "(Stachowiak & Batchelor, Engineering Tribology, Table 2.3)"},
+         "Pressure–viscosity coefficient α of Barus' law μ = μ₀·exp(α p) " + whose);
+  number("roelands_z", &OilSpec::roelands_z,
+         {group,
+          "Roelands index z",
+          "-",
+          "–",
+          1.0,
+          {0.0, 2.0, false, false},
+          "pressure–viscosity index; about 0.6 for mineral oils"},
+         "Pressure–viscosity index z of Roelands' law " + whose);
+}
+
+lubrication::OilSpec& LubricantOil(EngineCase& c) { return c.lubricant; }
+lubrication::OilSpec& SkirtOil(EngineCase& c) { return c.skirt.oil.own; }
+lubrication::OilSpec& BigEndOil(EngineCase& c) { return c.big_end.oil.own; }
+
+// A joint's oil: its source and film temperature, then its own oil's fields.
+template <typename Section>
+void AddJointOilFields(std::vector<CaseField>& f, const std::string& joint,
+                       Section EngineCase::*section, FieldGroup group, OilOf own) {
+  CaseField source = Base(joint + ".oil.source", FieldKind::kChoice,
+                          {group, "Oil", "", "", 1.0, {}, "\"lubricant\" (the case's) or \"own\""});
+  source.choices = {"lubricant", "own"};
+  source.choice = [section](const EngineCase& c) {
+    return static_cast<int>((c.*section).oil.source);
+  };
+  source.set_choice = [section](EngineCase& c, int k) {
+    (c.*section).oil.source = static_cast<OilSource>(k);
+  };
+  source.description = "Which oil this film carries: the case's lubricant, or its own (the " +
+                       joint + ".oil.* fields below).";
+  f.push_back(std::move(source));
+  CaseField temperature = Base(joint + ".oil.temperature", FieldKind::kNumber,
+                               {group,
+                                "Film temperature",
+                                "K",
+                                "°C",
+                                1.0,
+                                {0.0, 1000.0, true, false},
+                                "used where the viscosity follows temperature (Vogel's law)"});
+  temperature.display_offset = 273.15;  // shown in °C
+  temperature.get = [section](const EngineCase& c) { return (c.*section).oil.temperature; };
+  temperature.set = [section](EngineCase& c, double v) { (c.*section).oil.temperature = v; };
+  temperature.description =
+      "Temperature of this joint's oil film (one value over the film and the cycle); with a "
+      "Vogel viscosity it sets the viscosity.";
+  f.push_back(std::move(temperature));
+  const size_t first = f.size();
+  const std::string who = joint == "skirt" ? "skirt" : "big-end";
+  AddOilFields(f, joint + ".oil.", group, own, "(this joint's own oil).", who + " ");
+  for (size_t k = first; k < f.size(); ++k) f[k].label = "Own oil: " + f[k].label;
+  f[first - 2].symbol = who + " oil";
+  f[first - 1].symbol = who + " film T";
+}
+
 CaseField Text(std::string path, std::string EngineCase::*member, const Info& info) {
   CaseField f = Base(std::move(path), FieldKind::kText, info);
   f.text = [member](EngineCase& c) -> std::string& { return c.*member; };
@@ -228,7 +368,10 @@ void SetSymbols(std::vector<CaseField>& fields) {
   for (CaseField& field : fields) {
     const auto found = kSymbols.find(field.path);
     // A new field without a short label still reads sensibly: its full label.
-    field.symbol = found != kSymbols.end() ? found->second : field.label;
+    if (found != kSymbols.end())
+      field.symbol = found->second;
+    else if (field.symbol.empty())
+      field.symbol = field.label;
   }
 }
 
@@ -582,6 +725,7 @@ std::vector<CaseField> MakeSchema() {
   f.push_back(List("skirt.oil_film_values", sk, &S::oil_film_values,
                    {G::kSkirt, "Liner oil film: thickness", "m", "µm", kUm,
                     Open(0.0, 1e-3, true, false), "the oil film at each position"}));
+  AddJointOilFields(f, "skirt", sk, G::kSkirt, SkirtOil);
   f.push_back(Scalar("skirt.mesh_thrust", sk, &S::mesh_thrust,
                      {G::kSolver, "Skirt mesh: elements over Ω₁ (thrust)", "-", "–", 1.0,
                       Between(2, 2000), "circumferential elements of the thrust panel"}));
@@ -709,9 +853,9 @@ std::vector<CaseField> MakeSchema() {
       Scalar("big_end.groove_width", be, &B::groove_width,
              {G::kBigEnd, "Groove: axial width", "m", "mm", kMm, Open(0.0, 1.0, true, false),
               "centred on the bearing's mid-width; less than the bearing width"}));
-  f.push_back(Scalar("lubricant.viscosity", lub, &LubricantCase::viscosity,
-                     {G::kLubricant, "Dynamic viscosity μ", "Pa*s", "mPa·s", 1e-3, Viscosity(),
-                      "constant over the film; Table I: 0.02 Pa·s"}));
+  AddJointOilFields(f, "big_end", be, G::kBigEnd, BigEndOil);
+  AddOilFields(f, "lubricant.", G::kLubricant, LubricantOil,
+               "(the case's oil, both joints' unless a joint has its own).", "");
   f.push_back(Scalar(
       "lubricant.greenwood_tripp_k", lub, &LubricantCase::greenwood_tripp_k,
       {G::kLubricant, "Greenwood–Tripp constant K", "-", "–", 1.0, Open(0.0, 1.0, true, false),

@@ -49,7 +49,13 @@ struct CaseField {
   std::string description;
   std::string unit;              ///< SI unit as the file uses it: "m", "Pa*s", "-", "rpm", ...
   std::string display_unit;      ///< unit the GUI shows: "mm", "µm", "°", "MPa", ...
-  double display_scale = 1.0;    ///< SI value = display value × display_scale
+  double display_scale = 1.0;    ///< SI value = display value × display_scale + display_offset
+  /// Shift of the display unit's zero: −273.15 for temperatures in K shown in °C (SI =
+  /// display + 273.15). Scalars only; lists keep 0.
+  double display_offset = 0.0;
+  /// The value as the GUI shows it, and back.
+  double ToDisplay(double si) const { return (si - display_offset) / display_scale; }
+  double FromDisplay(double display) const { return display * display_scale + display_offset; }
   FieldRange range;              ///< numbers, integers and list elements (SI)
 
   /// Numbers and integers: the value in SI, and setting it (integers are rounded; a non-finite

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/lubrication/film_models.hpp"
+#include "core/lubrication/oil.hpp"
 
 namespace filmdyn::engine {
 
@@ -32,6 +33,17 @@ struct CrankTrainGeometry {
   double liner_radius = 36.50e-3;              ///< R_l, bore radius; gas force area π R_l² [m]
   double compression_ratio = 10.5;  ///< for the synthetic pressure model only [-] (assumed)
   double gravity = 9.81;            ///< [m/s²], along −Y (cylinder axis vertical, head up)
+};
+
+/// Which oil a joint's film carries: the case's (`lubricant.*`) or its own.
+enum class OilSource { kLubricant, kOwn };
+
+/// A joint's oil and film temperature.
+struct JointOil {
+  OilSource source = OilSource::kLubricant;
+  lubrication::OilSpec own{.viscosity = 0.02, .barus_alpha = 2.0e-8, .roelands_z = 0.6};
+  /// Film temperature [K]: where the viscosity follows temperature (Vogel), the film's.
+  double temperature = 373.15;
 };
 
 /// The piston skirt–liner joint (Table I); the film data are used when the skirt is lubricated.
@@ -73,6 +85,7 @@ struct SkirtCase {
   lubrication::SkirtSupply supply = lubrication::SkirtSupply::kFlooded;
   double oil_film = 5.0e-6;  ///< [m] (assumed: a few µm below the ring pack)
   std::vector<double> oil_film_positions, oil_film_values;  ///< [m], [m]; empty = oil_film
+  JointOil oil;                                             ///< the film's oil and temperature
 };
 
 /// The connecting-rod big-end bearing (Table I); the film data are used when the big end is
@@ -118,6 +131,7 @@ struct BigEndCase {
   double mesh_z_grading = 4.0;
   /// Film rupture and reformation: Reynolds (Swift–Stieber, the paper's) or mass-conserving JFO.
   lubrication::CavitationModel cavitation = lubrication::CavitationModel::kReynolds;
+  JointOil oil;  ///< the film's oil and temperature
 };
 
 /// One cylinder-pressure curve: absolute pressure vs crank angle at one speed.
@@ -151,8 +165,10 @@ struct SolverCase {
   int error_estimate = 1;
 };
 
-struct LubricantCase {
-  double viscosity = 0.02;              ///< μ [Pa·s]
+/// The case's oil (lubrication::OilSpec: viscosity model and pressure law; Table I: a constant
+/// 0.02 Pa·s), used by both joints unless a joint has its own.
+struct LubricantCase : lubrication::OilSpec {
+  LubricantCase() { barus_alpha = 2.0e-8, roelands_z = 0.6; }
   double greenwood_tripp_k = 1.198e-4;  ///< K of eq. 29 [-]
 };
 

@@ -13,6 +13,30 @@
 
 namespace filmdyn::engine {
 
+lubrication::OilSpec::AtTemperature JointOilAt(const EngineCase& c, const JointOil& oil,
+                                               const std::string& joint) {
+  const bool own = oil.source == OilSource::kOwn;
+  const lubrication::OilSpec& spec = own ? oil.own : c.lubricant;
+  return spec.At(oil.temperature, own ? joint + ".oil." : "lubricant.", joint + ".oil.temperature");
+}
+
+namespace {
+// Engine runs start from rest: in the first steps the journal and the piston meet their films
+// at metres per second, where the isoviscous pressure passes any pressure law's limit (1/alpha
+// for Barus) and the film would need infinite pressure. Until the run-in phases the law in,
+// engine runs keep the viscosity independent of pressure.
+void RequireNoPressureLawInRuns(const JointOil& oil, const LubricantCase& lubricant,
+                                const std::string& joint) {
+  const bool own = oil.source == OilSource::kOwn;
+  const lubrication::PressureLaw law = own ? oil.own.pressure_law : lubricant.pressure_law;
+  if (law == lubrication::PressureLaw::kNone) return;
+  throw InputError(own ? joint + ".oil.pressure_viscosity" : "lubricant.pressure_viscosity",
+                   lubrication::ToString(law),
+                   "\"none\" in engine runs (the start from rest drives the film past the "
+                   "pressure law's limit); the pressure laws serve `filmdyn bearing`");
+}
+}  // namespace
+
 lubrication::SkirtConfig SkirtConfigFromCase(const EngineCase& c) {
   const SkirtCase& sk = c.skirt;
   lubrication::SkirtConfig config;
@@ -32,7 +56,9 @@ lubrication::SkirtConfig SkirtConfigFromCase(const EngineCase& c) {
   g.profile.y = sk.profile_h;
   g.ovality.x = sk.ovality_alpha;  // empty = round skirt
   g.ovality.y = sk.ovality_h;
-  config.viscosity = c.lubricant.viscosity;
+  const lubrication::OilSpec::AtTemperature oil = JointOilAt(c, sk.oil, "skirt");
+  config.viscosity = oil.viscosity;
+  config.pressure_viscosity = oil.pressure;
   config.mesh.n_thrust = sk.mesh_thrust;
   config.mesh.n_relief = sk.mesh_relief;
   config.mesh.n_anti = sk.mesh_anti;
@@ -76,6 +102,7 @@ std::unique_ptr<multibody::JointForceElement> MakeLubricatedSkirt(const EngineCa
   const double y0 = height(best - 1), y1 = height(best), y2 = height(best + 1);
   const double den = y0 - 2.0 * y1 + y2;
   mount.pin_y_at_tdc = den < 0.0 ? y1 - 0.125 * (y2 - y0) * (y2 - y0) / den : y1;
+  RequireNoPressureLawInRuns(c.skirt.oil, c.lubricant, "skirt");
   return std::make_unique<coupling::LubricatedSkirtElement>(SkirtConfigFromCase(c), layout.piston,
                                                             mount);
 }
@@ -97,7 +124,9 @@ lubrication::BearingConfig BearingConfigFromCase(const EngineCase& c) {
                      "must be smaller than big_end.bearing_radius = " +
                          FormatValue(be.bearing_radius) + " [m] (no clearance)");
   }
-  config.viscosity = c.lubricant.viscosity;
+  const lubrication::OilSpec::AtTemperature oil = JointOilAt(c, be.oil, "big_end");
+  config.viscosity = oil.viscosity;
+  config.pressure_viscosity = oil.pressure;
   config.mesh.n_theta = be.mesh_theta;
   // The half has the same nodes and half the unknowns; the outputs show the whole width.
   config.mesh.symmetric_half = BigEndSolvesSymmetricHalf(be);
@@ -132,6 +161,7 @@ std::unique_ptr<multibody::JointForceElement> MakeLubricatedBigEnd(const EngineC
   coupling::BigEndMounting mount;
   mount.journal_point = layout.crank_pin;
   mount.bearing_point = layout.rod_big_end;
+  RequireNoPressureLawInRuns(c.big_end.oil, c.lubricant, "big_end");
   lubrication::BearingConfig config = BearingConfigFromCase(c);
   // The case's supply angles are measured from the rod axis (toward the small end) and from the
   // crank web's axis (main journal to pin); the solver's, from each body's own x axis.

@@ -12,6 +12,11 @@
 
 namespace filmdyn::engine {
 
+/// A joint's oil at its film temperature: the case's lubricant or the joint's own (JointOil).
+/// Throws filmdyn::InputError naming the field ("lubricant.vogel_a", "skirt.oil.temperature").
+lubrication::OilSpec::AtTemperature JointOilAt(const EngineCase& c, const JointOil& oil,
+                                               const std::string& joint);
+
 /// The skirt solver configuration of a case (mesh: the case's counts). Throws InputError naming
 /// the field when the case has no skirt clearance or its surfaces are invalid.
 lubrication::SkirtConfig SkirtConfigFromCase(const EngineCase& engine_case);

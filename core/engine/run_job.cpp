@@ -549,6 +549,17 @@ std::string FilmTrouble(const CrankTrainSample& s) {
           joint, excess, coupling::kFractionTolerance);
     }
   }
+  for (const auto& [present, capped, joint] :
+       {std::tuple{s.bearing.present, s.bearing.capped_nodes, "big-end"},
+        std::tuple{s.skirt.present, s.skirt.capped_nodes, "skirt"}}) {
+    if (present && capped > 0) {
+      return fmt::format(
+          "{} film beyond the pressure-viscosity limit at {} nodes: with this oil's pressure "
+          "law no finite pressure carries the load (the isoviscous pressure exceeds the law's "
+          "limit, 1/alpha for Barus)",
+          joint, capped);
+    }
+  }
   if (!std::isfinite(s.piston_lateral) || !std::isfinite(s.crank_torque) ||
       !std::isfinite(s.big_end_force_on_rod.norm())) {
     return "the solution diverged (non-finite state)";

@@ -1,6 +1,7 @@
 #include "core/engine/slider_crank_reference.hpp"
 
 #include <cmath>
+#include <numbers>
 
 namespace filmdyn::engine {
 
@@ -60,6 +61,16 @@ SliderCrankReference ExactSliderCrank(const CrankTrainGeometry& g, double phi, d
       g.crank_com_radius * Eigen::Vector2d(-std::sin(phi), std::cos(phi));
   r.crank_torque = Cross(crank_pin, r.big_end_force) + g.crank_mass * g.gravity * crank_com.x();
   return r;
+}
+
+double Stroke(const CrankTrainGeometry& g) {
+  const double e2 = g.pin_offset * g.pin_offset;
+  return std::sqrt((g.rod_length + g.crank_radius) * (g.rod_length + g.crank_radius) - e2) -
+         std::sqrt((g.rod_length - g.crank_radius) * (g.rod_length - g.crank_radius) - e2);
+}
+
+double SweptVolume(const CrankTrainGeometry& g) {
+  return std::numbers::pi * g.liner_radius * g.liner_radius * Stroke(g);
 }
 
 }  // namespace filmdyn::engine

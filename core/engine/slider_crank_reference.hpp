@@ -19,6 +19,12 @@ struct SliderCrankReference {
   double crank_torque = 0.0;                                ///< drive torque on the crank [N·m]
 };
 
+/// Stroke of the offset slider crank, the pin's travel between its dead centres (crank and rod
+/// in line): sqrt((L₂ + L₁)² − C_p²) − sqrt((L₂ − L₁)² − C_p²) [m].
+double Stroke(const CrankTrainGeometry& g);
+/// Swept volume of the cylinder: π R_l² × stroke [m³].
+double SweptVolume(const CrankTrainGeometry& g);
+
 /// At crank angle phi [rad], speed omega [rad/s] (constant) and gas force [N] (+ toward crank).
 SliderCrankReference ExactSliderCrank(const CrankTrainGeometry& g, double phi, double omega,
                                       double gas_force);

@@ -17,6 +17,8 @@ enum class Reduce {
   kMax,
   kMeanFplSkirt,
   kMeanFplBearing,
+  kFmepSkirt,
+  kFmepBearing,
   kSlapEnergyMax,
   kSlapEnergySum,
   kWorstError
@@ -40,6 +42,9 @@ const std::vector<FigureRecipe>& Recipes() {
       {{"max_bearing_eps[-]", "max ε [-]", 1.0}, "bearing_eps[-]", Reduce::kMax},
       {{"min_bearing_moft[m]", "min bearing MOFT [µm]", 1e6}, "bearing_moft[m]", Reduce::kMin},
       {{"mean_bearing_fpl[W]", "mean bearing FPL [W]", 1.0}, "", Reduce::kMeanFplBearing},
+      // Friction mean effective pressure of each joint (summary.json's kpis).
+      {{"skirt_fmep[Pa]", "skirt FMEP [kPa]", 1e-3}, "", Reduce::kFmepSkirt},
+      {{"bearing_fmep[Pa]", "big-end FMEP [kPa]", 1e-3}, "", Reduce::kFmepBearing},
       {{"max_abs_bigend_force_x[N]", "max abs big-end F_x [N]", 1.0},
        "bigend_force_x[N]",
        Reduce::kMaxAbs},
@@ -103,6 +108,10 @@ ComparisonRow ReadComparisonRow(const std::filesystem::path& folder) {
       value = summary.mean_fpl_skirt_w;
     } else if (recipe.reduce == Reduce::kMeanFplBearing) {
       value = summary.mean_fpl_bearing_w;
+    } else if (recipe.reduce == Reduce::kFmepSkirt) {
+      if (summary.kpis.skirt) value = summary.kpis.skirt->fmep;
+    } else if (recipe.reduce == Reduce::kFmepBearing) {
+      if (summary.kpis.big_end) value = summary.kpis.big_end->fmep;
     } else if (recipe.reduce == Reduce::kSlapEnergyMax || recipe.reduce == Reduce::kSlapEnergySum) {
       if (summary.kpis.skirt && summary.kpis.skirt->slap) {
         const PistonSlap& slap = *summary.kpis.skirt->slap;

@@ -5,6 +5,7 @@
 #include <numbers>
 #include <string>
 
+#include "core/engine/slider_crank_reference.hpp"
 #include "core/io/results_writer.hpp"
 
 namespace filmdyn::io {
@@ -211,10 +212,29 @@ RunKpis ComputeRunKpis(const std::vector<engine::CrankTrainSample>& samples,
   return kpis;
 }
 
+double FrictionMep(double mean_fpl_w, const engine::CrankTrainGeometry& geometry, double rpm) {
+  const double cycle_s = 2.0 * 60.0 / rpm;  // 720 °CA
+  return mean_fpl_w * cycle_s / engine::SweptVolume(geometry);
+}
+
+void AddFrictionMep(RunKpis* kpis, const engine::CrankTrainGeometry& geometry, double rpm) {
+  double sum = 0.0;
+  for (std::optional<JointKpis>* j : {&kpis->skirt, &kpis->big_end}) {
+    if (!*j || !(*j)->mean_fpl) continue;
+    (*j)->fmep = FrictionMep(*(*j)->mean_fpl, geometry, rpm);
+    sum += *(*j)->fmep;
+  }
+  for (std::optional<JointKpis>* j : {&kpis->skirt, &kpis->big_end}) {
+    if (*j && (*j)->fmep && sum > 0.0) (*j)->fmep_share = *(*j)->fmep / sum;
+  }
+}
+
 RunKpis RunKpisOf(const engine::RunConfig& config, const engine::RunResult& result) {
   const engine::CrankTrainGeometry& g = config.engine_case.geometry;
-  return ComputeRunKpis(result.samples, result.motion, g.piston_mass, g.piston_inertia,
-                        ReportsWholeCycle(result));
+  RunKpis kpis = ComputeRunKpis(result.samples, result.motion, g.piston_mass, g.piston_inertia,
+                                ReportsWholeCycle(result));
+  AddFrictionMep(&kpis, g, config.rpm);
+  return kpis;
 }
 
 }  // namespace filmdyn::io

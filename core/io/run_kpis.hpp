@@ -57,6 +57,10 @@ struct JointKpis {
   /// Mean friction power loss [W]: the headline figure's (engine::HeadlineFigures), the plain
   /// mean of the cycle's equally spaced output samples.
   std::optional<double> mean_fpl;
+  /// Friction mean effective pressure: the friction work of the cycle (mean_fpl times the
+  /// 720 °CA cycle's duration) per swept volume [Pa], and its share of the sum over the
+  /// lubricated joints [-] (AddFrictionMep).
+  std::optional<double> fmep, fmep_share;
   std::optional<double> max_eps;  ///< big end: largest eccentricity ratio [-]
   std::optional<double> max_eps_crank_angle_deg;
   std::optional<PistonSlap> slap;  ///< skirt only
@@ -84,6 +88,12 @@ struct RunKpis {
 RunKpis ComputeRunKpis(const std::vector<engine::CrankTrainSample>& samples,
                        const std::vector<engine::MotionSample>& motion, double piston_mass,
                        double piston_inertia, bool whole_cycle);
+/// Friction mean effective pressure of a mean friction power at `rpm`: its work over one 720 °CA
+/// cycle per swept volume (engine::SweptVolume) [Pa].
+double FrictionMep(double mean_fpl_w, const engine::CrankTrainGeometry& geometry, double rpm);
+/// Fills each joint's fmep and fmep_share from its mean_fpl, at `rpm` for the swept volume of
+/// `geometry` (engine::SweptVolume); a joint without mean_fpl gets none.
+void AddFrictionMep(RunKpis* kpis, const engine::CrankTrainGeometry& geometry, double rpm);
 /// The KPIs of a finished (or stopped) run: what it computed.
 RunKpis RunKpisOf(const engine::RunConfig& config, const engine::RunResult& result);
 

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "core/base/version.hpp"
+#include "core/engine/film_joints.hpp"
 #include "core/io/output_files.hpp"
 
 namespace filmdyn::io {
@@ -50,6 +51,19 @@ RunSummary SummarizeRun(const std::string& case_name, const engine::RunConfig& c
   s.error_estimate = result.error_estimate;
   s.warnings = RunWarnings(config, result);
   s.kpis = RunKpisOf(config, result);
+  auto oil_used = [&](const engine::JointOil& oil, const std::string& joint) {
+    const auto at = engine::JointOilAt(config.engine_case, oil, joint);
+    const lubrication::OilSpec& spec =
+        oil.source == engine::OilSource::kOwn ? oil.own : config.engine_case.lubricant;
+    return JointOilUsed{oil.temperature,
+                        at.viscosity,
+                        oil.source == engine::OilSource::kOwn ? "own" : "lubricant",
+                        lubrication::ToString(spec.model),
+                        lubrication::ToString(spec.pressure_law),
+                        at.pressure.InitialCoefficient()};
+  };
+  if (s.kpis.skirt) s.oil_skirt = oil_used(config.engine_case.skirt.oil, "skirt");
+  if (s.kpis.big_end) s.oil_big_end = oil_used(config.engine_case.big_end.oil, "big_end");
   SolverSummary& v = s.solver;
   v.integrator = "CVODE BDF (SUNDIALS), dense Newton";
   v.steps = result.stats.steps;
@@ -112,6 +126,8 @@ json JointKpisToJson(const JointKpis& k) {
   o["peak_contact_pressure[Pa]"] = k.peak_contact_pressure;
   o["peak_contact_pressure_crank_angle[deg]"] = Optional(k.peak_contact_pressure_crank_angle_deg);
   o["mean_fpl[W]"] = Optional(k.mean_fpl);
+  o["fmep[Pa]"] = Optional(k.fmep);
+  o["fmep_share[-]"] = Optional(k.fmep_share);
   o["oil_in_per_cycle[m^3]"] = Optional(k.oil_in_per_cycle);
   o["oil_out_per_cycle[m^3]"] = Optional(k.oil_out_per_cycle);
   o["oil_balance[-]"] = Optional(k.oil_balance);
@@ -148,6 +164,8 @@ JointKpis JointKpisFromJson(const json& o, const std::string& at) {
   k.peak_contact_pressure_crank_angle_deg =
       GetOptional(o, "peak_contact_pressure_crank_angle[deg]", at);
   k.mean_fpl = GetOptional(o, "mean_fpl[W]", at);
+  k.fmep = GetOptional(o, "fmep[Pa]", at);
+  k.fmep_share = GetOptional(o, "fmep_share[-]", at);
   k.max_eps = GetOptional(o, "max_eps[-]", at);
   k.oil_in_per_cycle = GetOptional(o, "oil_in_per_cycle[m^3]", at);
   k.oil_out_per_cycle = GetOptional(o, "oil_out_per_cycle[m^3]", at);
@@ -264,6 +282,18 @@ json SummaryToJson(const RunSummary& s) {
   if (s.kpis.skirt) kpis["skirt"] = JointKpisToJson(*s.kpis.skirt);
   if (s.kpis.big_end) kpis["big_end"] = JointKpisToJson(*s.kpis.big_end);
   j["kpis"] = kpis;
+  json oil = json::object();
+  for (const auto& [name, used] : {std::pair{"skirt", &s.oil_skirt}, {"big_end", &s.oil_big_end}}) {
+    if (!*used) continue;
+    const JointOilUsed& u = **used;
+    oil[name] = {{"temperature[K]", u.temperature_k},
+                 {"viscosity[Pa*s]", u.viscosity_pa_s},
+                 {"source", u.source},
+                 {"viscosity_model", u.viscosity_model},
+                 {"pressure_viscosity", u.pressure_viscosity},
+                 {"pressure_viscosity_coefficient[1/Pa]", u.pressure_viscosity_coefficient}};
+  }
+  j["oil"] = oil;
   return j;
 }
 
@@ -385,6 +415,23 @@ RunSummary FromJson(const json& j) {
   if (kpis.contains("skirt")) s.kpis.skirt = JointKpisFromJson(kpis.at("skirt"), "kpis.skirt");
   if (kpis.contains("big_end")) {
     s.kpis.big_end = JointKpisFromJson(kpis.at("big_end"), "kpis.big_end");
+  }
+  json oil = json::object();  // absent in a summary written before it existed
+  Read(j, "oil", "", &oil);
+  if (!oil.is_object()) throw std::runtime_error("\"oil\" is not an object");
+  for (const auto& [name, used] :
+       {std::pair{"skirt", &s.oil_skirt}, std::pair{"big_end", &s.oil_big_end}}) {
+    if (!oil.contains(name)) continue;
+    const json& o = oil.at(name);
+    const std::string at = std::string("oil.") + name;
+    JointOilUsed u;
+    Read(o, "temperature[K]", at, &u.temperature_k);
+    Read(o, "viscosity[Pa*s]", at, &u.viscosity_pa_s);
+    Read(o, "source", at, &u.source);
+    Read(o, "viscosity_model", at, &u.viscosity_model);
+    Read(o, "pressure_viscosity", at, &u.pressure_viscosity);
+    Read(o, "pressure_viscosity_coefficient[1/Pa]", at, &u.pressure_viscosity_coefficient);
+    *used = u;
   }
   return s;
 }

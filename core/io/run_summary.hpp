@@ -40,6 +40,17 @@ struct SolverSummary {
 /// killed before it could): io::MarkRunStarted.
 inline constexpr char kRunningStatus[] = "running";
 
+/// The oil a lubricated joint's film ran with ("oil" in the file): its film temperature and the
+/// viscosity that follows from it, and the pressure law.
+struct JointOilUsed {
+  double temperature_k = 0.0;
+  double viscosity_pa_s = 0.0;                  ///< at zero gauge pressure, at that temperature
+  std::string source;                           ///< "lubricant" (the case's) or "own"
+  std::string viscosity_model;                  ///< "constant" or "vogel"
+  std::string pressure_viscosity;               ///< "none", "barus" or "roelands"
+  double pressure_viscosity_coefficient = 0.0;  ///< dln(mu)/dp at p = 0 [1/Pa]
+};
+
 struct RunSummary {
   std::string filmdyn_version;
   std::string case_name;  ///< "case" in the file
@@ -70,6 +81,8 @@ struct RunSummary {
   /// The engine KPIs of the reported cycle per lubricated joint (io::RunKpisOf; "kpis"; empty
   /// for the ideal model and in a summary written before they existed).
   RunKpis kpis;
+  /// Per lubricated joint (empty for an ideal joint and in a summary written before it existed).
+  std::optional<JointOilUsed> oil_skirt, oil_big_end;
 };
 
 /// The summary of a finished (or stopped) run from its configuration, result and the rows

@@ -124,6 +124,12 @@ BearingCalcResult RunBearingCalculator(const BearingCalcInput& in) {
   if (r.stats.status != SolveStatus::kConverged) {
     out.converged = false;
     out.status = std::string("Reynolds solve: ") + ToString(r.stats.status);
+  } else if (r.stats.capped_nodes > 0) {
+    out.converged = false;
+    out.status = "film beyond the pressure-viscosity limit at " +
+                 std::to_string(r.stats.capped_nodes) +
+                 " nodes (the isoviscous pressure exceeds the law's limit, 1/alpha for Barus: "
+                 "no finite pressure carries this state)";
   }
   return out;
 }

@@ -157,4 +157,40 @@ double PressureViscosity::Pressure(double q) const {
                  1.0 / dqdp_[i + 1]);
 }
 
+const char* ToString(ViscosityModel model) {
+  switch (model) {
+    case ViscosityModel::kConstant:
+      return "constant";
+    case ViscosityModel::kVogel:
+      return "vogel";
+  }
+  return "?";
+}
+
+OilSpec::AtTemperature OilSpec::At(double temperature, const std::string& prefix,
+                                   const std::string& temperature_field) const {
+  AtTemperature out;
+  if (model == ViscosityModel::kConstant) {
+    RequirePositive(prefix + "viscosity", viscosity, "Pa*s");
+    out.viscosity = viscosity;
+  } else {
+    const VogelLaw law{vogel_a, vogel_b, vogel_c};
+    RequirePositive(prefix + "vogel_a", vogel_a, "Pa*s");
+    RequirePositive(prefix + "vogel_b", vogel_b, "K");
+    RequireFinite(prefix + "vogel_c", vogel_c, "K");
+    out.viscosity = law.At(temperature, temperature_field);
+  }
+  switch (pressure_law) {
+    case PressureLaw::kNone:
+      break;
+    case PressureLaw::kBarus:
+      out.pressure = PressureViscosity::Barus(barus_alpha, prefix);
+      break;
+    case PressureLaw::kRoelands:
+      out.pressure = PressureViscosity::Roelands(roelands_z, out.viscosity, prefix);
+      break;
+  }
+  return out;
+}
+
 }  // namespace filmdyn::lubrication

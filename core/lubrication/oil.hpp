@@ -75,4 +75,31 @@ class PressureViscosity {
   double RoelandsIntegrand(double p) const;
 };
 
+enum class ViscosityModel { kConstant, kVogel };
+const char* ToString(ViscosityModel model);
+
+/// An oil as a case or a command line gives it: how its viscosity follows temperature
+/// (constant, or Vogel's law) and pressure (none, Barus, Roelands).
+struct OilSpec {
+  ViscosityModel model = ViscosityModel::kConstant;
+  double viscosity = 0.02;  ///< kConstant: mu [Pa s]
+  double vogel_a = 0.0;     ///< kVogel: a [Pa s]
+  double vogel_b = 0.0;     ///< kVogel: b [K]
+  double vogel_c = 0.0;     ///< kVogel: c [K]
+  PressureLaw pressure_law = PressureLaw::kNone;
+  double barus_alpha = 0.0;  ///< kBarus: alpha [1/Pa]
+  double roelands_z = 0.0;   ///< kRoelands: z [-]
+
+  /// The oil at one film temperature.
+  struct AtTemperature {
+    double viscosity = 0.0;  ///< at zero gauge pressure [Pa s]
+    PressureViscosity pressure;
+  };
+  /// Resolves the oil at `temperature` [K] (ignored by a constant viscosity). Throws
+  /// filmdyn::InputError naming `prefix` + the field (e.g. "lubricant.vogel_a") or
+  /// `temperature_field` (a temperature at or below the Vogel pole).
+  AtTemperature At(double temperature, const std::string& prefix,
+                   const std::string& temperature_field) const;
+};
+
 }  // namespace filmdyn::lubrication

@@ -54,9 +54,8 @@
 namespace filmdyn::lubrication {
 
 /// Numerical status of one solve (numerical trouble is a status, never an exception:
-/// docs/conventions.md). kPressureViscosityLimit: the film needs a reduced pressure at or beyond
-/// the pressure-viscosity law's limit (the pressure would be infinite, see oil.hpp).
-enum class SolveStatus { kConverged, kNotConverged, kFactorizationFailed, kPressureViscosityLimit };
+/// docs/conventions.md).
+enum class SolveStatus { kConverged, kNotConverged, kFactorizationFailed };
 const char* ToString(SolveStatus status);
 
 struct ReynoldsOptions {
@@ -112,6 +111,10 @@ struct ReynoldsStats {
   double max_mass_residual = 0;         ///< JFO: max nodal mass-balance residual / flow scale
   /// JFO: how far the fluid fraction leaves [0, 1] (max of -theta and theta - 1, 0 when inside).
   double fraction_excess = 0;
+  /// Pressure-dependent viscosity: nodes whose reduced pressure reached the law's limit (the
+  /// pressure would be infinite; there it is capped at the law's largest finite value). A film
+  /// with such nodes carries more than the oil can at these surfaces (oil.hpp).
+  int capped_nodes = 0;
   double assembly_s = 0, factorization_s = 0, complementarity_s = 0;  ///< wall times [s]
 
   /// Merges the statistics of an independent solve of the same step (e.g. the other panel of

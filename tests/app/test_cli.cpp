@@ -461,6 +461,12 @@ class TestCli : public QObject {
       QVERIFY2(r.exit_code == 2, qPrintable(c.args.join(' ') + ": " + r.err));
       QVERIFY2(r.err.contains(c.field), qPrintable(c.args.join(' ') + ": " + r.err));
     }
+    // Engine runs refuse a pressure law (their start from rest passes its limit), naming it.
+    QTemporaryDir dir;
+    const Result run = Run({"run", "--model", "only-lbrbe", "--out", dir.filePath("r"), "--quiet",
+                            "--set", "lubricant.pressure_viscosity=roelands"});
+    QCOMPARE(run.exit_code, 2);
+    QVERIFY2(run.err.contains("lubricant.pressure_viscosity"), qPrintable(run.err));
   }
 };
 

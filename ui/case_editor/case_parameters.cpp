@@ -42,6 +42,15 @@ std::vector<CaseParameter> MakeParameters() {
       p.get = field.get;
       p.set = field.set;
       p.check = [&field](const std::string& name, double si) { field.Check(si, name); };
+      if (field.display_offset != 0.0) {
+        // The row's "SI" value is shifted so that value / to_si is the display value.
+        const double offset = field.display_offset;
+        p.get = [&field, offset](const engine::EngineCase& c) { return field.get(c) - offset; };
+        p.set = [&field, offset](engine::EngineCase& c, double v) { field.set(c, v + offset); };
+        p.check = [&field, offset](const std::string& name, double v) {
+          field.Check(v + offset, name);
+        };
+      }
     }
     rows.push_back(std::move(p));
   }

@@ -21,7 +21,7 @@ QString UnitSuffix(const engine::CaseField& field) {
 }
 
 QString DisplayNumber(double si, const engine::CaseField& field) {
-  return QLocale::c().toString(si / field.display_scale, 'g', 6);
+  return QLocale::c().toString(field.ToDisplay(si), 'g', 6);
 }
 
 // The default case as File → New opens it: the embedded default.json (both joints lubricated),

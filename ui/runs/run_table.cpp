@@ -10,6 +10,7 @@
 #include <cmath>
 
 #include "core/engine/case_diff.hpp"
+#include "core/io/run_kpis.hpp"
 #include "ui/runs/run_figures.hpp"
 
 namespace filmdyn::ui {
@@ -92,8 +93,8 @@ RunTable::RunTable(QWidget* parent) : QTableWidget(0, kColumns, parent) {
       {tr("Show"), tr("Run"), tr("Differences from the base run"), tr("Status"), tr("Warnings"),
        tr("Cycles"), tr("Wall [s]"), tr("max |e₀| [µm]"), tr("max |γ| [mrad]"),
        tr("min MOFT skirt [µm]"), tr("min MOFT big end [µm]"), tr("mean FPL skirt [W]"),
-       tr("mean FPL big end [W]"), tr("max |F big end| [kN]"), tr("Discretisation error"),
-       tr("Notes"), tr("Reason")});
+       tr("mean FPL big end [W]"), tr("FMEP skirt [kPa]"), tr("FMEP big end [kPa]"),
+       tr("max |F big end| [kN]"), tr("Discretisation error"), tr("Notes"), tr("Reason")});
   setSelectionBehavior(QAbstractItemView::SelectRows);
   setSelectionMode(QAbstractItemView::SingleSelection);
   // Only the name cell is edited in place (its flags); notes open a multi-line editor.
@@ -396,6 +397,14 @@ void RunTable::updateRun(const RunHandle& run) {
   item(row, kBearingMoft)->setText(Number(f.min_bearing_moft, 1e6));
   item(row, kSkirtFpl)->setText(Number(f.mean_skirt_fpl, 1.0, 1));
   item(row, kBearingFpl)->setText(Number(f.mean_bearing_fpl, 1.0, 1));
+  // Friction mean effective pressure: the mean friction power's work per cycle and swept volume.
+  const RunRequest& request = run->request();
+  auto fmep = [&](double fpl) {
+    return std::isfinite(fpl) ? io::FrictionMep(fpl, request.engine_case.geometry, request.rpm)
+                              : fpl;
+  };
+  item(row, kSkirtFmep)->setText(Number(fmep(f.mean_skirt_fpl), 1e-3, 2));
+  item(row, kBearingFmep)->setText(Number(fmep(f.mean_bearing_fpl), 1e-3, 2));
   item(row, kBigEndForce)->setText(Number(f.max_big_end_force, 1e-3));
   ShowEngineeringWarnings(run->engineeringWarnings(), item(row, kWarnings));
   ShowErrorEstimate(run->errorEstimate(), item(row, kError));

@@ -29,6 +29,8 @@ class RunTable : public QTableWidget {
     kBearingMoft,
     kSkirtFpl,
     kBearingFpl,
+    kSkirtFmep,
+    kBearingFmep,
     kBigEndForce,
     kError,
     kNotes,

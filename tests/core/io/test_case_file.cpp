@@ -3,6 +3,7 @@
 // resolves from the case (on disk and embedded) at and between the shipped speeds.
 #include <QtTest>
 
+#include <cmath>
 #include <fstream>
 #include <numbers>
 
@@ -365,6 +366,53 @@ class TestCaseFile : public QObject {
     QVERIFY(io::ReadResource("cases/default.json").has_value());
     QVERIFY(io::ReadResource("pressure/synthetic_1000rpm.csv").has_value());
     QVERIFY(!io::ReadResource("pressure/none.csv").has_value());
+  }
+
+  // Each joint's oil at its own film temperature: the case's lubricant (constant, or Vogel with
+  // a pressure law) or the joint's own, set with --set paths and read back from the file.
+  void jointOilsResolveAtTheirTemperatures() {
+    json j = DefaultJson();
+    for (const char* set : {"lubricant.viscosity_model=vogel", "lubricant.vogel_a=6.9e-5",
+                            "lubricant.vogel_b=1050", "lubricant.vogel_c=165",
+                            "lubricant.pressure_viscosity=barus", "lubricant.barus_alpha=2e-8",
+                            "big_end.oil.temperature=363.15", "skirt.oil.temperature=393.15"})
+      io::ApplyOverride(&j, set);
+    engine::EngineCase c = io::CaseFromJson(j);
+    auto vogel = [](double t) { return 6.9e-5 * std::exp(1050.0 / (t - 165.0)); };
+    const auto bearing = engine::BearingConfigFromCase(c);
+    QVERIFY(std::abs(bearing.viscosity / vogel(363.15) - 1.0) < 1e-14);
+    QCOMPARE(bearing.pressure_viscosity.law(), lubrication::PressureLaw::kBarus);
+    QCOMPARE(bearing.pressure_viscosity.InitialCoefficient(), 2e-8);
+    QVERIFY(std::abs(engine::SkirtConfigFromCase(c).viscosity / vogel(393.15) - 1.0) < 1e-14);
+    // The skirt with its own oil: a constant 5 mPa s and no pressure law; the big end unchanged.
+    io::ApplyOverride(&j, "skirt.oil.source=own");
+    io::ApplyOverride(&j, "skirt.oil.viscosity=0.005");
+    c = io::CaseFromJson(j);
+    const auto skirt = engine::SkirtConfigFromCase(c);
+    QCOMPARE(skirt.viscosity, 0.005);
+    QVERIFY(!skirt.pressure_viscosity.active());
+    QVERIFY(std::abs(engine::BearingConfigFromCase(c).viscosity / vogel(363.15) - 1.0) < 1e-14);
+    // Written and read back with the nested paths.
+    const json once = io::CaseToJson(c);
+    QCOMPARE(io::CaseToJson(io::CaseFromJson(once)), once);
+    QCOMPARE(once["skirt"]["oil"]["source"].get<std::string>(), std::string("own"));
+    // A film temperature at or below the Vogel pole names the joint's temperature field.
+    c.big_end.oil.temperature = 160.0;
+    try {
+      engine::BearingConfigFromCase(c);
+      QFAIL("no error below the pole");
+    } catch (const InputError& e) {
+      QCOMPARE(e.field(), std::string("big_end.oil.temperature"));
+    }
+    // Vogel constants left at zero name the lubricant's field.
+    c.big_end.oil.temperature = 363.15;
+    c.lubricant.vogel_a = 0.0;
+    try {
+      engine::BearingConfigFromCase(c);
+      QFAIL("no error for a = 0");
+    } catch (const InputError& e) {
+      QCOMPARE(e.field(), std::string("lubricant.vogel_a"));
+    }
   }
 };
 

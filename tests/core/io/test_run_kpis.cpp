@@ -339,6 +339,9 @@ class TestRunKpis : public QObject {
         io::SummaryToJson(io::SummarizeRun("default", config, result, rows)).at("kpis").dump());
     QVERIFY(summary.kpis.skirt && summary.kpis.big_end);
     const io::JointKpis &skirt = *summary.kpis.skirt, &big_end = *summary.kpis.big_end;
+    QCOMPARE(*skirt.fmep,
+             io::FrictionMep(*skirt.mean_fpl, config.engine_case.geometry, config.rpm));
+    QVERIFY(std::abs(*skirt.fmep_share + *big_end.fmep_share - 1.0) < 1e-14);
 
     // The extremes of the rows, at the crank angle of the (first) row holding them.
     // (A lambda returning void: the test macros return from it.)
@@ -479,6 +482,38 @@ class TestRunKpis : public QObject {
       QCOMPARE(result.motion[8 * k].piston_com_lateral_velocity,
                result.samples[k].piston_com_lateral_velocity);
     }
+  }
+
+  // FMEP by hand: the friction work of a 720 °CA cycle per swept volume, with the exact stroke
+  // of an offset slider crank; each joint's share of the sum.
+  void frictionMeanEffectivePressureByHand() {
+    engine::CrankTrainGeometry g;
+    g.crank_radius = 0.04;
+    g.rod_length = 0.14;
+    g.liner_radius = 0.04;
+    g.pin_offset = 0.0;
+    const double swept = std::numbers::pi * 0.04 * 0.04 * 0.08;  // stroke 2 r without offset
+    QVERIFY(std::abs(io::FrictionMep(500.0, g, 3000.0) / (500.0 * 0.04 / swept) - 1.0) < 1e-14);
+    g.pin_offset = 0.01;  // (L + r)^2 - e^2 = 0.0323, (L - r)^2 - e^2 = 0.0099
+    const double stroke = std::sqrt(0.0323) - std::sqrt(0.0099);
+    QVERIFY(std::abs(io::FrictionMep(500.0, g, 3000.0) /
+                         (500.0 * 0.04 / (std::numbers::pi * 0.0016 * stroke)) -
+                     1.0) < 1e-13);
+    io::RunKpis kpis;
+    kpis.skirt = io::JointKpis{};
+    kpis.skirt->mean_fpl = 300.0;
+    kpis.big_end = io::JointKpis{};
+    kpis.big_end->mean_fpl = 100.0;
+    io::AddFrictionMep(&kpis, g, 3000.0);
+    QCOMPARE(*kpis.skirt->fmep, io::FrictionMep(300.0, g, 3000.0));
+    QVERIFY(std::abs(*kpis.skirt->fmep_share - 0.75) < 1e-15);
+    QVERIFY(std::abs(*kpis.big_end->fmep_share - 0.25) < 1e-15);
+    kpis.big_end->mean_fpl.reset();  // a joint without friction power: no FMEP, the other 100 %
+    kpis.big_end->fmep.reset();
+    kpis.big_end->fmep_share.reset();
+    io::AddFrictionMep(&kpis, g, 3000.0);
+    QVERIFY(!kpis.big_end->fmep);
+    QCOMPARE(*kpis.skirt->fmep_share, 1.0);
   }
 };
 

@@ -86,6 +86,8 @@ io::RunSummary Full() {
   big_end.max_eps = 0.97;
   big_end.max_eps_crank_angle_deg = 373.0;
   s.kpis = {skirt, big_end};
+  s.oil_skirt = io::JointOilUsed{393.15, 0.0061, "own", "vogel", "barus", 2e-8};
+  s.oil_big_end = io::JointOilUsed{373.15, 0.02, "lubricant", "constant", "none", 0.0};
   return s;
 }
 
@@ -100,6 +102,17 @@ void CompareSummaries(const io::RunSummary& a, const io::RunSummary& b) {
   QCOMPARE(a.solver.relative_tolerance, b.solver.relative_tolerance);
   QCOMPARE(a.pressure_peak_crank_angle_deg, b.pressure_peak_crank_angle_deg);
   QCOMPARE(a.error_estimate.Summary(), b.error_estimate.Summary());
+  for (const auto& [x, y] :
+       {std::pair{&a.oil_skirt, &b.oil_skirt}, {&a.oil_big_end, &b.oil_big_end}}) {
+    QCOMPARE(x->has_value(), y->has_value());
+    if (!*x) continue;
+    QCOMPARE((*x)->temperature_k, (*y)->temperature_k);
+    QCOMPARE((*x)->viscosity_pa_s, (*y)->viscosity_pa_s);
+    QCOMPARE((*x)->source, (*y)->source);
+    QCOMPARE((*x)->viscosity_model, (*y)->viscosity_model);
+    QCOMPARE((*x)->pressure_viscosity, (*y)->pressure_viscosity);
+    QCOMPARE((*x)->pressure_viscosity_coefficient, (*y)->pressure_viscosity_coefficient);
+  }
   QCOMPARE(a.kpis.skirt.has_value(), b.kpis.skirt.has_value());
   QCOMPARE(a.kpis.big_end.has_value(), b.kpis.big_end.has_value());
   if (a.kpis.skirt && b.kpis.skirt) {
@@ -143,10 +156,12 @@ class TestRunSummary : public QObject {
                             "headline",
                             "discretisation_error",
                             "warnings",
-                            "kpis"}) {
+                            "kpis",
+                            "oil"}) {
       QVERIFY2(j.contains(key), key);
     }
-    QCOMPARE(j.size(), std::size_t(21));
+    QCOMPARE(j.size(), std::size_t(22));
+    QCOMPARE(j["oil"]["skirt"]["viscosity[Pa*s]"].get<double>(), 0.0061);
     QCOMPARE(j["discretisation_error"]["figures"]["bearing_moft_min[m]"]["relative"].get<double>(),
              0.03);
     QVERIFY(j["discretisation_error"]["warning"].get<bool>());  // 3 % > 1 %
