@@ -29,7 +29,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/base/input_error.hpp"
 #include "core/engine/case_schema.hpp"
+#include "core/engine/film_joints.hpp"
 #include "core/io/case_file.hpp"
 #include "editor_test_util.hpp"
 #include "ui/case_editor/array_table_model.hpp"
@@ -473,6 +475,52 @@ class TestCaseEditor : public QObject {
     QVERIFY(!window.runAction()->isEnabled());
     window.document()->undoStack()->undo();
     QVERIFY(window.runAction()->isEnabled());
+  }
+
+  // The oil: a Vogel lubricant typed in display units (mPa·s, K) and a film temperature typed in
+  // °C, stored in kelvin; the skirt's film then has the law's viscosity at that temperature.
+  void oilTemperatureIsTypedInCelsius() {
+    MainWindow window;
+    window.resize(1600, 1000);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    window.workspace()->setCurrentIndex(0);
+    auto* tabs = window.caseEditor()->findChild<QTabWidget*>("case_tabs");
+    QTableView* lubricant = window.caseEditor()->parameterTable(CaseGroup::kLubricant);
+    tabs->setCurrentIndex(TabOf(window, lubricant));
+    QVERIFY(window.document()->setChoice("lubricant.viscosity_model", "vogel"));
+    TypeIntoCell(lubricant, ValueCell(window, CaseGroup::kLubricant, "lubricant.vogel_a"), "0.069");
+    TypeIntoCell(lubricant, ValueCell(window, CaseGroup::kLubricant, "lubricant.vogel_b"), "1050");
+    TypeIntoCell(lubricant, ValueCell(window, CaseGroup::kLubricant, "lubricant.vogel_c"), "165");
+    const auto& c = window.document()->engineCase();
+    QVERIFY(Near(c.lubricant.vogel_a, 6.9e-5, 1e-18));
+    QCOMPARE(c.lubricant.vogel_c, 165.0);
+    if (const QString dir = qEnvironmentVariable("FILMDYN_SCREENSHOT_DIR"); !dir.isEmpty()) {
+      QTest::qWait(100);
+      QVERIFY(window.grab().save(dir + "/case_lubricant.png"));
+    }
+    QTableView* skirt = window.caseEditor()->parameterTable(CaseGroup::kSkirt);
+    tabs->setCurrentIndex(TabOf(window, skirt));
+    const QModelIndex cell = ValueCell(window, CaseGroup::kSkirt, "skirt.oil.temperature");
+    QCOMPARE(cell.data().toString(), QString("100"));  // 373.15 K
+    TypeIntoCell(skirt, cell, "120");
+    QVERIFY(Near(c.skirt.oil.temperature, 393.15, 1e-12));
+    QCOMPARE(cell.data().toString(), QString("120"));
+    QVERIFY(window.document()->issues().empty());
+    const double expected = 6.9e-5 * std::exp(1050.0 / (393.15 - 165.0));
+    QVERIFY(Near(filmdyn::engine::SkirtConfigFromCase(c).viscosity, expected, 1e-12 * expected));
+    // Below the law's pole (−110 °C = 163.15 K): the run is refused, naming the field.
+    TypeIntoCell(skirt, cell, "-110");
+    QVERIFY(Near(c.skirt.oil.temperature, 163.15, 1e-12));
+    QVERIFY_THROWS_EXCEPTION(filmdyn::InputError, filmdyn::engine::SkirtConfigFromCase(c));
+    // Repeated edits of one cell are one undo step: back to the default 100 °C.
+    window.document()->undoStack()->undo();
+    QVERIFY(Near(c.skirt.oil.temperature, 373.15, 1e-12));
+    if (const QString dir = qEnvironmentVariable("FILMDYN_SCREENSHOT_DIR"); !dir.isEmpty()) {
+      skirt->scrollTo(cell);
+      QTest::qWait(100);
+      QVERIFY(window.grab().save(dir + "/case_skirt_oil.png"));
+    }
   }
 
   void skirtLinerOilFilmIsEditedInItsTable() {
