@@ -1,5 +1,7 @@
 #include "core/engine/case_schema.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <map>
 #include <numbers>
@@ -269,6 +271,25 @@ void AddJointOilFields(std::vector<CaseField>& f, const std::string& joint,
   f[first - 1].symbol = who + " film T";
 }
 
+// A temperature in K, shown in °C.
+template <typename Section>
+void AddTemperatureField(std::vector<CaseField>& f, const std::string& path,
+                         Section EngineCase::*section, double Section::*member, FieldGroup group,
+                         const char* label, const char* symbol, const char* description) {
+  CaseField field = Scalar(path, section, member,
+                           {group,
+                            label,
+                            "K",
+                            "°C",
+                            1.0,
+                            {0.0, 1000.0, true, false},
+                            "the cold dimensions are at 20 °C"});
+  field.display_offset = 273.15;
+  field.symbol = symbol;
+  field.description = description;
+  f.push_back(std::move(field));
+}
+
 CaseField Text(std::string path, std::string EngineCase::*member, const Info& info) {
   CaseField f = Base(std::move(path), FieldKind::kText, info);
   f.text = [member](EngineCase& c) -> std::string& { return c.*member; };
@@ -312,6 +333,10 @@ void SetSymbols(std::vector<CaseField>& fields) {
       {"skirt.poisson_liner", "ν_liner"},
       {"skirt.boundary_friction", "μ_f skirt"},
       {"skirt.cavitation", "skirt cavitation"},
+      {"skirt.piston_expansion", "α piston"},
+      {"skirt.liner_expansion", "α liner"},
+      {"big_end.journal_expansion", "α journal"},
+      {"big_end.bearing_expansion", "α bearing"},
       {"skirt.supply", "skirt oil supply"},
       {"skirt.oil_film", "h_oil"},
       {"skirt.oil_film_positions", "liner oil film"},
@@ -465,6 +490,13 @@ void SetDescriptions(std::vector<CaseField>& fields) {
        "Positions along the liner (from where the skirt top is at top dead centre, toward the "
        "crank) at which the liner's oil film is given; leave empty for a constant film."},
       {"skirt.oil_film_values", "Thickness of the liner's oil film at each of those positions."},
+      {"skirt.piston_expansion",
+       "Linear thermal expansion coefficient of the piston skirt's material."},
+      {"skirt.liner_expansion", "Linear thermal expansion coefficient of the liner's material."},
+      {"big_end.journal_expansion",
+       "Linear thermal expansion coefficient of the crank pin's material."},
+      {"big_end.bearing_expansion",
+       "Linear thermal expansion coefficient of the bearing housing (the rod's big-end eye)."},
       {"skirt.mesh_thrust",
        "Number of elements around the thrust panel in the film calculation; more is finer and "
        "slower."},
@@ -726,6 +758,20 @@ std::vector<CaseField> MakeSchema() {
                    {G::kSkirt, "Liner oil film: thickness", "m", "µm", kUm,
                     Open(0.0, 1e-3, true, false), "the oil film at each position"}));
   AddJointOilFields(f, "skirt", sk, G::kSkirt, SkirtOil);
+  AddTemperatureField(f, "skirt.piston_temperature", sk, &S::piston_temperature, G::kSkirt,
+                      "Piston skirt temperature", "skirt piston T",
+                      "Running temperature of the piston skirt: with its expansion coefficient "
+                      "it sets the hot piston radius and so the running clearance.");
+  AddTemperatureField(f, "skirt.liner_temperature", sk, &S::liner_temperature, G::kSkirt,
+                      "Liner temperature", "liner T",
+                      "Running temperature of the cylinder liner: with its expansion "
+                      "coefficient it sets the hot bore radius and so the running clearance.");
+  f.push_back(Scalar("skirt.piston_expansion", sk, &S::piston_expansion,
+                     {G::kSkirt, "Piston expansion coefficient", "1/K", "1e-6/K", 1e-6,
+                      Between(0.0, 1e-4), "linear; Al–Si piston alloys about 20–22e-6/K"}));
+  f.push_back(Scalar("skirt.liner_expansion", sk, &S::liner_expansion,
+                     {G::kSkirt, "Liner expansion coefficient", "1/K", "1e-6/K", 1e-6,
+                      Between(0.0, 1e-4), "linear; grey cast iron about 10–12e-6/K"}));
   f.push_back(Scalar("skirt.mesh_thrust", sk, &S::mesh_thrust,
                      {G::kSolver, "Skirt mesh: elements over Ω₁ (thrust)", "-", "–", 1.0,
                       Between(2, 2000), "circumferential elements of the thrust panel"}));
@@ -854,6 +900,21 @@ std::vector<CaseField> MakeSchema() {
              {G::kBigEnd, "Groove: axial width", "m", "mm", kMm, Open(0.0, 1.0, true, false),
               "centred on the bearing's mid-width; less than the bearing width"}));
   AddJointOilFields(f, "big_end", be, G::kBigEnd, BigEndOil);
+  AddTemperatureField(f, "big_end.journal_temperature", be, &B::journal_temperature, G::kBigEnd,
+                      "Journal temperature", "journal T",
+                      "Running temperature of the crank-pin journal: with its expansion "
+                      "coefficient it sets the hot journal radius and so the running clearance.");
+  AddTemperatureField(f, "big_end.bearing_temperature", be, &B::bearing_temperature, G::kBigEnd,
+                      "Bearing temperature", "bearing T",
+                      "Running temperature of the bearing (rod eye and shell): with its "
+                      "expansion coefficient it sets the hot bearing radius.");
+  f.push_back(Scalar("big_end.journal_expansion", be, &B::journal_expansion,
+                     {G::kBigEnd, "Journal expansion coefficient", "1/K", "1e-6/K", 1e-6,
+                      Between(0.0, 1e-4), "linear; steel about 11–13e-6/K"}));
+  f.push_back(Scalar(
+      "big_end.bearing_expansion", be, &B::bearing_expansion,
+      {G::kBigEnd, "Bearing expansion coefficient", "1/K", "1e-6/K", 1e-6, Between(0.0, 1e-4),
+       "linear; the rod eye's: steel about 11–13e-6/K, aluminium about 23e-6/K"}));
   AddOilFields(f, "lubricant.", G::kLubricant, LubricantOil,
                "(the case's oil, both joints' unless a joint has its own).", "");
   f.push_back(Scalar(
@@ -1081,6 +1142,21 @@ void CheckSkirtSupply(const SkirtCase& s) {
 
 }  // namespace
 
+std::string DerivedNote(const EngineCase& c, const std::string& path) {
+  auto note = [](const JointFit& fit) -> std::string {
+    if (fit.hot_clearance == fit.cold_clearance) return {};
+    return fmt::format("hot: {:.2f} µm (cold {:.2f} µm)", fit.hot_clearance * 1e6,
+                       fit.cold_clearance * 1e6);
+  };
+  if (path == "skirt.cold_clearance" || path == "skirt.piston_temperature" ||
+      path == "skirt.liner_temperature")
+    return note(SkirtFit(c));
+  if (path == "big_end.journal_radius" || path == "big_end.journal_temperature" ||
+      path == "big_end.bearing_temperature")
+    return note(BigEndFit(c));
+  return {};
+}
+
 void CheckCaseConsistency(const EngineCase& c) {
   const auto& g = c.geometry;
   if (g.rod_length <= g.crank_radius + std::abs(g.pin_offset)) {
@@ -1129,6 +1205,21 @@ void CheckCaseConsistency(const EngineCase& c) {
       throw InputError("skirt.ovality_alpha." + std::to_string(k), FormatValue(alpha[k]),
                        "must increase strictly [rad]");
     }
+  }
+  // A clearance that closes when hot: the temperatures and the result.
+  if (const JointFit fit = SkirtFit(c); !(fit.hot_clearance > 0.0)) {
+    throw InputError(
+        "skirt.piston_temperature", FormatValue(c.skirt.piston_temperature),
+        "with the liner at skirt.liner_temperature = " + FormatValue(c.skirt.liner_temperature) +
+            " K the hot skirt clearance is " + FormatValue(fit.hot_clearance) + " m (cold " +
+            FormatValue(fit.cold_clearance) + " m): it must stay > 0");
+  }
+  if (const JointFit fit = BigEndFit(c); !(fit.hot_clearance > 0.0)) {
+    throw InputError("big_end.journal_temperature", FormatValue(c.big_end.journal_temperature),
+                     "with the bearing at big_end.bearing_temperature = " +
+                         FormatValue(c.big_end.bearing_temperature) +
+                         " K the hot big-end clearance is " + FormatValue(fit.hot_clearance) +
+                         " m (cold " + FormatValue(fit.cold_clearance) + " m): it must stay > 0");
   }
   CheckBigEndSupply(c.big_end);
   CheckSkirtSupply(c.skirt);

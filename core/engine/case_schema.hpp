@@ -96,5 +96,9 @@ const char* JointModelName(JointModel model);
 /// The rules that tie fields together (rod longer than crank + |pin offset|, clearances > 0,
 /// panel widths, profile and ovality tables). Throws InputError naming the field to fix.
 void CheckCaseConsistency(const EngineCase& engine_case);
+/// What a field implies beyond its own value, for the editor's note column, e.g. the hot
+/// clearance beside the cold one ("hot: 6.41 µm (cold 25.00 µm)"); empty when there is nothing
+/// to add.
+std::string DerivedNote(const EngineCase& engine_case, const std::string& path);
 
 }  // namespace filmdyn::engine

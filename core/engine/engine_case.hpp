@@ -86,6 +86,12 @@ struct SkirtCase {
   double oil_film = 5.0e-6;  ///< [m] (assumed: a few µm below the ring pack)
   std::vector<double> oil_film_positions, oil_film_values;  ///< [m], [m]; empty = oil_film
   JointOil oil;                                             ///< the film's oil and temperature
+  /// Running temperatures of the piston skirt and the liner [K] and their linear expansion
+  /// coefficients [1/K]: the hot radii R (1 + α (T − 293.15 K)) give the running clearance
+  /// (SkirtFit). At 293.15 K (the default) the cold dimensions are the running ones.
+  double piston_temperature = 293.15, liner_temperature = 293.15;
+  double piston_expansion = 21.0e-6;  ///< (assumed: an Al–Si piston alloy)
+  double liner_expansion = 11.0e-6;   ///< (assumed: grey cast iron)
 };
 
 /// The connecting-rod big-end bearing (Table I); the film data are used when the big end is
@@ -132,6 +138,11 @@ struct BigEndCase {
   /// Film rupture and reformation: Reynolds (Swift–Stieber, the paper's) or mass-conserving JFO.
   lubrication::CavitationModel cavitation = lubrication::CavitationModel::kReynolds;
   JointOil oil;  ///< the film's oil and temperature
+  /// Running temperatures of the crank-pin journal and the bearing (rod eye and shell) [K] and
+  /// their expansion coefficients [1/K] (BigEndFit); 293.15 K: the cold dimensions.
+  double journal_temperature = 293.15, bearing_temperature = 293.15;
+  double journal_expansion = 12.0e-6;  ///< (assumed: steel)
+  double bearing_expansion = 12.0e-6;  ///< (assumed: a steel rod and steel-backed shell)
 };
 
 /// One cylinder-pressure curve: absolute pressure vs crank angle at one speed.
@@ -201,6 +212,43 @@ inline double PistonRadius(const EngineCase& engine_case) {
 /// clearance (film, steady-state scales, later thermal expansion) starts from here.
 inline double SkirtClearance(const EngineCase& engine_case) {
   return engine_case.geometry.liner_radius - PistonRadius(engine_case);
+}
+
+/// Temperature of the cold dimensions [K] (20 °C).
+inline constexpr double kReferenceTemperature = 293.15;
+
+/// A radius at its running temperature: R (1 + α (T − 293.15 K)) [m]; the cold radius itself at
+/// 293.15 K, bit for bit.
+inline double HotRadius(double cold_radius, double expansion, double temperature) {
+  return cold_radius * (1.0 + expansion * (temperature - kReferenceTemperature));
+}
+
+/// A joint's fit at its running temperatures: the outer (bore, bearing) and inner (piston,
+/// journal) radii and the radial clearance between them, cold and hot [m].
+struct JointFit {
+  double outer_radius = 0.0, inner_radius = 0.0;  ///< hot
+  double cold_clearance = 0.0, hot_clearance = 0.0;
+};
+/// The skirt's: liner bore and piston at their temperatures (the clearance at 293.15 K is
+/// SkirtClearance, bit for bit).
+inline JointFit SkirtFit(const EngineCase& c) {
+  JointFit f;
+  f.outer_radius =
+      HotRadius(c.geometry.liner_radius, c.skirt.liner_expansion, c.skirt.liner_temperature);
+  f.inner_radius = HotRadius(PistonRadius(c), c.skirt.piston_expansion, c.skirt.piston_temperature);
+  f.cold_clearance = SkirtClearance(c);
+  f.hot_clearance = f.outer_radius - f.inner_radius;
+  return f;
+}
+/// The big end's: bearing and journal at their temperatures.
+inline JointFit BigEndFit(const EngineCase& c) {
+  const BigEndCase& b = c.big_end;
+  JointFit f;
+  f.outer_radius = HotRadius(b.bearing_radius, b.bearing_expansion, b.bearing_temperature);
+  f.inner_radius = HotRadius(b.journal_radius, b.journal_expansion, b.journal_temperature);
+  f.cold_clearance = b.bearing_radius - b.journal_radius;
+  f.hot_clearance = f.outer_radius - f.inner_radius;
+  return f;
 }
 
 }  // namespace filmdyn::engine

@@ -41,9 +41,10 @@ lubrication::SkirtConfig SkirtConfigFromCase(const EngineCase& c) {
   const SkirtCase& sk = c.skirt;
   lubrication::SkirtConfig config;
   lubrication::SkirtGeometry& g = config.geometry;
-  g.radius = PistonRadius(c);
+  const JointFit fit = SkirtFit(c);
+  g.radius = fit.inner_radius;
   g.skirt_length = sk.length;
-  g.radial_clearance = SkirtClearance(c);
+  g.radial_clearance = fit.hot_clearance;
   if (!(g.radial_clearance > 0.0) || !(g.radius > 0.0)) {
     throw InputError("skirt.cold_clearance", FormatValue(sk.cold_clearance),
                      "must be > 0 and smaller than geometry.liner_radius = " +
@@ -116,9 +117,10 @@ bool BigEndSolvesSymmetricHalf(const BigEndCase& be) {
 lubrication::BearingConfig BearingConfigFromCase(const EngineCase& c) {
   const BigEndCase& be = c.big_end;
   lubrication::BearingConfig config;
-  config.geometry.radius = be.journal_radius;
+  const JointFit fit = BigEndFit(c);
+  config.geometry.radius = fit.inner_radius;
   config.geometry.length = be.width;
-  config.geometry.radial_clearance = be.bearing_radius - be.journal_radius;
+  config.geometry.radial_clearance = fit.hot_clearance;
   if (!(config.geometry.radial_clearance > 0.0)) {
     throw InputError("big_end.journal_radius", FormatValue(be.journal_radius),
                      "must be smaller than big_end.bearing_radius = " +

@@ -132,8 +132,8 @@ Tracked TrackedFor(const EngineCase& c) {
     };
     return t;
   }
-  const double c_p = SkirtClearance(c);
-  const double c_b = c.big_end.bearing_radius - c.big_end.journal_radius;
+  const double c_p = SkirtFit(c).hot_clearance;
+  const double c_b = BigEndFit(c).hot_clearance;
   if (skirt) {
     t.quantities.push_back({"piston_lateral[m]", 0.01 * c_p});
     t.quantities.push_back({"piston_tilt[rad]", 0.01 * c_p / c.skirt.length});

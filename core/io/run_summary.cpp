@@ -62,6 +62,14 @@ RunSummary SummarizeRun(const std::string& case_name, const engine::RunConfig& c
                         lubrication::ToString(spec.pressure_law),
                         at.pressure.InitialCoefficient()};
   };
+  if (s.kpis.skirt) {
+    const engine::JointFit fit = engine::SkirtFit(config.engine_case);
+    s.clearance_skirt = RunSummary::Clearance{fit.cold_clearance, fit.hot_clearance};
+  }
+  if (s.kpis.big_end) {
+    const engine::JointFit fit = engine::BigEndFit(config.engine_case);
+    s.clearance_big_end = RunSummary::Clearance{fit.cold_clearance, fit.hot_clearance};
+  }
   if (s.kpis.skirt) s.oil_skirt = oil_used(config.engine_case.skirt.oil, "skirt");
   if (s.kpis.big_end) s.oil_big_end = oil_used(config.engine_case.big_end.oil, "big_end");
   SolverSummary& v = s.solver;
@@ -294,6 +302,12 @@ json SummaryToJson(const RunSummary& s) {
                  {"pressure_viscosity_coefficient[1/Pa]", u.pressure_viscosity_coefficient}};
   }
   j["oil"] = oil;
+  json clearance = json::object();
+  for (const auto& [name, c] :
+       {std::pair{"skirt", &s.clearance_skirt}, std::pair{"big_end", &s.clearance_big_end}}) {
+    if (*c) clearance[name] = {{"cold[m]", (*c)->cold}, {"hot[m]", (*c)->hot}};
+  }
+  j["clearance"] = clearance;
   return j;
 }
 
@@ -432,6 +446,18 @@ RunSummary FromJson(const json& j) {
     Read(o, "pressure_viscosity", at, &u.pressure_viscosity);
     Read(o, "pressure_viscosity_coefficient[1/Pa]", at, &u.pressure_viscosity_coefficient);
     *used = u;
+  }
+  json clearance = json::object();  // absent in a summary written before it existed
+  Read(j, "clearance", "", &clearance);
+  if (!clearance.is_object()) throw std::runtime_error("\"clearance\" is not an object");
+  for (const auto& [name, c] :
+       {std::pair{"skirt", &s.clearance_skirt}, std::pair{"big_end", &s.clearance_big_end}}) {
+    if (!clearance.contains(name)) continue;
+    const std::string at = std::string("clearance.") + name;
+    RunSummary::Clearance value;
+    Read(clearance.at(name), "cold[m]", at, &value.cold);
+    Read(clearance.at(name), "hot[m]", at, &value.hot);
+    *c = value;
   }
   return s;
 }

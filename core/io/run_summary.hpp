@@ -83,6 +83,12 @@ struct RunSummary {
   RunKpis kpis;
   /// Per lubricated joint (empty for an ideal joint and in a summary written before it existed).
   std::optional<JointOilUsed> oil_skirt, oil_big_end;
+  /// Per lubricated joint: the radial clearance cold and at the running temperatures [m]
+  /// ("clearance" in the file; engine::SkirtFit, engine::BigEndFit).
+  struct Clearance {
+    double cold = 0.0, hot = 0.0;
+  };
+  std::optional<Clearance> clearance_skirt, clearance_big_end;
 };
 
 /// The summary of a finished (or stopped) run from its configuration, result and the rows

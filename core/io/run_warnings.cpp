@@ -239,7 +239,7 @@ std::vector<RunWarning> RunWarnings(const engine::RunConfig& config,
           "big-end eccentricity ratio ε = {:.3f} at {:.0f} °CA, above {:g} over {}: the journal "
           "runs within {:.1f} µm of the bearing wall",
           eps, *w.crank_angle_deg, kHighEccentricity, RangesText(w.crank_angle_ranges_deg),
-          (1.0 - eps) * (c.big_end.bearing_radius - c.big_end.journal_radius) * 1e6);
+          (1.0 - eps) * engine::BigEndFit(c).hot_clearance * 1e6);
       out.push_back(std::move(w));
     }
   }

@@ -122,17 +122,11 @@ double OscillatorySqueeze::Front(double t, const Trajectory& reform) const {
 SqueezeRun SolveOscillatorySqueeze(const OscillatorySqueeze& problem,
                                    const SqueezeRunOptions& options) {
   const double width = 0.01;
-  TriMesh mesh =
-      MakeTensorMesh(Linspace(0.0, 1.0, options.cells), Linspace(0.0, width, 1), false, 0.0);
-  const int nx = mesh.nx_nodes();
-  for (int j = 0; j < 2; ++j) {
-    mesh.fixed[mesh.Node(0, j)] = 1;
-    mesh.fixed[mesh.Node(nx - 1, j)] = 1;
-  }
   ReynoldsOptions opt;
   opt.cavitation = options.model;
-  ReynoldsFem fem(std::move(mesh), 0, opt);
+  ReynoldsFem fem(MakeStripMesh(1.0, options.cells, width), 0, opt);
   const TriMesh& m = fem.mesh();
+  const int nx = m.nx_nodes();
   const int n = m.NodeCount();
   fem.boundary_pressure() = Eigen::VectorXd::Constant(n, problem.p0);
   ReynoldsParams params;

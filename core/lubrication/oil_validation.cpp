@@ -39,13 +39,7 @@ double InclinedSlider::PeakPressure(const PressureViscosity& law) const {
 
 SliderFem SolveSliderFem(const InclinedSlider& s, const PressureViscosity& law, int n) {
   const double width = 1e-4;
-  TriMesh mesh = MakeTensorMesh(Linspace(0.0, s.length, n), Linspace(0.0, width, 1), false, 0.0);
-  const int nx = mesh.nx_nodes();
-  for (int j = 0; j < 2; ++j) {
-    mesh.fixed[mesh.Node(0, j)] = 1;
-    mesh.fixed[mesh.Node(nx - 1, j)] = 1;
-  }
-  ReynoldsFem fem(std::move(mesh), 0, ReynoldsOptions{});
+  ReynoldsFem fem(MakeStripMesh(s.length, n, width), 0, ReynoldsOptions{});
   const TriMesh& m = fem.mesh();
   for (int k = 0; k < m.NodeCount(); ++k) {
     fem.film_thickness()[k] = s.h_inlet + (s.h_outlet - s.h_inlet) * m.x[k] / s.length;

@@ -13,6 +13,16 @@ double TriMesh::ColumnWidth(int i) const {
   return x_lines[i + 1] - x_lines[i];
 }
 
+TriMesh MakeStripMesh(double length, int n, double width) {
+  TriMesh mesh = MakeTensorMesh(Linspace(0.0, length, n), Linspace(0.0, width, 1), false, 0.0);
+  const int nx = mesh.nx_nodes();
+  for (int j = 0; j < 2; ++j) {
+    mesh.fixed[mesh.Node(0, j)] = 1;
+    mesh.fixed[mesh.Node(nx - 1, j)] = 1;
+  }
+  return mesh;
+}
+
 std::vector<double> Linspace(double a, double b, int n) {
   std::vector<double> v(n + 1);
   for (int k = 0; k <= n; ++k) v[k] = a + (b - a) * static_cast<double>(k) / n;

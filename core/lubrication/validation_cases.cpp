@@ -112,16 +112,11 @@ PocketSliderSolution PocketSliderAnalytic(const PocketSliderCase& c) {
 
 PocketSliderFem PocketSliderNumeric(const PocketSliderCase& c, int n, CavitationModel model) {
   const double width = 1e-4;
-  TriMesh mesh = MakeTensorMesh(Linspace(0.0, c.length, n), Linspace(0.0, width, 1), false, 0.0);
-  const int nx = mesh.nx_nodes();
-  for (int j = 0; j < 2; ++j) {
-    mesh.fixed[mesh.Node(0, j)] = 1;
-    mesh.fixed[mesh.Node(nx - 1, j)] = 1;
-  }
   ReynoldsOptions opt;
   opt.cavitation = model;
-  ReynoldsFem fem(std::move(mesh), 0, opt);
+  ReynoldsFem fem(MakeStripMesh(c.length, n, width), 0, opt);
   const TriMesh& m = fem.mesh();
+  const int nx = m.nx_nodes();
   for (int k = 0; k < m.NodeCount(); ++k) {
     const bool pocket = m.x[k] > c.pocket_start && m.x[k] < c.pocket_end;
     fem.film_thickness()[k] = pocket ? c.h1 : c.h0;

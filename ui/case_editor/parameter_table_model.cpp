@@ -76,7 +76,7 @@ QVariant ParameterTableModel::data(const QModelIndex& index, int role) const {
           if (assumed != document_->engineCase().assumed.end()) {
             return tr("assumed: %1").arg(QString::fromStdString(assumed->second));
           }
-          return {};
+          return QString::fromStdString(engine::DerivedNote(document_->engineCase(), p.path));
       }
       break;
     case Qt::ToolTipRole:

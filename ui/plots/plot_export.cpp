@@ -14,8 +14,8 @@ PlotRun PlotRunFromRows(int id, const engine::EngineCase& engine_case, const std
                         double rpm, const std::vector<io::OutputRow>& rows,
                         const std::vector<io::OutputRow>& motion_rows) {
   return {id, RunLabel(QString::fromStdString(model), rpm),
-          engine_case.big_end.bearing_radius - engine_case.big_end.journal_radius,
-          RunSamplesFromRows(rows), RunSamplesFromRows(motion_rows)};
+          engine::BigEndFit(engine_case).hot_clearance, RunSamplesFromRows(rows),
+          RunSamplesFromRows(motion_rows)};
 }
 
 QStringList ExportStandardPlots(const std::vector<PlotRun>& runs, const QString& directory,

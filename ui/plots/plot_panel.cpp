@@ -963,9 +963,8 @@ void PlotPanel::exportChartInteractive(int index) {
 }
 
 PlotRun PlotRunOf(const RunRecord& run) {
-  const engine::BigEndCase& big_end = run.request().engine_case.big_end;
-  return {run.id(), run.label(), big_end.bearing_radius - big_end.journal_radius, run.samples(),
-          run.motion()};
+  return {run.id(), run.label(), engine::BigEndFit(run.request().engine_case).hot_clearance,
+          run.samples(), run.motion()};
 }
 
 }  // namespace filmdyn::ui

@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "core/base/input_error.hpp"
+#include "core/engine/case_schema.hpp"
 #include "core/engine/film_joints.hpp"
 #include "core/io/case_file.hpp"
 #include "core/io/resources.hpp"
@@ -412,6 +413,44 @@ class TestCaseFile : public QObject {
       QFAIL("no error for a = 0");
     } catch (const InputError& e) {
       QCOMPARE(e.field(), std::string("lubricant.vogel_a"));
+    }
+  }
+
+  // Thermal clearances by hand: hot radii R (1 + α (T − 293.15 K)); at 20 °C the cold ones bit
+  // for bit; a clearance that closes is an input error naming the temperatures and the result.
+  void thermalClearancesByHand() {
+    engine::EngineCase c = io::CaseFromJson(DefaultJson());
+    const auto cold = engine::SkirtConfigFromCase(c);
+    QCOMPARE(cold.geometry.radial_clearance, engine::SkirtClearance(c));
+    QCOMPARE(cold.geometry.radius, engine::PistonRadius(c));
+    QCOMPARE(engine::BearingConfigFromCase(c).geometry.radial_clearance,
+             c.big_end.bearing_radius - c.big_end.journal_radius);
+    c.skirt.piston_temperature = 333.15;  // 60 °C, α 21e-6: +30.6 µm on the radius
+    c.skirt.liner_temperature = 323.15;   // 50 °C, α 11e-6: +12.0 µm
+    const double bore = 36.50e-3 * (1.0 + 11e-6 * 30.0);
+    const double piston = (36.50e-3 - 25e-6) * (1.0 + 21e-6 * 40.0);
+    const auto hot = engine::SkirtConfigFromCase(c);
+    QVERIFY(std::abs(hot.geometry.radius - piston) < 1e-15);
+    QVERIFY(std::abs(hot.geometry.radial_clearance - (bore - piston)) < 1e-15);
+    QVERIFY(std::abs(hot.geometry.radial_clearance - 6.4e-6) < 0.05e-6);  // 25 − 30.6 + 12.0 µm
+    QCOMPARE(engine::DerivedNote(c, "skirt.cold_clearance"),
+             std::string("hot: 6.41 µm (cold 25.00 µm)"));
+    c.big_end.journal_temperature = 393.15;
+    c.big_end.bearing_temperature = 373.15;
+    const double hot_big_end = 15.00e-3 * (1.0 + 12e-6 * 80.0) - 14.95e-3 * (1.0 + 12e-6 * 100.0);
+    QVERIFY(std::abs(engine::BearingConfigFromCase(c).geometry.radial_clearance - hot_big_end) <
+            1e-15);
+    // The piston 20 K hotter closes the skirt clearance (an Al piston in an iron bore needs a
+    // larger cold clearance to run hot).
+    c.skirt.piston_temperature = 353.15;
+    try {
+      engine::CheckCaseConsistency(c);
+      QFAIL("no error for a closed clearance");
+    } catch (const InputError& e) {
+      QCOMPARE(e.field(), std::string("skirt.piston_temperature"));
+      QVERIFY2(std::string(e.what()).find("liner_temperature") != std::string::npos, e.what());
+      QVERIFY2(std::string(e.what()).find("hot skirt clearance is -") != std::string::npos,
+               e.what());
     }
   }
 };

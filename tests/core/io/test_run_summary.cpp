@@ -87,6 +87,7 @@ io::RunSummary Full() {
   big_end.max_eps_crank_angle_deg = 373.0;
   s.kpis = {skirt, big_end};
   s.oil_skirt = io::JointOilUsed{393.15, 0.0061, "own", "vogel", "barus", 2e-8};
+  s.clearance_skirt = io::RunSummary::Clearance{25e-6, 18.5e-6};
   s.oil_big_end = io::JointOilUsed{373.15, 0.02, "lubricant", "constant", "none", 0.0};
   return s;
 }
@@ -113,6 +114,12 @@ void CompareSummaries(const io::RunSummary& a, const io::RunSummary& b) {
     QCOMPARE((*x)->pressure_viscosity, (*y)->pressure_viscosity);
     QCOMPARE((*x)->pressure_viscosity_coefficient, (*y)->pressure_viscosity_coefficient);
   }
+  QCOMPARE(a.clearance_skirt.has_value(), b.clearance_skirt.has_value());
+  if (a.clearance_skirt && b.clearance_skirt) {
+    QCOMPARE(a.clearance_skirt->cold, b.clearance_skirt->cold);
+    QCOMPARE(a.clearance_skirt->hot, b.clearance_skirt->hot);
+  }
+  QCOMPARE(a.clearance_big_end.has_value(), b.clearance_big_end.has_value());
   QCOMPARE(a.kpis.skirt.has_value(), b.kpis.skirt.has_value());
   QCOMPARE(a.kpis.big_end.has_value(), b.kpis.big_end.has_value());
   if (a.kpis.skirt && b.kpis.skirt) {
@@ -157,10 +164,12 @@ class TestRunSummary : public QObject {
                             "discretisation_error",
                             "warnings",
                             "kpis",
-                            "oil"}) {
+                            "oil",
+                            "clearance"}) {
       QVERIFY2(j.contains(key), key);
     }
-    QCOMPARE(j.size(), std::size_t(22));
+    QCOMPARE(j.size(), std::size_t(23));
+    QCOMPARE(j["clearance"]["skirt"]["hot[m]"].get<double>(), 18.5e-6);
     QCOMPARE(j["oil"]["skirt"]["viscosity[Pa*s]"].get<double>(), 0.0061);
     QCOMPARE(j["discretisation_error"]["figures"]["bearing_moft_min[m]"]["relative"].get<double>(),
              0.03);

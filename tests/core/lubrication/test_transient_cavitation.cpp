@@ -136,16 +136,11 @@ class TestTransientCavitation : public QObject {
     const double x_front = 0.5 * (lo + hi);
 
     const int cells = 2000;
-    TriMesh mesh = MakeTensorMesh(Linspace(0.0, length, cells), Linspace(0.0, 1e-4, 1), false, 0);
-    const int nx = mesh.nx_nodes();
-    for (int j = 0; j < 2; ++j) {
-      mesh.fixed[mesh.Node(0, j)] = 1;
-      mesh.fixed[mesh.Node(nx - 1, j)] = 1;
-    }
     ReynoldsOptions opt;
     opt.cavitation = CavitationModel::kJfo;
-    ReynoldsFem fem(std::move(mesh), 0, opt);
+    ReynoldsFem fem(MakeStripMesh(length, cells, 1e-4), 0, opt);
     const TriMesh& m = fem.mesh();
+    const int nx = m.nx_nodes();
     for (int k = 0; k < m.NodeCount(); ++k) {
       fem.film_thickness()[k] = gap(m.x[k]);
       fem.boundary_fraction()[k] = m.x[k] < 0.5 * length ? theta_in : 1.0;

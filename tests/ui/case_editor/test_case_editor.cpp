@@ -516,6 +516,12 @@ class TestCaseEditor : public QObject {
     // Repeated edits of one cell are one undo step: back to the default 100 °C.
     window.document()->undoStack()->undo();
     QVERIFY(Near(c.skirt.oil.temperature, 373.15, 1e-12));
+    // Hot parts: the cold clearance's note gives the running clearance (25 − 30.6 + 12.0 µm).
+    TypeIntoCell(skirt, ValueCell(window, CaseGroup::kSkirt, "skirt.piston_temperature"), "60");
+    TypeIntoCell(skirt, ValueCell(window, CaseGroup::kSkirt, "skirt.liner_temperature"), "50");
+    const QModelIndex clearance = ValueCell(window, CaseGroup::kSkirt, "skirt.cold_clearance");
+    const QString note = clearance.siblingAtColumn(ParameterTableModel::kNote).data().toString();
+    QVERIFY2(note.contains("hot: 6.41 µm"), qPrintable(note));
     if (const QString dir = qEnvironmentVariable("FILMDYN_SCREENSHOT_DIR"); !dir.isEmpty()) {
       skirt->scrollTo(cell);
       QTest::qWait(100);
