@@ -263,12 +263,43 @@ void AddJointOilFields(std::vector<CaseField>& f, const std::string& joint,
       "Temperature of this joint's oil film (one value over the film and the cycle); with a "
       "Vogel viscosity it sets the viscosity.";
   f.push_back(std::move(temperature));
+  CaseField mode =
+      Base(joint + ".oil.temperature_mode", FieldKind::kChoice,
+           {group, "Film temperature from", "", "", 1.0, {}, "\"given\" or \"heat_balance\""});
+  mode.choices = {"given", "heat_balance"};
+  mode.choice = [section](const EngineCase& c) {
+    return static_cast<int>((c.*section).oil.temperature_mode);
+  };
+  mode.set_choice = [section](EngineCase& c, int k) {
+    (c.*section).oil.temperature_mode = static_cast<FilmTemperature>(k);
+  };
+  mode.description =
+      "Given: the film temperature above. Heat balance: the run is repeated until the film's "
+      "temperature is the supply temperature plus the share of its friction power that its "
+      "leaving oil carries away (the temperature above is the first guess).";
+  f.push_back(std::move(mode));
+  CaseField share = Base(joint + ".oil.heat_share", FieldKind::kNumber,
+                         {group,
+                          "Heat balance: share of the friction power",
+                          "-",
+                          "–",
+                          1.0,
+                          {0.0, 1.0, true, false},
+                          "carried away by the oil leaving the film; 1 = all (the hottest)"});
+  share.get = [section](const EngineCase& c) { return (c.*section).oil.heat_share; };
+  share.set = [section](EngineCase& c, double v) { (c.*section).oil.heat_share = v; };
+  share.description =
+      "In the heat balance, the share of the joint's friction power that heats the oil leaving "
+      "the film; the rest goes into the parts.";
+  f.push_back(std::move(share));
   const size_t first = f.size();
   const std::string who = joint == "skirt" ? "skirt" : "big-end";
   AddOilFields(f, joint + ".oil.", group, own, "(this joint's own oil).", who + " ");
   for (size_t k = first; k < f.size(); ++k) f[k].label = "Own oil: " + f[k].label;
-  f[first - 2].symbol = who + " oil";
-  f[first - 1].symbol = who + " film T";
+  f[first - 4].symbol = who + " oil";
+  f[first - 3].symbol = who + " film T";
+  f[first - 2].symbol = who + " film T from";
+  f[first - 1].symbol = who + " heat share";
 }
 
 // A temperature in K, shown in °C.
@@ -334,6 +365,8 @@ void SetSymbols(std::vector<CaseField>& fields) {
       {"skirt.boundary_friction", "μ_f skirt"},
       {"skirt.cavitation", "skirt cavitation"},
       {"skirt.piston_expansion", "α piston"},
+      {"lubricant.density", "ρ oil"},
+      {"lubricant.heat_capacity", "c_p oil"},
       {"skirt.liner_expansion", "α liner"},
       {"big_end.journal_expansion", "α journal"},
       {"big_end.bearing_expansion", "α bearing"},
@@ -492,6 +525,10 @@ void SetDescriptions(std::vector<CaseField>& fields) {
       {"skirt.oil_film_values", "Thickness of the liner's oil film at each of those positions."},
       {"skirt.piston_expansion",
        "Linear thermal expansion coefficient of the piston skirt's material."},
+      {"lubricant.density", "Density of the oil, for the joints' heat balances."},
+      {"lubricant.heat_capacity",
+       "Specific heat of the oil, for the joints' heat balances: the heat a kilogram takes per "
+       "kelvin."},
       {"skirt.liner_expansion", "Linear thermal expansion coefficient of the liner's material."},
       {"big_end.journal_expansion",
        "Linear thermal expansion coefficient of the crank pin's material."},
@@ -917,6 +954,18 @@ std::vector<CaseField> MakeSchema() {
        "linear; the rod eye's: steel about 11–13e-6/K, aluminium about 23e-6/K"}));
   AddOilFields(f, "lubricant.", G::kLubricant, LubricantOil,
                "(the case's oil, both joints' unless a joint has its own).", "");
+  AddTemperatureField(f, "lubricant.supply_temperature", lub, &LubricantCase::supply_temperature,
+                      G::kLubricant, "Oil supply temperature", "supply T",
+                      "Temperature of the oil fed to the joints: where a joint's film "
+                      "temperature comes from its heat balance, the film heats up from it.");
+  f.push_back(Scalar(
+      "lubricant.density", lub, &LubricantCase::density,
+      {G::kLubricant, "Oil density ρ", "kg/m^3", "kg/m³", 1.0, Open(0.0, 5000.0, true, false),
+       "for the heat balance; engine oils 840–880 kg/m³ at 15 °C"}));
+  f.push_back(Scalar("lubricant.heat_capacity", lub, &LubricantCase::heat_capacity,
+                     {G::kLubricant, "Oil specific heat c_p", "J/(kg*K)", "J/(kg·K)", 1.0,
+                      Open(0.0, 1e5, true, false),
+                      "for the heat balance; mineral oils about 1 900–2 100 J/(kg·K)"}));
   f.push_back(Scalar(
       "lubricant.greenwood_tripp_k", lub, &LubricantCase::greenwood_tripp_k,
       {G::kLubricant, "Greenwood–Tripp constant K", "-", "–", 1.0, Open(0.0, 1.0, true, false),

@@ -38,12 +38,20 @@ struct CrankTrainGeometry {
 /// Which oil a joint's film carries: the case's (`lubricant.*`) or its own.
 enum class OilSource { kLubricant, kOwn };
 
+/// How a joint's film temperature is set: given, or from its heat balance (RunJob iterates the
+/// run until share × friction power = ρ c_p Q (T − T_supply), Q the oil leaving the film).
+enum class FilmTemperature { kGiven, kHeatBalance };
+
 /// A joint's oil and film temperature.
 struct JointOil {
   OilSource source = OilSource::kLubricant;
   lubrication::OilSpec own{.viscosity = 0.02, .barus_alpha = 2.0e-8, .roelands_z = 0.6};
-  /// Film temperature [K]: where the viscosity follows temperature (Vogel), the film's.
+  /// Film temperature [K]: where the viscosity follows temperature (Vogel), the film's; with the
+  /// heat balance the start of its iteration.
   double temperature = 373.15;
+  FilmTemperature temperature_mode = FilmTemperature::kGiven;
+  /// Heat balance: the share of the joint's friction power carried away by its oil flow [-].
+  double heat_share = 1.0;
 };
 
 /// The piston skirt–liner joint (Table I); the film data are used when the skirt is lubricated.
@@ -181,6 +189,11 @@ struct SolverCase {
 struct LubricantCase : lubrication::OilSpec {
   LubricantCase() { barus_alpha = 2.0e-8, roelands_z = 0.6; }
   double greenwood_tripp_k = 1.198e-4;  ///< K of eq. 29 [-]
+  /// The joints' heat balances: oil supply temperature [K], density [kg/m³] and specific heat
+  /// [J/(kg·K)] of the oil.
+  double supply_temperature = 363.15;  ///< (assumed: 90 °C)
+  double density = 860.0;  ///< (assumed: engine oils' data sheets give 840–880 kg/m³ at 15 °C)
+  double heat_capacity = 2000.0;  ///< (assumed: mineral oils about 1.9–2.1 kJ/(kg·K))
 };
 
 struct EngineCase {

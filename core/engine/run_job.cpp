@@ -567,8 +567,127 @@ std::string FilmTrouble(const CrankTrainSample& s) {
   return {};
 }
 
+namespace {
+RunResult RunWithEstimate(const RunConfig& config, const RunMonitor& monitor,
+                          const std::atomic<bool>* cancel);
+
+// A joint whose film temperature comes from its heat balance: the secant iteration on
+// f(T) = T_balance(T) − T, safeguarded by the bracket the signs of f give (f(T_supply) >= 0;
+// f falls with T: a hotter film loses less power and sheds more oil).
+struct BalancedJoint {
+  bool skirt = false;
+  JointOil* oil = nullptr;
+  double t = 0.0, f = 0.0;  // the last run's temperature and residual
+  double t_prev = 0.0, f_prev = 0.0;
+  bool have_prev = false;
+  double lo = 0.0, hi = 1e300;  // f(lo) >= 0 > f(hi)
+};
+
+// The joint's mean friction power [W] and outflow [m³/s] over the reported samples.
+bool PowerAndOutflow(const std::vector<CrankTrainSample>& samples, bool skirt, double* power,
+                     double* outflow) {
+  double p = 0.0, q = 0.0;
+  int n = 0;
+  for (const CrankTrainSample& s : samples) {
+    if (skirt ? !s.skirt.present : !s.bearing.present) continue;
+    p += skirt ? s.skirt.fpl : s.bearing.fpl;
+    q += skirt ? s.skirt.outflow : s.bearing.side_flow;
+    ++n;
+  }
+  if (n == 0) return false;
+  *power = p / n;
+  *outflow = q / n;
+  return true;
+}
+}  // namespace
+
+double HeatBalanceTemperature(double supply_temperature, double share, double friction_power,
+                              double density, double heat_capacity, double outflow) {
+  if (!(outflow > 0.0) || !(friction_power > 0.0)) return supply_temperature;
+  return supply_temperature + share * friction_power / (density * heat_capacity * outflow);
+}
+
 RunResult RunJob(const RunConfig& config, const RunMonitor& monitor,
                  const std::atomic<bool>* cancel) {
+  const EngineCase& c0 = config.engine_case;
+  std::vector<BalancedJoint> joints;
+  RunConfig run = config;
+  EngineCase& c = run.engine_case;
+  if (c.skirt.model == JointModel::kLubricated &&
+      c.skirt.oil.temperature_mode == FilmTemperature::kHeatBalance)
+    joints.push_back({.skirt = true, .oil = &c.skirt.oil});
+  if (c.big_end.model == JointModel::kLubricated &&
+      c.big_end.oil.temperature_mode == FilmTemperature::kHeatBalance)
+    joints.push_back({.skirt = false, .oil = &c.big_end.oil});
+  if (joints.empty()) return RunWithEstimate(config, monitor, cancel);
+  RequirePositive("lubricant.density", c0.lubricant.density, "kg/m^3");
+  RequirePositive("lubricant.heat_capacity", c0.lubricant.heat_capacity, "J/(kg*K)");
+  const double t_supply = c0.lubricant.supply_temperature;
+  constexpr double kTolerance = 0.25;  // [K]
+  constexpr int kMaxRuns = 10;
+  for (BalancedJoint& j : joints) {
+    j.t = std::max(j.oil->temperature, t_supply);
+    j.lo = t_supply;
+  }
+  RunResult::HeatBalance hb;
+  RunResult result;
+  double wall = 0.0;
+  while (true) {
+    for (BalancedJoint& j : joints) j.oil->temperature = j.t;
+    result = RunWithEstimate(run, monitor, cancel);
+    wall += result.wall_time;
+    ++hb.runs;
+    const bool reported =
+        result.status == RunStatus::kCompleted || result.status == RunStatus::kNotConverged;
+    if (!reported) break;
+    hb.residual = 0.0;
+    for (BalancedJoint& j : joints) {
+      double power = 0.0, outflow = 0.0;
+      if (!PowerAndOutflow(result.samples, j.skirt, &power, &outflow)) continue;
+      const JointOil& oil = *j.oil;
+      const double target =
+          HeatBalanceTemperature(t_supply, oil.heat_share, power, c0.lubricant.density,
+                                 c0.lubricant.heat_capacity, outflow);
+      j.f = target - j.t;
+      hb.residual = std::max(hb.residual, std::abs(j.f));
+    }
+    if (hb.residual <= kTolerance) {
+      hb.converged = true;
+      break;
+    }
+    if (hb.runs >= kMaxRuns) break;
+    for (BalancedJoint& j : joints) {
+      if (j.f >= 0.0) j.lo = std::max(j.lo, j.t);
+      if (j.f < 0.0) j.hi = std::min(j.hi, j.t);
+      double next = j.t + j.f;  // the plain fixed-point step first
+      if (j.have_prev && j.f != j.f_prev) next = j.t - j.f * (j.t - j.t_prev) / (j.f - j.f_prev);
+      // Inside the bracket (bisection when the secant leaves it), never below the supply.
+      if (j.hi < 1e300 && !(next > j.lo && next < j.hi)) next = 0.5 * (j.lo + j.hi);
+      next = std::max(next, t_supply);
+      j.t_prev = j.t;
+      j.f_prev = j.f;
+      j.have_prev = true;
+      j.t = next;
+    }
+  }
+  for (const BalancedJoint& j : joints)
+    (j.skirt ? result.skirt_film_temperature : result.big_end_film_temperature) = j.t;
+  result.heat_balance = hb;
+  result.wall_time = wall;
+  if (!hb.converged &&
+      (result.status == RunStatus::kCompleted || result.status == RunStatus::kNotConverged)) {
+    result.message += (result.message.empty() ? "" : "; ") +
+                      fmt::format(
+                          "heat balance not converged: film temperature {:.2f} K from its "
+                          "balance after {} runs (tolerance {:g} K)",
+                          hb.residual, hb.runs, kTolerance);
+  }
+  return result;
+}
+
+namespace {
+RunResult RunWithEstimate(const RunConfig& config, const RunMonitor& monitor,
+                          const std::atomic<bool>* cancel) {
   CheckRunMemory(config);
   const EngineCase& c = config.engine_case;
   const bool has_films =
@@ -647,5 +766,6 @@ RunResult RunJob(const RunConfig& config, const RunMonitor& monitor,
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }
+}  // namespace
 
 }  // namespace filmdyn::engine

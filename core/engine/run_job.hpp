@@ -5,6 +5,7 @@
 #include <atomic>
 #include <functional>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -141,7 +142,22 @@ struct RunResult {
   /// The discretisation error of the headline figures (solver.error_estimate): a coarse
   /// companion run of the same case beside this one.
   ErrorEstimate error_estimate;
+  /// Joints whose film temperature comes from their heat balance: the temperature the reported
+  /// run used [K] (none: given), and how the iteration ended.
+  std::optional<double> skirt_film_temperature, big_end_film_temperature;
+  struct HeatBalance {
+    int runs = 0;           ///< whole runs computed (each at the temperatures of the last)
+    double residual = 0.0;  ///< largest |T_balance − T_used| of the reported run [K]
+    bool converged = false;
+  };
+  std::optional<HeatBalance> heat_balance;  ///< none: no joint in heat-balance mode
 };
+
+/// A joint's heat balance at one run: the film temperature that carries `share` of its mean
+/// friction power away with the oil leaving it, T_supply + share · P / (ρ c_p Q) [K];
+/// T_supply when nothing leaves or nothing is lost. P [W] and Q [m³/s] over the reported cycle.
+double HeatBalanceTemperature(double supply_temperature, double share, double friction_power,
+                              double density, double heat_capacity, double outflow);
 
 /// The physical failure of a film joint at an output sample, or empty: the journal on the
 /// bearing, the skirt on the liner, a mass-conserving film fraction outside [0, 1] by more than

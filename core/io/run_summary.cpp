@@ -51,10 +51,14 @@ RunSummary SummarizeRun(const std::string& case_name, const engine::RunConfig& c
   s.error_estimate = result.error_estimate;
   s.warnings = RunWarnings(config, result);
   s.kpis = RunKpisOf(config, result);
-  auto oil_used = [&](const engine::JointOil& oil, const std::string& joint) {
+  auto oil_used = [&](engine::JointOil oil, const std::string& joint,
+                      const std::optional<double>& balanced) {
+    if (balanced) oil.temperature = *balanced;  // from the joint's heat balance
     const auto at = engine::JointOilAt(config.engine_case, oil, joint);
     const lubrication::OilSpec& spec =
-        oil.source == engine::OilSource::kOwn ? oil.own : config.engine_case.lubricant;
+        oil.source == engine::OilSource::kOwn
+            ? oil.own
+            : static_cast<const lubrication::OilSpec&>(config.engine_case.lubricant);
     return JointOilUsed{oil.temperature,
                         at.viscosity,
                         oil.source == engine::OilSource::kOwn ? "own" : "lubricant",
@@ -70,8 +74,16 @@ RunSummary SummarizeRun(const std::string& case_name, const engine::RunConfig& c
     const engine::JointFit fit = engine::BigEndFit(config.engine_case);
     s.clearance_big_end = RunSummary::Clearance{fit.cold_clearance, fit.hot_clearance};
   }
-  if (s.kpis.skirt) s.oil_skirt = oil_used(config.engine_case.skirt.oil, "skirt");
-  if (s.kpis.big_end) s.oil_big_end = oil_used(config.engine_case.big_end.oil, "big_end");
+  if (s.kpis.skirt)
+    s.oil_skirt = oil_used(config.engine_case.skirt.oil, "skirt", result.skirt_film_temperature);
+  if (s.kpis.big_end) {
+    s.oil_big_end =
+        oil_used(config.engine_case.big_end.oil, "big_end", result.big_end_film_temperature);
+  }
+  if (result.heat_balance) {
+    s.heat_balance = HeatBalanceUsed{result.heat_balance->runs, result.heat_balance->residual,
+                                     result.heat_balance->converged};
+  }
   SolverSummary& v = s.solver;
   v.integrator = "CVODE BDF (SUNDIALS), dense Newton";
   v.steps = result.stats.steps;
@@ -302,6 +314,11 @@ json SummaryToJson(const RunSummary& s) {
                  {"pressure_viscosity_coefficient[1/Pa]", u.pressure_viscosity_coefficient}};
   }
   j["oil"] = oil;
+  if (s.heat_balance) {
+    j["heat_balance"] = {{"runs", s.heat_balance->runs},
+                         {"residual[K]", s.heat_balance->residual},
+                         {"converged", s.heat_balance->converged}};
+  }
   json clearance = json::object();
   for (const auto& [name, c] :
        {std::pair{"skirt", &s.clearance_skirt}, std::pair{"big_end", &s.clearance_big_end}}) {
@@ -446,6 +463,13 @@ RunSummary FromJson(const json& j) {
     Read(o, "pressure_viscosity", at, &u.pressure_viscosity);
     Read(o, "pressure_viscosity_coefficient[1/Pa]", at, &u.pressure_viscosity_coefficient);
     *used = u;
+  }
+  if (j.contains("heat_balance")) {
+    HeatBalanceUsed h;
+    Read(j.at("heat_balance"), "runs", "heat_balance", &h.runs);
+    Read(j.at("heat_balance"), "residual[K]", "heat_balance", &h.residual);
+    Read(j.at("heat_balance"), "converged", "heat_balance", &h.converged);
+    s.heat_balance = h;
   }
   json clearance = json::object();  // absent in a summary written before it existed
   Read(j, "clearance", "", &clearance);

@@ -51,6 +51,15 @@ struct JointOilUsed {
   double pressure_viscosity_coefficient = 0.0;  ///< dln(mu)/dp at p = 0 [1/Pa]
 };
 
+/// The film-temperature iteration of joints in heat-balance mode ("heat_balance" in the file,
+/// absent without such a joint): whole runs computed, the largest |T_balance − T| of the
+/// reported run [K], and whether it met the tolerance.
+struct HeatBalanceUsed {
+  int runs = 0;
+  double residual = 0.0;
+  bool converged = false;
+};
+
 struct RunSummary {
   std::string filmdyn_version;
   std::string case_name;  ///< "case" in the file
@@ -89,6 +98,7 @@ struct RunSummary {
     double cold = 0.0, hot = 0.0;
   };
   std::optional<Clearance> clearance_skirt, clearance_big_end;
+  std::optional<HeatBalanceUsed> heat_balance;
 };
 
 /// The summary of a finished (or stopped) run from its configuration, result and the rows

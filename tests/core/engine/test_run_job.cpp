@@ -290,6 +290,45 @@ class TestRunJob : public QObject {
     }
     QVERIFY_THROWS_EXCEPTION(InputError, engine::ParseModel("wet"));
   }
+
+  // The heat balance by hand, then a big end whose film temperature comes from it: the run is
+  // repeated until T = T_supply + share · P / (ρ c_p Q) holds for the reported cycle's own mean
+  // friction power P and side leakage Q (checked here from the samples), within 0.25 K.
+  void heatBalanceReachesItsFixedPoint() {
+    QCOMPARE(
+        engine::HeatBalanceTemperature(363.15, 0.5, 860.0 * 2000.0 * 1e-6, 860.0, 2000.0, 1e-6),
+        363.65);
+    QCOMPARE(engine::HeatBalanceTemperature(363.15, 1.0, 100.0, 860.0, 2000.0, 0.0), 363.15);
+    engine::RunConfig config = DefaultConfig(3000, engine::Model::kOnlyLbrbe);
+    engine::EngineCase& c = config.engine_case;
+    c.big_end.mesh_theta = 48;
+    c.big_end.mesh_z = 6;
+    c.solver.error_estimate = 0;
+    c.lubricant.model = lubrication::ViscosityModel::kVogel;
+    c.lubricant.vogel_a = 6.9e-5;
+    c.lubricant.vogel_b = 1050.0;
+    c.lubricant.vogel_c = 165.0;
+    c.big_end.oil.temperature_mode = engine::FilmTemperature::kHeatBalance;
+    c.big_end.oil.temperature = 373.15;  // the first guess
+    const engine::RunResult result = engine::RunJob(config);
+    QVERIFY2(result.status == engine::RunStatus::kCompleted, result.message.c_str());
+    QVERIFY(result.heat_balance && result.heat_balance->converged);
+    QVERIFY(result.big_end_film_temperature && !result.skirt_film_temperature);
+    const double t = *result.big_end_film_temperature;
+    double power = 0.0, leakage = 0.0;
+    for (const auto& s : result.samples) {
+      power += s.bearing.fpl;
+      leakage += s.bearing.side_flow;
+    }
+    power /= double(result.samples.size());
+    leakage /= double(result.samples.size());
+    const double balance = 363.15 + power / (860.0 * 2000.0 * leakage);
+    qInfo("heat balance: %d runs, T %.3f K, balance %.3f K, P %.1f W, Q %.3g m3/s",
+          result.heat_balance->runs, t, balance, power, leakage);
+    QVERIFY(std::abs(balance - t) <= 0.25);
+    QVERIFY(t > 363.15 + 1.0);
+    QVERIFY(result.heat_balance->runs >= 2 && result.heat_balance->runs <= 10);
+  }
 };
 
 QTEST_GUILESS_MAIN(TestRunJob)
