@@ -329,6 +329,37 @@ class TestRunJob : public QObject {
     QVERIFY(t > 363.15 + 1.0);
     QVERIFY(result.heat_balance->runs >= 2 && result.heat_balance->runs <= 10);
   }
+
+  // Hotter oil, thinner film: the big end at three film temperatures (Vogel oil) — the minimum
+  // film falls and the asperity contact rises as the viscosity falls.
+  void hotterFilmsAreThinner() {
+    double last_moft = 1e9, last_contact = -1.0;
+    for (double t : {353.15, 393.15, 433.15}) {
+      engine::RunConfig config = DefaultConfig(3000, engine::Model::kOnlyLbrbe);
+      engine::EngineCase& c = config.engine_case;
+      c.big_end.mesh_theta = 48;
+      c.big_end.mesh_z = 6;
+      c.solver.error_estimate = 0;
+      c.lubricant.model = lubrication::ViscosityModel::kVogel;
+      c.lubricant.vogel_a = 6.9e-5;
+      c.lubricant.vogel_b = 1050.0;
+      c.lubricant.vogel_c = 165.0;
+      c.big_end.oil.temperature = t;
+      const engine::RunResult r = engine::RunJob(config);
+      QVERIFY2(r.status == engine::RunStatus::kCompleted, r.message.c_str());
+      double moft = 1e9, contact = 0.0;
+      for (const auto& s : r.samples) {
+        moft = std::min(moft, s.bearing.moft);
+        contact = std::max(contact, s.bearing.max_contact_pressure);
+      }
+      qInfo("%.2f K: min MOFT %.3f um, peak contact %.3g Pa", t, moft * 1e6, contact);
+      QVERIFY(moft < 0.9 * last_moft);
+      QVERIFY(contact >= last_contact);
+      last_moft = moft;
+      last_contact = contact;
+    }
+    QVERIFY(last_contact > 0.0);
+  }
 };
 
 QTEST_GUILESS_MAIN(TestRunJob)
