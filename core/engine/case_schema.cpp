@@ -1206,6 +1206,38 @@ std::string DerivedNote(const EngineCase& c, const std::string& path) {
   return {};
 }
 
+std::string UnusedReason(const EngineCase& c, const std::string& path) {
+  // The oil fields under a prefix: which of them the oil's own choices leave unused.
+  auto oil_reason = [](const lubrication::OilSpec& oil, const std::string& name) -> std::string {
+    using lubrication::PressureLaw;
+    using lubrication::ViscosityModel;
+    const bool vogel = oil.model == ViscosityModel::kVogel;
+    if (name == "viscosity" && vogel) return "the viscosity follows Vogel's law";
+    if ((name == "vogel_a" || name == "vogel_b" || name == "vogel_c") && !vogel)
+      return "the viscosity model is constant";
+    if (name == "barus_alpha" && oil.pressure_law != PressureLaw::kBarus)
+      return "the pressure-viscosity law is not Barus'";
+    if (name == "roelands_z" && oil.pressure_law != PressureLaw::kRoelands)
+      return "the pressure-viscosity law is not Roelands'";
+    return {};
+  };
+  if (path.rfind("lubricant.", 0) == 0) return oil_reason(c.lubricant, path.substr(10));
+  for (const auto& [joint, oil] : {std::pair{std::string("skirt"), &c.skirt.oil},
+                                   std::pair{std::string("big_end"), &c.big_end.oil}}) {
+    const std::string prefix = joint + ".oil.";
+    if (path.rfind(prefix, 0) != 0) continue;
+    const std::string name = path.substr(prefix.size());
+    if (name == "source" || name == "temperature" || name == "temperature_mode") return {};
+    if (name == "heat_share")
+      return oil->temperature_mode == FilmTemperature::kHeatBalance
+                 ? std::string()
+                 : "the film temperature is given";
+    if (oil->source == OilSource::kLubricant) return "the film carries the case's lubricant";
+    return oil_reason(oil->own, name);
+  }
+  return {};
+}
+
 void CheckCaseConsistency(const EngineCase& c) {
   const auto& g = c.geometry;
   if (g.rod_length <= g.crank_radius + std::abs(g.pin_offset)) {

@@ -100,5 +100,8 @@ void CheckCaseConsistency(const EngineCase& engine_case);
 /// clearance beside the cold one ("hot: 6.41 µm (cold 25.00 µm)"); empty when there is nothing
 /// to add.
 std::string DerivedNote(const EngineCase& engine_case, const std::string& path);
+/// Why a scalar field is not used with the case's choices (e.g. "the viscosity follows Vogel's
+/// law" for lubricant.viscosity), or empty when it is used: the editor greys such rows.
+std::string UnusedReason(const EngineCase& engine_case, const std::string& path);
 
 }  // namespace filmdyn::engine

@@ -76,6 +76,10 @@ QVariant ParameterTableModel::data(const QModelIndex& index, int role) const {
           if (assumed != document_->engineCase().assumed.end()) {
             return tr("assumed: %1").arg(QString::fromStdString(assumed->second));
           }
+          if (const std::string unused = engine::UnusedReason(document_->engineCase(), p.path);
+              !unused.empty()) {
+            return tr("not used: %1").arg(QString::fromStdString(unused));
+          }
           return QString::fromStdString(engine::DerivedNote(document_->engineCase(), p.path));
       }
       break;
@@ -88,6 +92,9 @@ QVariant ParameterTableModel::data(const QModelIndex& index, int role) const {
       break;
     case Qt::ForegroundRole:
       if (bad && index.column() == kNote) return QBrush(QColor(170, 0, 0));
+      // A field the case's choices leave unused: greyed, the reason in the note column.
+      if (!bad && !engine::UnusedReason(document_->engineCase(), p.path).empty())
+        return QBrush(QColor(150, 150, 150));
       break;
     case Qt::TextAlignmentRole:
       if (index.column() == kValue && !p.choice) return int(Qt::AlignRight | Qt::AlignVCenter);

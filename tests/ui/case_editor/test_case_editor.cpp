@@ -494,6 +494,19 @@ class TestCaseEditor : public QObject {
     TypeIntoCell(lubricant, ValueCell(window, CaseGroup::kLubricant, "lubricant.vogel_c"), "165");
     const auto& c = window.document()->engineCase();
     QVERIFY(Near(c.lubricant.vogel_a, 6.9e-5, 1e-18));
+    // The constant viscosity and the pressure laws' constants are greyed, each with its reason.
+    const QModelIndex mu = ValueCell(window, CaseGroup::kLubricant, "lubricant.viscosity");
+    QCOMPARE(mu.siblingAtColumn(ParameterTableModel::kNote).data().toString(),
+             QString("not used: the viscosity follows Vogel's law"));
+    QCOMPARE(mu.data(Qt::ForegroundRole).value<QBrush>().color(), QColor(150, 150, 150));
+    QVERIFY(ValueCell(window, CaseGroup::kLubricant, "lubricant.barus_alpha")
+                .siblingAtColumn(ParameterTableModel::kNote)
+                .data()
+                .toString()
+                .startsWith("not used"));
+    QVERIFY(!ValueCell(window, CaseGroup::kLubricant, "lubricant.vogel_a")
+                 .data(Qt::ForegroundRole)
+                 .isValid());
     QCOMPARE(c.lubricant.vogel_c, 165.0);
     if (const QString dir = qEnvironmentVariable("FILMDYN_SCREENSHOT_DIR"); !dir.isEmpty()) {
       QTest::qWait(100);
@@ -503,6 +516,12 @@ class TestCaseEditor : public QObject {
     tabs->setCurrentIndex(TabOf(window, skirt));
     const QModelIndex cell = ValueCell(window, CaseGroup::kSkirt, "skirt.oil.temperature");
     QCOMPARE(cell.data().toString(), QString("100"));  // 373.15 K
+    // The joint carries the case's lubricant: its own oil's rows are greyed.
+    QCOMPARE(ValueCell(window, CaseGroup::kSkirt, "skirt.oil.vogel_a")
+                 .siblingAtColumn(ParameterTableModel::kNote)
+                 .data()
+                 .toString(),
+             QString("not used: the film carries the case's lubricant"));
     TypeIntoCell(skirt, cell, "120");
     QVERIFY(Near(c.skirt.oil.temperature, 393.15, 1e-12));
     QCOMPARE(cell.data().toString(), QString("120"));
