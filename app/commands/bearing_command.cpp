@@ -84,11 +84,11 @@ Command MakeBearingCommand() {
       const std::vector<double> abc = ParseDoubleList("--vogel", *args.Value("vogel"));
       if (abc.size() != 3) throw InputError("--vogel", *args.Value("vogel"), "three numbers A,B,C");
       const lubrication::VogelLaw law{abc[0], abc[1], abc[2]};
-      law.Validate("--vogel");
+      law.Validate("--vogel.");
       if (!args.Has("temperature"))
         throw InputError("--temperature", "(missing)", "the oil temperature [°C] for --vogel");
       temperature = *args.Double("temperature");
-      in.viscosity = law.At(*temperature + 273.15, "--temperature");
+      in.viscosity = law.At(*temperature + lubrication::kZeroCelsius, "--temperature");
     } else if (args.Has("temperature")) {
       throw InputError("--temperature", *args.Value("temperature"),
                        "only with a temperature law (--vogel)");

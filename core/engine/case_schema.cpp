@@ -28,8 +28,8 @@ FieldRange Length() { return {0.0, 100.0, true, false}; }
 FieldRange Mass() { return {0.0, 1e5, true, false}; }       // [kg]; the largest marine pistons ~5 t
 FieldRange Inertia() { return {0.0, 1e5, true, false}; }    // [kg·m²]
 FieldRange Offset() { return {0.0, 100.0, false, false}; }  // a non-negative length [m]
-FieldRange Roughness() { return {0.0, 1e-4, true, false}; }      // RMS [m]; engine surfaces < 2 µm
-FieldRange Gap() { return {0.0, 0.01, false, false}; }           // profile/ovality gap [m]
+FieldRange Roughness() { return {0.0, 1e-4, true, false}; }  // RMS [m]; engine surfaces < 2 µm
+FieldRange Gap() { return {0.0, 0.01, false, false}; }       // profile/ovality gap [m]
 // A radial clearance [m]: > 0, at most 10 mm (large marine pistons run about 1 mm); the
 // cross-field rule adds < liner radius.
 FieldRange Clearance() { return {0.0, 0.01, true, false}; }
@@ -256,7 +256,7 @@ void AddJointOilFields(std::vector<CaseField>& f, const std::string& joint,
                                 1.0,
                                 {0.0, 1000.0, true, false},
                                 "used where the viscosity follows temperature (Vogel's law)"});
-  temperature.display_offset = 273.15;  // shown in °C
+  temperature.display_offset = lubrication::kZeroCelsius;  // shown in °C
   temperature.get = [section](const EngineCase& c) { return (c.*section).oil.temperature; };
   temperature.set = [section](EngineCase& c, double v) { (c.*section).oil.temperature = v; };
   temperature.description =
@@ -315,7 +315,7 @@ void AddTemperatureField(std::vector<CaseField>& f, const std::string& path,
                             1.0,
                             {0.0, 1000.0, true, false},
                             "the cold dimensions are at 20 °C"});
-  field.display_offset = 273.15;
+  field.display_offset = lubrication::kZeroCelsius;
   field.symbol = symbol;
   field.description = description;
   f.push_back(std::move(field));
@@ -606,9 +606,6 @@ void SetDescriptions(std::vector<CaseField>& fields) {
        "counter-clockwise."},
       {"big_end.groove_end_angle", "Where the shell groove ends (a full circle: start + 360°)."},
       {"big_end.groove_width", "Axial width of the shell groove, centred on the bearing width."},
-      {"lubricant.viscosity",
-       "Dynamic viscosity of the oil at its running temperature, the same everywhere in both "
-       "films."},
       {"lubricant.greenwood_tripp_k",
        "Constant of the asperity contact model: scales the contact pressure of touching rough "
        "surfaces."},
@@ -1007,11 +1004,11 @@ std::vector<CaseField> MakeSchema() {
       "solver.run_in_angle", sol, &SolverCase::run_in_angle,
       {G::kSolver, "Run-in before the first cycle", "rad", "°CA", kDeg, Between(0.0, 8 * kPi),
        "integrated at 10× looser tolerances before the first monitored cycle"}));
-  f.push_back(Scalar("solver.error_estimate", sol, &SolverCase::error_estimate,
-                     {G::kSolver, "Discretisation-error estimate (1 = on)", "-", "–", 1.0,
-                      Between(0, 1),
-                      "1: a companion run on meshes with half the elements estimates the error "
-                      "of the headline figures; 0: off"}));
+  f.push_back(
+      Scalar("solver.error_estimate", sol, &SolverCase::error_estimate,
+             {G::kSolver, "Discretisation-error estimate (1 = on)", "-", "–", 1.0, Between(0, 1),
+              "1: a companion run on meshes with half the elements estimates the error "
+              "of the headline figures; 0: off"}));
   SetSymbols(f);
   SetDescriptions(f);
   return f;

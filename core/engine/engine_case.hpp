@@ -45,7 +45,7 @@ enum class FilmTemperature { kGiven, kHeatBalance };
 /// A joint's oil and film temperature.
 struct JointOil {
   OilSource source = OilSource::kLubricant;
-  lubrication::OilSpec own{.viscosity = 0.02, .barus_alpha = 2.0e-8, .roelands_z = 0.6};
+  lubrication::OilSpec own;
   /// Film temperature [K]: where the viscosity follows temperature (Vogel), the film's; with the
   /// heat balance the start of its iteration.
   double temperature = 373.15;
@@ -187,7 +187,6 @@ struct SolverCase {
 /// The case's oil (lubrication::OilSpec: viscosity model and pressure law; Table I: a constant
 /// 0.02 Pa·s), used by both joints unless a joint has its own.
 struct LubricantCase : lubrication::OilSpec {
-  LubricantCase() { barus_alpha = 2.0e-8, roelands_z = 0.6; }
   double greenwood_tripp_k = 1.198e-4;  ///< K of eq. 29 [-]
   /// The joints' heat balances: oil supply temperature [K], density [kg/m³] and specific heat
   /// [J/(kg·K)] of the oil.

@@ -12,8 +12,12 @@
 
 namespace filmdyn::engine {
 
-/// A joint's oil at its film temperature: the case's lubricant or the joint's own (JointOil).
-/// Throws filmdyn::InputError naming the field ("lubricant.vogel_a", "skirt.oil.temperature").
+/// The oil a joint's film carries: the case's lubricant or the joint's own (JointOil::source),
+/// and the prefix of its fields ("lubricant." or "<joint>.oil.").
+const lubrication::OilSpec& JointOilSpec(const EngineCase& c, const JointOil& oil);
+std::string JointOilPrefix(const JointOil& oil, const std::string& joint);
+/// A joint's oil at its film temperature (JointOilSpec). Throws filmdyn::InputError naming the
+/// field ("lubricant.vogel_a", "skirt.oil.temperature").
 lubrication::OilSpec::AtTemperature JointOilAt(const EngineCase& c, const JointOil& oil,
                                                const std::string& joint);
 

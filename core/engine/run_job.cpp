@@ -583,20 +583,19 @@ struct BalancedJoint {
   double lo = 0.0, hi = 1e300;  // f(lo) >= 0 > f(hi)
 };
 
-// The joint's mean friction power [W] and outflow [m³/s] over the reported samples.
+// The joint's mean friction power [W] (its headline figure) and mean outflow [m³/s] over the
+// reported samples; false when they hold no film of the joint.
 bool PowerAndOutflow(const std::vector<CrankTrainSample>& samples, bool skirt, double* power,
                      double* outflow) {
-  double p = 0.0, q = 0.0;
-  int n = 0;
-  for (const CrankTrainSample& s : samples) {
-    if (skirt ? !s.skirt.present : !s.bearing.present) continue;
-    p += skirt ? s.skirt.fpl : s.bearing.fpl;
-    q += skirt ? s.skirt.outflow : s.bearing.side_flow;
-    ++n;
-  }
-  if (n == 0) return false;
-  *power = p / n;
-  *outflow = q / n;
+  const char* key = skirt ? "skirt_fpl_mean[W]" : "bearing_fpl_mean[W]";
+  const std::vector<HeadlineFigure> figures = HeadlineFigures(samples);
+  const auto fpl = std::find_if(figures.begin(), figures.end(),
+                                [key](const HeadlineFigure& f) { return f.key == key; });
+  if (fpl == figures.end()) return false;
+  double q = 0.0;
+  for (const CrankTrainSample& s : samples) q += skirt ? s.skirt.outflow : s.bearing.side_flow;
+  *power = fpl->value;
+  *outflow = q / static_cast<double>(samples.size());
   return true;
 }
 }  // namespace
@@ -632,13 +631,13 @@ RunResult RunJob(const RunConfig& config, const RunMonitor& monitor,
   RunResult::HeatBalance hb;
   RunResult result;
   double wall = 0.0;
+  bool reported = false;  // the last run reported a cycle (completed or not converged)
   while (true) {
     for (BalancedJoint& j : joints) j.oil->temperature = j.t;
     result = RunWithEstimate(run, monitor, cancel);
     wall += result.wall_time;
     ++hb.runs;
-    const bool reported =
-        result.status == RunStatus::kCompleted || result.status == RunStatus::kNotConverged;
+    reported = result.status == RunStatus::kCompleted || result.status == RunStatus::kNotConverged;
     if (!reported) break;
     hb.residual = 0.0;
     for (BalancedJoint& j : joints) {
@@ -674,8 +673,7 @@ RunResult RunJob(const RunConfig& config, const RunMonitor& monitor,
     (j.skirt ? result.skirt_film_temperature : result.big_end_film_temperature) = j.t;
   result.heat_balance = hb;
   result.wall_time = wall;
-  if (!hb.converged &&
-      (result.status == RunStatus::kCompleted || result.status == RunStatus::kNotConverged)) {
+  if (!hb.converged && reported) {
     result.message += (result.message.empty() ? "" : "; ") +
                       fmt::format(
                           "heat balance not converged: film temperature {:.2f} K from its "

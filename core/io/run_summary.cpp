@@ -55,10 +55,7 @@ RunSummary SummarizeRun(const std::string& case_name, const engine::RunConfig& c
                       const std::optional<double>& balanced) {
     if (balanced) oil.temperature = *balanced;  // from the joint's heat balance
     const auto at = engine::JointOilAt(config.engine_case, oil, joint);
-    const lubrication::OilSpec& spec =
-        oil.source == engine::OilSource::kOwn
-            ? oil.own
-            : static_cast<const lubrication::OilSpec&>(config.engine_case.lubricant);
+    const lubrication::OilSpec& spec = engine::JointOilSpec(config.engine_case, oil);
     return JointOilUsed{oil.temperature,
                         at.viscosity,
                         oil.source == engine::OilSource::kOwn ? "own" : "lubricant",

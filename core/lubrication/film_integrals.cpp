@@ -61,7 +61,10 @@ FilmIntegrals IntegrateFilm(const ReynoldsFem& fem, const ReynoldsSolution& fiel
   std::vector<double> couette(2 * static_cast<size_t>(n));
   // With a pressure-dependent viscosity the Couette shear of a node takes its own mu(p): the
   // terms carry mu(p)/mu0, and mu (params.viscosity) stays mu0.
-  const PressureViscosity* pv = params.pressure_viscosity;
+  const PressureViscosity* pv =
+      params.pressure_viscosity != nullptr && params.pressure_viscosity->active()
+          ? params.pressure_viscosity
+          : nullptr;
   for (int k = 0; k < n; ++k) {
     const double theta_f = jfo ? fields.fluid_fraction[k] : 1.0;
     const double ratio = pv != nullptr ? pv->Ratio(p[k]) : 1.0;

@@ -13,7 +13,7 @@ namespace filmdyn::lubrication {
 namespace {
 std::string Kelvin(double t) {
   char buf[64];
-  std::snprintf(buf, sizeof buf, "%.6g K (%.4g °C)", t, t - 273.15);
+  std::snprintf(buf, sizeof buf, "%.6g K (%.4g °C)", t, t - kZeroCelsius);
   return buf;
 }
 
@@ -33,9 +33,9 @@ double VogelLaw::At(double temperature, const std::string& field) const {
 }
 
 void VogelLaw::Validate(const std::string& prefix) const {
-  RequirePositive(prefix + ".a", a, "Pa*s");
-  RequirePositive(prefix + ".b", b, "K");
-  RequireFinite(prefix + ".c", c, "K");
+  RequirePositive(prefix + "a", a, "Pa*s");
+  RequirePositive(prefix + "b", b, "K");
+  RequireFinite(prefix + "c", c, "K");
 }
 
 VogelLaw VogelLaw::Through(double t1, double mu1, double t2, double mu2, double t3, double mu3) {
@@ -175,9 +175,7 @@ OilSpec::AtTemperature OilSpec::At(double temperature, const std::string& prefix
     out.viscosity = viscosity;
   } else {
     const VogelLaw law{vogel_a, vogel_b, vogel_c};
-    RequirePositive(prefix + "vogel_a", vogel_a, "Pa*s");
-    RequirePositive(prefix + "vogel_b", vogel_b, "K");
-    RequireFinite(prefix + "vogel_c", vogel_c, "K");
+    law.Validate(prefix + "vogel_");
     out.viscosity = law.At(temperature, temperature_field);
   }
   switch (pressure_law) {

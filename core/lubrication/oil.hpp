@@ -13,13 +13,15 @@
 /// and q >= 0 exactly where p >= 0, so the cavitation conditions carry over unchanged. The film
 /// is solved for q and p = q^-1(q) recovered node by node: an exact treatment of the nonlinear
 /// equation, with no iteration. q is bounded: q < q_max = int_0^inf mu0 / mu (1 / alpha for
-/// Barus); a film that needs more is beyond the pressure-viscosity limit (the pressure would be
-/// infinite) and its solve fails with that status.
-#include <optional>
+/// Barus); nodes that need more are beyond the pressure-viscosity limit (the pressure would be
+/// infinite): the solve caps them and counts them (ReynoldsStats::capped_nodes).
 #include <string>
 #include <vector>
 
 namespace filmdyn::lubrication {
+
+/// 0 °C in kelvin: temperatures are kelvin inside core/, °C where people type them.
+inline constexpr double kZeroCelsius = 273.15;
 
 /// mu(T) = a exp(b / (T - c)).
 struct VogelLaw {
@@ -28,11 +30,12 @@ struct VogelLaw {
   double c = 0.0;  ///< [K], the pole: the law holds for T > c
   /// Viscosity at T [K]. Throws filmdyn::InputError (field `field`) for T <= c.
   double At(double temperature, const std::string& field = "temperature") const;
-  /// Throws filmdyn::InputError naming `prefix`.a/.b/.c for a <= 0, b <= 0 or non-finite values.
+  /// Throws filmdyn::InputError naming `prefix`a, `prefix`b or `prefix`c for a <= 0, b <= 0 or
+  /// non-finite values (prefix e.g. "lubricant.vogel_" or "--vogel.").
   void Validate(const std::string& prefix) const;
   /// The law through three (T [K], mu [Pa s]) points with T1 < T2 < T3 and mu1 > mu2 > mu3
-  /// (exact; a Newton iteration on c). Throws filmdyn::InputError when no Vogel law with
-  /// b > 0 passes through them.
+  /// (exact, c in closed form from the ratio of the log-differences). Throws
+  /// filmdyn::InputError when no Vogel law with b > 0 passes through them.
   static VogelLaw Through(double t1, double mu1, double t2, double mu2, double t3, double mu3);
 };
 
@@ -87,8 +90,10 @@ struct OilSpec {
   double vogel_b = 0.0;     ///< kVogel: b [K]
   double vogel_c = 0.0;     ///< kVogel: c [K]
   PressureLaw pressure_law = PressureLaw::kNone;
-  double barus_alpha = 0.0;  ///< kBarus: alpha [1/Pa]
-  double roelands_z = 0.0;   ///< kRoelands: z [-]
+  /// kBarus: alpha [1/Pa]; the default is within the 16–26 1/GPa of mineral oils of engine-oil
+  /// viscosity at 60–100 °C (Stachowiak & Batchelor, Engineering Tribology, Table 2.3).
+  double barus_alpha = 2.0e-8;
+  double roelands_z = 0.6;  ///< kRoelands: z [-] (about 0.6 for mineral oils)
 
   /// The oil at one film temperature.
   struct AtTemperature {

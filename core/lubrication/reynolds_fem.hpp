@@ -53,8 +53,7 @@
 
 namespace filmdyn::lubrication {
 
-/// Numerical status of one solve (numerical trouble is a status, never an exception:
-/// docs/conventions.md).
+/// Numerical status of one solve (numerical trouble is a status, never an exception: docs/conventions.md).
 enum class SolveStatus { kConverged, kNotConverged, kFactorizationFailed };
 const char* ToString(SolveStatus status);
 

@@ -135,8 +135,8 @@ class TestOil : public QObject {
       QVERIFY2(what.find("skirt.temperature") != std::string::npos, e.what());
       QVERIFY2(what.find("165") != std::string::npos, e.what());
     }
-    QVERIFY_THROWS_EXCEPTION(InputError, (VogelLaw{-1.0, 1000.0, 150.0}.Validate("oil.vogel")));
-    QVERIFY_THROWS_EXCEPTION(InputError, (VogelLaw{1e-4, 0.0, 150.0}.Validate("oil.vogel")));
+    QVERIFY_THROWS_EXCEPTION(InputError, (VogelLaw{-1.0, 1000.0, 150.0}.Validate("oil.vogel_")));
+    QVERIFY_THROWS_EXCEPTION(InputError, (VogelLaw{1e-4, 0.0, 150.0}.Validate("oil.vogel_")));
     // Viscosities rising with temperature: no Vogel law.
     QVERIFY_THROWS_EXCEPTION(InputError, VogelLaw::Through(300.0, 0.01, 350.0, 0.02, 400.0, 0.03));
   }
