@@ -9,6 +9,13 @@ namespace filmdyn::coupling {
 
 void RequireConvergedFilm(const lubrication::ReynoldsStats& stats, const char* joint,
                           lubrication::CavitationModel model) {
+  if (stats.capped_nodes > 0) {
+    throw multibody::EvaluationFailure(std::string(joint) +
+                                       " film beyond the pressure-viscosity "
+                                       "limit at " +
+                                       std::to_string(stats.capped_nodes) +
+                                       " nodes (its pressure would be infinite)");
+  }
   if (stats.status == lubrication::SolveStatus::kConverged) return;
   throw multibody::EvaluationFailure(std::string(joint) + " film solve " +
                                      lubrication::ToString(stats.status) + " (" +

@@ -17,7 +17,8 @@ namespace {
 
 constexpr double kEpsFloor = 1e-3;  // line-of-centres regularisation (see header)
 
-// With a film history (JFO) the result also depends on the time (the step it is taken from).
+// With a film history (JFO) the result also depends on the time (the step it is taken from), and
+// while a pressure law is phased in.
 bool SameInput(const multibody::JointForceInput& a, const multibody::JointForceInput& b,
                bool timed) {
   return (!timed || a.t == b.t) && a.body_i.q == b.body_i.q && a.body_i.v == b.body_i.v &&
@@ -85,12 +86,22 @@ BigEndKinematics LubricatedBigEndElement::Kinematics(const BodyState& crank,
   return k;
 }
 
+void LubricatedBigEndElement::PhasePressureLawIn(double end_time) {
+  ramp_ = PressureLawRamp(solver_->config().pressure_viscosity, end_time);
+}
+
+const lubrication::BearingResult& LubricatedBigEndElement::SolveFilm(
+    const lubrication::BearingState& state, double t) {
+  if (ramp_.Update(t)) solver_->SetPressureViscosity(ramp_.law());
+  return solver_->SolveAt(state, t);
+}
+
 Eigen::Vector4d LubricatedBigEndElement::Loads(const Eigen::Matrix<double, 6, 1>& z,
                                                double bearing_angle, BigEndKinematics* kin) {
   const double c = solver_->config().geometry.radial_clearance;
   *kin = FromCartesian(z, bearing_angle, journal_angle_, c);
   if (supply_pressure_) kin->state.supply_pressure = supply_pressure_(journal_angle_);
-  factorizations_ += solver_->SolveAt(kin->state, eval_time_).stats.factorizations;
+  factorizations_ += SolveFilm(kin->state, eval_time_).stats.factorizations;
   ++solves_;
   const lubrication::BearingResult& r = solver_->result();
   RequireConvergedFilm(r.stats, "big-end", solver_->config().solver.cavitation);
@@ -105,8 +116,8 @@ Eigen::Vector4d LubricatedBigEndElement::Loads(const Eigen::Matrix<double, 6, 1>
 
 void LubricatedBigEndElement::EvaluateJoint(const multibody::JointForceInput& in,
                                             bool want_jacobian, multibody::JointForceOutput* out) {
-  if (cache_valid_ && SameInput(in, cached_in_, solver_->Transient()) &&
-      (!want_jacobian || cache_has_jacobian_)) {
+  const bool timed = solver_->Transient() || ramp_.VariesAfter(std::min(in.t, cached_in_.t));
+  if (cache_valid_ && SameInput(in, cached_in_, timed) && (!want_jacobian || cache_has_jacobian_)) {
     *out = cached_out_;
     if (!want_jacobian) out->jacobian.setZero();
     return;
@@ -183,7 +194,7 @@ void LubricatedBigEndElement::OnStepAccepted(double t, const multibody::SystemSt
   // new one (a third of the film solves).
   if (!(solver_at_cache_ && cache_valid_ && cached_in_.t == t)) {
     const BigEndKinematics kin = Kinematics(state.Body(BodyI()), state.Body(BodyJ()));
-    factorizations_ += solver_->SolveAt(kin.state, t).stats.factorizations;
+    factorizations_ += SolveFilm(kin.state, t).stats.factorizations;
     ++solves_;
     RequireConvergedFilm(solver_->result().stats, "big-end", solver_->config().solver.cavitation);
   }
@@ -198,7 +209,7 @@ void LubricatedBigEndElement::OnStepAccepted(double t, const multibody::SystemSt
 
 void LubricatedBigEndElement::RefreshFields() {
   if (solver_at_cache_ || !cache_valid_) return;
-  solver_->SolveAt(kin_.state, cached_in_.t);
+  SolveFilm(kin_.state, cached_in_.t);
   ++solves_;
   solver_at_cache_ = true;
 }

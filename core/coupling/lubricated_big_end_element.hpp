@@ -16,6 +16,7 @@
 #include <memory>
 
 #include "core/coupling/film_report.hpp"
+#include "core/coupling/pressure_law_ramp.hpp"
 #include "core/lubrication/bearing_solver.hpp"
 #include "core/multibody/force_element.hpp"
 
@@ -64,6 +65,8 @@ class LubricatedBigEndElement final : public multibody::JointForceElement,
   void SetSupplyPressure(std::function<double(double)> pressure_of_crank_angle) {
     supply_pressure_ = std::move(pressure_of_crank_angle);
   }
+  /// Phases the oil's pressure-viscosity law in from t = 0 to `end_time` [s] (PressureLawRamp).
+  void PhasePressureLawIn(double end_time);
   /// A cancel honoured inside the film solve (ReynoldsFem::SetStopCheck).
   void SetStopCheck(const StopCheck& check) { solver_->fem().SetStopCheck(check); }
   /// Re-solves at the last state evaluated without a Jacobian if a Jacobian evaluation has left
@@ -75,6 +78,8 @@ class LubricatedBigEndElement final : public multibody::JointForceElement,
   long factorizations() const { return factorizations_; }
 
  private:
+  /// The film at `state` and time t, with the pressure law of t.
+  const lubrication::BearingResult& SolveFilm(const lubrication::BearingState& state, double t);
   /// (F_x, F_y, T_journal, T_bearing) at Cartesian (e, ė, ω_j, ω_b) + bearing angle.
   Eigen::Vector4d Loads(const Eigen::Matrix<double, 6, 1>& z, double bearing_angle,
                         BigEndKinematics* kin);
@@ -94,6 +99,7 @@ class LubricatedBigEndElement final : public multibody::JointForceElement,
   double rod_angle_ = 0.0;
   long solves_ = 0, factorizations_ = 0;
   OilAccount oil_;  ///< kept at accepted steps when the film conserves oil (JFO)
+  PressureLawRamp ramp_;
 };
 
 }  // namespace filmdyn::coupling

@@ -13,7 +13,8 @@ using multibody::BodyState;
 
 namespace {
 
-// With a film history (JFO) the result also depends on the time (the step it is taken from).
+// With a film history (JFO) the result also depends on the time (the step it is taken from), and
+// while a pressure law is phased in.
 bool SameInput(const multibody::JointForceInput& a, const multibody::JointForceInput& b,
                bool timed) {
   return (!timed || a.t == b.t) && a.body_j.q == b.body_j.q && a.body_j.v == b.body_j.v;
@@ -61,7 +62,12 @@ SkirtKinematics LubricatedSkirtElement::Kinematics(const BodyState& piston) cons
   return k;
 }
 
+void LubricatedSkirtElement::PhasePressureLawIn(double end_time) {
+  ramp_ = PressureLawRamp(solver_->config().pressure_viscosity, end_time);
+}
+
 void LubricatedSkirtElement::SolveAt(const lubrication::SkirtState& state) {
+  if (ramp_.Update(eval_time_)) solver_->SetPressureViscosity(ramp_.law());
   factorizations_ += solver_->SolveAt(state, eval_time_).stats.factorizations;
   ++solves_;
   RequireConvergedFilm(solver_->result().stats, "skirt", solver_->config().solver.cavitation);
@@ -73,8 +79,8 @@ Eigen::Vector3d LubricatedSkirtElement::Generalised(const lubrication::SkirtResu
 
 void LubricatedSkirtElement::EvaluateJoint(const multibody::JointForceInput& in, bool want_jacobian,
                                            multibody::JointForceOutput* out) {
-  if (cache_valid_ && SameInput(in, cached_in_, solver_->Transient()) &&
-      (!want_jacobian || cache_has_jacobian_)) {
+  const bool timed = solver_->Transient() || ramp_.VariesAfter(std::min(in.t, cached_in_.t));
+  if (cache_valid_ && SameInput(in, cached_in_, timed) && (!want_jacobian || cache_has_jacobian_)) {
     *out = cached_out_;
     if (!want_jacobian) out->jacobian.setZero();
     return;

@@ -19,6 +19,7 @@
 #include <memory>
 
 #include "core/coupling/film_report.hpp"
+#include "core/coupling/pressure_law_ramp.hpp"
 #include "core/lubrication/skirt_solver.hpp"
 #include "core/multibody/force_element.hpp"
 
@@ -68,6 +69,8 @@ class LubricatedSkirtElement final : public multibody::JointForceElement,
   const lubrication::SkirtResult& last_result() const { return result_; }
   /// 2: the skirt's thrust and anti-thrust panels solved side by side (SkirtSolver::SetThreads).
   void SetPanelThreads(int threads) { solver_->SetThreads(threads); }
+  /// Phases the oil's pressure-viscosity law in from t = 0 to `end_time` [s] (PressureLawRamp).
+  void PhasePressureLawIn(double end_time);
   /// A cancel honoured inside the film solves (ReynoldsFem::SetStopCheck).
   void SetStopCheck(const StopCheck& check) { solver_->SetStopCheck(check); }
   long reynolds_solves() const { return solves_; }
@@ -89,6 +92,7 @@ class LubricatedSkirtElement final : public multibody::JointForceElement,
   bool cache_valid_ = false, cache_has_jacobian_ = false, solver_at_cache_ = false;
   lubrication::SkirtResult result_;
   OilAccount oil_;  ///< kept at accepted steps when the film conserves oil (JFO)
+  PressureLawRamp ramp_;
   SkirtKinematics kin_;
   long solves_ = 0, factorizations_ = 0;
 };

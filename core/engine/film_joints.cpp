@@ -28,21 +28,6 @@ lubrication::OilSpec::AtTemperature JointOilAt(const EngineCase& c, const JointO
                                  joint + ".oil.temperature");
 }
 
-namespace {
-// Engine runs start from rest: in the first steps the journal and the piston meet their films
-// at metres per second, where the isoviscous pressure passes any pressure law's limit (1/alpha
-// for Barus) and the film would need infinite pressure. Until the run-in phases the law in,
-// engine runs keep the viscosity independent of pressure.
-void RequireNoPressureLawInRuns(const EngineCase& c, const JointOil& oil,
-                                const std::string& joint) {
-  const lubrication::PressureLaw law = JointOilSpec(c, oil).pressure_law;
-  if (law == lubrication::PressureLaw::kNone) return;
-  throw InputError(JointOilPrefix(oil, joint) + "pressure_viscosity", lubrication::ToString(law),
-                   "\"none\" in engine runs (the start from rest drives the film past the "
-                   "pressure law's limit); the pressure laws serve `filmdyn bearing`");
-}
-}  // namespace
-
 lubrication::SkirtConfig SkirtConfigFromCase(const EngineCase& c) {
   const SkirtCase& sk = c.skirt;
   lubrication::SkirtConfig config;
@@ -109,7 +94,6 @@ std::unique_ptr<multibody::JointForceElement> MakeLubricatedSkirt(const EngineCa
   const double y0 = height(best - 1), y1 = height(best), y2 = height(best + 1);
   const double den = y0 - 2.0 * y1 + y2;
   mount.pin_y_at_tdc = den < 0.0 ? y1 - 0.125 * (y2 - y0) * (y2 - y0) / den : y1;
-  RequireNoPressureLawInRuns(c, c.skirt.oil, "skirt");
   return std::make_unique<coupling::LubricatedSkirtElement>(SkirtConfigFromCase(c), layout.piston,
                                                             mount);
 }
@@ -169,7 +153,6 @@ std::unique_ptr<multibody::JointForceElement> MakeLubricatedBigEnd(const EngineC
   coupling::BigEndMounting mount;
   mount.journal_point = layout.crank_pin;
   mount.bearing_point = layout.rod_big_end;
-  RequireNoPressureLawInRuns(c, c.big_end.oil, "big_end");
   lubrication::BearingConfig config = BearingConfigFromCase(c);
   // The case's supply angles are measured from the rod axis (toward the small end) and from the
   // crank web's axis (main journal to pin); the solver's, from each body's own x axis.

@@ -292,11 +292,15 @@ RunResult RunSingle(const RunConfig& config, const RunMonitor& monitor,
   train.system->SetStopCheck(stop);
   if (skirt) skirt->SetStopCheck(stop);
   if (big_end) big_end->SetStopCheck(stop);
+  const double omega = train.layout.omega;
+  const double t_start = run_in / omega;  // time of the first monitored sample
+  // A pressure-viscosity law is phased in over the first half of the run-in (the start from rest
+  // drives the films past its limit; coupling/pressure_law_ramp.hpp).
+  if (skirt) skirt->PhasePressureLawIn(0.5 * t_start);
+  if (big_end) big_end->PhasePressureLawIn(0.5 * t_start);
   multibody::Integrator integrator(*train.system, config.integrator);
   integrator.Initialize(0.0, train.initial_state);
 
-  const double omega = train.layout.omega;
-  const double t_start = run_in / omega;  // time of the first monitored sample
   const double cycle_time = 4.0 * std::numbers::pi / omega;
   const int steps_per_cycle =
       std::max(2, static_cast<int>(std::lround(4.0 * std::numbers::pi / c.solver.output_interval)));

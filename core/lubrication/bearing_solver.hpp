@@ -13,6 +13,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/lubrication/film_history.hpp"
@@ -179,6 +180,8 @@ class BearingSolver {
   const ReynoldsFem& fem() const { return fem_; }
   ReynoldsFem& fem() { return fem_; }
   const BearingConfig& config() const { return config_; }
+  /// Replaces the configuration's pressure-viscosity law (an engine run phases it in).
+  void SetPressureViscosity(PressureViscosity law) { config_.pressure_viscosity = std::move(law); }
   /// The whole width of the film (the mesh itself unless the symmetric half is solved).
   const FullWidthSurface& full_width() const { return full_width_; }
 

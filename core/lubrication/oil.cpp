@@ -86,31 +86,52 @@ PressureViscosity PressureViscosity::Roelands(double z, double mu0, const std::s
   v.law_ = PressureLaw::kRoelands;
   v.z_ = z;
   v.log_ratio_ = std::log(mu0 / kRoelandsViscosity);
+  v.TabulateRoelands(4096);
+  return v;
+}
+
+void PressureViscosity::TabulateRoelands(int intervals) {
   // Tabulate q(p) up to where mu0/mu < 1e-17 (the rest of the integral is below rounding):
-  // L [(1 + p/p_r)^z - 1] = 39. The grid is uniform in ln(1 + p / 1 MPa): fine where the
-  // integrand is ~1, 0.25 % steps at GPa.
-  const double p_end = kRoelandsPressure * (std::pow(1.0 + 39.0 / v.log_ratio_, 1.0 / z) - 1.0);
-  constexpr int kIntervals = 4096;
+  // s L [(1 + p/p_r)^z - 1] = 39. The grid is uniform in ln(1 + p / 1 MPa): fine where the
+  // integrand is ~1, 0.25 % steps at GPa with 4 096 intervals.
+  const double p_end =
+      kRoelandsPressure * (std::pow(1.0 + 39.0 / (scale_ * log_ratio_), 1.0 / z_) - 1.0);
   constexpr double kScale = 1e6;
-  const double step = std::log1p(p_end / kScale) / kIntervals;
-  v.p_grid_.resize(kIntervals + 1);
-  v.q_grid_.resize(kIntervals + 1);
-  v.dqdp_.resize(kIntervals + 1);
-  auto integrand = [&v](double p) { return v.RoelandsIntegrand(p); };
-  for (int i = 0; i <= kIntervals; ++i) {
-    v.p_grid_[i] = kScale * std::expm1(i * step);
-    v.dqdp_[i] = v.RoelandsIntegrand(v.p_grid_[i]);
-    v.q_grid_[i] = i == 0
-                       ? 0.0
-                       : v.q_grid_[i - 1] + boost::math::quadrature::gauss<double, 10>::integrate(
-                                                integrand, v.p_grid_[i - 1], v.p_grid_[i]);
+  const double step = std::log1p(p_end / kScale) / intervals;
+  p_grid_.resize(intervals + 1);
+  q_grid_.resize(intervals + 1);
+  dqdp_.resize(intervals + 1);
+  auto integrand = [this](double p) { return RoelandsIntegrand(p); };
+  for (int i = 0; i <= intervals; ++i) {
+    p_grid_[i] = kScale * std::expm1(i * step);
+    dqdp_[i] = RoelandsIntegrand(p_grid_[i]);
+    q_grid_[i] = i == 0 ? 0.0
+                        : q_grid_[i - 1] + boost::math::quadrature::gauss<double, 10>::integrate(
+                                               integrand, p_grid_[i - 1], p_grid_[i]);
   }
-  v.q_max_ = v.q_grid_.back();
+  q_max_ = q_grid_.back();
+}
+
+PressureViscosity PressureViscosity::Weakened(double s) const {
+  // Below s = 1e-6 the law changes mu by less than a millionth of its own change (and Roelands'
+  // table would reach past any double): no law.
+  if (!(s >= 1e-6) || law_ == PressureLaw::kNone) return {};
+  if (s >= 1.0) return *this;
+  PressureViscosity v = *this;
+  if (law_ == PressureLaw::kBarus) {
+    v.alpha_ = alpha_ * s;
+    v.q_max_ = 1.0 / v.alpha_;
+  } else {
+    // A weakened law serves only the start of an engine run (PressureLawRamp), retabulated at
+    // every new time there: 512 intervals (q to ~1e-7) cost an eighth of the full table's.
+    v.scale_ = scale_ * s;
+    v.TabulateRoelands(512);
+  }
   return v;
 }
 
 double PressureViscosity::RoelandsIntegrand(double p) const {
-  return std::exp(-log_ratio_ * (std::pow(1.0 + p / kRoelandsPressure, z_) - 1.0));
+  return std::exp(-scale_ * log_ratio_ * (std::pow(1.0 + p / kRoelandsPressure, z_) - 1.0));
 }
 
 double PressureViscosity::InitialCoefficient() const {
@@ -120,7 +141,7 @@ double PressureViscosity::InitialCoefficient() const {
     case PressureLaw::kBarus:
       return alpha_;
     case PressureLaw::kRoelands:
-      return z_ * log_ratio_ / kRoelandsPressure;
+      return scale_ * z_ * log_ratio_ / kRoelandsPressure;
   }
   return 0.0;
 }

@@ -68,14 +68,20 @@ class PressureViscosity {
   double Pressure(double q) const;
   /// q_max = lim q(p) as p -> infinity [Pa] (+infinity for kNone).
   double ReducedLimit() const { return q_max_; }
+  /// The law with ln(mu / mu0) scaled by s: none for s < 1e-6, this law for s >= 1 (Barus with
+  /// alpha s; Roelands with its exponent times s, tabulated to ~1e-7). Phases a law in over an
+  /// engine run's start.
+  PressureViscosity Weakened(double s) const;
 
  private:
   PressureLaw law_ = PressureLaw::kNone;
   double alpha_ = 0.0, z_ = 0.0, log_ratio_ = 0.0;
+  double scale_ = 1.0;  // Roelands: the factor on ln(mu / mu0) (Weakened)
   double q_max_ = 1e300;
   // Roelands: q(p) tabulated on a graded grid with dq/dp = mu0/mu (cubic Hermite both ways).
   std::vector<double> p_grid_, q_grid_, dqdp_;
   double RoelandsIntegrand(double p) const;
+  void TabulateRoelands(int intervals);
 };
 
 enum class ViscosityModel { kConstant, kVogel };

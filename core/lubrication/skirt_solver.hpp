@@ -12,6 +12,7 @@
 /// surface 1 at rest): U_sum = -u_p, U_diff = +u_p, i.e. the paper's eq. 1.
 #include <memory>
 #include <string>
+#include <utility>
 
 #include "core/base/worker_pool.hpp"
 #include "core/lubrication/film_history.hpp"
@@ -128,6 +129,8 @@ class SkirtSolver {
   const Eigen::VectorXd& film_thickness() const { return h_; }
   const TriMesh& mesh() const { return mesh_; }
   const SkirtConfig& config() const { return config_; }
+  /// Replaces the configuration's pressure-viscosity law (an engine run phases it in).
+  void SetPressureViscosity(PressureViscosity law) { config_.pressure_viscosity = std::move(law); }
   /// alpha [rad] of each node (x = R alpha).
   const std::vector<double>& alpha() const { return alpha_; }
   /// 1 (default): the panels one after the other; 2: side by side.

@@ -8,6 +8,7 @@
 
 #include "core/coupling/lubricated_big_end_element.hpp"
 #include "core/coupling/lubricated_skirt_element.hpp"
+#include "core/coupling/pressure_law_ramp.hpp"
 #include "core/engine/crank_train.hpp"
 #include "core/engine/film_joints.hpp"
 #include "core/io/case_file.hpp"
@@ -54,6 +55,38 @@ double ContactPressureOf(const lubrication::FilmFactorModel& film, double h) {
 class TestFilmElements : public QObject {
   Q_OBJECT
  private slots:
+  // The phase-in of a pressure law over an engine run's start: scale 0 at t = 0, 1 from the end
+  // time on, smooth and monotone between; the law changes only when the time does, and results
+  // depend on the time only until the end.
+  void pressureLawRampPhasesTheLawIn() {
+    const lubrication::PressureViscosity barus = lubrication::PressureViscosity::Barus(2e-8);
+    coupling::PressureLawRamp ramp(barus, 0.01);
+    QCOMPARE(ramp.Scale(0.0), 0.0);
+    QCOMPARE(ramp.Scale(0.01), 1.0);
+    QCOMPARE(ramp.Scale(0.005), 0.5);
+    double last = 0.0;
+    for (int k = 1; k <= 100; ++k) {
+      const double s = ramp.Scale(1e-4 * k);
+      QVERIFY(s >= last);
+      last = s;
+    }
+    QVERIFY(ramp.Update(0.0));
+    QVERIFY(!ramp.law().active());
+    QVERIFY(!ramp.Update(0.0));
+    QVERIFY(ramp.Update(0.005));
+    QCOMPARE(ramp.law().InitialCoefficient(), 1e-8);
+    QVERIFY(ramp.VariesAfter(0.009));
+    QVERIFY(!ramp.VariesAfter(0.01));
+    QVERIFY(ramp.Update(0.02));
+    QCOMPARE(ramp.law().InitialCoefficient(), 2e-8);
+    QVERIFY(!ramp.Update(0.03));
+    // Without a law nothing varies; an end time of 0 gives the full law from the start.
+    QVERIFY(!coupling::PressureLawRamp({}, 0.01).VariesAfter(0.0));
+    coupling::PressureLawRamp at_once(barus, 0.0);
+    QVERIFY(!at_once.Update(0.0));
+    QCOMPARE(at_once.law().InitialCoefficient(), 2e-8);
+  }
+
   void skirtOvalityFromTheCaseWidensTheFilm() {
     engine::EngineCase c = CoarseCase();
     lubrication::SkirtSolver round(engine::SkirtConfigFromCase(c));

@@ -174,6 +174,39 @@ class TestOil : public QObject {
     QVERIFY_THROWS_EXCEPTION(InputError, PressureViscosity::Roelands(0.0, 0.01));
   }
 
+  // A weakened law (an engine run phases its law in with it) scales ln(mu / mu0): Barus with
+  // alpha s exactly; Roelands to its coarser table's accuracy (1e-6), its limit rising as s falls;
+  // none below s = 1e-6, the law itself from s = 1.
+  void weakenedLawScalesTheLogarithmOfTheViscosityRatio() {
+    const PressureViscosity barus = PressureViscosity::Barus(2e-8);
+    const PressureViscosity roelands = PressureViscosity::Roelands(0.6, 0.02);
+    for (const PressureViscosity* law : {&barus, &roelands}) {
+      double last_limit = law->ReducedLimit();
+      for (double s : {0.9, 0.5, 0.1, 1e-3}) {
+        const PressureViscosity w = law->Weakened(s);
+        QVERIFY(w.law() == law->law());
+        QVERIFY(std::abs(w.InitialCoefficient() / (s * law->InitialCoefficient()) - 1.0) < 1e-14);
+        for (double p : {1e6, 5e7, 2e8}) {
+          QVERIFY(std::abs(std::log(w.Ratio(p)) / (s * std::log(law->Ratio(p))) - 1.0) < 1e-9);
+          QVERIFY(std::abs(w.Pressure(w.Reduced(p)) / p - 1.0) < 1e-6);  // 512 intervals
+        }
+        QVERIFY(w.ReducedLimit() > last_limit);
+        last_limit = w.ReducedLimit();
+      }
+      const PressureViscosity barus_half = barus.Weakened(0.5);
+      QVERIFY(std::abs(barus_half.Reduced(1e8) - PressureViscosity::Barus(1e-8).Reduced(1e8)) <
+              1e-6);
+      QVERIFY(!law->Weakened(0.0).active());
+      QVERIFY(!law->Weakened(9e-7).active());
+      QCOMPARE(law->Weakened(1.0).Reduced(1e8), law->Reduced(1e8));
+      QCOMPARE(law->Weakened(2.0).Reduced(1e8), law->Reduced(1e8));
+    }
+    // A Roelands law weakened to 1e-6 still tabulates to finite numbers.
+    const PressureViscosity faint = roelands.Weakened(1e-6);
+    QVERIFY(std::isfinite(faint.ReducedLimit()));
+    QVERIFY(std::abs(faint.Reduced(1e8) / 1e8 - 1.0) < 1e-5);
+  }
+
   // The isoviscous film is the limit: a vanishing coefficient reproduces it to rounding.
   void vanishingPressureCoefficientIsTheIsoviscousFilm() {
     const double omega = 2.0 * kPi * 50.0;

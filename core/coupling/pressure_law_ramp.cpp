@@ -1,0 +1,26 @@
+#include "core/coupling/pressure_law_ramp.hpp"
+
+#include <utility>
+
+namespace filmdyn::coupling {
+
+PressureLawRamp::PressureLawRamp(lubrication::PressureViscosity full, double end_time)
+    : full_(std::move(full)), current_(full_), end_time_(end_time) {}
+
+double PressureLawRamp::Scale(double t) const {
+  if (!(end_time_ > 0.0) || t >= end_time_) return 1.0;
+  if (!(t > 0.0)) return 0.0;
+  const double x = t / end_time_;
+  return x * x * (3.0 - 2.0 * x);
+}
+
+bool PressureLawRamp::Update(double t) {
+  if (!full_.active()) return false;
+  const double s = Scale(t);
+  if (s == scale_) return false;
+  scale_ = s;
+  current_ = full_.Weakened(s);
+  return true;
+}
+
+}  // namespace filmdyn::coupling
