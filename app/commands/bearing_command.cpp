@@ -51,6 +51,12 @@ Command MakeBearingCommand() {
       {"temperature", "C", "oil temperature [°C] for --vogel"},
       {"barus", "ALPHA", "pressure-viscosity coefficient of Barus' law mu0 exp(alpha p) [1/Pa]"},
       {"roelands", "Z", "pressure-viscosity index z of Roelands' law (typically 0.4-0.8)"},
+      {"cross", "R,M[,RATE]",
+       "shear thinning by Cross' law mu1 [R + (1 - R) / (1 + (rate / RATE)^M)] at the Couette "
+       "rate |U| / h: R = mu2/mu1 in (0,1), exponent M, critical rate RATE [1/s] at 150 °C "
+       "(shifted to --temperature by mu1(150 °C)/mu1(T) with --vogel); RATE or --hths"},
+      {"hths", "PAS",
+       "HTHS viscosity [Pa s] (150 °C, 1e6 1/s): sets RATE of --cross (which then takes R,M)"},
       {"cavitation", "MODEL", "reynolds (Swift-Stieber, default) or jfo (mass-conserving)"},
       {"mesh", "NTxNZ", "elements around x across the full width (default 240x40)"},
       {"sigma1", "M", "rms roughness of the journal [m] (enables mixed lubrication)"},
@@ -92,6 +98,41 @@ Command MakeBearingCommand() {
     } else if (args.Has("temperature")) {
       throw InputError("--temperature", *args.Value("temperature"),
                        "only with a temperature law (--vogel)");
+    }
+    // Shear thinning: resolved through the oil's own rules (OilSpec::At), so that the calculator
+    // and the engine run shift and calibrate Cross' law alike.
+    if (args.Has("hths") && !args.Has("cross"))
+      throw InputError("--hths", *args.Value("hths"), "with --cross R,M");
+    if (args.Has("cross")) {
+      const std::vector<double> rmr = ParseDoubleList("--cross", *args.Value("cross"));
+      const size_t want = args.Has("hths") ? 2 : 3;
+      if (rmr.size() != want) {
+        throw InputError("--cross", *args.Value("cross"),
+                         want == 2 ? "two numbers R,M with --hths" : "three numbers R,M,RATE");
+      }
+      if (!(rmr[0] > 0.0 && rmr[0] < 1.0))
+        throw InputError("--cross", *args.Value("cross"), "R between 0 and 1");
+      if (!(rmr[1] > 0.0)) throw InputError("--cross", *args.Value("cross"), "M > 0");
+      if (want == 3 && !(rmr[2] > 0.0))
+        throw InputError("--cross", *args.Value("cross"), "RATE > 0 [1/s]");
+      lubrication::OilSpec oil;
+      if (args.Has("vogel")) {
+        const std::vector<double> abc = ParseDoubleList("--vogel", *args.Value("vogel"));
+        oil.model = lubrication::ViscosityModel::kVogel;
+        oil.vogel_a = abc[0];
+        oil.vogel_b = abc[1];
+        oil.vogel_c = abc[2];
+      } else {
+        oil.viscosity = in.viscosity;
+      }
+      oil.shear_thinning =
+          want == 2 ? lubrication::ShearThinning::kHths : lubrication::ShearThinning::kCross;
+      oil.cross_ratio = rmr[0];
+      oil.cross_exponent = rmr[1];
+      if (want == 3) oil.cross_rate = rmr[2];
+      if (auto v = args.Double("hths")) oil.hths = *v;
+      const double t = temperature ? *temperature + lubrication::kZeroCelsius : 0.0;
+      in.shear_thinning = oil.At(t, "--", "--temperature").shear;
     }
     if (args.Has("barus") && args.Has("roelands"))
       throw InputError("--barus", *args.Value("barus"), "either --barus or --roelands, not both");
@@ -155,6 +196,14 @@ Command MakeBearingCommand() {
       if (in.pressure_law != lubrication::PressureLaw::kNone)
         j["pressure_viscosity_coefficient"] =
             lubrication::PressureViscosityOf(in).InitialCoefficient();
+      const lubrication::CrossLaw& cross = in.shear_thinning;
+      j["shear_thinning"] = cross.active() ? "cross" : "none";
+      if (cross.active()) {
+        j["cross_ratio"] = cross.ratio;
+        j["cross_exponent"] = cross.exponent;
+        j["cross_critical_rate"] = cross.critical_rate;
+        j["cross_critical_rate_definition"] = "1/s, at the temperature used";
+      }
       j["mesh"] = std::to_string(in.mesh.n_theta) + "x" + std::to_string(in.mesh.n_z);
       j["l_over_d"] = in.length / (2.0 * in.radius);
       j["reynolds_solves"] = r.reynolds_solves;

@@ -145,7 +145,12 @@ void AddOilFields(std::vector<CaseField>& f, const std::string& prefix, FieldGro
       {"vogel_c", "Vogel c"},
       {"pressure_viscosity", "pressure law"},
       {"barus_alpha", "α"},
-      {"roelands_z", "z"}};
+      {"roelands_z", "z"},
+      {"shear_thinning", "shear thinning"},
+      {"cross_ratio", "Cross r"},
+      {"cross_exponent", "Cross m"},
+      {"cross_rate", "γ̇c"},
+      {"hths", "HTHS"}};
   auto number = [&](const char* name, double OilSpec::*member, const Info& info,
                     std::string description) {
     CaseField field = Base(prefix + name, FieldKind::kNumber, info);
@@ -226,6 +231,60 @@ void AddOilFields(std::vector<CaseField>& f, const std::string& prefix, FieldGro
           {0.0, 2.0, false, false},
           "pressure–viscosity index; about 0.6 for mineral oils"},
          "Pressure–viscosity index z of Roelands' law " + whose);
+  using lubrication::ShearThinning;
+  choice("shear_thinning", &OilSpec::shear_thinning,
+         {ToString(ShearThinning::kNone), ToString(ShearThinning::kCross),
+          ToString(ShearThinning::kHths)},
+         {group,
+          "Shear thinning",
+          "",
+          "",
+          1.0,
+          {},
+          "\"none\", \"cross\" (critical shear rate given) or \"hths\" (from the HTHS "
+          "viscosity)"},
+         "How the viscosity falls with the film's shear rate (polymer-thickened multigrades): "
+         "not at all, or Cross' law μ = μ₁ [r + (1 − r) / (1 + (γ̇/γ̇c)^m)] with γ̇ = |ΔU| / h, "
+         "its critical rate given or set by the HTHS viscosity " +
+             whose);
+  number("cross_ratio", &OilSpec::cross_ratio,
+         {group,
+          "Cross: second Newtonian ratio r",
+          "-",
+          "–",
+          1.0,
+          {0.0, 1.0, false, false},
+          "μ₂ / μ₁, the fully sheared viscosity over the low-shear one; 0 < r < 1 (assumed 0.7)"},
+         "Cross' law: the ratio r of the second Newtonian viscosity to the low-shear one " + whose);
+  number("cross_exponent", &OilSpec::cross_exponent,
+         {group,
+          "Cross: exponent m",
+          "-",
+          "–",
+          1.0,
+          {0.0, 10.0, false, false},
+          "> 0 (assumed 1, Cross' own)"},
+         "Cross' law: the exponent m " + whose);
+  number("cross_rate", &OilSpec::cross_rate,
+         {group,
+          "Cross: critical shear rate γ̇c at 150 °C",
+          "1/s",
+          "1/s",
+          1.0,
+          {0.0, 1e12, false, false},
+          "with shear thinning \"cross\"; shifted to the film temperature by μ₁(150 °C)/μ₁(T)"},
+         "Cross' law: the critical shear rate at 150 °C (the HTHS temperature) " + whose);
+  number("hths", &OilSpec::hths,
+         {group,
+          "HTHS viscosity (150 °C, 10⁶ 1/s)",
+          "Pa*s",
+          "mPa·s",
+          1e-3,
+          {0.0, 1.0, false, false},
+          "with shear thinning \"hths\": ASTM D4683 / CEC L-36; between r μ₁ and μ₁ at 150 °C"},
+         "The oil's high-temperature high-shear viscosity, which sets Cross' critical shear rate "
+         "(μ(150 °C, 10⁶ 1/s) = HTHS) " +
+             whose);
 }
 
 lubrication::OilSpec& LubricantOil(EngineCase& c) { return c.lubricant; }
@@ -1216,6 +1275,14 @@ std::string UnusedReason(const EngineCase& c, const std::string& path) {
       return "the pressure-viscosity law is not Barus'";
     if (name == "roelands_z" && oil.pressure_law != PressureLaw::kRoelands)
       return "the pressure-viscosity law is not Roelands'";
+    using lubrication::ShearThinning;
+    if ((name == "cross_ratio" || name == "cross_exponent") &&
+        oil.shear_thinning == ShearThinning::kNone)
+      return "no shear thinning";
+    if (name == "cross_rate" && oil.shear_thinning != ShearThinning::kCross)
+      return "the critical shear rate is not given (shear thinning is not \"cross\")";
+    if (name == "hths" && oil.shear_thinning != ShearThinning::kHths)
+      return "shear thinning is not set by the HTHS viscosity";
     return {};
   };
   if (path.rfind("lubricant.", 0) == 0) return oil_reason(c.lubricant, path.substr(10));

@@ -51,6 +51,7 @@ lubrication::SkirtConfig SkirtConfigFromCase(const EngineCase& c) {
   const lubrication::OilSpec::AtTemperature oil = JointOilAt(c, sk.oil, "skirt");
   config.viscosity = oil.viscosity;
   config.pressure_viscosity = oil.pressure;
+  config.shear_thinning = oil.shear;
   config.mesh.n_thrust = sk.mesh_thrust;
   config.mesh.n_relief = sk.mesh_relief;
   config.mesh.n_anti = sk.mesh_anti;
@@ -119,6 +120,7 @@ lubrication::BearingConfig BearingConfigFromCase(const EngineCase& c) {
   const lubrication::OilSpec::AtTemperature oil = JointOilAt(c, be.oil, "big_end");
   config.viscosity = oil.viscosity;
   config.pressure_viscosity = oil.pressure;
+  config.shear_thinning = oil.shear;
   config.mesh.n_theta = be.mesh_theta;
   // The half has the same nodes and half the unknowns; the outputs show the whole width.
   config.mesh.symmetric_half = BigEndSolvesSymmetricHalf(be);

@@ -61,7 +61,11 @@ RunSummary SummarizeRun(const std::string& case_name, const engine::RunConfig& c
                         oil.source == engine::OilSource::kOwn ? "own" : "lubricant",
                         lubrication::ToString(spec.model),
                         lubrication::ToString(spec.pressure_law),
-                        at.pressure.InitialCoefficient()};
+                        at.pressure.InitialCoefficient(),
+                        lubrication::ToString(spec.shear_thinning),
+                        at.shear.ratio,
+                        at.shear.exponent,
+                        at.shear.critical_rate};
   };
   if (s.kpis.skirt) {
     const engine::JointFit fit = engine::SkirtFit(config.engine_case);
@@ -308,7 +312,13 @@ json SummaryToJson(const RunSummary& s) {
                  {"source", u.source},
                  {"viscosity_model", u.viscosity_model},
                  {"pressure_viscosity", u.pressure_viscosity},
-                 {"pressure_viscosity_coefficient[1/Pa]", u.pressure_viscosity_coefficient}};
+                 {"pressure_viscosity_coefficient[1/Pa]", u.pressure_viscosity_coefficient},
+                 {"shear_thinning", u.shear_thinning}};
+    if (u.shear_thinning != "none") {
+      oil[name]["cross_ratio[-]"] = u.cross_ratio;
+      oil[name]["cross_exponent[-]"] = u.cross_exponent;
+      oil[name]["cross_critical_rate[1/s]"] = u.cross_critical_rate;
+    }
   }
   j["oil"] = oil;
   if (s.heat_balance) {
@@ -459,6 +469,12 @@ RunSummary FromJson(const json& j) {
     Read(o, "viscosity_model", at, &u.viscosity_model);
     Read(o, "pressure_viscosity", at, &u.pressure_viscosity);
     Read(o, "pressure_viscosity_coefficient[1/Pa]", at, &u.pressure_viscosity_coefficient);
+    if (o.contains("shear_thinning")) Read(o, "shear_thinning", at, &u.shear_thinning);
+    if (u.shear_thinning != "none") {
+      Read(o, "cross_ratio[-]", at, &u.cross_ratio);
+      Read(o, "cross_exponent[-]", at, &u.cross_exponent);
+      Read(o, "cross_critical_rate[1/s]", at, &u.cross_critical_rate);
+    }
     *used = u;
   }
   if (j.contains("heat_balance")) {

@@ -44,6 +44,7 @@ BearingCalcResult RunBearingCalculator(const BearingCalcInput& in) {
   cfg.geometry = {in.radius, in.length, in.radial_clearance};
   cfg.viscosity = in.viscosity;
   cfg.pressure_viscosity = PressureViscosityOf(in);
+  cfg.shear_thinning = in.shear_thinning;
   cfg.mesh = in.mesh;
   cfg.solver.cavitation = in.cavitation;
   if (in.surfaces) cfg.film = MakeSurfaceFilm(*in.surfaces);

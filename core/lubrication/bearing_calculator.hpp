@@ -20,6 +20,7 @@ struct BearingCalcInput {
   PressureLaw pressure_law = PressureLaw::kNone;
   double barus_alpha = 0.0;
   double roelands_z = 0.0;
+  CrossLaw shear_thinning;          ///< at the oil's temperature (oil.hpp); inactive: Newtonian
   double speed_rpm = 3000.0;        ///< journal speed [rev/min]
   BearingMeshSpec mesh{100, 20, true};
   CavitationModel cavitation = CavitationModel::kReynolds;

@@ -296,6 +296,7 @@ const BearingResult& BearingSolver::SolveStep(const BearingState& s, double time
   ReynoldsParams params;
   params.viscosity = config_.viscosity;
   params.pressure_viscosity = &config_.pressure_viscosity;
+  params.shear_thinning = &config_.shear_thinning;
   params.u_sum = R * (s.omega_journal + s.omega_bearing - 2.0 * s.line_of_centres_rate);
   params.u_diff = R * (s.omega_journal - s.omega_bearing);
   params.film = config_.film.get();

@@ -91,6 +91,7 @@ struct BearingConfig {
   BearingGeometry geometry;
   double viscosity = 0.0;                ///< at zero gauge pressure [Pa s]
   PressureViscosity pressure_viscosity;  ///< how it rises with the film pressure (oil.hpp)
+  CrossLaw shear_thinning;               ///< how it falls with the film's shear rate (oil.hpp)
   BearingMeshSpec mesh;
   OilFeed feed;
   ReynoldsOptions solver;

@@ -59,15 +59,19 @@ FilmIntegrals IntegrateFilm(const ReynoldsFem& fem, const ReynoldsSolution& fiel
   // Per node once (a node belongs to up to six elements): the Couette terms, and the data of the
   // caller's fields.
   std::vector<double> couette(2 * static_cast<size_t>(n));
-  // With a pressure-dependent viscosity the Couette shear of a node takes its own mu(p): the
-  // terms carry mu(p)/mu0, and mu (params.viscosity) stays mu0.
+  // With a pressure-dependent viscosity or shear thinning the Couette shear of a node takes its
+  // own mu: the terms carry mu/mu0, and mu (params.viscosity) stays mu0.
   const PressureViscosity* pv =
       params.pressure_viscosity != nullptr && params.pressure_viscosity->active()
           ? params.pressure_viscosity
           : nullptr;
+  const CrossLaw* shear = params.shear_thinning != nullptr && params.shear_thinning->active()
+                              ? params.shear_thinning
+                              : nullptr;
   for (int k = 0; k < n; ++k) {
     const double theta_f = jfo ? fields.fluid_fraction[k] : 1.0;
-    const double ratio = pv != nullptr ? pv->Ratio(p[k]) : 1.0;
+    double ratio = pv != nullptr ? pv->Ratio(p[k]) : 1.0;
+    if (shear != nullptr) ratio *= shear->InFilm(u, h[k]);
     couette[2 * k] = ratio * theta_f * (fac[k].shear_f + fac[k].shear_fs) / h[k];
     couette[2 * k + 1] = ratio * theta_f * (fac[k].shear_f - fac[k].shear_fs) / h[k];
   }

@@ -178,6 +178,36 @@ double PressureViscosity::Pressure(double q) const {
                  1.0 / dqdp_[i + 1]);
 }
 
+double CrossLaw::Factor(double shear_rate) const {
+  if (!active() || !(shear_rate > 0.0)) return 1.0;
+  return ratio + (1.0 - ratio) / (1.0 + std::pow(shear_rate / critical_rate, exponent));
+}
+
+double CrossLaw::CriticalRateForHths(double mu1_hths, double hths, double ratio, double exponent,
+                                     const std::string& hths_field) {
+  if (!std::isfinite(hths) || !(hths > ratio * mu1_hths) || !(hths < mu1_hths)) {
+    throw InputError(
+        hths_field, FormatValue(hths) + " Pa*s",
+        "between the second Newtonian viscosity r mu1 = " + FormatValue(ratio * mu1_hths) +
+            " Pa*s and the low-shear viscosity mu1 = " + FormatValue(mu1_hths) + " Pa*s at 150 °C");
+  }
+  // hths = mu1 [r + (1 - r) / (1 + x^m)], x = gamma_HTHS / gamma_c.
+  const double x_m = (mu1_hths - hths) / (hths - ratio * mu1_hths);
+  return kHthsShearRate / std::pow(x_m, 1.0 / exponent);
+}
+
+const char* ToString(ShearThinning model) {
+  switch (model) {
+    case ShearThinning::kNone:
+      return "none";
+    case ShearThinning::kCross:
+      return "cross";
+    case ShearThinning::kHths:
+      return "hths";
+  }
+  return "?";
+}
+
 const char* ToString(ViscosityModel model) {
   switch (model) {
     case ViscosityModel::kConstant:
@@ -191,13 +221,31 @@ const char* ToString(ViscosityModel model) {
 OilSpec::AtTemperature OilSpec::At(double temperature, const std::string& prefix,
                                    const std::string& temperature_field) const {
   AtTemperature out;
+  double mu1_hths = 0.0;  // the low-shear viscosity at the HTHS temperature
   if (model == ViscosityModel::kConstant) {
     RequirePositive(prefix + "viscosity", viscosity, "Pa*s");
-    out.viscosity = viscosity;
+    out.viscosity = mu1_hths = viscosity;
   } else {
     const VogelLaw law{vogel_a, vogel_b, vogel_c};
     law.Validate(prefix + "vogel_");
     out.viscosity = law.At(temperature, temperature_field);
+    mu1_hths = law.At(CrossLaw::kHthsTemperature, prefix + "vogel_c");
+  }
+  if (shear_thinning != ShearThinning::kNone) {
+    if (!std::isfinite(cross_ratio) || !(cross_ratio > 0.0) || !(cross_ratio < 1.0)) {
+      throw InputError(prefix + "cross_ratio", FormatValue(cross_ratio), "between 0 and 1");
+    }
+    RequirePositive(prefix + "cross_exponent", cross_exponent);
+    double rate_hths = cross_rate;
+    if (shear_thinning == ShearThinning::kCross) {
+      RequirePositive(prefix + "cross_rate", cross_rate, "1/s");
+    } else {
+      rate_hths = CrossLaw::CriticalRateForHths(mu1_hths, hths, cross_ratio, cross_exponent,
+                                                prefix + "hths");
+    }
+    out.shear.ratio = cross_ratio;
+    out.shear.exponent = cross_exponent;
+    out.shear.critical_rate = rate_hths * mu1_hths / out.viscosity;
   }
   switch (pressure_law) {
     case PressureLaw::kNone:

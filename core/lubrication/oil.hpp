@@ -15,6 +15,7 @@
 /// equation, with no iteration. q is bounded: q < q_max = int_0^inf mu0 / mu (1 / alpha for
 /// Barus); nodes that need more are beyond the pressure-viscosity limit (the pressure would be
 /// infinite): the solve caps them and counts them (ReynoldsStats::capped_nodes).
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -84,6 +85,39 @@ class PressureViscosity {
   void TabulateRoelands(int intervals);
 };
 
+/// Shear thinning (temporary viscosity loss of polymer-thickened oils) by Cross' law
+///   mu(gamma) = mu1 [ r + (1 - r) / (1 + (gamma / gamma_c)^m) ],
+/// mu1 the low-shear (first Newtonian) viscosity, r mu1 the second Newtonian plateau, gamma_c the
+/// critical shear rate, m the exponent (Cross 1965). In a film the shear rate of a node is taken
+/// as its Couette rate |U1 - U2| / h: the viscosity is then known before the pressure and the
+/// Reynolds equation stays linear in p (docs/equations.md, "Oil").
+struct CrossLaw {
+  /// The HTHS test's shear rate [1/s] and temperature [K] (ASTM D4683: 10^6 1/s, 150 °C).
+  static constexpr double kHthsShearRate = 1.0e6;
+  static constexpr double kHthsTemperature = 423.15;
+
+  double ratio = 1.0;          ///< r = mu2 / mu1 in (0, 1); 1: no thinning
+  double critical_rate = 0.0;  ///< gamma_c [1/s] at the film's temperature
+  double exponent = 1.0;       ///< m > 0
+  bool active() const { return ratio < 1.0; }
+  /// mu(gamma) / mu1 (1 for an inactive law).
+  double Factor(double shear_rate) const;
+  /// The factor in a film of thickness h [m] whose surfaces slide at u_diff [m/s] relative to
+  /// each other: the Couette shear rate |u_diff| / h.
+  double InFilm(double u_diff, double h) const { return Factor(std::abs(u_diff) / h); }
+  /// gamma_c for which mu(kHthsShearRate) = hths when mu1 = mu1_hths (both at the HTHS
+  /// temperature). Throws filmdyn::InputError naming `hths_field` unless r mu1 < hths < mu1.
+  static double CriticalRateForHths(double mu1_hths, double hths, double ratio, double exponent,
+                                    const std::string& hths_field);
+};
+
+enum class ShearThinning {
+  kNone,   ///< Newtonian
+  kCross,  ///< Cross' law, gamma_c given at the HTHS temperature
+  kHths    ///< Cross' law, gamma_c from the oil's HTHS viscosity
+};
+const char* ToString(ShearThinning model);
+
 enum class ViscosityModel { kConstant, kVogel };
 const char* ToString(ViscosityModel model);
 
@@ -100,11 +134,19 @@ struct OilSpec {
   /// viscosity at 60–100 °C (Stachowiak & Batchelor, Engineering Tribology, Table 2.3).
   double barus_alpha = 2.0e-8;
   double roelands_z = 0.6;  ///< kRoelands: z [-] (about 0.6 for mineral oils)
+  ShearThinning shear_thinning = ShearThinning::kNone;
+  double cross_ratio = 0.7;     ///< r = mu2 / mu1 [-]
+  double cross_exponent = 1.0;  ///< m [-]
+  double cross_rate = 1.0e6;    ///< kCross: gamma_c at the HTHS temperature [1/s]
+  double hths = 0.0;            ///< kHths: viscosity at 150 °C and 10^6 1/s [Pa s]
 
   /// The oil at one film temperature.
   struct AtTemperature {
-    double viscosity = 0.0;  ///< at zero gauge pressure [Pa s]
+    double viscosity = 0.0;  ///< at zero gauge pressure and low shear [Pa s]
     PressureViscosity pressure;
+    /// gamma_c shifted from the HTHS temperature by the low-shear viscosity (time-temperature
+    /// superposition: gamma_c(T) = gamma_c(T_HTHS) mu1(T_HTHS) / mu1(T)).
+    CrossLaw shear;
   };
   /// Resolves the oil at `temperature` [K] (ignored by a constant viscosity). Throws
   /// filmdyn::InputError naming `prefix` + the field (e.g. "lubricant.vogel_a") or

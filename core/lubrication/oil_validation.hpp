@@ -24,6 +24,11 @@ struct InclinedSlider {
   double Load(const PressureViscosity& law) const;
   /// The largest pressure, at h = 2 Q / U (where dq/dx = 0) [Pa].
   double PeakPressure(const PressureViscosity& law) const;
+  /// Load per unit width with a shear-thinning oil, mu(x) = mu0 law.InFilm(U, h(x)) (known
+  /// before the pressure): dp/dx = 12 mu (U h / 2 - Q) / h^3 with Q = (U/2) int mu/h^2 /
+  /// int mu/h^3 (p = 0 at both ends), and the load int_0^L (L - x) dp/dx dx, by the same
+  /// quadrature [N/m].
+  double ShearThinningLoad(const CrossLaw& law) const;
 };
 
 /// Load per unit width and peak pressure of the slider solved by ReynoldsFem on a strip of n
@@ -31,7 +36,8 @@ struct InclinedSlider {
 struct SliderFem {
   double load = 0.0, peak_pressure = 0.0;
 };
-SliderFem SolveSliderFem(const InclinedSlider& slider, const PressureViscosity& law, int n);
+SliderFem SolveSliderFem(const InclinedSlider& slider, const PressureViscosity& law, int n,
+                         const CrossLaw* shear = nullptr);
 
 /// The rows of `filmdyn validate --suite lubricant` (~0.05 s).
 std::vector<verification::ValidationRow> LubricantValidationRows();

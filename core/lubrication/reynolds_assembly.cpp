@@ -177,13 +177,17 @@ void ReynoldsFem::Assemble(const ReynoldsParams& params) {
   const int n = NodeCount();
   const double sigma = params.film ? params.film->sigma() : 0.0;
   const double inv12mu = 1.0 / (12.0 * params.viscosity);
+  const CrossLaw* shear = params.shear_thinning != nullptr && params.shear_thinning->active()
+                              ? params.shear_thinning
+                              : nullptr;
   // Nodal factors and conductivities phi h^3 / (12 mu) along x and y (reuse work_/x_ storage).
   Eigen::VectorXd& kx = work_;
   Eigen::VectorXd& ky = x_;
   for (int k = 0; k < n; ++k) {
     factors_[k] = params.film ? params.film->At(h_[k]) : NodalFilmFactors{};
     const NodalFilmFactors& fc = factors_[k];
-    const double h3 = h_[k] * h_[k] * h_[k] * inv12mu;
+    double h3 = h_[k] * h_[k] * h_[k] * inv12mu;
+    if (shear != nullptr) h3 /= shear->InFilm(params.u_diff, h_[k]);
     kx[k] = (axis_ == 0 ? fc.phi_along : fc.phi_across) * h3;
     ky[k] = (axis_ == 0 ? fc.phi_across : fc.phi_along) * h3;
     phi_c_[k] = fc.phi_contact;

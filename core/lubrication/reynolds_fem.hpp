@@ -93,6 +93,10 @@ struct ReynoldsParams {
   /// solved for the reduced pressure and the pressure recovered (oil.hpp); `viscosity` is mu at
   /// zero gauge pressure.
   const PressureViscosity* pressure_viscosity = nullptr;
+  /// Shear thinning (nullptr or inactive: Newtonian): each node's viscosity is `viscosity` times
+  /// CrossLaw::InFilm(u_diff, h) (times the pressure law's ratio, which the reduced pressure
+  /// carries).
+  const CrossLaw* shear_thinning = nullptr;
 };
 
 /// Statistics of one solve.

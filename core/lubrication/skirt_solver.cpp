@@ -197,6 +197,7 @@ void SkirtSolver::SolvePanel(Panel& pa, const SkirtState& s, double time_step) {
   ReynoldsParams params;
   params.viscosity = config_.viscosity;
   params.pressure_viscosity = &config_.pressure_viscosity;
+  params.shear_thinning = &config_.shear_thinning;
   params.u_sum = -s.piston_velocity;  // liner moves at -u_p in the piston frame
   params.u_diff = s.piston_velocity;  // U1 - U2, surface 1 = skirt (at rest)
   params.film = config_.film.get();

@@ -43,6 +43,7 @@ struct SkirtConfig {
   SkirtGeometry geometry;
   double viscosity = 0.0;                ///< at zero gauge pressure [Pa s]
   PressureViscosity pressure_viscosity;  ///< how it rises with the film pressure (oil.hpp)
+  CrossLaw shear_thinning;               ///< how it falls with the film's shear rate (oil.hpp)
   SkirtMeshSpec mesh;
   ReynoldsOptions solver{.cold_start = ReynoldsOptions::ColdStart::kUnconstrained};
   /// Roughness factors; nullptr = smooth. Surface 1 = skirt, surface 2 = liner.

@@ -444,6 +444,19 @@ class TestCli : public QObject {
     QCOMPARE(b["pressure_viscosity"].toString(), QString("barus"));
     QCOMPARE(b["viscosity_used"].toDouble(), v["viscosity_used"].toDouble());
     QVERIFY(b["load"].toDouble() > 1.01 * v["load"].toDouble());
+    // Shear thinning calibrated by the HTHS viscosity: the critical rate at 90 °C is the one at
+    // 150 °C shifted by mu1(150 °C) / mu1(90 °C); the load falls.
+    const Result cross =
+        Run({"bearing", "--eps", "0.6", "--vogel", "6.9e-5,1050,165", "--temperature", "90",
+             "--cross", "0.7,1", "--hths", "3.2e-3", "--json"});
+    QVERIFY2(cross.exit_code == 0, qPrintable(cross.err));
+    const QJsonObject x = QJsonDocument::fromJson(cross.out.toUtf8()).object();
+    QCOMPARE(x["shear_thinning"].toString(), QString("cross"));
+    const double mu150 = 6.9e-5 * std::exp(1050.0 / (423.15 - 165.0));
+    const double rate150 = 1e6 / ((mu150 - 3.2e-3) / (3.2e-3 - 0.7 * mu150));  // m = 1
+    QVERIFY(std::abs(x["cross_critical_rate"].toDouble() / (rate150 * mu150 / expected) - 1.0) <
+            1e-12);
+    QVERIFY(x["load"].toDouble() < 0.99 * v["load"].toDouble());
     struct Bad {
       QStringList args;
       QString field;
@@ -455,7 +468,11 @@ class TestCli : public QObject {
         {{"--vogel", "-1,1050,165", "--temperature", "90"}, "--vogel.a"},
         {{"--viscosity", "0.01", "--temperature", "90"}, "--temperature"},
         {{"--barus", "-2e-8"}, "barus_alpha"},
-        {{"--barus", "2e-8", "--roelands", "0.6"}, "--barus"}};
+        {{"--barus", "2e-8", "--roelands", "0.6"}, "--barus"},
+        {{"--cross", "0.7,1"}, "--cross"},
+        {{"--cross", "1.5,1,1e6"}, "--cross"},
+        {{"--hths", "3e-3"}, "--hths"},
+        {{"--cross", "0.7,1", "--hths", "0.02"}, "--hths"}};
     for (const Bad& c : bad) {
       const Result r = Run(QStringList{"bearing", "--eps", "0.6"} + c.args);
       QVERIFY2(r.exit_code == 2, qPrintable(c.args.join(' ') + ": " + r.err));

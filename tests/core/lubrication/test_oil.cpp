@@ -1,8 +1,9 @@
-// Oil viscosity laws (oil.hpp) and the Reynolds film with a pressure-dependent viscosity:
-// Vogel through three points, Barus and Roelands against their closed forms and an independent
-// quadrature, the reduced pressure's round trip, and a steady journal bearing with Barus and
-// Roelands viscosity against an independent finite-difference solution of the nonlinear
-// Reynolds equation in p written here (no reduced pressure), whose load must rise with alpha.
+// Oil viscosity laws (oil.hpp) and the Reynolds film with a pressure-dependent or shear-thinning
+// viscosity: Vogel through three points, Barus and Roelands against their closed forms and an
+// independent quadrature, the reduced pressure's round trip, Cross' law and its HTHS
+// calibration, and a steady journal bearing with Barus, Roelands or Cross viscosity against an
+// independent finite-difference solution written here (no reduced pressure), whose load must
+// rise with alpha and fall with shear thinning.
 #include <QtTest>
 
 #include <cmath>
@@ -37,6 +38,7 @@ double SimpsonReduced(double p, double mu0, double z, int n) {
 
 struct FdBearing {
   double load = 0.0, attitude_deg = 0.0, max_pressure = 0.0;
+  double friction_torque = 0.0;  ///< on the journal, magnitude [N m]
 };
 
 // Independent solution: finite differences (second order, conservative, face conductivities
@@ -44,9 +46,12 @@ struct FdBearing {
 //   (1/R^2) d/dth (k dp/dth) + d/dz (k dp/dz) = (omega/2) dh/dth,  k = h^3 / (12 mu(p)),
 // on th in [0, 2 pi] with p = 0 at th = 0 = 2 pi (the film start) and at the edges z = +-L/2,
 // half width with dp/dz = 0 at z = 0, Swift-Stieber cavitation p >= 0 by projected SOR; the
-// conductivities follow the iterate (Picard inside the sweeps) until nothing changes.
+// conductivities follow the iterate (Picard inside the sweeps) until nothing changes. mu / mu0 =
+// ratio(p, h) (pressure and, through the Couette shear rate R omega / h, shear thinning). The
+// journal's friction torque: R int (mu R omega / h + (h / 2R) dp/dth) dA over the whole film
+// (trapezoidal rule, central differences).
 FdBearing SolveFd(double radius, double width, double clearance, double mu0, double omega,
-                  double eps, const std::function<double(double)>& ratio, int nth, int nz) {
+                  double eps, const std::function<double(double, double)>& ratio, int nth, int nz) {
   const double dth = 2.0 * kPi / nth, dz = 0.5 * width / nz;
   auto idx = [nth](int i, int j) { return j * (nth + 1) + i; };
   std::vector<double> p((nth + 1) * (nz + 1), 0.0), h(nth + 1), k(p.size());
@@ -55,7 +60,7 @@ FdBearing SolveFd(double radius, double width, double clearance, double mu0, dou
   for (int sweep = 0; sweep < 200000; ++sweep) {
     for (int j = 0; j <= nz; ++j)
       for (int i = 0; i <= nth; ++i)
-        k[idx(i, j)] = std::pow(h[i], 3) / (12.0 * mu0 * ratio(p[idx(i, j)]));
+        k[idx(i, j)] = std::pow(h[i], 3) / (12.0 * mu0 * ratio(p[idx(i, j)], h[i]));
     double change = 0.0, pmax = 0.0;
     for (int j = 0; j < nz; ++j) {  // j = nz: the edge, p = 0
       for (int i = 1; i < nth; ++i) {
@@ -89,17 +94,29 @@ FdBearing SolveFd(double radius, double width, double clearance, double mu0, dou
       pmax = std::max(pmax, v);
     }
   }
+  double torque = 0.0;
+  for (int j = 0; j <= nz; ++j) {
+    const double wz = (j == 0 || j == nz) ? 0.5 : 1.0;
+    for (int i = 0; i < nth; ++i) {
+      const int ip = (i + 1) % nth, im = (i + nth - 1) % nth;
+      const double v = p[idx(i, j)];
+      const double dpdth = (p[idx(ip, j)] - p[idx(im, j)]) / (2.0 * dth);
+      torque += wz * (mu0 * ratio(v, h[i]) * radius * omega / h[i] + h[i] / (2.0 * radius) * dpdth);
+    }
+  }
   const double area = radius * dth * dz * 2.0;
   fn *= area;
   ft *= area;
-  return {std::hypot(fn, ft), std::atan2(ft, -fn) * 180.0 / kPi, pmax};
+  return {std::hypot(fn, ft), std::atan2(ft, -fn) * 180.0 / kPi, pmax, radius * area * torque};
 }
 
-BearingResult SolveFem(double mu0, double eps, double omega, const PressureViscosity& law) {
+BearingResult SolveFem(double mu0, double eps, double omega, const PressureViscosity& law,
+                       const CrossLaw& shear = {}) {
   BearingConfig cfg;
   cfg.geometry = {0.025, 0.02, 25e-6};
   cfg.viscosity = mu0;
   cfg.pressure_viscosity = law;
+  cfg.shear_thinning = shear;
   cfg.mesh = {240, 40, false};
   BearingSolver solver(cfg);
   BearingState s;
@@ -207,6 +224,99 @@ class TestOil : public QObject {
     QVERIFY(std::abs(faint.Reduced(1e8) / 1e8 - 1.0) < 1e-5);
   }
 
+  // Cross' law: its closed form, its limits, the HTHS calibration (the HTHS viscosity comes back
+  // through the law at 150 °C and 1e6 1/s), the shift of the critical rate with temperature, and
+  // bad constants naming their fields.
+  void crossLawAndItsHthsCalibration() {
+    const CrossLaw law{0.6, 2e5, 1.5};
+    QCOMPARE(law.Factor(0.0), 1.0);
+    QVERIFY(std::abs(law.Factor(2e5) - 0.8) < 1e-15);
+    QVERIFY(std::abs(law.Factor(8e5) - (0.6 + 0.4 / (1.0 + 8.0))) < 1e-15);
+    QVERIFY(std::abs(law.Factor(1e15) - 0.6) < 1e-8);
+    QVERIFY(std::abs(law.InFilm(-4.0, 2e-5) - law.Factor(2e5)) < 1e-15);
+    QCOMPARE(CrossLaw{}.Factor(1e9), 1.0);  // inactive: Newtonian
+    // A Vogel oil (a 6.9e-5 Pa s, b 1050 K, c 165 K) with an HTHS viscosity of 3.2 mPa s.
+    OilSpec oil;
+    oil.model = ViscosityModel::kVogel;
+    oil.vogel_a = 6.9e-5;
+    oil.vogel_b = 1050.0;
+    oil.vogel_c = 165.0;
+    oil.shear_thinning = ShearThinning::kHths;
+    oil.cross_ratio = 0.7;
+    oil.cross_exponent = 1.0;
+    oil.hths = 3.2e-3;
+    const OilSpec::AtTemperature hot = oil.At(423.15, "lubricant.", "t");
+    const double through = hot.viscosity * hot.shear.Factor(CrossLaw::kHthsShearRate);
+    qInfo("mu1(150 C) %.6g Pa s, critical rate %.6g 1/s, mu(1e6 1/s) %.9g Pa s", hot.viscosity,
+          hot.shear.critical_rate, through);
+    QVERIFY(std::abs(through / 3.2e-3 - 1.0) < 1e-12);
+    // At 100 °C the critical rate is shifted by mu1(150 °C) / mu1(100 °C).
+    const OilSpec::AtTemperature warm = oil.At(373.15, "lubricant.", "t");
+    QVERIFY(std::abs(warm.shear.critical_rate /
+                         (hot.shear.critical_rate * hot.viscosity / warm.viscosity) -
+                     1.0) < 1e-14);
+    // A given critical rate is the rate at 150 °C.
+    oil.shear_thinning = ShearThinning::kCross;
+    oil.cross_rate = 3e5;
+    QVERIFY(std::abs(oil.At(423.15, "lubricant.", "t").shear.critical_rate / 3e5 - 1.0) < 1e-14);
+    auto names = [&](OilSpec bad, const char* field) {
+      try {
+        bad.At(373.15, "lubricant.", "t");
+      } catch (const InputError& e) {
+        return std::string(e.what()).find(field) != std::string::npos;
+      }
+      return false;
+    };
+    OilSpec bad = oil;
+    bad.cross_ratio = 1.2;
+    QVERIFY(names(bad, "lubricant.cross_ratio"));
+    bad = oil;
+    bad.cross_exponent = 0.0;
+    QVERIFY(names(bad, "lubricant.cross_exponent"));
+    bad = oil;
+    bad.cross_rate = -1.0;
+    QVERIFY(names(bad, "lubricant.cross_rate"));
+    bad = oil;
+    bad.shear_thinning = ShearThinning::kHths;
+    bad.hths = 5e-3;  // above mu1(150 °C) = 4.03 mPa s: no thinning reaches it
+    QVERIFY(names(bad, "lubricant.hths"));
+    bad.hths = 2e-3;  // below r mu1
+    QVERIFY(names(bad, "lubricant.hths"));
+  }
+
+  // The finite bearing with a shear-thinning oil against the finite-difference solution (its
+  // viscosity at each node from the Couette rate R omega / h): load, attitude and friction torque
+  // within 1 %, 0.3 degrees and 1 %; thinning lowers the load and the torque at a given
+  // eccentricity.
+  void bearingWithShearThinningMatchesAnIndependentSolution() {
+    const double mu0 = 0.01, omega = 2.0 * kPi * 50.0, radius = 0.025;
+    for (double eps : {0.5, 0.8}) {
+      const BearingResult fem0 = SolveFem(mu0, eps, omega, PressureViscosity());
+      for (const CrossLaw& law : {CrossLaw{0.7, 2e5, 1.0}, CrossLaw{0.5, 5e4, 2.0}}) {
+        auto thin = [&](double, double h) { return law.Factor(radius * omega / h); };
+        const FdBearing fd = SolveFd(radius, 0.02, 25e-6, mu0, omega, eps, thin, 240, 20);
+        const BearingResult fem = SolveFem(mu0, eps, omega, PressureViscosity(), law);
+        const double torque = std::abs(fem.friction_torque_journal);
+        const QString msg = QString("eps %1, r %2: FEM %3 N %4 deg %5 N m, FD %6 N %7 deg %8 N m")
+                                .arg(eps)
+                                .arg(law.ratio)
+                                .arg(fem.load)
+                                .arg(fem.attitude_deg)
+                                .arg(torque)
+                                .arg(fd.load)
+                                .arg(fd.attitude_deg)
+                                .arg(fd.friction_torque);
+        qInfo("%s", qPrintable(msg));
+        QCOMPARE(fem.stats.status, SolveStatus::kConverged);
+        QVERIFY2(std::abs(fem.load / fd.load - 1.0) < 0.01, qPrintable(msg));
+        QVERIFY2(std::abs(fem.attitude_deg - fd.attitude_deg) < 0.3, qPrintable(msg));
+        QVERIFY2(std::abs(torque / fd.friction_torque - 1.0) < 0.01, qPrintable(msg));
+        QVERIFY2(fem.load < 0.99 * fem0.load, qPrintable(msg));
+        QVERIFY2(torque < 0.99 * std::abs(fem0.friction_torque_journal), qPrintable(msg));
+      }
+    }
+  }
+
   // The isoviscous film is the limit: a vanishing coefficient reproduces it to rounding.
   void vanishingPressureCoefficientIsTheIsoviscousFilm() {
     const double omega = 2.0 * kPi * 50.0;
@@ -222,7 +332,7 @@ class TestOil : public QObject {
   void bearingWithPressureDependentViscosityMatchesAnIndependentSolution() {
     const double mu0 = 0.01, omega = 2.0 * kPi * 50.0;
     const double eps = 0.8;
-    auto none = [](double) { return 1.0; };
+    auto none = [](double, double) { return 1.0; };
     const FdBearing fd0 = SolveFd(0.025, 0.02, 25e-6, mu0, omega, eps, none, 240, 20);
     const BearingResult fem0 = SolveFem(mu0, eps, omega, PressureViscosity());
     qInfo("isoviscous: FEM %.6g N %.4f deg, FD %.6g N %.4f deg", fem0.load, fem0.attitude_deg,
@@ -231,7 +341,7 @@ class TestOil : public QObject {
              qPrintable(QString("isoviscous: FEM %1 N, FD %2 N").arg(fem0.load).arg(fd0.load)));
     double last_load = fem0.load;
     for (double alpha : {1e-8, 2e-8}) {
-      auto barus = [alpha](double p) { return std::exp(alpha * std::max(p, 0.0)); };
+      auto barus = [alpha](double p, double) { return std::exp(alpha * std::max(p, 0.0)); };
       const FdBearing fd = SolveFd(0.025, 0.02, 25e-6, mu0, omega, eps, barus, 240, 20);
       const BearingResult fem = SolveFem(mu0, eps, omega, PressureViscosity::Barus(alpha));
       QCOMPARE(fem.stats.status, SolveStatus::kConverged);
@@ -250,7 +360,7 @@ class TestOil : public QObject {
       last_load = fem.load;
     }
     const double z = 0.6;
-    auto roelands = [&](double p) { return RoelandsRatio(std::max(p, 0.0), mu0, z); };
+    auto roelands = [&](double p, double) { return RoelandsRatio(std::max(p, 0.0), mu0, z); };
     const FdBearing fd = SolveFd(0.025, 0.02, 25e-6, mu0, omega, eps, roelands, 240, 20);
     const BearingResult fem = SolveFem(mu0, eps, omega, PressureViscosity::Roelands(z, mu0));
     qInfo("Roelands z 0.6: FEM %.6g N %.4f deg, FD %.6g N %.4f deg", fem.load, fem.attitude_deg,
