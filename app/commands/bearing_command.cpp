@@ -12,6 +12,7 @@
 #include "app/commands/commands.hpp"
 #include "core/base/input_error.hpp"
 #include "core/lubrication/bearing_calculator.hpp"
+#include "core/lubrication/oil_catalogue.hpp"
 
 namespace filmdyn::cli {
 
@@ -48,7 +49,10 @@ Command MakeBearingCommand() {
       {"vogel", "A,B,C",
        "viscosity from Vogel's law mu = A exp(B / (T - C)): A [Pa s], B and C [K], T in kelvin "
        "(with --temperature; instead of --viscosity)"},
-      {"temperature", "C", "oil temperature [°C] for --vogel"},
+      {"grade", "NAME",
+       "a catalogue oil of an SAE grade (0w-20, 5w-30, 10w-40, 15w-40; with --temperature; "
+       "instead of --viscosity): Vogel's law fitted to its published 40/100 °C viscosities"},
+      {"temperature", "C", "oil temperature [°C] for --vogel or --grade"},
       {"barus", "ALPHA", "pressure-viscosity coefficient of Barus' law mu0 exp(alpha p) [1/Pa]"},
       {"roelands", "Z", "pressure-viscosity index z of Roelands' law (typically 0.4-0.8)"},
       {"cross", "R,M[,RATE]",
@@ -82,57 +86,77 @@ Command MakeBearingCommand() {
     in.length = args.Double("length").value_or(2.0 * in.radius * ld);
     if (auto v = args.Double("clearance")) in.radial_clearance = *v;
     if (auto v = args.Double("viscosity")) in.viscosity = *v;
+    // The oil, resolved by its own rules (OilSpec::At), so that the calculator and an engine run
+    // fit, calibrate and shift it alike: a constant, Vogel's law or a catalogue grade, and Cross'
+    // shear thinning.
+    lubrication::OilSpec oil;
+    oil.viscosity = in.viscosity;
     std::optional<double> temperature;
+    const lubrication::OilGrade* grade = nullptr;
+    if (args.Has("vogel") && args.Has("grade"))
+      throw InputError("--grade", *args.Value("grade"), "either --grade or --vogel, not both");
+    for (const char* law : {"vogel", "grade"}) {
+      if (args.Has(law) && args.Has("viscosity")) {
+        throw InputError(std::string("--") + law, *args.Value(law),
+                         std::string("either --") + law + " or --viscosity, not both");
+      }
+    }
     if (args.Has("vogel")) {
-      if (args.Has("viscosity"))
-        throw InputError("--vogel", *args.Value("vogel"),
-                         "either --vogel or --viscosity, not both");
       const std::vector<double> abc = ParseDoubleList("--vogel", *args.Value("vogel"));
       if (abc.size() != 3) throw InputError("--vogel", *args.Value("vogel"), "three numbers A,B,C");
       const lubrication::VogelLaw law{abc[0], abc[1], abc[2]};
       law.Validate("--vogel.");
-      if (!args.Has("temperature"))
-        throw InputError("--temperature", "(missing)", "the oil temperature [°C] for --vogel");
+      oil.model = lubrication::ViscosityModel::kVogel;
+      oil.vogel_a = law.a;
+      oil.vogel_b = law.b;
+      oil.vogel_c = law.c;
+    }
+    if (args.Has("grade")) {
+      grade = &lubrication::FindOilGrade(*args.Value("grade"), "--grade");
+      oil.model = lubrication::ViscosityModel::kGrade;
+      oil.grade = static_cast<int>(grade - lubrication::OilCatalogue().data());
+    }
+    if (oil.model != lubrication::ViscosityModel::kConstant) {
+      if (!args.Has("temperature")) {
+        throw InputError("--temperature", "(missing)",
+                         "the oil temperature [°C] for --vogel or --grade");
+      }
       temperature = *args.Double("temperature");
-      in.viscosity = law.At(*temperature + lubrication::kZeroCelsius, "--temperature");
     } else if (args.Has("temperature")) {
       throw InputError("--temperature", *args.Value("temperature"),
-                       "only with a temperature law (--vogel)");
+                       "only with a temperature law (--vogel or --grade)");
     }
-    // Shear thinning: resolved through the oil's own rules (OilSpec::At), so that the calculator
-    // and the engine run shift and calibrate Cross' law alike.
     if (args.Has("hths") && !args.Has("cross"))
       throw InputError("--hths", *args.Value("hths"), "with --cross R,M");
     if (args.Has("cross")) {
       const std::vector<double> rmr = ParseDoubleList("--cross", *args.Value("cross"));
-      const size_t want = args.Has("hths") ? 2 : 3;
+      const bool from_hths = args.Has("hths") || (grade != nullptr && rmr.size() == 2);
+      const size_t want = from_hths ? 2 : 3;
       if (rmr.size() != want) {
         throw InputError("--cross", *args.Value("cross"),
-                         want == 2 ? "two numbers R,M with --hths" : "three numbers R,M,RATE");
+                         want == 2 ? "two numbers R,M with --hths"
+                                   : "three numbers R,M,RATE (or R,M with --hths or --grade)");
       }
       if (!(rmr[0] > 0.0 && rmr[0] < 1.0))
         throw InputError("--cross", *args.Value("cross"), "R between 0 and 1");
       if (!(rmr[1] > 0.0)) throw InputError("--cross", *args.Value("cross"), "M > 0");
       if (want == 3 && !(rmr[2] > 0.0))
         throw InputError("--cross", *args.Value("cross"), "RATE > 0 [1/s]");
-      lubrication::OilSpec oil;
-      if (args.Has("vogel")) {
-        const std::vector<double> abc = ParseDoubleList("--vogel", *args.Value("vogel"));
-        oil.model = lubrication::ViscosityModel::kVogel;
-        oil.vogel_a = abc[0];
-        oil.vogel_b = abc[1];
-        oil.vogel_c = abc[2];
-      } else {
-        oil.viscosity = in.viscosity;
-      }
       oil.shear_thinning =
-          want == 2 ? lubrication::ShearThinning::kHths : lubrication::ShearThinning::kCross;
+          from_hths ? lubrication::ShearThinning::kHths : lubrication::ShearThinning::kCross;
       oil.cross_ratio = rmr[0];
       oil.cross_exponent = rmr[1];
       if (want == 3) oil.cross_rate = rmr[2];
       if (auto v = args.Double("hths")) oil.hths = *v;
-      const double t = temperature ? *temperature + lubrication::kZeroCelsius : 0.0;
-      in.shear_thinning = oil.At(t, "--", "--temperature").shear;
+    }
+    const lubrication::OilSpec::AtTemperature oil_at =
+        oil.At(temperature ? *temperature + lubrication::kZeroCelsius : 0.0, "--", "--temperature");
+    in.viscosity = oil_at.viscosity;
+    in.shear_thinning = oil_at.shear;
+    if (oil_at.extrapolated) {
+      streams.err << "filmdyn bearing: warning: " << *temperature
+                  << " °C is outside the 40–150 °C the catalogue oil " << grade->key
+                  << " was fitted over: its viscosity is extrapolated\n";
     }
     if (args.Has("barus") && args.Has("roelands"))
       throw InputError("--barus", *args.Value("barus"), "either --barus or --roelands, not both");
@@ -192,6 +216,11 @@ Command MakeBearingCommand() {
       j["viscosity_used"] = in.viscosity;
       j["viscosity_used_definition"] = "Pa s, at zero gauge pressure and the temperature used";
       if (temperature) j["temperature"] = *temperature;
+      if (grade != nullptr) {
+        j["grade"] = std::string(grade->key);
+        j["grade_product"] = std::string(grade->product);
+        j["grade_extrapolated"] = oil_at.extrapolated;
+      }
       j["pressure_viscosity"] = lubrication::ToString(in.pressure_law);
       if (in.pressure_law != lubrication::PressureLaw::kNone)
         j["pressure_viscosity_coefficient"] =

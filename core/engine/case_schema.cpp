@@ -11,6 +11,7 @@
 #include "core/engine/pressure_curve.hpp"
 #include "core/engine/run_memory.hpp"
 #include "core/lubrication/bearing_solver.hpp"
+#include "core/lubrication/oil_catalogue.hpp"
 
 namespace filmdyn::engine {
 
@@ -143,6 +144,7 @@ void AddOilFields(std::vector<CaseField>& f, const std::string& prefix, FieldGro
       {"vogel_a", "Vogel a"},
       {"vogel_b", "Vogel b"},
       {"vogel_c", "Vogel c"},
+      {"grade", "grade"},
       {"pressure_viscosity", "pressure law"},
       {"barus_alpha", "α"},
       {"roelands_z", "z"},
@@ -180,9 +182,33 @@ void AddOilFields(std::vector<CaseField>& f, const std::string& prefix, FieldGro
   using lubrication::PressureLaw;
   using lubrication::ViscosityModel;
   choice("viscosity_model", &OilSpec::model,
-         {ToString(ViscosityModel::kConstant), ToString(ViscosityModel::kVogel)},
-         {group, "Viscosity model", "", "", 1.0, {}, "\"constant\" or \"vogel\" (temperature)"},
-         "How the viscosity follows the film temperature: a constant, or Vogel's law " + whose);
+         {ToString(ViscosityModel::kConstant), ToString(ViscosityModel::kVogel),
+          ToString(ViscosityModel::kGrade)},
+         {group,
+          "Viscosity model",
+          "",
+          "",
+          1.0,
+          {},
+          "\"constant\", \"vogel\" (temperature) or \"grade\" (a catalogue oil)"},
+         "How the viscosity follows the film temperature: a constant, Vogel's law with the "
+         "constants below, or Vogel's law fitted to a catalogue oil of an SAE grade " +
+             whose);
+  {
+    std::vector<std::string> grades;
+    static const std::string products = [] {
+      std::string list = "with the model \"grade\": ";
+      for (const lubrication::OilGrade& g : lubrication::OilCatalogue())
+        list += std::string(g.key) + " = " + std::string(g.product) + "; ";
+      return list.substr(0, list.size() - 2);
+    }();
+    for (const lubrication::OilGrade& g : lubrication::OilCatalogue()) grades.emplace_back(g.key);
+    choice("grade", &OilSpec::grade, std::move(grades),
+           {group, "Oil grade (catalogue)", "", "", 1.0, {}, products.c_str()},
+           "The catalogue oil (an SAE grade's representative product, fitted from its published "
+           "40 and 100 °C viscosities and density; valid 40–150 °C, outside a warning) " +
+               whose);
+  }
   number(
       "viscosity", &OilSpec::viscosity,
       {group, "Dynamic viscosity μ", "Pa*s", "mPa·s", 1e-3, Viscosity(),
@@ -281,7 +307,8 @@ void AddOilFields(std::vector<CaseField>& f, const std::string& prefix, FieldGro
           "mPa·s",
           1e-3,
           {0.0, 1.0, false, false},
-          "with shear thinning \"hths\": ASTM D4683 / CEC L-36; between r μ₁ and μ₁ at 150 °C"},
+          "with shear thinning \"hths\": ASTM D4683 / CEC L-36; between r μ₁ and μ₁ at 150 °C; "
+          "0 with a catalogue oil: its own"},
          "The oil's high-temperature high-shear viscosity, which sets Cross' critical shear rate "
          "(μ(150 °C, 10⁶ 1/s) = HTHS) " +
              whose);
@@ -1268,9 +1295,13 @@ std::string UnusedReason(const EngineCase& c, const std::string& path) {
     using lubrication::PressureLaw;
     using lubrication::ViscosityModel;
     const bool vogel = oil.model == ViscosityModel::kVogel;
-    if (name == "viscosity" && vogel) return "the viscosity follows Vogel's law";
+    const bool grade = oil.model == ViscosityModel::kGrade;
+    if (name == "viscosity" && oil.model != ViscosityModel::kConstant)
+      return grade ? "the viscosity follows the catalogue oil"
+                   : "the viscosity follows Vogel's law";
     if ((name == "vogel_a" || name == "vogel_b" || name == "vogel_c") && !vogel)
-      return "the viscosity model is constant";
+      return grade ? "the catalogue oil sets Vogel's law" : "the viscosity model is constant";
+    if (name == "grade" && !grade) return "the viscosity model is not \"grade\"";
     if (name == "barus_alpha" && oil.pressure_law != PressureLaw::kBarus)
       return "the pressure-viscosity law is not Barus'";
     if (name == "roelands_z" && oil.pressure_law != PressureLaw::kRoelands)

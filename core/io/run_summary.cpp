@@ -9,6 +9,7 @@
 #include "core/base/version.hpp"
 #include "core/engine/film_joints.hpp"
 #include "core/io/output_files.hpp"
+#include "core/lubrication/oil_catalogue.hpp"
 
 namespace filmdyn::io {
 
@@ -62,6 +63,9 @@ RunSummary SummarizeRun(const std::string& case_name, const engine::RunConfig& c
                         lubrication::ToString(spec.model),
                         lubrication::ToString(spec.pressure_law),
                         at.pressure.InitialCoefficient(),
+                        spec.model == lubrication::ViscosityModel::kGrade
+                            ? std::string(lubrication::OilCatalogue()[spec.grade].key)
+                            : std::string(),
                         lubrication::ToString(spec.shear_thinning),
                         at.shear.ratio,
                         at.shear.exponent,
@@ -314,6 +318,7 @@ json SummaryToJson(const RunSummary& s) {
                  {"pressure_viscosity", u.pressure_viscosity},
                  {"pressure_viscosity_coefficient[1/Pa]", u.pressure_viscosity_coefficient},
                  {"shear_thinning", u.shear_thinning}};
+    if (!u.grade.empty()) oil[name]["grade"] = u.grade;
     if (u.shear_thinning != "none") {
       oil[name]["cross_ratio[-]"] = u.cross_ratio;
       oil[name]["cross_exponent[-]"] = u.cross_exponent;
@@ -469,6 +474,7 @@ RunSummary FromJson(const json& j) {
     Read(o, "viscosity_model", at, &u.viscosity_model);
     Read(o, "pressure_viscosity", at, &u.pressure_viscosity);
     Read(o, "pressure_viscosity_coefficient[1/Pa]", at, &u.pressure_viscosity_coefficient);
+    if (o.contains("grade")) Read(o, "grade", at, &u.grade);
     if (o.contains("shear_thinning")) Read(o, "shear_thinning", at, &u.shear_thinning);
     if (u.shear_thinning != "none") {
       Read(o, "cross_ratio[-]", at, &u.cross_ratio);

@@ -49,6 +49,7 @@ struct JointOilUsed {
   std::string viscosity_model;                  ///< "constant" or "vogel"
   std::string pressure_viscosity;               ///< "none", "barus" or "roelands"
   double pressure_viscosity_coefficient = 0.0;  ///< dln(mu)/dp at p = 0 [1/Pa]
+  std::string grade;                            ///< the catalogue oil's name (model "grade")
   std::string shear_thinning = "none";          ///< "none", "cross" or "hths"
   /// Cross' law at the film temperature (with shear thinning): r, m, critical rate [1/s].
   double cross_ratio = 1.0, cross_exponent = 1.0, cross_critical_rate = 0.0;

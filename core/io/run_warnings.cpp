@@ -6,12 +6,15 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <tuple>
 
 #include "core/base/input_error.hpp"
 #include "core/engine/case_schema.hpp"
+#include "core/engine/film_joints.hpp"
 #include "core/io/case_file.hpp"
 #include "core/io/results_writer.hpp"
 #include "core/io/run_kpis.hpp"
+#include "core/lubrication/oil_catalogue.hpp"
 
 namespace filmdyn::io {
 
@@ -264,6 +267,40 @@ std::vector<RunWarning> RunWarnings(const engine::RunConfig& config,
                   100.0 * w.limit);
     out.push_back(std::move(w));
   }
+  // A catalogue oil at a film temperature outside its fit's range.
+  for (const auto& [lubricated, oil, joint, balanced] :
+       {std::tuple{skirt, c.skirt.oil, "skirt", result.skirt_film_temperature},
+        std::tuple{big_end, c.big_end.oil, "big_end", result.big_end_film_temperature}}) {
+    if (!lubricated) continue;
+    engine::JointOil used = oil;
+    if (balanced) used.temperature = *balanced;
+    const lubrication::OilSpec& spec = engine::JointOilSpec(c, used);
+    if (spec.model != lubrication::ViscosityModel::kGrade) continue;
+    bool extrapolated = false;
+    try {
+      extrapolated = engine::JointOilAt(c, used, joint).extrapolated;
+    } catch (const std::exception&) {
+      continue;  // an input error the run has reported already
+    }
+    if (!extrapolated) continue;
+    const lubrication::OilGrade& grade = lubrication::OilCatalogue()[spec.grade];
+    RunWarning w;
+    w.code = "oil_extrapolated";
+    w.joint = joint;
+    w.value = used.temperature;
+    w.limit = used.temperature < lubrication::kGradeFitMinTemperature
+                  ? lubrication::kGradeFitMinTemperature
+                  : lubrication::kGradeFitMaxTemperature;
+    w.message = fmt::format(
+        "{} film temperature {:.1f} °C is outside the {:.0f}–{:.0f} °C the catalogue oil {} ({}) "
+        "was fitted over: its viscosity {:.3g} mPa·s is extrapolated",
+        joint == std::string("skirt") ? "skirt" : "big-end",
+        used.temperature - lubrication::kZeroCelsius,
+        lubrication::kGradeFitMinTemperature - lubrication::kZeroCelsius,
+        lubrication::kGradeFitMaxTemperature - lubrication::kZeroCelsius, grade.key, grade.product,
+        engine::JointOilAt(c, used, joint).viscosity * 1e3);
+    out.push_back(std::move(w));
+  }
   AssumedInputsWarning(c, &out);
   SyntheticPressureWarning(config, &out);
   return out;
@@ -278,6 +315,9 @@ std::string WarningShortText(const RunWarning& w) {
   if (w.code == "not_periodic") return fmt::format("not periodic ({:.2g} %)", 100.0 * w.value);
   if (w.code == "assumed_inputs") return fmt::format("{:.0f} assumed inputs", w.value);
   if (w.code == "synthetic_pressure") return "synthetic pressure";
+  if (w.code == "oil_extrapolated") {
+    return fmt::format("oil extrapolated {}", w.joint == "skirt" ? "skirt" : "big end");
+  }
   return w.code;
 }
 

@@ -22,7 +22,8 @@ inline constexpr double kHighEccentricity = 0.95;
 
 /// One warning. Stable codes: "asperity_contact", "mixed_lubrication" (film ratios; the worse
 /// of the two per joint), "high_eccentricity", "not_periodic", "assumed_inputs",
-/// "synthetic_pressure".
+/// "synthetic_pressure", "oil_extrapolated" (a catalogue oil outside its fit's temperatures;
+/// value: the film temperature [K], limit: the bound it passes [K]).
 struct RunWarning {
   std::string code;
   std::string joint;    ///< "skirt", "big_end", or empty (the whole run)

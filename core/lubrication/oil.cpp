@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "core/base/input_error.hpp"
+#include "core/lubrication/oil_catalogue.hpp"
 
 namespace filmdyn::lubrication {
 
@@ -214,6 +215,8 @@ const char* ToString(ViscosityModel model) {
       return "constant";
     case ViscosityModel::kVogel:
       return "vogel";
+    case ViscosityModel::kGrade:
+      return "grade";
   }
   return "?";
 }
@@ -222,14 +225,30 @@ OilSpec::AtTemperature OilSpec::At(double temperature, const std::string& prefix
                                    const std::string& temperature_field) const {
   AtTemperature out;
   double mu1_hths = 0.0;  // the low-shear viscosity at the HTHS temperature
+  double hths_used = hths;
   if (model == ViscosityModel::kConstant) {
     RequirePositive(prefix + "viscosity", viscosity, "Pa*s");
     out.viscosity = mu1_hths = viscosity;
   } else {
-    const VogelLaw law{vogel_a, vogel_b, vogel_c};
-    law.Validate(prefix + "vogel_");
+    VogelLaw law{vogel_a, vogel_b, vogel_c};
+    double grade_hths = 0.0;
+    if (model == ViscosityModel::kVogel) {
+      law.Validate(prefix + "vogel_");
+    } else {
+      const std::span<const OilGrade> catalogue = OilCatalogue();
+      if (grade < 0 || grade >= static_cast<int>(catalogue.size())) {
+        throw InputError(prefix + "grade", std::to_string(grade),
+                         "an entry of the oil catalogue (docs/validation/lubricant.md)");
+      }
+      const OilGrade& g = catalogue[grade];
+      law = GradeVogel(g);
+      grade_hths = g.hths;
+      out.extrapolated =
+          !(temperature >= kGradeFitMinTemperature && temperature <= kGradeFitMaxTemperature);
+    }
     out.viscosity = law.At(temperature, temperature_field);
     mu1_hths = law.At(CrossLaw::kHthsTemperature, prefix + "vogel_c");
+    if (grade_hths > 0.0 && hths == 0.0) hths_used = grade_hths;
   }
   if (shear_thinning != ShearThinning::kNone) {
     if (!std::isfinite(cross_ratio) || !(cross_ratio > 0.0) || !(cross_ratio < 1.0)) {
@@ -240,7 +259,7 @@ OilSpec::AtTemperature OilSpec::At(double temperature, const std::string& prefix
     if (shear_thinning == ShearThinning::kCross) {
       RequirePositive(prefix + "cross_rate", cross_rate, "1/s");
     } else {
-      rate_hths = CrossLaw::CriticalRateForHths(mu1_hths, hths, cross_ratio, cross_exponent,
+      rate_hths = CrossLaw::CriticalRateForHths(mu1_hths, hths_used, cross_ratio, cross_exponent,
                                                 prefix + "hths");
     }
     out.shear.ratio = cross_ratio;

@@ -118,7 +118,8 @@ enum class ShearThinning {
 };
 const char* ToString(ShearThinning model);
 
-enum class ViscosityModel { kConstant, kVogel };
+/// kGrade: Vogel's law fitted to a catalogue oil (oil_catalogue.hpp).
+enum class ViscosityModel { kConstant, kVogel, kGrade };
 const char* ToString(ViscosityModel model);
 
 /// An oil as a case or a command line gives it: how its viscosity follows temperature
@@ -129,6 +130,7 @@ struct OilSpec {
   double vogel_a = 0.0;     ///< kVogel: a [Pa s]
   double vogel_b = 0.0;     ///< kVogel: b [K]
   double vogel_c = 0.0;     ///< kVogel: c [K]
+  int grade = 0;            ///< kGrade: the entry of OilCatalogue()
   PressureLaw pressure_law = PressureLaw::kNone;
   /// kBarus: alpha [1/Pa]; the default is within the 16–26 1/GPa of mineral oils of engine-oil
   /// viscosity at 60–100 °C (Stachowiak & Batchelor, Engineering Tribology, Table 2.3).
@@ -138,7 +140,8 @@ struct OilSpec {
   double cross_ratio = 0.7;     ///< r = mu2 / mu1 [-]
   double cross_exponent = 1.0;  ///< m [-]
   double cross_rate = 1.0e6;    ///< kCross: gamma_c at the HTHS temperature [1/s]
-  double hths = 0.0;            ///< kHths: viscosity at 150 °C and 10^6 1/s [Pa s]
+  /// kHths: viscosity at 150 °C and 10^6 1/s [Pa s]; 0 with a grade: the grade's
+  double hths = 0.0;
 
   /// The oil at one film temperature.
   struct AtTemperature {
@@ -147,6 +150,8 @@ struct OilSpec {
     /// gamma_c shifted from the HTHS temperature by the low-shear viscosity (time-temperature
     /// superposition: gamma_c(T) = gamma_c(T_HTHS) mu1(T_HTHS) / mu1(T)).
     CrossLaw shear;
+    /// kGrade: the film temperature is outside the catalogue fit's 40–150 °C.
+    bool extrapolated = false;
   };
   /// Resolves the oil at `temperature` [K] (ignored by a constant viscosity). Throws
   /// filmdyn::InputError naming `prefix` + the field (e.g. "lubricant.vogel_a") or

@@ -457,6 +457,18 @@ class TestCli : public QObject {
     QVERIFY(std::abs(x["cross_critical_rate"].toDouble() / (rate150 * mu150 / expected) - 1.0) <
             1e-12);
     QVERIFY(x["load"].toDouble() < 0.99 * v["load"].toDouble());
+    // A catalogue grade: the oil it names, its viscosity at the temperature, and a warning when
+    // the temperature is outside the fit's 40–150 °C.
+    const Result grade =
+        Run({"bearing", "--eps", "0.6", "--grade", "5w-30", "--temperature", "100", "--json"});
+    QVERIFY2(grade.exit_code == 0, qPrintable(grade.err));
+    const QJsonObject g = QJsonDocument::fromJson(grade.out.toUtf8()).object();
+    QCOMPARE(g["grade_product"].toString(), QString("Mobil 1 ESP Formula 5W-30"));
+    QVERIFY(std::abs(g["viscosity_used"].toDouble() - 9.633e-3) < 1e-6);
+    QVERIFY(!g["grade_extrapolated"].toBool());
+    const Result cold = Run({"bearing", "--eps", "0.6", "--grade", "5w-30", "--temperature", "20"});
+    QCOMPARE(cold.exit_code, 0);
+    QVERIFY2(cold.err.contains("outside the 40–150 °C"), qPrintable(cold.err));
     struct Bad {
       QStringList args;
       QString field;
@@ -472,7 +484,10 @@ class TestCli : public QObject {
         {{"--cross", "0.7,1"}, "--cross"},
         {{"--cross", "1.5,1,1e6"}, "--cross"},
         {{"--hths", "3e-3"}, "--hths"},
-        {{"--cross", "0.7,1", "--hths", "0.02"}, "--hths"}};
+        {{"--cross", "0.7,1", "--hths", "0.02"}, "--hths"},
+        {{"--grade", "5w-31", "--temperature", "100"}, "--grade"},
+        {{"--grade", "5w-30"}, "--temperature"},
+        {{"--grade", "5w-30", "--vogel", "6.9e-5,1050,165", "--temperature", "90"}, "--grade"}};
     for (const Bad& c : bad) {
       const Result r = Run(QStringList{"bearing", "--eps", "0.6"} + c.args);
       QVERIFY2(r.exit_code == 2, qPrintable(c.args.join(' ') + ": " + r.err));

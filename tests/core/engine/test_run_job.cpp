@@ -14,6 +14,7 @@
 #include "core/engine/run_job.hpp"
 #include "core/io/case_file.hpp"
 #include "core/io/results_writer.hpp"
+#include "core/io/run_warnings.hpp"
 
 using namespace filmdyn;
 
@@ -417,6 +418,29 @@ class TestRunJob : public QObject {
     qInfo("min big-end MOFT: Newtonian %.4f um, shear-thinning %.4f um", moft[0] * 1e6,
           moft[1] * 1e6);
     QVERIFY(moft[1] < 0.95 * moft[0]);
+  }
+
+  // A catalogue oil below its fit's range (30 °C) runs, and the run's warnings say the
+  // viscosity was extrapolated, naming the joint and the oil.
+  void catalogueOilOutsideItsRangeIsAWarning() {
+    engine::RunConfig config = CoarseBigEndWithVogelOil();
+    config.engine_case.lubricant.model = lubrication::ViscosityModel::kGrade;
+    config.engine_case.lubricant.grade = 3;  // 15w-40
+    config.engine_case.big_end.oil.temperature = 303.15;
+    const engine::RunResult r = engine::RunJob(config);
+    QVERIFY2(r.status == engine::RunStatus::kCompleted, r.message.c_str());
+    bool found = false;
+    for (const io::RunWarning& w : io::RunWarnings(config, r)) {
+      if (w.code != "oil_extrapolated") continue;
+      found = true;
+      QCOMPARE(w.joint, std::string("big_end"));
+      QVERIFY2(w.message.find("Mobil Delvac MX ESP 15W-40") != std::string::npos,
+               w.message.c_str());
+    }
+    QVERIFY(found);
+    config.engine_case.big_end.oil.temperature = 373.15;
+    for (const io::RunWarning& w : io::RunWarnings(config, r))
+      QVERIFY(w.code != "oil_extrapolated");
   }
 
   // Hotter oil, thinner film: the big end at three film temperatures (Vogel oil) — the minimum

@@ -86,10 +86,10 @@ io::RunSummary Full() {
   big_end.max_eps = 0.97;
   big_end.max_eps_crank_angle_deg = 373.0;
   s.kpis = {skirt, big_end};
-  s.oil_skirt =
-      io::JointOilUsed{393.15, 0.0061, "own", "vogel", "barus", 2e-8, "hths", 0.7, 1.0, 2.5e5};
+  s.oil_skirt = io::JointOilUsed{393.15,  0.0061, "own", "grade", "barus", 2e-8,
+                                 "5w-30", "hths", 0.7,   1.0,     2.5e5};
   s.clearance_skirt = io::RunSummary::Clearance{25e-6, 18.5e-6};
-  s.oil_big_end = io::JointOilUsed{373.15, 0.02, "lubricant", "constant", "none", 0.0};
+  s.oil_big_end = io::JointOilUsed{373.15, 0.02, "lubricant", "constant", "none", 0.0, ""};
   return s;
 }
 
@@ -114,6 +114,7 @@ void CompareSummaries(const io::RunSummary& a, const io::RunSummary& b) {
     QCOMPARE((*x)->viscosity_model, (*y)->viscosity_model);
     QCOMPARE((*x)->pressure_viscosity, (*y)->pressure_viscosity);
     QCOMPARE((*x)->pressure_viscosity_coefficient, (*y)->pressure_viscosity_coefficient);
+    QCOMPARE((*x)->grade, (*y)->grade);
     QCOMPARE((*x)->shear_thinning, (*y)->shear_thinning);
     QCOMPARE((*x)->cross_ratio, (*y)->cross_ratio);
     QCOMPARE((*x)->cross_exponent, (*y)->cross_exponent);
