@@ -243,6 +243,11 @@ OilSpec::AtTemperature OilSpec::At(double temperature, const std::string& prefix
       const OilGrade& g = catalogue[grade];
       law = GradeVogel(g);
       grade_hths = g.hths;
+      if (!(temperature >= kGradeMinTemperature && temperature <= kGradeMaxTemperature)) {
+        throw InputError(temperature_field, Kelvin(temperature),
+                         "within 0–200 °C for a catalogue oil (" + std::string(g.product) +
+                             "; its fit is made over 40–150 °C)");
+      }
       out.extrapolated =
           !(temperature >= kGradeFitMinTemperature && temperature <= kGradeFitMaxTemperature);
     }

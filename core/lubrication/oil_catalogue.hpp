@@ -11,7 +11,7 @@
 /// of lubricating oils of API MPMS 11.1 / ASTM D1250 (Table 54D: alpha60 = 0.34878 / rho60 per °F),
 /// and Vogel's law passes through the dynamic viscosities at 40, 100 and 150 °C (the last by
 /// Walther's extrapolation). The fit is meant for 40–150 °C; outside it is an extrapolation,
-/// which a run reports as a warning.
+/// which a run reports as a warning, and outside 0–200 °C an input error.
 #include <span>
 #include <string>
 #include <string_view>
@@ -31,9 +31,14 @@ struct OilGrade {
   double hths = 0.0;                 ///< HTHS viscosity at 150 °C, 1e6 1/s [Pa s]
 };
 
-/// The fit's range [K]: 40 °C and 150 °C.
+/// The fit's range [K]: 40 °C and 150 °C; outside it a run warns (an extrapolation).
 inline constexpr double kGradeFitMinTemperature = 313.15;
 inline constexpr double kGradeFitMaxTemperature = 423.15;
+/// The range a catalogue oil accepts at all [K]: 0 °C and 200 °C. Below, a multigrade's cold
+/// viscosity is set by its winter (W) behaviour, which two warm viscosities do not describe;
+/// above, the oil is far past its flash-point region and the fit's extrapolation meaningless.
+inline constexpr double kGradeMinTemperature = 273.15;
+inline constexpr double kGradeMaxTemperature = 473.15;
 
 std::span<const OilGrade> OilCatalogue();
 /// The entry named `key`. Throws filmdyn::InputError naming `field` and listing the names.

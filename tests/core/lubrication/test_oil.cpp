@@ -359,6 +359,17 @@ class TestOil : public QObject {
       QVERIFY(!oil.At(313.15, "lubricant.", "t").extrapolated);
       QVERIFY(oil.At(303.15, "lubricant.", "t").extrapolated);
       QVERIFY(oil.At(433.15, "lubricant.", "t").extrapolated);
+      // Outside 0–200 °C: an input error naming the temperature field.
+      for (double t : {263.15, 483.15}) {
+        try {
+          oil.At(t, "lubricant.", "big_end.oil.temperature");
+          QFAIL("a temperature outside the catalogue's range was accepted");
+        } catch (const InputError& e) {
+          QVERIFY2(std::string(e.what()).find("big_end.oil.temperature") != std::string::npos &&
+                       std::string(e.what()).find("0–200 °C") != std::string::npos,
+                   e.what());
+        }
+      }
     }
     // Thinner grades are thinner at 40 and 100 °C (at 150 °C the 15W-40, of lower viscosity
     // index, falls just below the 10W-40: 4.54 vs 4.56 mPa s).
