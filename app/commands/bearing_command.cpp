@@ -58,7 +58,8 @@ Command MakeBearingCommand() {
       {"cross", "R,M[,RATE]",
        "shear thinning by Cross' law mu1 [R + (1 - R) / (1 + (rate / RATE)^M)] at the Couette "
        "rate |U| / h: R = mu2/mu1 in (0,1), exponent M, critical rate RATE [1/s] at 150 °C "
-       "(shifted to --temperature by mu1(150 °C)/mu1(T) with --vogel); RATE or --hths"},
+       "(shifted to --temperature by mu1(150 °C)/mu1(T) with --vogel or --grade); RATE, or "
+       "--hths, or with --grade R,M alone (the grade's HTHS)"},
       {"hths", "PAS",
        "HTHS viscosity [Pa s] (150 °C, 1e6 1/s): sets RATE of --cross (which then takes R,M)"},
       {"cavitation", "MODEL", "reynolds (Swift-Stieber, default) or jfo (mass-conserving)"},

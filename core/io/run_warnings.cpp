@@ -276,13 +276,13 @@ std::vector<RunWarning> RunWarnings(const engine::RunConfig& config,
     if (balanced) used.temperature = *balanced;
     const lubrication::OilSpec& spec = engine::JointOilSpec(c, used);
     if (spec.model != lubrication::ViscosityModel::kGrade) continue;
-    bool extrapolated = false;
+    lubrication::OilSpec::AtTemperature at;
     try {
-      extrapolated = engine::JointOilAt(c, used, joint).extrapolated;
+      at = engine::JointOilAt(c, used, joint);
     } catch (const std::exception&) {
       continue;  // an input error the run has reported already
     }
-    if (!extrapolated) continue;
+    if (!at.extrapolated) continue;
     const lubrication::OilGrade& grade = lubrication::OilCatalogue()[spec.grade];
     RunWarning w;
     w.code = "oil_extrapolated";
@@ -298,7 +298,7 @@ std::vector<RunWarning> RunWarnings(const engine::RunConfig& config,
         used.temperature - lubrication::kZeroCelsius,
         lubrication::kGradeFitMinTemperature - lubrication::kZeroCelsius,
         lubrication::kGradeFitMaxTemperature - lubrication::kZeroCelsius, grade.key, grade.product,
-        engine::JointOilAt(c, used, joint).viscosity * 1e3);
+        at.viscosity * 1e3);
     out.push_back(std::move(w));
   }
   AssumedInputsWarning(c, &out);

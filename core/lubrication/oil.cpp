@@ -231,7 +231,6 @@ OilSpec::AtTemperature OilSpec::At(double temperature, const std::string& prefix
     out.viscosity = mu1_hths = viscosity;
   } else {
     VogelLaw law{vogel_a, vogel_b, vogel_c};
-    double grade_hths = 0.0;
     if (model == ViscosityModel::kVogel) {
       law.Validate(prefix + "vogel_");
     } else {
@@ -242,7 +241,7 @@ OilSpec::AtTemperature OilSpec::At(double temperature, const std::string& prefix
       }
       const OilGrade& g = catalogue[grade];
       law = GradeVogel(g);
-      grade_hths = g.hths;
+      if (hths == 0.0) hths_used = g.hths;  // the grade's own
       if (!(temperature >= kGradeMinTemperature && temperature <= kGradeMaxTemperature)) {
         throw InputError(temperature_field, Kelvin(temperature),
                          "within 0–200 °C for a catalogue oil (" + std::string(g.product) +
@@ -252,8 +251,8 @@ OilSpec::AtTemperature OilSpec::At(double temperature, const std::string& prefix
           !(temperature >= kGradeFitMinTemperature && temperature <= kGradeFitMaxTemperature);
     }
     out.viscosity = law.At(temperature, temperature_field);
-    mu1_hths = law.At(CrossLaw::kHthsTemperature, prefix + "vogel_c");
-    if (grade_hths > 0.0 && hths == 0.0) hths_used = grade_hths;
+    if (shear_thinning != ShearThinning::kNone)
+      mu1_hths = law.At(CrossLaw::kHthsTemperature, prefix + "vogel_c");
   }
   if (shear_thinning != ShearThinning::kNone) {
     if (!std::isfinite(cross_ratio) || !(cross_ratio > 0.0) || !(cross_ratio < 1.0)) {
