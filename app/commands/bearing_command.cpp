@@ -72,6 +72,12 @@ Command MakeBearingCommand() {
       {"nu1", "NU", "Poisson ratio of the journal (default 0.3)"},
       {"nu2", "NU", "Poisson ratio of the bearing (default 0.33)"},
       {"boundary-friction", "MU", "asperity friction coefficient (default 0.13)"},
+      {"elastic-layer", "T,E,NU",
+       "elastic bearing lining of thickness T [m], Young's modulus E [Pa] and Poisson ratio NU "
+       "on a rigid backing: the film and the lining's deformation solved together"},
+      {"half-space", "",
+       "elastic journal and bearing as half-spaces (moduli --E1/--E2, ratios --nu1/--nu2): the "
+       "film and the surfaces' deformation solved together"},
       {"json", "", "print one JSON object"}};
   command.details =
       "Outputs follow Raimondi & Boyd (1958): S = (mu N / P)(R/c)^2 with N in rev/s and "
@@ -192,6 +198,33 @@ Command MakeBearingCommand() {
       pair.boundary_friction = args.Double("boundary-friction").value_or(0.13);
       in.surfaces = pair;
     }
+    if (args.Has("elastic-layer") && args.Has("half-space"))
+      throw InputError("--half-space", "", "either --elastic-layer or --half-space, not both");
+    if (args.Has("elastic-layer")) {
+      const std::string text = *args.Value("elastic-layer");
+      const std::vector<double> ten = ParseDoubleList("--elastic-layer", text);
+      if (ten.size() != 3) throw InputError("--elastic-layer", text, "three numbers T,E,NU");
+      in.compliance.model = lubrication::ComplianceModel::kElasticLayer;
+      in.compliance.layer_thickness = ten[0];
+      in.compliance.layer_modulus = ten[1];
+      in.compliance.layer_poisson = ten[2];
+    }
+    if (args.Has("half-space")) {
+      in.compliance.model = lubrication::ComplianceModel::kHalfSpace;
+      in.compliance.modulus1 = args.Double("E1").value_or(210e9);
+      in.compliance.modulus2 = args.Double("E2").value_or(110e9);
+      in.compliance.poisson1 = args.Double("nu1").value_or(0.3);
+      in.compliance.poisson2 = args.Double("nu2").value_or(0.33);
+    }
+    lubrication::ValidateCompliance(in.compliance, {.layer_thickness = "--elastic-layer T",
+                                                    .layer_modulus = "--elastic-layer E",
+                                                    .layer_poisson = "--elastic-layer NU",
+                                                    .modulus1 = "--E1",
+                                                    .poisson1 = "--nu1",
+                                                    .modulus2 = "--E2",
+                                                    .poisson2 = "--nu2",
+                                                    .tolerance = "elastic tolerance",
+                                                    .max_iterations = "elastic iterations"});
     const lubrication::BearingCalcResult r = lubrication::RunBearingCalculator(in);
     if (args.Has("json")) {
       nlohmann::json j;
@@ -234,6 +267,15 @@ Command MakeBearingCommand() {
         j["cross_critical_rate"] = cross.critical_rate;
         j["cross_critical_rate_definition"] = "1/s, at the temperature used";
       }
+      j["compliance"] = lubrication::ToString(in.compliance.model);
+      j["max_deformation"] = r.max_deformation;
+      j["max_deformation_unit"] = "m, largest opening of the film by the surfaces' deformation";
+      if (!in.compliance.rigid()) {
+        j["elastic_iterations"] = r.elastic.iterations;
+        j["elastic_film_solves"] = r.elastic.film_solves;
+        j["elastic_residual"] = r.elastic.residual;
+        j["elastic_tolerance"] = r.elastic.tolerance;
+      }
       j["mesh"] = std::to_string(in.mesh.n_theta) + "x" + std::to_string(in.mesh.n_z);
       j["l_over_d"] = in.length / (2.0 * in.radius);
       j["reynolds_solves"] = r.reynolds_solves;
@@ -259,6 +301,7 @@ Command MakeBearingCommand() {
       o << "friction torque [N m]    " << r.friction_torque << "\n";
       o << "friction power [W]       " << r.friction_power_loss << "\n";
       o << "max pressure [Pa]        " << r.max_pressure << "\n";
+      if (!in.compliance.rigid()) o << "max deformation [m]      " << r.max_deformation << "\n";
       o << "status                   " << r.status << "\n";
     }
     if (!r.converged) {

@@ -46,6 +46,7 @@ BearingCalcResult RunBearingCalculator(const BearingCalcInput& in) {
   cfg.pressure_viscosity = PressureViscosityOf(in);
   cfg.shear_thinning = in.shear_thinning;
   cfg.mesh = in.mesh;
+  cfg.compliance = in.compliance;
   cfg.solver.cavitation = in.cavitation;
   if (in.surfaces) cfg.film = MakeSurfaceFilm(*in.surfaces);
   BearingSolver solver(cfg);  // validates geometry and mesh
@@ -121,8 +122,13 @@ BearingCalcResult RunBearingCalculator(const BearingCalcInput& in) {
   out.friction_power_loss = r.friction_power_loss;
   out.max_pressure = r.max_pressure;
   out.cavitated_fraction = r.cavitated_fraction;
+  out.max_deformation = r.max_deformation;
+  out.elastic = r.elastic;
   out.last_stats = r.stats;
-  if (r.stats.status != SolveStatus::kConverged) {
+  if (!r.elastic.converged) {
+    out.converged = false;
+    out.status = "elastic film: " + r.elastic.message;
+  } else if (r.stats.status != SolveStatus::kConverged) {
     out.converged = false;
     out.status = std::string("Reynolds solve: ") + ToString(r.stats.status);
   } else if (r.stats.capped_nodes > 0) {

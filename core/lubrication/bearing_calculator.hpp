@@ -25,6 +25,9 @@ struct BearingCalcInput {
   BearingMeshSpec mesh{100, 20, true};
   CavitationModel cavitation = CavitationModel::kReynolds;
   std::optional<SurfacePair> surfaces;  ///< rough surfaces (1 = journal, 2 = bearing)
+  /// Elastic surfaces (film_compliance.hpp; rigid by default): the film and the deformation
+  /// solved together at every eccentricity.
+  ComplianceSpec compliance;
   std::optional<double> eps;            ///< mode 1
   std::optional<double> load;           ///< mode 2 [N]
   /// Throws filmdyn::InputError (fields "bearing.<name>").
@@ -47,7 +50,9 @@ struct BearingCalcResult {
   double contact_load = 0.0;         ///< asperity part [N]
   double max_pressure = 0.0;         ///< [Pa]
   double cavitated_fraction = 0.0;
-  int reynolds_solves = 0;
+  double max_deformation = 0.0;  ///< elastic surfaces: largest film opening [m]
+  ElasticSolveStats elastic;     ///< elastic surfaces: the last coupled solve
+  int reynolds_solves = 0;       ///< coupled solves (each one or more film solves)
   bool converged = true;  ///< false: root search or LCP did not converge (see status)
   std::string status = "converged";
   ReynoldsStats last_stats;

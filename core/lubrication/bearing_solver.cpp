@@ -41,6 +41,15 @@ void BearingConfig::Validate(const std::string& prefix) const {
                    .groove_end = prefix + ".feed.groove_end",
                    .groove_width = prefix + ".feed.groove_width",
                    .width = prefix + ".length"});
+  ValidateCompliance(compliance, {.layer_thickness = prefix + ".layer_thickness",
+                                  .layer_modulus = prefix + ".modulus_bearing",
+                                  .layer_poisson = prefix + ".poisson_bearing",
+                                  .modulus1 = prefix + ".modulus_journal",
+                                  .poisson1 = prefix + ".poisson_journal",
+                                  .modulus2 = prefix + ".modulus_bearing",
+                                  .poisson2 = prefix + ".poisson_bearing",
+                                  .tolerance = prefix + ".elastic_tolerance",
+                                  .max_iterations = prefix + ".elastic_max_iterations"});
 }
 
 void ValidateOilFeed(const OilFeed& feed, double radius, double width, const OilFeedFields& names) {
@@ -170,6 +179,12 @@ BearingSolver::BearingSolver(BearingConfig config)
                     config_.feed.kind == OilFeed::Kind::kLineOfCentres),
            0, config_.solver) {
   const TriMesh& m = fem_.mesh();
+  if (!config_.compliance.rigid()) {
+    std::optional<double> mirror;
+    if (config_.mesh.symmetric_half) mirror = 0.5 * config_.geometry.length;
+    elastic_ =
+        ElasticFilm(SurfaceCompliance::Build(config_.compliance, m, mirror), config_.compliance);
+  }
   const int n = m.NodeCount();
   theta_.resize(n);
   cos_.resize(n);
@@ -301,11 +316,14 @@ const BearingResult& BearingSolver::SolveStep(const BearingState& s, double time
   params.u_diff = R * (s.omega_journal - s.omega_bearing);
   params.film = config_.film.get();
   params.time_step = time_step;
-  const ReynoldsSolution& sol = fem_.Solve(params);
+  const ElasticSolveStats& elastic = elastic_.Solve(fem_, params);
+  const ReynoldsSolution& sol = fem_.solution();
 
   BearingResult& r = result_;
   r = BearingResult{};
   r.stats = sol.stats;
+  r.elastic = elastic;
+  r.max_deformation = elastic.max_deformation;
   const double sym = config_.mesh.symmetric_half ? 2.0 : 1.0;
   // Force on the journal: F = -int p r_hat dA with r_hat = cos(theta) a1 + sin(theta) a2 and
   // a1 = -n, a2 = -t  =>  F_n = int p cos(theta) dA, F_t = int p sin(theta) dA. The friction

@@ -16,6 +16,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/lubrication/film_compliance.hpp"
 #include "core/lubrication/film_history.hpp"
 #include "core/lubrication/film_models.hpp"
 #include "core/lubrication/reynolds_fem.hpp"
@@ -98,6 +99,9 @@ struct BearingConfig {
   /// Roughness factors (Patir-Cheng / Wu-Zheng / Greenwood-Tripp); nullptr = smooth surfaces.
   /// Surface 1 = journal, surface 2 = bearing.
   std::shared_ptr<const FilmFactorModel> film;
+  /// Elastic surfaces (film_compliance.hpp): the bearing lining for the elastic layer; surface 1
+  /// = journal, 2 = bearing for the half-space. Rigid by default.
+  ComplianceSpec compliance;
   /// Throws filmdyn::InputError naming the field (prefix e.g. "bearing").
   void Validate(const std::string& prefix = "bearing") const;
 };
@@ -149,6 +153,10 @@ struct BearingResult {
   /// d(void_volume)/dt in a transient JFO solve [m^3/s], [m^3].
   double squeeze_rate = 0.0;
   double void_volume = 0.0;
+  /// Elastic surfaces: the largest deformation (film opening) [m] and the coupled solve's
+  /// statistics (rigid: zero, one film solve).
+  double max_deformation = 0.0;
+  ElasticSolveStats elastic;
 };
 
 /// The film surface over the whole width, for output and display: the solver's own mesh, or —
@@ -176,7 +184,10 @@ class BearingSolver {
   const BearingResult& result() const { return result_; }
   /// Fields of the last solve (pressure, contact pressure, fluid fraction per node).
   const ReynoldsSolution& fields() const { return fem_.solution(); }
+  /// The film of the last solve (deformed when the surfaces are elastic) [m].
   const Eigen::VectorXd& film_thickness() const { return fem_.film_thickness(); }
+  /// The surfaces' deformation of the last solve per node [m] (zero when rigid).
+  const Eigen::VectorXd& deformation() const { return elastic_.deformation(); }
   const TriMesh& mesh() const { return fem_.mesh(); }
   const ReynoldsFem& fem() const { return fem_; }
   ReynoldsFem& fem() { return fem_; }
@@ -196,6 +207,7 @@ class BearingSolver {
 
   BearingConfig config_;
   ReynoldsFem fem_;
+  ElasticFilm elastic_;
   std::vector<double> theta_;
   BearingResult result_;
   Eigen::VectorXd cos_, sin_;  // load directions of the film integrals

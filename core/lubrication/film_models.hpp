@@ -23,4 +23,11 @@ enum class SkirtSupply { kFlooded, kStarved };
 /// "flooded", "starved".
 const char* ToString(SkirtSupply supply);
 
+/// How the film's surfaces deform under the film and asperity pressure (film_compliance.hpp):
+/// kRigid (no deformation), kElasticLayer (a thin lining on a rigid backing, each point
+/// independent), kHalfSpace (both surfaces elastic half-spaces, Boussinesq).
+enum class ComplianceModel { kRigid, kElasticLayer, kHalfSpace };
+/// "rigid", "elastic_layer", "half_space".
+const char* ToString(ComplianceModel model);
+
 }  // namespace filmdyn::lubrication

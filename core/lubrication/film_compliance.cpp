@@ -1,0 +1,372 @@
+#include "core/lubrication/film_compliance.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <vector>
+
+#include "core/base/input_error.hpp"
+
+namespace filmdyn::lubrication {
+
+const char* ToString(ComplianceModel model) {
+  switch (model) {
+    case ComplianceModel::kRigid:
+      return "rigid";
+    case ComplianceModel::kElasticLayer:
+      return "elastic_layer";
+    case ComplianceModel::kHalfSpace:
+      return "half_space";
+  }
+  return "?";
+}
+
+namespace {
+
+void RequirePoisson(const std::string& field, double nu) {
+  RequireInRange(field, nu, -1.0, 0.5, true, true, "-");
+}
+
+// x asinh(y/|x|) + y asinh(x/|y|): the antiderivative of 1/r over x and y, without the terms
+// x ln|x| + y ln|y| that cancel between the rectangle's corners (asinh(t) = ln(t + sqrt(1 +
+// t^2)) is evaluated without cancellation for either sign).
+double LoveCorner(double x, double y) {
+  double g = 0.0;
+  if (x != 0.0) g += x * std::asinh(y / std::abs(x));
+  if (y != 0.0) g += y * std::asinh(x / std::abs(y));
+  return g;
+}
+
+}  // namespace
+
+void ValidateCompliance(const ComplianceSpec& s, const ComplianceFields& names) {
+  switch (s.model) {
+    case ComplianceModel::kRigid:
+      return;
+    case ComplianceModel::kElasticLayer:
+      RequirePositive(names.layer_thickness, s.layer_thickness, "m");
+      RequirePositive(names.layer_modulus, s.layer_modulus, "Pa");
+      RequirePoisson(names.layer_poisson, s.layer_poisson);
+      break;
+    case ComplianceModel::kHalfSpace:
+      RequirePositive(names.modulus1, s.modulus1, "Pa");
+      RequirePoisson(names.poisson1, s.poisson1);
+      RequirePositive(names.modulus2, s.modulus2, "Pa");
+      RequirePoisson(names.poisson2, s.poisson2);
+      break;
+  }
+  RequireInRange(names.tolerance, s.tolerance, 0.0, 0.01, true, false, "-");
+  RequireInRange(names.max_iterations, s.max_iterations, 1, 1000);
+}
+
+double LayerCompliance(double t, double e, double nu) {
+  return t * (1.0 + nu) * (1.0 - 2.0 * nu) / (e * (1.0 - nu));
+}
+
+double CompositeCompliance(double e1, double nu1, double e2, double nu2) {
+  return (1.0 - nu1 * nu1) / e1 + (1.0 - nu2 * nu2) / e2;
+}
+
+double BoussinesqRectangle(double x1, double x2, double y1, double y2) {
+  return LoveCorner(x2, y2) - LoveCorner(x1, y2) - LoveCorner(x2, y1) + LoveCorner(x1, y1);
+}
+
+SurfaceCompliance SurfaceCompliance::Diagonal(Eigen::VectorXd coefficients) {
+  SurfaceCompliance c;
+  c.kind_ = Kind::kDiagonal;
+  c.diagonal_ = std::move(coefficients);
+  return c;
+}
+
+SurfaceCompliance SurfaceCompliance::Dense(Eigen::MatrixXd matrix) {
+  SurfaceCompliance c;
+  c.kind_ = Kind::kDense;
+  c.dense_ = std::move(matrix);
+  return c;
+}
+
+SurfaceCompliance SurfaceCompliance::Build(const ComplianceSpec& spec, const TriMesh& mesh,
+                                           std::optional<double> mirror_y) {
+  const int n = mesh.NodeCount();
+  switch (spec.model) {
+    case ComplianceModel::kRigid:
+      return {};
+    case ComplianceModel::kElasticLayer:
+      return Diagonal(Eigen::VectorXd::Constant(
+          n, LayerCompliance(spec.layer_thickness, spec.layer_modulus, spec.layer_poisson)));
+    case ComplianceModel::kHalfSpace:
+      break;
+  }
+  // Each node's cell: from the midpoints to its neighbours (the mesh edge at the border).
+  const int nx = mesh.nx_nodes(), ny = mesh.ny_nodes();
+  std::vector<double> xl(nx), xr(nx), yl(ny), yr(ny);
+  for (int i = 0; i < nx; ++i) {
+    const double x = mesh.x_lines[i];
+    if (mesh.periodic_x) {
+      xl[i] = x - 0.5 * mesh.ColumnWidth(i == 0 ? nx - 1 : i - 1);
+      xr[i] = x + 0.5 * mesh.ColumnWidth(i);
+    } else {
+      xl[i] = i == 0 ? x : 0.5 * (x + mesh.x_lines[i - 1]);
+      xr[i] = i + 1 == nx ? x : 0.5 * (x + mesh.x_lines[i + 1]);
+    }
+  }
+  for (int j = 0; j < ny; ++j) {
+    const double y = mesh.y_lines[j];
+    yl[j] = j == 0 ? y : 0.5 * (y + mesh.y_lines[j - 1]);
+    yr[j] = j + 1 == ny ? y : 0.5 * (y + mesh.y_lines[j + 1]);
+  }
+  const double scale =
+      CompositeCompliance(spec.modulus1, spec.poisson1, spec.modulus2, spec.poisson2) /
+      std::numbers::pi;
+  const double period = mesh.x_period;
+  // dx from the receiver to the source column's node, the short way round on a periodic mesh.
+  auto wrap = [&](double dx) {
+    if (!mesh.periodic_x) return dx;
+    dx = std::fmod(dx, period);
+    if (dx > 0.5 * period) dx -= period;
+    if (dx < -0.5 * period) dx += period;
+    return dx;
+  };
+  Eigen::MatrixXd c(n, n);
+  for (int jr = 0; jr < ny; ++jr) {
+    for (int ir = 0; ir < nx; ++ir) {
+      const int r = mesh.Node(ir, jr);
+      const double yr0 = mesh.y_lines[jr];
+      for (int js = 0; js < ny; ++js) {
+        for (int is = 0; is < nx; ++is) {
+          const double dx = wrap(mesh.x_lines[is] - mesh.x_lines[ir]);
+          const double x1 = dx + (xl[is] - mesh.x_lines[is]);
+          const double x2 = dx + (xr[is] - mesh.x_lines[is]);
+          double v = BoussinesqRectangle(x1, x2, yl[js] - yr0, yr[js] - yr0);
+          if (mirror_y) {  // the mirror image of the source cell about y = mirror_y
+            const double m = *mirror_y;
+            v += BoussinesqRectangle(x1, x2, 2.0 * m - yr[js] - yr0, 2.0 * m - yl[js] - yr0);
+          }
+          c(r, mesh.Node(is, js)) = scale * v;
+        }
+      }
+    }
+  }
+  return Dense(std::move(c));
+}
+
+void SurfaceCompliance::Apply(const Eigen::VectorXd& load, Eigen::VectorXd& out) const {
+  switch (kind_) {
+    case Kind::kNone:
+      out.setZero(load.size());
+      return;
+    case Kind::kDiagonal:
+      out = diagonal_.cwiseProduct(load);
+      return;
+    case Kind::kDense:
+      out.noalias() = dense_ * load;
+      return;
+  }
+}
+
+double SurfaceCompliance::MaxDiagonal() const {
+  switch (kind_) {
+    case Kind::kNone:
+      return 0.0;
+    case Kind::kDiagonal:
+      return diagonal_.maxCoeff();
+    case Kind::kDense:
+      return dense_.diagonal().maxCoeff();
+  }
+  return 0.0;
+}
+
+double SurfaceCompliance::Diagonal(int k) const {
+  switch (kind_) {
+    case Kind::kNone:
+      return 0.0;
+    case Kind::kDiagonal:
+      return diagonal_[k];
+    case Kind::kDense:
+      return dense_(k, k);
+  }
+  return 0.0;
+}
+
+ElasticFilm::ElasticFilm(SurfaceCompliance compliance, const ComplianceSpec& spec)
+    : compliance_(std::move(compliance)), spec_(spec) {}
+
+bool ElasticFilm::Residual(ReynoldsFem& fem, const ReynoldsParams& params,
+                           const Eigen::VectorXd& delta, Eigen::VectorXd& r) {
+  fem.film_thickness() = h_rigid_ + delta;
+  const ReynoldsSolution& sol = fem.Solve(params);
+  ++stats_.film_solves;
+  if (sol.stats.status != SolveStatus::kConverged) return false;
+  load_ = sol.pressure + sol.contact_pressure;
+  compliance_.Apply(load_, cload_);
+  r = delta - scale_ * cload_;
+  return true;
+}
+
+const ElasticSolveStats& ElasticFilm::Solve(ReynoldsFem& fem, const ReynoldsParams& params) {
+  stats_ = ElasticSolveStats{};
+  const int n = fem.NodeCount();
+  if (compliance_.rigid()) {
+    fem.Solve(params);
+    stats_.film_solves = 1;
+    delta_.setZero(n);
+    return stats_;
+  }
+  h_rigid_ = fem.film_thickness();
+  std::string why;
+  // From the last solve's deformation (the state moves little between the solves of a time
+  // integration or a root search).
+  if (delta_.size() == n) {
+    scale_ = 1.0;
+    if (Newton(fem, params, why)) return Finish(fem, params, "");
+  }
+  // Continuation in the compliance: the rigid film's pressure can be far too high for the
+  // elastic one (a Newton start far outside its basin), so the compliance grows from zero in
+  // steps that double after a success and shrink fourfold after a failure, each stage starting
+  // from the last converged deformation.
+  Eigen::VectorXd converged = Eigen::VectorXd::Zero(n);
+  double done = 0.0, step = 1.0;
+  while (step >= 1.0 / 4096.0) {
+    scale_ = std::min(1.0, done + step);
+    delta_ = converged;
+    if (Newton(fem, params, why)) {
+      done = scale_;
+      converged = delta_;
+      if (done == 1.0) return Finish(fem, params, "");
+      step *= 2.0;
+    } else {
+      step *= 0.25;
+    }
+  }
+  delta_ = converged;
+  scale_ = 1.0;
+  return Finish(fem, params,
+                "deformation not converged: the compliance could be raised only to " +
+                    FormatValue(done) + " of its value (" + why + ")");
+}
+
+const ElasticSolveStats& ElasticFilm::Finish(ReynoldsFem& fem, const ReynoldsParams& params,
+                                             const std::string& failure) {
+  if (!failure.empty()) {
+    // Leave the solver at the residual of the deformation kept, for the partial results.
+    Eigen::VectorXd r;
+    Residual(fem, params, delta_, r);
+    stats_.residual = r.cwiseAbs().maxCoeff();
+    stats_.converged = false;
+    stats_.message = failure;
+  }
+  stats_.max_deformation = delta_.maxCoeff();
+  return stats_;
+}
+
+bool ElasticFilm::Newton(ReynoldsFem& fem, const ReynoldsParams& params, std::string& why) {
+  const int n = fem.NodeCount();
+  Eigen::VectorXd r(n), r_trial(n), load0(n), step(n), trial(n);
+  auto fail = [&](const std::string& reason) {
+    why = reason;
+    return false;
+  };
+  if (!Residual(fem, params, delta_, r)) return fail("film solve failed");
+  // GMRES workspace (one cycle of up to kKrylov directions: the products are film solves).
+  constexpr int kKrylov = 40;
+  std::vector<Eigen::VectorXd> basis;
+  Eigen::MatrixXd hess = Eigen::MatrixXd::Zero(kKrylov + 1, kKrylov);
+  Eigen::VectorXd cs(kKrylov), sn(kKrylov), g(kKrylov + 1), y(kKrylov);
+  Eigen::VectorXd w(n), r_pert(n);
+  for (int it = 0;; ++it) {
+    const double h_min = (h_rigid_ + delta_).minCoeff();
+    stats_.tolerance = spec_.tolerance * h_min;
+    stats_.residual = r.cwiseAbs().maxCoeff();
+    if (it > 0) ++stats_.iterations;
+    if (stats_.residual <= stats_.tolerance) return true;
+    if (it == spec_.max_iterations) {
+      return fail("deformation not converged in " + std::to_string(it) +
+                  " Newton iterations (residual " + FormatValue(stats_.residual) + " m, allowed " +
+                  FormatValue(stats_.tolerance) + " m)");
+    }
+    // (I - C P') s = -r by GMRES(kKrylov) from s = 0; P' v ~ (P(h + tau v) - P(h)) / tau.
+    load0 = load_;
+    const Eigen::VectorXd delta0 = delta_;
+    // Right preconditioner: I + C_kk 2 P_k / h_k, the local part of I - C P' with the film's
+    // own scaling (a film opened uniformly by dh carries the pressure P (1 - 2 dh / h): p ~
+    // 1/h^2 for Reynolds' equation), which takes the steep, thin-film modes out of GMRES' way.
+    Eigen::VectorXd precond(n);
+    for (int k = 0; k < n; ++k) {
+      precond[k] = 1.0 + 2.0 * scale_ * compliance_.Diagonal(k) * std::max(load_[k], 0.0) /
+                             (h_rigid_[k] + delta_[k]);
+    }
+    const double beta = r.norm();
+    basis.assign(1, -r / beta);
+    g.setZero();
+    g[0] = beta;
+    int k_used = 0;
+    const double goal = 1e-3 * beta;  // the linear equations solved to 1e-3 of the residual
+    bool film_failed = false;
+    for (int k = 0; k < kKrylov; ++k) {
+      const Eigen::VectorXd v = basis[static_cast<std::size_t>(k)].cwiseQuotient(precond);
+      const double tau = 1e-6 * h_min / std::max(v.cwiseAbs().maxCoeff(), 1e-300);
+      trial = delta0 + tau * v;
+      if (!Residual(fem, params, trial, r_pert)) {
+        film_failed = true;
+        break;
+      }
+      ++stats_.krylov_iterations;
+      compliance_.Apply((load_ - load0) * (scale_ / tau), w);
+      w = v - w;
+      for (int i = 0; i <= k; ++i) {  // modified Gram-Schmidt
+        hess(i, k) = w.dot(basis[static_cast<std::size_t>(i)]);
+        w -= hess(i, k) * basis[static_cast<std::size_t>(i)];
+      }
+      hess(k + 1, k) = w.norm();
+      for (int i = 0; i < k; ++i) {  // earlier Givens rotations
+        const double a = cs[i] * hess(i, k) + sn[i] * hess(i + 1, k);
+        hess(i + 1, k) = -sn[i] * hess(i, k) + cs[i] * hess(i + 1, k);
+        hess(i, k) = a;
+      }
+      const double denom = std::hypot(hess(k, k), hess(k + 1, k));
+      cs[k] = hess(k, k) / denom;
+      sn[k] = hess(k + 1, k) / denom;
+      const double norm_w = hess(k + 1, k);
+      hess(k, k) = denom;
+      hess(k + 1, k) = 0.0;
+      g[k + 1] = -sn[k] * g[k];
+      g[k] = cs[k] * g[k];
+      k_used = k + 1;
+      if (std::abs(g[k + 1]) <= goal || norm_w <= 1e-14 * beta) break;
+      basis.push_back(w / norm_w);
+    }
+    if (film_failed || k_used == 0) return fail("film solve failed during the Newton iteration");
+    for (int i = k_used - 1; i >= 0; --i) {  // back substitution
+      double s = g[i];
+      for (int j = i + 1; j < k_used; ++j) s -= hess(i, j) * y[j];
+      y[i] = s / hess(i, i);
+    }
+    step.setZero(n);
+    for (int i = 0; i < k_used; ++i) step += y[i] * basis[static_cast<std::size_t>(i)];
+    step = step.cwiseQuotient(precond);
+    // Backtracking on |R|_2 (the film must stay open: h > 0 everywhere).
+    double lambda = 1.0;
+    bool accepted = false;
+    for (int ls = 0; ls < 7; ++ls, lambda *= 0.5) {
+      trial = delta0 + lambda * step;
+      // The film may not close by more than three quarters at any node in one step.
+      if ((lambda * step).cwiseQuotient(h_rigid_ + delta0).minCoeff() < -0.75) continue;
+      if (!Residual(fem, params, trial, r_trial)) continue;
+      if (r_trial.norm() <= (1.0 - 1e-4 * lambda) * beta) {
+        accepted = true;
+        break;
+      }
+    }
+    // A step cut below 1/64 is the sign of a start outside Newton's basin: the continuation
+    // (Solve) then takes a smaller step in the compliance.
+    if (!accepted || lambda < 1.0 / 64.0) {
+      return fail("line search found no decrease of the deformation residual (residual " +
+                  FormatValue(stats_.residual) + " m)");
+    }
+    delta_ = trial;
+    r = r_trial;
+  }
+}
+
+}  // namespace filmdyn::lubrication

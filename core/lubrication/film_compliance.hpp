@@ -1,0 +1,145 @@
+#pragma once
+/// @file Elastic surfaces: how the film's surfaces deform under the film and asperity pressure,
+/// and the coupled (elastohydrodynamic) film solve that finds the pressure and the deformed film
+/// together.
+///
+/// The deformation is linear in the load: delta = C (p + p_c) on the film's nodes, delta > 0
+/// opening the film, so that the film is h = h_rigid + delta. C is built by one of
+///  - the elastic layer (column model): a lining of thickness t bonded to a rigid backing, each
+///    point compressed by its own pressure, delta = t (1 + nu)(1 - 2 nu) / (E (1 - nu)) p
+///    (a laterally constrained column; e.g. Johnson, "Contact Mechanics", 1985, §5.9);
+///  - the elastic half-space: both surfaces elastic half-spaces (the film thin against the
+///    radius), delta(x) = 1/(pi E*) int p(x') / |x - x'| dA', 1/E* = (1 - nu1^2)/E1 +
+///    (1 - nu2^2)/E2 (Boussinesq; Johnson §3.2), with the pressure constant over each node's
+///    cell of the tensor mesh and each cell's integral in closed form (Love 1929, the uniformly
+///    loaded rectangle). On a periodic (journal-bearing) mesh the distance along the
+///    circumference is taken the short way round.
+///
+/// The coupled solve is Newton's method on the deformation, R(delta) = delta - C P(h_rigid +
+/// delta) = 0 with P the film solver's map from a film to its load (with its own cavitation,
+/// pressure and shear laws), the Newton equations (I - C P') s = -R solved by GMRES with the
+/// products P' v taken as directional differences of film solves (a Jacobian-free
+/// Newton-Krylov method), globalised by a backtracking line search on max|R|. Because P is the
+/// film solver itself, every film model plugs in unchanged; each Krylov product costs one
+/// warm-started film solve.
+#include <Eigen/Dense>
+#include <optional>
+#include <string>
+
+#include "core/lubrication/film_models.hpp"
+#include "core/lubrication/reynolds_fem.hpp"
+#include "core/lubrication/tri_mesh.hpp"
+
+namespace filmdyn::lubrication {
+
+/// A joint's surface compliance and the coupled solve's controls.
+struct ComplianceSpec {
+  ComplianceModel model = ComplianceModel::kRigid;
+  double layer_thickness = 0.0;  ///< elastic layer: lining thickness t [m]
+  double layer_modulus = 0.0;    ///< elastic layer: lining Young's modulus E [Pa]
+  double layer_poisson = 0.3;    ///< elastic layer: lining Poisson ratio nu, in (-1, 0.5)
+  /// Half-space: the two surfaces' Young's moduli [Pa] and Poisson ratios.
+  double modulus1 = 0.0, poisson1 = 0.3, modulus2 = 0.0, poisson2 = 0.3;
+  /// Converged when max_k |delta_k - (C P)_k| <= tolerance * min_k h_k (the film right to this
+  /// fraction of the thinnest film).
+  double tolerance = 1e-6;
+  int max_iterations = 30;  ///< Newton iterations before the solve is declared not converged
+  bool rigid() const { return model == ComplianceModel::kRigid; }
+};
+
+/// The field names a ComplianceSpec's validation uses (the joint's case fields or the
+/// calculator's options).
+struct ComplianceFields {
+  std::string layer_thickness, layer_modulus, layer_poisson;
+  std::string modulus1, poisson1, modulus2, poisson2;
+  std::string tolerance, max_iterations;
+};
+
+/// Throws filmdyn::InputError naming the field: thickness and moduli must be > 0, Poisson ratios
+/// in (-1, 0.5), the tolerance in (0, 0.01], iterations in [1, 1000]. Only the chosen model's
+/// fields are checked.
+void ValidateCompliance(const ComplianceSpec& spec, const ComplianceFields& names);
+
+/// The elastic layer's compliance t (1 + nu)(1 - 2 nu) / (E (1 - nu)) [m/Pa].
+double LayerCompliance(double thickness, double modulus, double poisson);
+/// The pair's 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2 [1/Pa].
+double CompositeCompliance(double e1, double nu1, double e2, double nu2);
+/// The integral of 1/r over the rectangle [x1, x2] x [y1, y2] seen from the origin [m] (Love's
+/// closed form): a uniform pressure p on it deflects the origin by p I / (pi E*).
+double BoussinesqRectangle(double x1, double x2, double y1, double y2);
+
+/// A linear map from nodal load [Pa] to nodal deformation [m]: none, diagonal or dense.
+class SurfaceCompliance {
+ public:
+  SurfaceCompliance() = default;
+  static SurfaceCompliance Diagonal(Eigen::VectorXd coefficients);
+  static SurfaceCompliance Dense(Eigen::MatrixXd matrix);
+  /// The spec's compliance on `mesh`. `mirror_y`: the mesh is the half y <= mirror_y of a film
+  /// symmetric about y = mirror_y (the other half's load deforms this half too).
+  static SurfaceCompliance Build(const ComplianceSpec& spec, const TriMesh& mesh,
+                                 std::optional<double> mirror_y);
+  bool rigid() const { return kind_ == Kind::kNone; }
+  /// out = C load.
+  void Apply(const Eigen::VectorXd& load, Eigen::VectorXd& out) const;
+  /// The largest diagonal coefficient [m/Pa].
+  double MaxDiagonal() const;
+  /// The diagonal coefficient of node k [m/Pa].
+  double Diagonal(int k) const;
+  const Eigen::MatrixXd& dense() const { return dense_; }
+
+ private:
+  enum class Kind { kNone, kDiagonal, kDense };
+  Kind kind_ = Kind::kNone;
+  Eigen::VectorXd diagonal_;
+  Eigen::MatrixXd dense_;
+};
+
+/// Outcome of one coupled solve.
+struct ElasticSolveStats {
+  bool converged = true;
+  int iterations = 0;            ///< Newton iterations (all continuation stages)
+  int film_solves = 0;           ///< film solves in all (residuals, Krylov products, line search)
+  int krylov_iterations = 0;     ///< GMRES iterations in all
+  double residual = 0.0;         ///< max_k |delta_k - (C P)_k| at the end [m]
+  double tolerance = 0.0;        ///< the residual allowed [m]
+  double max_deformation = 0.0;  ///< max_k delta_k [m]
+  std::string message;           ///< why it did not converge (empty when it did)
+};
+
+/// The coupled film solve of one joint, holding the deformation between solves (the next
+/// solve starts from it).
+class ElasticFilm {
+ public:
+  ElasticFilm() = default;
+  ElasticFilm(SurfaceCompliance compliance, const ComplianceSpec& spec);
+  bool rigid() const { return compliance_.rigid(); }
+  /// Solves film and deformation together: on entry fem.film_thickness() holds the rigid film,
+  /// and the film's other inputs (rate, boundary) are set; on return the fem holds the deformed
+  /// film and its solution. Rigid: one plain solve.
+  const ElasticSolveStats& Solve(ReynoldsFem& fem, const ReynoldsParams& params);
+  const Eigen::VectorXd& deformation() const { return delta_; }
+  const ElasticSolveStats& stats() const { return stats_; }
+  const SurfaceCompliance& compliance() const { return compliance_; }
+  /// Forgets the deformation (the next solve starts from the rigid film).
+  void Reset() { delta_.resize(0); }
+
+ private:
+  // Loads the film solve at delta, returns the residual delta - C P into r; false when the film
+  // solve failed.
+  bool Residual(ReynoldsFem& fem, const ReynoldsParams& params, const Eigen::VectorXd& delta,
+                Eigen::VectorXd& r);
+  // Newton's method from delta_ on the compliance scaled by scale_; false (and why) when it
+  // does not converge.
+  bool Newton(ReynoldsFem& fem, const ReynoldsParams& params, std::string& why);
+  // Ends a solve: on failure the fem is left at delta_ and the status says why.
+  const ElasticSolveStats& Finish(ReynoldsFem& fem, const ReynoldsParams& params,
+                                  const std::string& failure);
+
+  SurfaceCompliance compliance_;
+  ComplianceSpec spec_;
+  Eigen::VectorXd h_rigid_, delta_, load_, cload_;
+  double scale_ = 1.0;  // continuation: the share of the compliance applied
+  ElasticSolveStats stats_;
+};
+
+}  // namespace filmdyn::lubrication
