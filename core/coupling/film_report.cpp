@@ -1,5 +1,7 @@
 #include "core/coupling/film_report.hpp"
 
+#include "core/lubrication/film_compliance.hpp"
+
 #include <string>
 
 #include "core/lubrication/reynolds_fem.hpp"
@@ -8,7 +10,10 @@
 namespace filmdyn::coupling {
 
 void RequireConvergedFilm(const lubrication::ReynoldsStats& stats, const char* joint,
-                          lubrication::CavitationModel model) {
+                          lubrication::CavitationModel model,
+                          const lubrication::ElasticSolveStats* elastic) {
+  if (elastic != nullptr && !elastic->converged)
+    throw multibody::EvaluationFailure(std::string(joint) + " elastic film: " + elastic->message);
   if (stats.capped_nodes > 0) {
     throw multibody::EvaluationFailure(std::string(joint) +
                                        " film beyond the pressure-viscosity "

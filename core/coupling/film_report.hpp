@@ -8,6 +8,7 @@
 
 namespace filmdyn::lubrication {
 struct ReynoldsStats;
+struct ElasticSolveStats;
 enum class CavitationModel;
 }  // namespace filmdyn::lubrication
 
@@ -64,6 +65,8 @@ struct SkirtFilmSample {
   double fpl = 0.0;                   ///< friction power loss [W]
   double max_pressure = 0.0;          ///< peak hydrodynamic film pressure [Pa]
   double max_contact_pressure = 0.0;  ///< peak asperity contact pressure [Pa]
+  /// Largest opening of the film by the surfaces' elastic deformation [m] (0 when rigid).
+  double max_deformation = 0.0;
   /// Asperity (boundary-friction) part of friction_force [N]; the hydrodynamic part is
   /// friction_force − contact_friction_force.
   double contact_friction_force = 0.0;
@@ -102,6 +105,8 @@ struct BearingFilmSample {
   double fpl = 0.0;                                              ///< [W]
   double max_pressure = 0.0;          ///< peak hydrodynamic film pressure [Pa]
   double max_contact_pressure = 0.0;  ///< peak asperity contact pressure [Pa]
+  /// Largest opening of the film by the surfaces' elastic deformation [m] (0 when rigid).
+  double max_deformation = 0.0;
   /// Circumferential friction force on the journal surface (friction_torque_journal / R_j),
   /// + counter-clockwise [N], and its asperity (boundary-friction) part [N].
   double friction_force = 0.0;
@@ -125,11 +130,13 @@ struct BearingFilmSample {
 inline constexpr double kFractionTolerance = 1e-6;
 
 /// A film solve that did not converge is never used as a force: throws
-/// multibody::EvaluationFailure naming the joint, the status and the iterations, so that the
+/// multibody::EvaluationFailure naming the joint, the status and the iterations (or, for elastic
+/// surfaces, why the coupled solve stopped and its residual), so that the
 /// integrator retries the step smaller (the solve usually converges closer to the last accepted
 /// state) and names this failure if it gives up.
 void RequireConvergedFilm(const lubrication::ReynoldsStats& stats, const char* joint,
-                          lubrication::CavitationModel model);
+                          lubrication::CavitationModel model,
+                          const lubrication::ElasticSolveStats* elastic = nullptr);
 
 /// Implemented by the lubricated joint elements so that whoever samples a system can fill the
 /// film quantities without knowing their types. Called right after the element was evaluated at

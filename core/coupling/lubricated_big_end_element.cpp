@@ -88,11 +88,15 @@ BigEndKinematics LubricatedBigEndElement::Kinematics(const BodyState& crank,
 
 void LubricatedBigEndElement::PhasePressureLawIn(double end_time) {
   ramp_ = PressureLawRamp(solver_->config().pressure_viscosity, end_time);
+  compliance_end_time_ = solver_->config().compliance.rigid() ? 0.0 : end_time;
 }
 
 const lubrication::BearingResult& LubricatedBigEndElement::SolveFilm(
     const lubrication::BearingState& state, double t) {
   if (ramp_.Update(t)) solver_->SetPressureViscosity(ramp_.law());
+  // Elastic surfaces meet the start's violent squeeze (the journal hits its film at metres per
+  // second, GPa isoviscous pressures) rigid, and become elastic over the same run-in.
+  if (compliance_end_time_ > 0.0) solver_->SetComplianceScale(RunInScale(t, compliance_end_time_));
   return solver_->SolveAt(state, t);
 }
 
@@ -104,7 +108,7 @@ Eigen::Vector4d LubricatedBigEndElement::Loads(const Eigen::Matrix<double, 6, 1>
   factorizations_ += SolveFilm(kin->state, eval_time_).stats.factorizations;
   ++solves_;
   const lubrication::BearingResult& r = solver_->result();
-  RequireConvergedFilm(r.stats, "big-end", solver_->config().solver.cavitation);
+  RequireConvergedFilm(r.stats, "big-end", solver_->config().solver.cavitation, &r.elastic);
   Eigen::Vector4d g(r.force_x, r.force_y, r.friction_torque_journal, r.friction_torque_bearing);
   const double over = kin->eps_true - kEpsMax;
   if (over > 0.0) {  // contact penalty along −n
@@ -116,7 +120,8 @@ Eigen::Vector4d LubricatedBigEndElement::Loads(const Eigen::Matrix<double, 6, 1>
 
 void LubricatedBigEndElement::EvaluateJoint(const multibody::JointForceInput& in,
                                             bool want_jacobian, multibody::JointForceOutput* out) {
-  const bool timed = solver_->Transient() || ramp_.VariesAfter(std::min(in.t, cached_in_.t));
+  const bool timed = solver_->Transient() || ramp_.VariesAfter(std::min(in.t, cached_in_.t)) ||
+                     std::min(in.t, cached_in_.t) < compliance_end_time_;
   if (cache_valid_ && SameInput(in, cached_in_, timed) && (!want_jacobian || cache_has_jacobian_)) {
     *out = cached_out_;
     if (!want_jacobian) out->jacobian.setZero();
@@ -196,7 +201,8 @@ void LubricatedBigEndElement::OnStepAccepted(double t, const multibody::SystemSt
     const BigEndKinematics kin = Kinematics(state.Body(BodyI()), state.Body(BodyJ()));
     factorizations_ += SolveFilm(kin.state, t).stats.factorizations;
     ++solves_;
-    RequireConvergedFilm(solver_->result().stats, "big-end", solver_->config().solver.cavitation);
+    RequireConvergedFilm(solver_->result().stats, "big-end", solver_->config().solver.cavitation,
+                         &solver_->result().elastic);
   }
   const lubrication::BearingResult& r = solver_->result();
   oil_.Book(t, dt, r.feed_flow, r.side_flow, r.squeeze_rate, r.void_volume,
@@ -239,6 +245,7 @@ void LubricatedBigEndElement::ReportFilm(SkirtFilmSample*, BearingFilmSample* be
   b.fpl = result_.friction_power_loss;
   b.max_pressure = result_.max_pressure;
   b.max_contact_pressure = result_.max_contact_pressure;
+  b.max_deformation = result_.max_deformation;
   b.friction_force = result_.friction_force_journal;
   b.contact_friction_force = result_.contact_friction_force_journal;
   b.contact_fpl =

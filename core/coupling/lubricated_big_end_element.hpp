@@ -100,6 +100,7 @@ class LubricatedBigEndElement final : public multibody::JointForceElement,
   long solves_ = 0, factorizations_ = 0;
   OilAccount oil_;  ///< kept at accepted steps when the film conserves oil (JFO)
   PressureLawRamp ramp_;
+  double compliance_end_time_ = 0.0;  // elastic surfaces: phased in until then (0: at once)
 };
 
 }  // namespace filmdyn::coupling

@@ -11,6 +11,10 @@
 
 namespace filmdyn::coupling {
 
+/// The run-in's phase-in factor s(t) = x^2 (3 - 2x), x = t / end_time: 0 at t <= 0, 1 from
+/// end_time on (and always 1 when end_time <= 0). Pressure laws and surface compliances use it.
+double RunInScale(double t, double end_time);
+
 class PressureLawRamp {
  public:
   PressureLawRamp() = default;  ///< no law

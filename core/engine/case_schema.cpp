@@ -487,6 +487,8 @@ void SetSymbols(std::vector<CaseField>& fields) {
       {"big_end.mesh_z_grading", "big-end grading across"},
       {"big_end.oil_feed_pressure", "p_feed"},
       {"big_end.supply", "big-end oil supply"},
+      {"big_end.compliance", "big-end surfaces"},
+      {"big_end.layer_thickness", "t_lining"},
       {"big_end.supply_pressure_angles", "supply-pressure curve"},
       {"big_end.supply_pressure_values", "supply-pressure curve"},
       {"big_end.supply_hole_angles", "supply-hole angles"},
@@ -668,6 +670,16 @@ void SetDescriptions(std::vector<CaseField>& fields) {
       {"big_end.mesh_z", "Number of elements across the bearing width in the film calculation."},
       {"big_end.mesh_z_grading",
        "How much finer the elements are at the bearing edges than at its middle (1: all equal)."},
+      {"big_end.compliance",
+       "Whether the big-end surfaces deform under the film pressure. \"rigid\": they do not (as in "
+       "the paper). \"elastic_layer\": the bearing lining, of the given thickness, is squeezed "
+       "point by point against a rigid backing (its Young's modulus and Poisson ratio are the "
+       "bearing's). \"half_space\": journal and bearing deform as elastic half-spaces, each "
+       "point under the pressure of the whole film. The film and the deformation are then solved "
+       "together at every step."},
+      {"big_end.layer_thickness",
+       "Thickness of the bearing lining that deforms with the elastic-layer model (the backing "
+       "behind it is taken as rigid)."},
       {"big_end.supply",
        "Where oil enters the big-end film. \"line_of_centres\": no supply modelled, the film "
        "simply starts where the gap is widest (as the paper and the classic bearing tables do). "
@@ -989,6 +1001,23 @@ std::vector<CaseField> MakeSchema() {
                         "\"line_of_centres\" (the film starts at the line of centres, the "
                         "paper's), \"shell_holes\", \"pin_holes\" or \"groove\""}));
   }
+  {
+    using lubrication::ComplianceModel;
+    f.push_back(Choice("big_end.compliance", be, &B::compliance,
+                       {ToString(ComplianceModel::kRigid), ToString(ComplianceModel::kElasticLayer),
+                        ToString(ComplianceModel::kHalfSpace)},
+                       {G::kBigEnd,
+                        "Surface compliance",
+                        "",
+                        "",
+                        1.0,
+                        {},
+                        "\"rigid\" (the paper's), \"elastic_layer\" (the lining on a rigid "
+                        "backing) or \"half_space\" (journal and bearing)"}));
+  }
+  f.push_back(Scalar("big_end.layer_thickness", be, &B::layer_thickness,
+                     {G::kBigEnd, "Lining thickness (elastic layer)", "m", "mm", kMm,
+                      Open(0.0, 1.0, true, false), "of the bearing lining on its rigid backing"}));
   f.push_back(Scalar("big_end.oil_feed_pressure", be, &B::oil_feed_pressure,
                      {G::kBigEnd, "Oil-supply pressure (gauge)", "Pa", "MPa", kMPa, GaugePressure(),
                       "at the holes or groove (constant; see supply_pressure_* for a curve)"}));
@@ -1316,6 +1345,9 @@ std::string UnusedReason(const EngineCase& c, const std::string& path) {
       return "shear thinning is not set by the HTHS viscosity";
     return {};
   };
+  if (path == "big_end.layer_thickness" &&
+      c.big_end.compliance != lubrication::ComplianceModel::kElasticLayer)
+    return "the big-end surfaces are not an elastic layer";
   if (path.rfind("lubricant.", 0) == 0) return oil_reason(c.lubricant, path.substr(10));
   for (const auto& [joint, oil] : {std::pair{std::string("skirt"), &c.skirt.oil},
                                    std::pair{std::string("big_end"), &c.big_end.oil}}) {

@@ -118,6 +118,11 @@ struct BigEndCase {
   double poisson_journal = 0.30;     ///< ν of the journal [-] (assumed)
   double modulus_bearing = 70.0e9;   ///< E of the bearing lining [Pa] (assumed: Al-Sn alloy)
   double poisson_bearing = 0.33;     ///< ν of the bearing lining [-] (assumed)
+  /// Elastic surfaces (lubrication::ComplianceSpec): rigid (the paper's), the bearing lining as
+  /// an elastic layer of layer_thickness on a rigid backing (E_b, ν_b), or journal and bearing as
+  /// elastic half-spaces (E_j, ν_j, E_b, ν_b).
+  lubrication::ComplianceModel compliance = lubrication::ComplianceModel::kRigid;
+  double layer_thickness = 0.3e-3;   ///< lining thickness [m] (assumed: a typical lining)
   double boundary_friction = 0.13;   ///< μ_f [-]
   /// Oil supply (lubrication::OilFeed): the film start at the line of centres (the paper's, no
   /// supply hardware), holes in the shell (fixed in the rod) or in the crank pin (turning with

@@ -135,6 +135,14 @@ lubrication::BearingConfig BearingConfigFromCase(const EngineCase& c) {
   config.feed.groove_end = be.groove_end_angle;
   config.feed.groove_width = be.groove_width;
   config.feed.pressure = be.oil_feed_pressure;
+  config.compliance.model = be.compliance;
+  config.compliance.layer_thickness = be.layer_thickness;
+  config.compliance.layer_modulus = be.modulus_bearing;
+  config.compliance.layer_poisson = be.poisson_bearing;
+  config.compliance.modulus1 = be.modulus_journal;
+  config.compliance.poisson1 = be.poisson_journal;
+  config.compliance.modulus2 = be.modulus_bearing;
+  config.compliance.poisson2 = be.poisson_bearing;
   lubrication::SurfacePair pair;
   pair.sigma1 = be.roughness_journal;
   pair.sigma2 = be.roughness_bearing;

@@ -55,6 +55,8 @@ const std::vector<ResultColumn>& ResultColumns() {
       {"skirt_wetted_fraction[-]", &OutputRow::skirt_wetted_fraction, "-", 1.0},
       {"bearing_supply_flow[m^3/s]", &OutputRow::bearing_supply_flow, "cm^3/s", 1e6},
       {"bearing_side_flow[m^3/s]", &OutputRow::bearing_side_flow, "cm^3/s", 1e6},
+      {"skirt_max_deformation[m]", &OutputRow::skirt_max_deformation, "um", 1e6},
+      {"bearing_max_deformation[m]", &OutputRow::bearing_max_deformation, "um", 1e6},
       {"piston_position[m]", &OutputRow::piston_position, "mm", 1e3},
       {"piston_velocity[m/s]", &OutputRow::piston_velocity, "m/s", 1.0},
       {"piston_acceleration[m/s^2]", &OutputRow::piston_acceleration, "m/s^2", 1.0},
@@ -256,6 +258,7 @@ OutputRow RowFromSample(const engine::CrankTrainSample& s, engine::Model model,
     r.skirt_inflow = s.skirt.inflow;
     r.skirt_outflow = s.skirt.outflow;
     r.skirt_wetted_fraction = s.skirt.wetted_fraction;
+    r.skirt_max_deformation = s.skirt.max_deformation;
   }
   if (big_end_lubricated && s.bearing.present) {
     r.bearing_moft = s.bearing.moft;
@@ -269,6 +272,7 @@ OutputRow RowFromSample(const engine::CrankTrainSample& s, engine::Model model,
     r.bearing_contact_fpl = s.bearing.contact_fpl;
     r.bearing_supply_flow = s.bearing.supply_flow;
     r.bearing_side_flow = s.bearing.side_flow;
+    r.bearing_max_deformation = s.bearing.max_deformation;
   }
   if (!big_end_lubricated) {  // ideal pin joint: frictionless
     r.bearing_fpl = 0.0;

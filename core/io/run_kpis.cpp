@@ -144,11 +144,15 @@ std::optional<JointKpis> FilmKpisOf(const std::vector<engine::CrankTrainSample>&
          &j.peak_pressure_crank_angle_deg);
     peak([](const S& s) { return s.skirt.max_contact_pressure; }, &j.peak_contact_pressure,
          &j.peak_contact_pressure_crank_angle_deg);
+    peak([](const S& s) { return s.skirt.max_deformation; }, &j.max_deformation,
+         &j.max_deformation_crank_angle_deg);
   } else {
     peak([](const S& s) { return s.bearing.max_pressure; }, &j.peak_pressure,
          &j.peak_pressure_crank_angle_deg);
     peak([](const S& s) { return s.bearing.max_contact_pressure; }, &j.peak_contact_pressure,
          &j.peak_contact_pressure_crank_angle_deg);
+    peak([](const S& s) { return s.bearing.max_deformation; }, &j.max_deformation,
+         &j.max_deformation_crank_angle_deg);
     const std::size_t k = Extreme(
         samples, present, [](const S& s) { return s.bearing.eps; }, true);
     if (k != none) {

@@ -54,6 +54,9 @@ struct JointKpis {
   std::optional<double> peak_pressure_crank_angle_deg;
   double peak_contact_pressure = 0.0;  ///< largest asperity contact pressure [Pa]
   std::optional<double> peak_contact_pressure_crank_angle_deg;  ///< none when 0 (no contact)
+  /// Largest film opening by the surfaces' elastic deformation [m] (0 when rigid).
+  double max_deformation = 0.0;
+  std::optional<double> max_deformation_crank_angle_deg;  ///< none when 0 (rigid surfaces)
   /// Mean friction power loss [W]: the headline figure's (engine::HeadlineFigures), the plain
   /// mean of the cycle's equally spaced output samples.
   std::optional<double> mean_fpl;

@@ -150,6 +150,8 @@ json JointKpisToJson(const JointKpis& k) {
   o["peak_pressure_crank_angle[deg]"] = Optional(k.peak_pressure_crank_angle_deg);
   o["peak_contact_pressure[Pa]"] = k.peak_contact_pressure;
   o["peak_contact_pressure_crank_angle[deg]"] = Optional(k.peak_contact_pressure_crank_angle_deg);
+  o["max_deformation[m]"] = k.max_deformation;
+  o["max_deformation_crank_angle[deg]"] = Optional(k.max_deformation_crank_angle_deg);
   o["mean_fpl[W]"] = Optional(k.mean_fpl);
   o["fmep[Pa]"] = Optional(k.fmep);
   o["fmep_share[-]"] = Optional(k.fmep_share);
@@ -188,6 +190,9 @@ JointKpis JointKpisFromJson(const json& o, const std::string& at) {
   Read(o, "peak_contact_pressure[Pa]", at, &k.peak_contact_pressure);
   k.peak_contact_pressure_crank_angle_deg =
       GetOptional(o, "peak_contact_pressure_crank_angle[deg]", at);
+  // Summaries written before elastic surfaces existed have none: rigid.
+  k.max_deformation = GetOptional(o, "max_deformation[m]", at).value_or(0.0);
+  k.max_deformation_crank_angle_deg = GetOptional(o, "max_deformation_crank_angle[deg]", at);
   k.mean_fpl = GetOptional(o, "mean_fpl[W]", at);
   k.fmep = GetOptional(o, "fmep[Pa]", at);
   k.fmep_share = GetOptional(o, "fmep_share[-]", at);

@@ -194,6 +194,8 @@ class BearingSolver {
   const BearingConfig& config() const { return config_; }
   /// Replaces the configuration's pressure-viscosity law (an engine run phases it in).
   void SetPressureViscosity(PressureViscosity law) { config_.pressure_viscosity = std::move(law); }
+  /// The share of the surfaces' compliance applied, in [0, 1] (an engine run phases it in).
+  void SetComplianceScale(double share) { elastic_.SetScale(share); }
   /// The whole width of the film (the mesh itself unless the symmetric half is solved).
   const FullWidthSurface& full_width() const { return full_width_; }
 

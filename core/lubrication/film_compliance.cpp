@@ -207,7 +207,7 @@ bool ElasticFilm::Residual(ReynoldsFem& fem, const ReynoldsParams& params,
 const ElasticSolveStats& ElasticFilm::Solve(ReynoldsFem& fem, const ReynoldsParams& params) {
   stats_ = ElasticSolveStats{};
   const int n = fem.NodeCount();
-  if (compliance_.rigid()) {
+  if (compliance_.rigid() || !(target_ > 0.0)) {
     fem.Solve(params);
     stats_.film_solves = 1;
     delta_.setZero(n);
@@ -218,7 +218,7 @@ const ElasticSolveStats& ElasticFilm::Solve(ReynoldsFem& fem, const ReynoldsPara
   // From the last solve's deformation (the state moves little between the solves of a time
   // integration or a root search).
   if (delta_.size() == n) {
-    scale_ = 1.0;
+    scale_ = target_;
     if (Newton(fem, params, why)) return Finish(fem, params, "");
   }
   // Continuation in the compliance: the rigid film's pressure can be far too high for the
@@ -226,24 +226,24 @@ const ElasticSolveStats& ElasticFilm::Solve(ReynoldsFem& fem, const ReynoldsPara
   // steps that double after a success and shrink fourfold after a failure, each stage starting
   // from the last converged deformation.
   Eigen::VectorXd converged = Eigen::VectorXd::Zero(n);
-  double done = 0.0, step = 1.0;
-  while (step >= 1.0 / 4096.0) {
-    scale_ = std::min(1.0, done + step);
+  double done = 0.0, step = target_;
+  while (step >= target_ / 4096.0) {
+    scale_ = std::min(target_, done + step);
     delta_ = converged;
     if (Newton(fem, params, why)) {
       done = scale_;
       converged = delta_;
-      if (done == 1.0) return Finish(fem, params, "");
+      if (done == target_) return Finish(fem, params, "");
       step *= 2.0;
     } else {
       step *= 0.25;
     }
   }
   delta_ = converged;
-  scale_ = 1.0;
+  scale_ = target_;
   return Finish(fem, params,
                 "deformation not converged: the compliance could be raised only to " +
-                    FormatValue(done) + " of its value (" + why + ")");
+                    FormatValue(done / target_) + " of its value (" + why + ")");
 }
 
 const ElasticSolveStats& ElasticFilm::Finish(ReynoldsFem& fem, const ReynoldsParams& params,

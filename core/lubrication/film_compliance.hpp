@@ -42,7 +42,7 @@ struct ComplianceSpec {
   double modulus1 = 0.0, poisson1 = 0.3, modulus2 = 0.0, poisson2 = 0.3;
   /// Converged when max_k |delta_k - (C P)_k| <= tolerance * min_k h_k (the film right to this
   /// fraction of the thinnest film).
-  double tolerance = 1e-6;
+  double tolerance = 1e-4;
   int max_iterations = 30;  ///< Newton iterations before the solve is declared not converged
   bool rigid() const { return model == ComplianceModel::kRigid; }
 };
@@ -122,6 +122,9 @@ class ElasticFilm {
   const SurfaceCompliance& compliance() const { return compliance_; }
   /// Forgets the deformation (the next solve starts from the rigid film).
   void Reset() { delta_.resize(0); }
+  /// The share of the compliance applied, in [0, 1] (1 = the surfaces' own): an engine run
+  /// phases the compliance in over its run-in, as it does the pressure law.
+  void SetScale(double share) { target_ = share; }
 
  private:
   // Loads the film solve at delta, returns the residual delta - C P into r; false when the film
@@ -138,7 +141,8 @@ class ElasticFilm {
   SurfaceCompliance compliance_;
   ComplianceSpec spec_;
   Eigen::VectorXd h_rigid_, delta_, load_, cload_;
-  double scale_ = 1.0;  // continuation: the share of the compliance applied
+  double scale_ = 1.0;   // continuation: the share of the compliance applied
+  double target_ = 1.0;  // the share a solve must reach (SetScale)
   ElasticSolveStats stats_;
 };
 

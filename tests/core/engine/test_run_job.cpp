@@ -15,6 +15,7 @@
 #include "core/io/case_file.hpp"
 #include "core/io/results_writer.hpp"
 #include "core/io/run_warnings.hpp"
+#include "core/lubrication/film_compliance.hpp"
 
 using namespace filmdyn;
 
@@ -418,6 +419,48 @@ class TestRunJob : public QObject {
     qInfo("min big-end MOFT: Newtonian %.4f um, shear-thinning %.4f um", moft[0] * 1e6,
           moft[1] * 1e6);
     QVERIFY(moft[1] < 0.95 * moft[0]);
+  }
+
+  // An elastic-layer big end runs to its periodic state; at every reported sample its largest
+  // deformation is the layer's compliance times the largest film + asperity pressure (the
+  // column model, within the coupled solve's tolerance), and it opens the thinnest film.
+  void elasticLayerBigEndReportsItsDeformation() {
+    double moft[2] = {};
+    for (int k = 0; k < 2; ++k) {
+      engine::RunConfig config = DefaultConfig(3000, engine::Model::kOnlyLbrbe);
+      config.engine_case.solver.error_estimate = 0;
+      engine::BigEndCase& b = config.engine_case.big_end;
+      b.mesh_theta = 48;
+      b.mesh_z = 6;
+      if (k == 1) {
+        b.compliance = lubrication::ComplianceModel::kElasticLayer;
+        b.layer_thickness = 1e-3;
+        b.modulus_bearing = 20e9;
+      }
+      const engine::RunResult r = engine::RunJob(config);
+      QVERIFY2(r.status == engine::RunStatus::kCompleted, r.message.c_str());
+      moft[k] = 1e9;
+      const double layer = lubrication::LayerCompliance(1e-3, 20e9, b.poisson_bearing);
+      double largest = 0.0;
+      for (const auto& s : r.samples) {
+        moft[k] = std::min(moft[k], s.bearing.moft);
+        largest = std::max(largest, s.bearing.max_deformation);
+        if (k == 0) {
+          QCOMPARE(s.bearing.max_deformation, 0.0);
+          continue;
+        }
+        const double tol = 1e-4 * s.bearing.moft;
+        QVERIFY(s.bearing.max_deformation >= layer * s.bearing.max_pressure - tol);
+        QVERIFY(s.bearing.max_deformation <=
+                layer * (s.bearing.max_pressure + s.bearing.max_contact_pressure) + tol);
+      }
+      if (k == 1) {
+        qInfo("largest big-end deformation %.4f um", largest * 1e6);
+        QVERIFY(largest > 0.1e-6);
+      }
+    }
+    qInfo("min big-end MOFT: rigid %.4f um, elastic layer %.4f um", moft[0] * 1e6, moft[1] * 1e6);
+    QVERIFY(std::abs(moft[1] - moft[0]) > 0.01 * moft[0]);
   }
 
   // A catalogue oil below its fit's range (30 °C) runs, and the run's warnings say the
