@@ -74,6 +74,7 @@ double BoussinesqRectangle(double x1, double x2, double y1, double y2) {
 
 SurfaceCompliance SurfaceCompliance::Diagonal(Eigen::VectorXd coefficients) {
   SurfaceCompliance c;
+  c.nonnegative_ = coefficients.minCoeff() >= 0.0;
   c.kind_ = Kind::kDiagonal;
   c.diagonal_ = std::move(coefficients);
   return c;
@@ -81,6 +82,7 @@ SurfaceCompliance SurfaceCompliance::Diagonal(Eigen::VectorXd coefficients) {
 
 SurfaceCompliance SurfaceCompliance::Dense(Eigen::MatrixXd matrix) {
   SurfaceCompliance c;
+  c.nonnegative_ = matrix.minCoeff() >= 0.0;
   c.kind_ = Kind::kDense;
   c.dense_ = std::move(matrix);
   return c;
@@ -350,8 +352,12 @@ bool ElasticFilm::Newton(ReynoldsFem& fem, const ReynoldsParams& params, std::st
     bool accepted = false;
     for (int ls = 0; ls < 7; ++ls, lambda *= 0.5) {
       trial = delta0 + lambda * step;
+      // A compliance with no negative coefficient opens the film wherever it is loaded: the
+      // solution has delta >= 0, and iterates are kept there (projected steps), away from the
+      // films thinner than the rigid one where the asperity pressure rises without bound.
+      if (compliance_.nonnegative()) trial = trial.cwiseMax(0.0);
       // The film may not close by more than three quarters at any node in one step.
-      if ((lambda * step).cwiseQuotient(h_rigid_ + delta0).minCoeff() < -0.75) continue;
+      if ((trial - delta0).cwiseQuotient(h_rigid_ + delta0).minCoeff() < -0.75) continue;
       if (!Residual(fem, params, trial, r_trial)) continue;
       if (r_trial.norm() <= (1.0 - 1e-4 * lambda) * beta) {
         accepted = true;

@@ -86,10 +86,13 @@ class SurfaceCompliance {
   /// The diagonal coefficient of node k [m/Pa].
   double Diagonal(int k) const;
   const Eigen::MatrixXd& dense() const { return dense_; }
+  /// No negative coefficient: a load anywhere opens the film everywhere (or nowhere).
+  bool nonnegative() const { return nonnegative_; }
 
  private:
   enum class Kind { kNone, kDiagonal, kDense };
   Kind kind_ = Kind::kNone;
+  bool nonnegative_ = true;
   Eigen::VectorXd diagonal_;
   Eigen::MatrixXd dense_;
 };
