@@ -101,6 +101,9 @@ struct BearingFilmSample {
   Eigen::Vector2d journal_ecc_global = Eigen::Vector2d::Zero();  ///< same, global frame [m]
   double eps = 0.0;                                              ///< ε [-]
   double eps_dot = 0.0;                                          ///< [1/s]
+  /// The eccentricity where the joint's film ends and its contact penalty begins: just below 1
+  /// with rigid surfaces, past 1 with elastic ones (LubricatedBigEndElement::EpsMax).
+  double eps_max = 1.0 - 5e-4;
   double moft = 0.0;                                             ///< [m]
   double fpl = 0.0;                                              ///< [W]
   double max_pressure = 0.0;          ///< peak hydrodynamic film pressure [Pa]

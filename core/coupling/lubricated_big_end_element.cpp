@@ -57,7 +57,7 @@ Cartesian CartesianOf(const BodyState& crank, const BodyState& rod, const BigEnd
 }
 
 BigEndKinematics FromCartesian(const Cartesian& z, double bearing_angle, double journal_angle,
-                               double c) {
+                               double c, double eps_max) {
   BigEndKinematics k;
   k.ecc = z.segment<2>(0);
   k.ecc_rate = z.segment<2>(2);
@@ -65,7 +65,7 @@ BigEndKinematics FromCartesian(const Cartesian& z, double bearing_angle, double 
   k.eps_true = rho / c;
   const double rho_reg = std::max(rho, kEpsFloor * c);
   const Eigen::Vector2d n = rho > 0.0 ? Eigen::Vector2d(k.ecc / rho) : Eigen::Vector2d(1.0, 0.0);
-  k.state.eps = std::min(rho_reg / c, LubricatedBigEndElement::kEpsMax);
+  k.state.eps = std::min(rho_reg / c, eps_max);
   k.state.eps_dot = n.dot(k.ecc_rate) / c;
   k.state.line_of_centres_angle = std::atan2(n.y(), n.x());
   k.state.line_of_centres_rate = Cross(k.ecc, k.ecc_rate) / (rho_reg * rho_reg);
@@ -81,7 +81,7 @@ BigEndKinematics FromCartesian(const Cartesian& z, double bearing_angle, double 
 BigEndKinematics LubricatedBigEndElement::Kinematics(const BodyState& crank,
                                                      const BodyState& rod) const {
   BigEndKinematics k = FromCartesian(CartesianOf(crank, rod, mount_), rod.Angle(), crank.Angle(),
-                                     solver_->config().geometry.radial_clearance);
+                                     solver_->config().geometry.radial_clearance, EpsMax());
   if (supply_pressure_) k.state.supply_pressure = supply_pressure_(crank.Angle());
   return k;
 }
@@ -103,14 +103,14 @@ const lubrication::BearingResult& LubricatedBigEndElement::SolveFilm(
 Eigen::Vector4d LubricatedBigEndElement::Loads(const Eigen::Matrix<double, 6, 1>& z,
                                                double bearing_angle, BigEndKinematics* kin) {
   const double c = solver_->config().geometry.radial_clearance;
-  *kin = FromCartesian(z, bearing_angle, journal_angle_, c);
+  *kin = FromCartesian(z, bearing_angle, journal_angle_, c, EpsMax());
   if (supply_pressure_) kin->state.supply_pressure = supply_pressure_(journal_angle_);
   factorizations_ += SolveFilm(kin->state, eval_time_).stats.factorizations;
   ++solves_;
   const lubrication::BearingResult& r = solver_->result();
   RequireConvergedFilm(r.stats, "big-end", solver_->config().solver.cavitation, &r.elastic);
   Eigen::Vector4d g(r.force_x, r.force_y, r.friction_torque_journal, r.friction_torque_bearing);
-  const double over = kin->eps_true - kEpsMax;
+  const double over = kin->eps_true - EpsMax();
   if (over > 0.0) {  // contact penalty along −n
     const Eigen::Vector2d n = kin->ecc / kin->ecc.norm();
     g.head<2>() -= penalty_stiffness_ * over * c * n;
@@ -241,6 +241,7 @@ void LubricatedBigEndElement::ReportMotion(const BodyState& crank, const BodySta
 void LubricatedBigEndElement::ReportFilm(SkirtFilmSample*, BearingFilmSample* bearing) const {
   BearingFilmSample& b = *bearing;
   ReportKinematics(kin_, rod_angle_, bearing);
+  b.eps_max = EpsMax();
   b.moft = result_.moft;
   b.fpl = result_.friction_power_loss;
   b.max_pressure = result_.max_pressure;

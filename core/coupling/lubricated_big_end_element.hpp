@@ -38,6 +38,12 @@ class LubricatedBigEndElement final : public multibody::JointForceElement,
                                       public FilmReporter {
  public:
   static constexpr double kEpsMax = 1.0 - 5e-4;
+  /// With elastic surfaces the journal may pass the rigid bearing's wall while the deformation
+  /// keeps the film open: the rigid eccentricity is limited here instead (half a clearance past
+  /// the wall, far beyond a linear elastic film's reach).
+  static constexpr double kEpsMaxElastic = 1.5;
+  /// The eccentricity beyond which the film is not solved and a contact penalty acts.
+  double EpsMax() const { return solver_->config().compliance.rigid() ? kEpsMax : kEpsMaxElastic; }
 
   LubricatedBigEndElement(lubrication::BearingConfig config, multibody::BodyIndex crank,
                           multibody::BodyIndex rod, BigEndMounting mounting);

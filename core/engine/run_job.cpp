@@ -530,8 +530,7 @@ void CheckRunMemory(const RunConfig& config) {
 }
 
 std::string FilmTrouble(const CrankTrainSample& s) {
-  if (s.bearing.present && (!std::isfinite(s.bearing.eps) ||
-                            s.bearing.eps >= coupling::LubricatedBigEndElement::kEpsMax)) {
+  if (s.bearing.present && (!std::isfinite(s.bearing.eps) || s.bearing.eps >= s.bearing.eps_max)) {
     return fmt::format(
         "big-end journal touches the bearing (eps = {:.5f}): the film cannot carry the load "
         "with this clearance/viscosity",

@@ -95,8 +95,8 @@ void ValidateOilFeed(const OilFeed& feed, double radius, double width, const Oil
   }
 }
 
-void BearingState::Validate(const std::string& prefix) const {
-  RequireInRange(prefix + ".eps", eps, 0.0, 1.0, false, true);
+void BearingState::Validate(const std::string& prefix, double eps_limit) const {
+  RequireInRange(prefix + ".eps", eps, 0.0, eps_limit, false, true);
   RequireFinite(prefix + ".eps_dot", eps_dot, "1/s");
   RequireFinite(prefix + ".line_of_centres_angle", line_of_centres_angle, "rad");
   RequireFinite(prefix + ".line_of_centres_rate", line_of_centres_rate, "rad/s");
@@ -296,7 +296,9 @@ void BearingSolver::AcceptStep(double t) {
 }
 
 const BearingResult& BearingSolver::SolveStep(const BearingState& s, double time_step) {
-  s.Validate();
+  // Elastic surfaces: the journal may pass the rigid wall (eps >= 1) where the deformation keeps
+  // the film open (ElasticFilm refuses a film it cannot open).
+  s.Validate("bearing_state", config_.compliance.rigid() ? 1.0 : kElasticEpsLimit);
   const BearingGeometry& g = config_.geometry;
   const TriMesh& m = fem_.mesh();
   const int n = m.NodeCount();

@@ -119,7 +119,9 @@ struct BearingState {
   /// The supply pressure at this instant when it varies (a curve over crank angle) [Pa];
   /// none: OilFeed::pressure.
   std::optional<double> supply_pressure;
-  void Validate(const std::string& prefix = "bearing_state") const;
+  /// eps must lie in [0, eps_limit): 1 for rigid surfaces (BearingSolver: kElasticEpsLimit for
+  /// elastic ones).
+  void Validate(const std::string& prefix = "bearing_state", double eps_limit = 1.0) const;
 };
 
 /// Integrated outputs of one solve. Forces act ON THE JOURNAL from the film (hydrodynamic +
@@ -169,6 +171,9 @@ struct FullWidthSurface {
 /// Construct once per bearing (mesh + symbolic factorisation), then Solve() per time step.
 class BearingSolver {
  public:
+  /// Elastic surfaces: the largest eccentricity ratio solved (the rigid film then closes over
+  /// part of the circumference, the deformation must open it).
+  static constexpr double kElasticEpsLimit = 2.0;
   explicit BearingSolver(BearingConfig config);
   /// Quasi-static solve (the steady calculator; JFO without history).
   const BearingResult& Solve(const BearingState& state);

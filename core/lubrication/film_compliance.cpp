@@ -210,6 +210,12 @@ const ElasticSolveStats& ElasticFilm::Solve(ReynoldsFem& fem, const ReynoldsPara
   stats_ = ElasticSolveStats{};
   const int n = fem.NodeCount();
   if (compliance_.rigid() || !(target_ > 0.0)) {
+    delta_.setZero(n);
+    if (fem.film_thickness().minCoeff() <= 0.0) {
+      stats_.converged = false;
+      stats_.message = "the film is closed (h <= 0) and the surfaces are rigid";
+      return stats_;
+    }
     fem.Solve(params);
     stats_.film_solves = 1;
     delta_.setZero(n);
@@ -217,11 +223,27 @@ const ElasticSolveStats& ElasticFilm::Solve(ReynoldsFem& fem, const ReynoldsPara
   }
   h_rigid_ = fem.film_thickness();
   std::string why;
+  // A rigid film closed somewhere (the journal past the rigid wall): only the deformation can
+  // open it, so the solve must start from one that does.
+  const int closed = static_cast<int>((h_rigid_.array() <= 0.0).count());
   // From the last solve's deformation (the state moves little between the solves of a time
   // integration or a root search).
   if (delta_.size() == n) {
     scale_ = target_;
+    // Where that leaves the film thinner than half the last solution's thinnest, open it to
+    // that much (the film cannot close faster between two nearby solves).
+    if (last_min_film_ > 0.0)
+      delta_ = delta_.cwiseMax((0.5 * last_min_film_ - h_rigid_.array()).matrix());
     if (Newton(fem, params, why)) return Finish(fem, params, "");
+  }
+  if (closed > 0) {
+    stats_.converged = false;
+    stats_.message = "the rigid film is closed at " + std::to_string(closed) +
+                     " nodes (the journal is past the rigid wall) and the deformation " +
+                     (delta_.size() == n ? "of the last solve does not open it (" + why + ")"
+                                         : "is not known yet (no earlier solve)");
+    if (delta_.size() != n) delta_.setZero(n);
+    return stats_;
   }
   // Continuation in the compliance: the rigid film's pressure can be far too high for the
   // elastic one (a Newton start far outside its basin), so the compliance grows from zero in
@@ -259,6 +281,7 @@ const ElasticSolveStats& ElasticFilm::Finish(ReynoldsFem& fem, const ReynoldsPar
     stats_.message = failure;
   }
   stats_.max_deformation = delta_.maxCoeff();
+  if (stats_.converged) last_min_film_ = (h_rigid_ + delta_).minCoeff();
   return stats_;
 }
 

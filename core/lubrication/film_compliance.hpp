@@ -124,7 +124,10 @@ class ElasticFilm {
   const ElasticSolveStats& stats() const { return stats_; }
   const SurfaceCompliance& compliance() const { return compliance_; }
   /// Forgets the deformation (the next solve starts from the rigid film).
-  void Reset() { delta_.resize(0); }
+  void Reset() {
+    delta_.resize(0);
+    last_min_film_ = 0.0;
+  }
   /// The share of the compliance applied, in [0, 1] (1 = the surfaces' own): an engine run
   /// phases the compliance in over its run-in, as it does the pressure law.
   void SetScale(double share) { target_ = share; }
@@ -146,6 +149,7 @@ class ElasticFilm {
   Eigen::VectorXd h_rigid_, delta_, load_, cload_;
   double scale_ = 1.0;   // continuation: the share of the compliance applied
   double target_ = 1.0;  // the share a solve must reach (SetScale)
+  double last_min_film_ = 0.0;  // the thinnest film of the last converged solve [m]
   ElasticSolveStats stats_;
 };
 
