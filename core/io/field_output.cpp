@@ -43,9 +43,11 @@ std::size_t FieldRecorder::bearing_frames() const { return frames_->bearing.fram
 
 namespace {
 
-// The three nodal fields every joint writes; the fluid fraction only when JFO computed one.
+// The three nodal fields every joint writes; the fluid fraction only when JFO computed one, the
+// surfaces' deformation only when they are elastic (`deformation` not null).
 void AddFilmArrays(const lubrication::ReynoldsSolution& solution, const Eigen::VectorXd& h,
-                   const std::vector<int>& source, SurfaceField* field) {
+                   const std::vector<int>& source, SurfaceField* field,
+                   const Eigen::VectorXd* deformation = nullptr) {
   auto gather = [&source](const Eigen::VectorXd& values) {
     std::vector<double> out(source.size());
     for (std::size_t k = 0; k < source.size(); ++k) out[k] = values[source[k]];
@@ -57,6 +59,8 @@ void AddFilmArrays(const lubrication::ReynoldsSolution& solution, const Eigen::V
   if (solution.fluid_fraction.size() == h.size()) {
     field->point_data.emplace_back("fluid_fraction[-]", gather(solution.fluid_fraction));
   }
+  if (deformation != nullptr && deformation->size() == h.size())
+    field->point_data.emplace_back("deformation[m]", gather(*deformation));
 }
 
 }  // namespace
@@ -123,7 +127,8 @@ SurfaceField FieldRecorder::BearingSurface(const lubrication::BearingSolver& bea
   field.points = BearingPoints(NodeAngles(bearing), surface.mesh.y,
                                bearing.config().geometry.radius, eccentricity_angle_rod);
   field.triangles = surface.mesh.triangles;
-  AddFilmArrays(bearing.fields(), bearing.film_thickness(), surface.source, &field);
+  AddFilmArrays(bearing.fields(), bearing.film_thickness(), surface.source, &field,
+                bearing.config().compliance.rigid() ? nullptr : &bearing.deformation());
   return field;
 }
 

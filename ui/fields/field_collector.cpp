@@ -62,7 +62,8 @@ JointFieldFrames MakeBigEnd(const lubrication::BearingSolver& bearing) {
 // `source`: the solver node of each displayed node (nullptr = the same numbering). The fluid
 // fraction only with mass-conserving cavitation (with Reynolds cavitation core leaves it 1).
 void Append(JointFieldFrames& joint, const lubrication::ReynoldsSolution& fields,
-            const Eigen::VectorXd& film, const std::vector<int>* source = nullptr) {
+            const Eigen::VectorXd& film, const std::vector<int>* source = nullptr,
+            const Eigen::VectorXd* deformation = nullptr) {
   auto vec = [source](const Eigen::VectorXd& v) {
     if (!source) return std::vector<double>(v.data(), v.data() + v.size());
     std::vector<double> out(source->size());
@@ -75,6 +76,9 @@ void Append(JointFieldFrames& joint, const lubrication::ReynoldsSolution& fields
   if (joint.mass_conserving && fields.fluid_fraction.size() == film.size()) {
     joint.frames.back().push_back({"fluid_fraction", vec(fields.fluid_fraction)});
   }
+  // Elastic surfaces: the deformation that opened the film (film_thickness is the deformed film).
+  if (deformation != nullptr && deformation->size() == film.size())
+    joint.frames.back().push_back({"deformation", vec(*deformation)});
 }
 
 }  // namespace
@@ -100,7 +104,8 @@ void FieldCollector::Add(const engine::FieldFrame& frame) {
   if (frame.bearing) {
     JointFieldFrames& joint = frames_->joints[j++];
     Append(joint, frame.bearing->fields(), frame.bearing->film_thickness(),
-           &frame.bearing->full_width().source);
+           &frame.bearing->full_width().source,
+           frame.bearing->config().compliance.rigid() ? nullptr : &frame.bearing->deformation());
     if (frame.sample != nullptr) {
       // θ is measured from the maximum film, opposite the journal's eccentricity: ψ = φ + π + θ
       // with φ the eccentricity's direction in the rod frame (as core's field files draw it).

@@ -16,6 +16,11 @@ const std::vector<FieldArrayInfo>& FieldArrays() {
        "fraction",
        "The share of the gap filled with oil: 1 = full film, below 1 = cavitated (oil and gas). "
        "Computed for a joint solved with mass-conserving (JFO) cavitation."},
+      {"deformation", "Surface deformation [µm]", 1e6, "surface deformation", "µm", false,
+       std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(), nullptr,
+       "How far the surfaces' elastic deformation under the film and asperity pressure opens the "
+       "film (the film thickness shown is the deformed one). Computed for a joint with elastic "
+       "surfaces."},
   };
   return arrays;
 }

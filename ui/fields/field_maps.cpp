@@ -73,6 +73,13 @@ QString MissingArrayText(const JointFieldFrames& joint, const FieldArrayInfo& in
              QString::fromStdString(field->label).toLower(),
              QString::fromStdString(engine::FieldGroupTitle(field->group)));
   }
+  if (std::string_view(info.name) == "deformation") {
+    return QObject::tr(
+               "No %1 for the %2: its surfaces are rigid. Choose \"elastic_layer\" or "
+               "\"half_space\" as its surface compliance (case editor) and run again to see how "
+               "far the surfaces give way under the film.")
+        .arg(words, JointTitle(joint).toLower());
+  }
   return QObject::tr("The %1 fields of this run have no %2.")
       .arg(JointTitle(joint).toLower(), words);
 }

@@ -324,11 +324,13 @@ JointFieldFrames JointFromSeries(const io::FieldSeries& series, bool big_end,
       (big_end ? engine_case.big_end.cavitation : engine_case.skirt.cavitation) ==
       lubrication::CavitationModel::kJfo;
   static const char* const kArrays[] = {"pressure", "contact_pressure", "film_thickness",
-                                        "fluid_fraction"};
+                                        "fluid_fraction", "deformation"};
   std::vector<std::pair<const char*, std::size_t>> index;  // view name, series array
   for (const char* name : kArrays) {
-    const bool optional = std::string_view(name) == "fluid_fraction";
-    if (optional && !joint.mass_conserving) continue;
+    // The deformation is written for elastic surfaces only.
+    const bool optional =
+        std::string_view(name) == "fluid_fraction" || std::string_view(name) == "deformation";
+    if (std::string_view(name) == "fluid_fraction" && !joint.mass_conserving) continue;
     int found = -1;
     for (std::size_t a = 0; a < series.array_names.size(); ++a) {
       if (series.array_names[a].substr(0, series.array_names[a].find('[')) == name) found = int(a);

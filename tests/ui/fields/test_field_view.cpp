@@ -139,8 +139,11 @@ std::shared_ptr<const filmdyn::ui::FieldFrames> RealRunFrames() {
 // A real Only-LBRBE run with JFO cavitation on a coarse big-end mesh (6000 rpm, 4 °CA output,
 // one cycle after the run-in): the frames as the GUI collects them live, and core's field files
 // of the same run written to `fields_dir`.
+// One cycle of the big end alone on a coarse mesh, with JFO cavitation (or, `elastic`, with
+// Reynolds cavitation and a soft elastic lining), live frames and core's files.
 std::shared_ptr<const filmdyn::ui::FieldFrames> JfoRunFrames(const QString& fields_dir,
-                                                             filmdyn::engine::EngineCase* used) {
+                                                             filmdyn::engine::EngineCase* used,
+                                                             bool elastic = false) {
   using namespace filmdyn;
   const io::LoadedCase loaded = io::LoadCase({});
   engine::EngineCase c = loaded.value;
@@ -149,7 +152,13 @@ std::shared_ptr<const filmdyn::ui::FieldFrames> JfoRunFrames(const QString& fiel
   c.solver.error_estimate = 0;
   c.big_end.mesh_theta = 48;
   c.big_end.mesh_z = 6;
-  c.big_end.cavitation = lubrication::CavitationModel::kJfo;
+  if (elastic) {
+    c.big_end.compliance = lubrication::ComplianceModel::kElasticLayer;
+    c.big_end.layer_thickness = 1e-3;
+    c.big_end.modulus_bearing = 20e9;
+  } else {
+    c.big_end.cavitation = lubrication::CavitationModel::kJfo;
+  }
   engine::ApplyModel(engine::Model::kOnlyLbrbe, &c);
   engine::RunConfig config = engine::MakeRunConfig(c, engine::Model::kOnlyLbrbe, 6000.0,
                                                    io::PressureCurveForSpeed(loaded, 6000.0));
@@ -160,8 +169,8 @@ std::shared_ptr<const filmdyn::ui::FieldFrames> JfoRunFrames(const QString& fiel
     record(f);
   };
   const engine::RunResult result = engine::RunJob(config);
-  qInfo("JFO run: %s, %zu samples, %.1f s", engine::StatusName(result.status).c_str(),
-        result.samples.size(), result.wall_time);
+  qInfo("%s run: %s, %zu samples, %.1f s", elastic ? "elastic" : "JFO",
+        engine::StatusName(result.status).c_str(), result.samples.size(), result.wall_time);
   recorder.Write(fields_dir.toStdString());
   *used = c;
   return collector.Result();
@@ -545,6 +554,56 @@ class TestFieldView : public QObject {
       QTest::qWait(400);
       view.grab().save(dir + "/field_view_3d_small.png");
     }
+  }
+
+  // Elastic surfaces: the deformation, live and read back from core's files, the film the
+  // rigid one plus it, drawn by the view (and pictured); a rigid run says why it has none.
+  void deformationOfAnElasticRunLiveAndReadBack() {
+    QTemporaryDir dir;
+    filmdyn::engine::EngineCase used;
+    const auto live = JfoRunFrames(dir.path(), &used, true);
+    QVERIFY(live && !live->empty());
+    const auto& joint = live->joints[0];
+    QVERIFY(joint.HasArray("deformation"));
+    double hi = 0.0, lo = INFINITY;
+    for (const auto& frame : joint.frames) {
+      for (double v : *filmdyn::ui::FindFieldArray(frame, "deformation"))
+        lo = std::min(lo, v), hi = std::max(hi, v);
+    }
+    qInfo("deformation over the cycle: %g … %g m", lo, hi);
+    QVERIFY(lo >= 0.0 && hi > 0.1e-6);
+    const auto stored = filmdyn::ui::ReadFieldFrames(dir.path(), used, 6000.0);
+    QVERIFY(stored && stored->joints[0].HasArray("deformation"));
+    for (size_t k = 0; k < joint.frames.size(); k += 13) {
+      const auto& a = *filmdyn::ui::FindFieldArray(joint.frames[k], "deformation");
+      const auto& b = *filmdyn::ui::FindFieldArray(stored->joints[0].frames[k], "deformation");
+      QCOMPARE(a.size(), b.size());
+      for (size_t n = 0; n < a.size(); ++n) QVERIFY(std::abs(a[n] - b[n]) <= 1e-6 * hi);
+    }
+    filmdyn::ui::FieldView view;
+    view.resize(1200, 700);
+    view.setFrames(live, "Only-LBRBE 6000 rpm, elastic lining");
+    view.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&view));
+    const int index = view.arraySelector()->findData("deformation");
+    QVERIFY(index >= 0);
+    QCOMPARE(view.arraySelector()->itemText(index), QString("Surface deformation [µm]"));
+    view.arraySelector()->setCurrentIndex(index);
+    view.setCrankAngle(380.0);
+    QVERIFY(view.title().contains("surface deformation"));
+    QVERIFY(view.missingNote(0)->isHidden());
+    if (filmdyn::ui::ScalarFieldView* v = view.jointView(0)) {
+      QTRY_VERIFY_WITH_TIMEOUT(v->renderedFrames() > 0, 10000);
+      QVERIFY(DistinctColours(v->grabFramebuffer()) > 20);
+    }
+    if (const QString shots = qEnvironmentVariable("FILMDYN_SCREENSHOT_DIR"); !shots.isEmpty()) {
+      QTest::qWait(400);
+      view.grab().save(shots + "/field_view_deformation.png");
+    }
+    view.setFrames(real_, "Skirt-LBRBE 6000 rpm");
+    QVERIFY(view.missingNote(1)->isVisible());
+    QVERIFY2(view.missingNote(1)->text().contains("rigid"),
+             qPrintable(view.missingNote(1)->text()));
   }
 
   void fluidFractionOfAJfoRunLiveAndReadBack() {
