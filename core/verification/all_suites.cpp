@@ -7,6 +7,7 @@
 #include "core/base/input_error.hpp"
 #include "core/engine/validation_cases.hpp"
 #include "core/lubrication/cavitation_validation.hpp"
+#include "core/lubrication/ehd_validation.hpp"
 #include "core/lubrication/oil_validation.hpp"
 #include "core/lubrication/skirt_validation.hpp"
 #include "core/lubrication/validation_cases.hpp"
@@ -27,7 +28,8 @@ const std::vector<std::pair<std::string, std::function<std::vector<ValidationRow
                    return rows;
                  }},
                 {"skirt", [] { return lubrication::SkirtValidationRows(); }},
-                {"lubricant", [] { return lubrication::LubricantValidationRows(); }}};
+                {"lubricant", [] { return lubrication::LubricantValidationRows(); }},
+                {"ehd", [] { return lubrication::EhdValidationRows(); }}};
   return suites;
 }
 

@@ -14,6 +14,7 @@
 #include "core/base/input_error.hpp"
 #include "core/lubrication/bearing_calculator.hpp"
 #include "core/lubrication/bearing_solver.hpp"
+#include "core/lubrication/ehd_validation.hpp"
 #include "core/lubrication/film_compliance.hpp"
 
 using namespace filmdyn;
@@ -276,6 +277,25 @@ class TestElasticFilm : public QObject {
         QVERIFY(std::abs(att_err) < 0.01);
       }
     }
+  }
+
+  // The rows of `filmdyn validate --suite ehd` all pass; the elastic slider's reference is
+  // converged (halving the shooting steps changes its load by less than 1e-9).
+  void validationRowsPass() {
+    const auto rows = EhdValidationRows();
+    QCOMPARE(rows.size(), std::size_t(6));
+    for (const auto& row : rows) QVERIFY2(row.Pass(), row.name.c_str());
+    const InclinedSlider slider;
+    const double layer = LayerCompliance(2e-3, 3e9, 0.3);
+    const double fine = ElasticSliderByShooting(slider, layer, 40000).load;
+    const double coarse = ElasticSliderByShooting(slider, layer, 20000).load;
+    QVERIFY(std::abs(fine / coarse - 1.0) < 1e-9);
+    // Mesh convergence of the FEM's load: second order (the error falls ~4x per halving).
+    const double e1 = std::abs(SolveElasticSliderFem(slider, 2e-3, 3e9, 0.3, 100).load / fine - 1);
+    const double e2 = std::abs(SolveElasticSliderFem(slider, 2e-3, 3e9, 0.3, 200).load / fine - 1);
+    const double e4 = std::abs(SolveElasticSliderFem(slider, 2e-3, 3e9, 0.3, 400).load / fine - 1);
+    qInfo("elastic slider load error: 100 cells %.3g, 200 %.3g, 400 %.3g", e1, e2, e4);
+    QVERIFY(e2 < e1 / 3.0 && e4 < e2 / 3.0);
   }
 
   void badComplianceInputNamesTheField() {
