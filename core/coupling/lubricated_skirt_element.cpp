@@ -64,13 +64,18 @@ SkirtKinematics LubricatedSkirtElement::Kinematics(const BodyState& piston) cons
 
 void LubricatedSkirtElement::PhasePressureLawIn(double end_time) {
   ramp_ = PressureLawRamp(solver_->config().pressure_viscosity, end_time);
+  compliance_end_time_ = solver_->config().compliance.rigid() ? 0.0 : end_time;
 }
 
 void LubricatedSkirtElement::SolveAt(const lubrication::SkirtState& state) {
   if (ramp_.Update(eval_time_)) solver_->SetPressureViscosity(ramp_.law());
+  // Elastic surfaces phased in over the run-in, as the big end's (LubricatedBigEndElement).
+  if (compliance_end_time_ > 0.0)
+    solver_->SetComplianceScale(RunInScale(eval_time_, compliance_end_time_));
   factorizations_ += solver_->SolveAt(state, eval_time_).stats.factorizations;
   ++solves_;
-  RequireConvergedFilm(solver_->result().stats, "skirt", solver_->config().solver.cavitation);
+  RequireConvergedFilm(solver_->result().stats, "skirt", solver_->config().solver.cavitation,
+                       &solver_->result().elastic);
 }
 
 Eigen::Vector3d LubricatedSkirtElement::Generalised(const lubrication::SkirtResult& r) const {
@@ -79,7 +84,8 @@ Eigen::Vector3d LubricatedSkirtElement::Generalised(const lubrication::SkirtResu
 
 void LubricatedSkirtElement::EvaluateJoint(const multibody::JointForceInput& in, bool want_jacobian,
                                            multibody::JointForceOutput* out) {
-  const bool timed = solver_->Transient() || ramp_.VariesAfter(std::min(in.t, cached_in_.t));
+  const bool timed = solver_->Transient() || ramp_.VariesAfter(std::min(in.t, cached_in_.t)) ||
+                     std::min(in.t, cached_in_.t) < compliance_end_time_;
   if (cache_valid_ && SameInput(in, cached_in_, timed) && (!want_jacobian || cache_has_jacobian_)) {
     *out = cached_out_;
     if (!want_jacobian) out->jacobian.setZero();
@@ -178,6 +184,7 @@ void LubricatedSkirtElement::ReportFilm(SkirtFilmSample* skirt, BearingFilmSampl
   f.fpl = result_.friction_power_loss;
   f.max_pressure = result_.max_pressure;
   f.max_contact_pressure = result_.max_contact_pressure;
+  f.max_deformation = result_.max_deformation;
   f.contact_friction_force = result_.contact_friction_force;
   f.contact_fpl =
       f.friction_force != 0.0 ? f.fpl * (f.contact_friction_force / f.friction_force) : 0.0;

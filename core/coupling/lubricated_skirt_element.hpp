@@ -93,6 +93,7 @@ class LubricatedSkirtElement final : public multibody::JointForceElement,
   lubrication::SkirtResult result_;
   OilAccount oil_;  ///< kept at accepted steps when the film conserves oil (JFO)
   PressureLawRamp ramp_;
+  double compliance_end_time_ = 0.0;  // elastic surfaces: phased in until then (0: at once)
   SkirtKinematics kin_;
   long solves_ = 0, factorizations_ = 0;
 };

@@ -448,6 +448,8 @@ void SetSymbols(std::vector<CaseField>& fields) {
       {"skirt.poisson_skirt", "ν_skirt"},
       {"skirt.modulus_liner", "E_liner"},
       {"skirt.poisson_liner", "ν_liner"},
+      {"skirt.compliance", "skirt surfaces"},
+      {"skirt.layer_thickness", "t_skirt layer"},
       {"skirt.boundary_friction", "μ_f skirt"},
       {"skirt.cavitation", "skirt cavitation"},
       {"skirt.piston_expansion", "α piston"},
@@ -592,6 +594,16 @@ void SetDescriptions(std::vector<CaseField>& fields) {
       {"skirt.poisson_skirt", "Poisson ratio of the skirt material."},
       {"skirt.modulus_liner", "Young's modulus of the liner material."},
       {"skirt.poisson_liner", "Poisson ratio of the liner material."},
+      {"skirt.compliance",
+       "Whether the skirt and liner surfaces deform under the film pressure. \"rigid\": they do "
+       "not (as in the paper). \"elastic_layer\": the skirt's surface layer, of the given "
+       "thickness, is squeezed point by point against a rigid body (its Young's modulus and "
+       "Poisson ratio are the skirt's). \"half_space\": skirt and liner deform as elastic "
+       "half-spaces under each panel's film. The film and the deformation are then solved "
+       "together at every step."},
+      {"skirt.layer_thickness",
+       "Thickness of the skirt's surface layer that deforms with the elastic-layer model (the "
+       "piston behind it is taken as rigid)."},
       {"skirt.boundary_friction",
        "Friction coefficient where skirt and liner asperities touch (boundary lubrication)."},
       {"skirt.cavitation",
@@ -863,6 +875,23 @@ std::vector<CaseField> MakeSchema() {
   f.push_back(Scalar(
       "skirt.poisson_liner", sk, &S::poisson_liner,
       {G::kSkirt, "Liner Poisson ratio ν_liner", "-", "–", 1.0, PoissonRatio(), "of the liner"}));
+  {
+    using lubrication::ComplianceModel;
+    f.push_back(Choice("skirt.compliance", sk, &S::compliance,
+                       {ToString(ComplianceModel::kRigid), ToString(ComplianceModel::kElasticLayer),
+                        ToString(ComplianceModel::kHalfSpace)},
+                       {G::kSkirt,
+                        "Surface compliance",
+                        "",
+                        "",
+                        1.0,
+                        {},
+                        "\"rigid\" (the paper's), \"elastic_layer\" (the skirt's surface on a "
+                        "rigid body) or \"half_space\" (skirt and liner)"}));
+  }
+  f.push_back(Scalar("skirt.layer_thickness", sk, &S::layer_thickness,
+                     {G::kSkirt, "Surface layer thickness (elastic layer)", "m", "mm", kMm,
+                      Open(0.0, 1.0, true, false), "of the skirt's deforming surface layer"}));
   f.push_back(Scalar("skirt.boundary_friction", sk, &S::boundary_friction,
                      {G::kSkirt, "Boundary friction μ_f", "-", "–", 1.0, Between(0.0, 1.0),
                       "friction coefficient of asperity contact; Table I: 0.13"}));
@@ -1345,6 +1374,9 @@ std::string UnusedReason(const EngineCase& c, const std::string& path) {
       return "shear thinning is not set by the HTHS viscosity";
     return {};
   };
+  if (path == "skirt.layer_thickness" &&
+      c.skirt.compliance != lubrication::ComplianceModel::kElasticLayer)
+    return "the skirt surfaces are not an elastic layer";
   if (path == "big_end.layer_thickness" &&
       c.big_end.compliance != lubrication::ComplianceModel::kElasticLayer)
     return "the big-end surfaces are not an elastic layer";

@@ -61,6 +61,14 @@ lubrication::SkirtConfig SkirtConfigFromCase(const EngineCase& c) {
   config.oil_film = sk.oil_film;
   config.oil_film_table.x = sk.oil_film_positions;
   config.oil_film_table.y = sk.oil_film_values;
+  config.compliance.model = sk.compliance;
+  config.compliance.layer_thickness = sk.layer_thickness;
+  config.compliance.layer_modulus = sk.modulus_skirt;
+  config.compliance.layer_poisson = sk.poisson_skirt;
+  config.compliance.modulus1 = sk.modulus_skirt;
+  config.compliance.poisson1 = sk.poisson_skirt;
+  config.compliance.modulus2 = sk.modulus_liner;
+  config.compliance.poisson2 = sk.poisson_liner;
   lubrication::SurfacePair pair;
   pair.sigma1 = sk.roughness_skirt;
   pair.sigma2 = sk.roughness_liner;

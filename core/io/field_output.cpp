@@ -76,7 +76,8 @@ SurfaceField FieldRecorder::SkirtSurface(const lubrication::SkirtSolver& skirt) 
     source.push_back(k);
   }
   field.triangles = mesh.triangles;
-  AddFilmArrays(skirt.fields(), skirt.film_thickness(), source, &field);
+  AddFilmArrays(skirt.fields(), skirt.film_thickness(), source, &field,
+                skirt.config().compliance.rigid() ? nullptr : &skirt.deformation());
   return field;
 }
 

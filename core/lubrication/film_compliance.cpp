@@ -89,7 +89,10 @@ SurfaceCompliance SurfaceCompliance::Dense(Eigen::MatrixXd matrix) {
 }
 
 SurfaceCompliance SurfaceCompliance::Build(const ComplianceSpec& spec, const TriMesh& mesh,
-                                           std::optional<double> mirror_y) {
+                                           std::optional<double> mirror_y,
+                                           std::optional<double> mirror_x) {
+  if (mirror_x && mesh.periodic_x)
+    throw std::logic_error("SurfaceCompliance::Build: a periodic mesh has no mirror in x");
   const int n = mesh.NodeCount();
   switch (spec.model) {
     case ComplianceModel::kRigid:
@@ -140,11 +143,22 @@ SurfaceCompliance SurfaceCompliance::Build(const ComplianceSpec& spec, const Tri
           const double dx = wrap(mesh.x_lines[is] - mesh.x_lines[ir]);
           const double x1 = dx + (xl[is] - mesh.x_lines[is]);
           const double x2 = dx + (xr[is] - mesh.x_lines[is]);
-          double v = BoussinesqRectangle(x1, x2, yl[js] - yr0, yr[js] - yr0);
-          if (mirror_y) {  // the mirror image of the source cell about y = mirror_y
-            const double m = *mirror_y;
-            v += BoussinesqRectangle(x1, x2, 2.0 * m - yr[js] - yr0, 2.0 * m - yl[js] - yr0);
+          const double y1 = yl[js] - yr0, y2 = yr[js] - yr0;
+          double v = BoussinesqRectangle(x1, x2, y1, y2);
+          // The mirror images of the source cell: about y = mirror_y, x = mirror_x, and both.
+          double mx1 = 0.0, mx2 = 0.0, my1 = 0.0, my2 = 0.0;
+          if (mirror_x) {
+            const double xr0 = mesh.x_lines[ir];
+            mx1 = 2.0 * *mirror_x - xr[is] - xr0;
+            mx2 = 2.0 * *mirror_x - xl[is] - xr0;
+            v += BoussinesqRectangle(mx1, mx2, y1, y2);
           }
+          if (mirror_y) {
+            my1 = 2.0 * *mirror_y - yr[js] - yr0;
+            my2 = 2.0 * *mirror_y - yl[js] - yr0;
+            v += BoussinesqRectangle(x1, x2, my1, my2);
+          }
+          if (mirror_x && mirror_y) v += BoussinesqRectangle(mx1, mx2, my1, my2);
           c(r, mesh.Node(is, js)) = scale * v;
         }
       }

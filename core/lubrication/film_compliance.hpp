@@ -74,10 +74,12 @@ class SurfaceCompliance {
   SurfaceCompliance() = default;
   static SurfaceCompliance Diagonal(Eigen::VectorXd coefficients);
   static SurfaceCompliance Dense(Eigen::MatrixXd matrix);
-  /// The spec's compliance on `mesh`. `mirror_y`: the mesh is the half y <= mirror_y of a film
-  /// symmetric about y = mirror_y (the other half's load deforms this half too).
+  /// The spec's compliance on `mesh`. `mirror_y`: the mesh is one half of a film symmetric about
+  /// the line y = mirror_y (the other half's load deforms this half too); `mirror_x` likewise
+  /// about x = mirror_x (not on a periodic mesh).
   static SurfaceCompliance Build(const ComplianceSpec& spec, const TriMesh& mesh,
-                                 std::optional<double> mirror_y);
+                                 std::optional<double> mirror_y,
+                                 std::optional<double> mirror_x = std::nullopt);
   bool rigid() const { return kind_ == Kind::kNone; }
   /// out = C load.
   void Apply(const Eigen::VectorXd& load, Eigen::VectorXd& out) const;

@@ -45,6 +45,15 @@ void SkirtConfig::Validate(const std::string& prefix) const {
     for (std::size_t k = 0; k < oil_film_table.y.size(); ++k)
       RequirePositive(prefix + ".oil_film_table." + std::to_string(k), oil_film_table.y[k], "m");
   }
+  ValidateCompliance(compliance, {.layer_thickness = prefix + ".layer_thickness",
+                                  .layer_modulus = prefix + ".modulus_skirt",
+                                  .layer_poisson = prefix + ".poisson_skirt",
+                                  .modulus1 = prefix + ".modulus_skirt",
+                                  .poisson1 = prefix + ".poisson_skirt",
+                                  .modulus2 = prefix + ".modulus_liner",
+                                  .poisson2 = prefix + ".poisson_liner",
+                                  .tolerance = prefix + ".elastic_tolerance",
+                                  .max_iterations = prefix + ".elastic_max_iterations"});
 }
 
 void SkirtState::Validate(const std::string& prefix) const {
@@ -94,6 +103,8 @@ struct SkirtSolver::Panel {
   std::vector<double> alpha;
   ReynoldsStats stats;
   FilmIntegrals integrals;
+  ElasticFilm elastic;  // rigid unless the surfaces are elastic
+  ElasticSolveStats elastic_stats;
 };
 
 SkirtSolver::SkirtSolver(SkirtConfig config)
@@ -142,6 +153,14 @@ SkirtSolver::SkirtSolver(SkirtConfig config)
       panel->alpha[k] = alpha_[full];
     }
     panel->fem = std::make_unique<ReynoldsFem>(std::move(sub), 1, config_.solver);
+    if (!config_.compliance.rigid()) {
+      // Each panel is half of its film: the other half is its mirror image about the thrust
+      // (alpha = 0) or anti-thrust (alpha = pi) plane.
+      const double mirror = p == 0 ? 0.0 : kPi * g.radius;
+      panel->elastic = ElasticFilm(
+          SurfaceCompliance::Build(config_.compliance, panel->fem->mesh(), std::nullopt, mirror),
+          config_.compliance);
+    }
     panels_.push_back(std::move(panel));
   }
   fields_.pressure = Eigen::VectorXd::Zero(n);
@@ -149,6 +168,8 @@ SkirtSolver::SkirtSolver(SkirtConfig config)
   fields_.fluid_fraction = Eigen::VectorXd::Ones(n);
   fields_.residual = Eigen::VectorXd::Zero(n);
   fields_.cavitated.assign(n, 0);
+  film_ = Eigen::VectorXd::Zero(n);
+  deformation_ = Eigen::VectorXd::Zero(n);
 }
 
 SkirtSolver::~SkirtSolver() = default;
@@ -202,7 +223,8 @@ void SkirtSolver::SolvePanel(Panel& pa, const SkirtState& s, double time_step) {
   params.u_diff = s.piston_velocity;  // U1 - U2, surface 1 = skirt (at rest)
   params.film = config_.film.get();
   params.time_step = time_step;
-  const ReynoldsSolution& sol = fem.Solve(params);
+  pa.elastic_stats = pa.elastic.Solve(fem, params);
+  const ReynoldsSolution& sol = fem.solution();
   pa.stats = sol.stats;
 
   // Normal load: the film pushes the piston surface inwards, -p n with n = (cos a) along +e0.
@@ -267,9 +289,21 @@ const SkirtResult& SkirtSolver::SolveStep(const SkirtState& s, double time_step)
   ReynoldsStats& st = r.stats;
   double cavitated_area = 0.0, panel_area = 0.0, wetted_area = 0.0;
   r.moft = 1e300;
-  for (const auto& pa : panels_) {
+  for (std::size_t p = 0; p < panels_.size(); ++p) {
+    const auto& pa = panels_[p];
     const FilmIntegrals& fi = pa->integrals;
     st.Add(pa->stats);
+    const ElasticSolveStats& es = pa->elastic_stats;
+    r.max_deformation = std::max(r.max_deformation, es.max_deformation);
+    r.elastic.iterations += es.iterations;
+    r.elastic.film_solves += es.film_solves;
+    r.elastic.krylov_iterations += es.krylov_iterations;
+    r.elastic.residual = std::max(r.elastic.residual, es.residual);
+    r.elastic.tolerance = std::max(r.elastic.tolerance, es.tolerance);
+    if (!es.converged && r.elastic.converged) {
+      r.elastic.converged = false;
+      r.elastic.message = (p == 0 ? "thrust panel: " : "anti-thrust panel: ") + es.message;
+    }
     r.lateral_force -= fi.load[kLateral];
     r.contact_lateral_force -= fi.contact_load[kLateral];
     r.friction_force += fi.element_friction.force;
@@ -315,11 +349,29 @@ const ReynoldsSolution& SkirtSolver::fields() const {
       fields_.fluid_fraction[full] = sol.fluid_fraction.size() ? sol.fluid_fraction[k] : 1.0;
       fields_.residual[full] = sol.residual.size() ? sol.residual[k] : 0.0;
       fields_.cavitated[full] = sol.cavitated[k];
+      const Eigen::VectorXd& d = pa->elastic.deformation();
+      deformation_[full] = d.size() ? d[k] : 0.0;
     }
   }
+  film_ = h_ + deformation_;
   fields_.stats = result_.stats;
   fields_stale_ = false;
   return fields_;
+}
+
+const Eigen::VectorXd& SkirtSolver::film_thickness() const {
+  if (config_.compliance.rigid()) return h_;
+  fields();
+  return film_;
+}
+
+const Eigen::VectorXd& SkirtSolver::deformation() const {
+  fields();
+  return deformation_;
+}
+
+void SkirtSolver::SetComplianceScale(double share) {
+  for (auto& panel : panels_) panel->elastic.SetScale(share);
 }
 
 }  // namespace filmdyn::lubrication

@@ -15,6 +15,7 @@
 #include <utility>
 
 #include "core/base/worker_pool.hpp"
+#include "core/lubrication/film_compliance.hpp"
 #include "core/lubrication/film_history.hpp"
 #include "core/lubrication/profile_table.hpp"
 #include "core/lubrication/reynolds_fem.hpp"
@@ -61,6 +62,10 @@ struct SkirtConfig {
   SkirtSupply supply = SkirtSupply::kFlooded;
   double oil_film = 0.0;   ///< [m]
   Table1D oil_film_table;  ///< liner position [m] -> h_oil [m]; empty = oil_film
+  /// Elastic surfaces (film_compliance.hpp): the skirt's surface layer for the elastic layer;
+  /// surface 1 = skirt, 2 = liner for the half-space (each panel with its mirror image, the
+  /// panels apart: the relief between them carries no film). Rigid by default.
+  ComplianceSpec compliance;
   void Validate(const std::string& prefix = "skirt") const;
 };
 
@@ -100,6 +105,10 @@ struct SkirtResult {
   double wetted_fraction = 1.0;
   /// The oil balance's storage terms (as BearingResult), both halves [m^3/s], [m^3].
   double squeeze_rate = 0.0, void_volume = 0.0;
+  /// Elastic surfaces: the largest film opening [m] and the panels' coupled solves (merged:
+  /// counts add, the worst residual, the first failure's message).
+  double max_deformation = 0.0;
+  ElasticSolveStats elastic;
 };
 
 /// Construct once per skirt (mesh + symbolic factorisation), then Solve() per time step.
@@ -127,7 +136,12 @@ class SkirtSolver {
   const SkirtResult& result() const { return result_; }
   /// Whole-skirt fields of the last solve (gathered from the panels on the first call after it).
   const ReynoldsSolution& fields() const;
-  const Eigen::VectorXd& film_thickness() const { return h_; }
+  /// The film (deformed with elastic surfaces) [m].
+  const Eigen::VectorXd& film_thickness() const;
+  /// The surfaces' deformation per node [m] (zero on the relief and with rigid surfaces).
+  const Eigen::VectorXd& deformation() const;
+  /// The share of the surfaces' compliance applied, in [0, 1] (an engine run phases it in).
+  void SetComplianceScale(double share);
   const TriMesh& mesh() const { return mesh_; }
   const SkirtConfig& config() const { return config_; }
   /// Replaces the configuration's pressure-viscosity law (an engine run phases it in).
@@ -160,6 +174,7 @@ class SkirtSolver {
   std::vector<std::unique_ptr<Panel>> panels_;
   std::unique_ptr<WorkerPool> pool_;
   mutable ReynoldsSolution fields_;  // a cache of the panels' fields, see fields()
+  mutable Eigen::VectorXd film_, deformation_;  // the same for the film and the deformation
   mutable bool fields_stale_ = false;
   SkirtResult result_;
   FilmHistory history_;

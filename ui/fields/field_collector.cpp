@@ -100,7 +100,8 @@ void FieldCollector::Add(const engine::FieldFrame& frame) {
   frames_->time.push_back(frame.time);
   size_t j = 0;
   if (frame.skirt)
-    Append(frames_->joints[j++], frame.skirt->fields(), frame.skirt->film_thickness());
+    Append(frames_->joints[j++], frame.skirt->fields(), frame.skirt->film_thickness(), nullptr,
+           frame.skirt->config().compliance.rigid() ? nullptr : &frame.skirt->deformation());
   if (frame.bearing) {
     JointFieldFrames& joint = frames_->joints[j++];
     Append(joint, frame.bearing->fields(), frame.bearing->film_thickness(),

@@ -463,6 +463,39 @@ class TestRunJob : public QObject {
     QVERIFY(std::abs(moft[1] - moft[0]) > 0.01 * moft[0]);
   }
 
+  // The skirt likewise: an elastic surface layer on the skirt, the largest deformation at each
+  // sample the layer's compliance times the largest film + asperity pressure.
+  void elasticLayerSkirtReportsItsDeformation() {
+    engine::RunConfig config = DefaultConfig(3000, engine::Model::kOnlySkirt);
+    engine::EngineCase& c = config.engine_case;
+    c.solver.error_estimate = 0;
+    c.skirt.compliance = lubrication::ComplianceModel::kElasticLayer;
+    c.skirt.layer_thickness = 2e-3;
+    c.skirt.modulus_skirt = 5e9;
+    const engine::RunResult r = engine::RunJob(config);
+    QVERIFY2(r.status == engine::RunStatus::kCompleted, r.message.c_str());
+    const double layer = lubrication::LayerCompliance(2e-3, 5e9, c.skirt.poisson_skirt);
+    double largest = 0.0;
+    for (const auto& s : r.samples) {
+      largest = std::max(largest, s.skirt.max_deformation);
+      // Each panel's solve holds 1e-4 of its own thinnest film: within 1e-4 of 100 um (no film
+      // on this skirt is thicker).
+      const double tol = 1e-4 * 100e-6;
+      QVERIFY(s.skirt.max_deformation >= layer * s.skirt.max_pressure - tol);
+      QVERIFY2(s.skirt.max_deformation <=
+                   layer * (s.skirt.max_pressure + s.skirt.max_contact_pressure) + tol,
+               qPrintable(QString("at %1: %2 > %3 (p %4, pc %5, moft %6)")
+                              .arg(s.crank_angle)
+                              .arg(s.skirt.max_deformation)
+                              .arg(layer * (s.skirt.max_pressure + s.skirt.max_contact_pressure))
+                              .arg(s.skirt.max_pressure)
+                              .arg(s.skirt.max_contact_pressure)
+                              .arg(s.skirt.moft)));
+    }
+    qInfo("largest skirt deformation %.4f um", largest * 1e6);
+    QVERIFY(largest > 0.1e-6);
+  }
+
   // A catalogue oil below its fit's range (30 °C) runs, and the run's warnings say the
   // viscosity was extrapolated, naming the joint and the oil.
   void catalogueOilOutsideItsRangeIsAWarning() {

@@ -16,6 +16,7 @@
 #include "core/lubrication/bearing_solver.hpp"
 #include "core/lubrication/ehd_validation.hpp"
 #include "core/lubrication/film_compliance.hpp"
+#include "core/lubrication/skirt_solver.hpp"
 
 using namespace filmdyn;
 using namespace filmdyn::lubrication;
@@ -108,6 +109,33 @@ BearingConfig LayerBearing(double layer_modulus, int n_theta, int n_z) {
   return cfg;
 }
 
+SkirtConfig ElasticSkirt(ComplianceModel model, double modulus) {
+  SkirtConfig cfg;
+  auto& g = cfg.geometry;
+  g.radius = 0.0415;
+  g.skirt_length = 0.032;
+  g.radial_clearance = 20e-6;
+  g.pin_position = 0.016;
+  g.alpha1 = g.alpha2 = 46.0 * kPi / 180.0;
+  g.profile = {{0.0, 0.016, 0.032}, {20e-6, 0.0, 15e-6}};
+  cfg.viscosity = 0.008;
+  cfg.mesh = {12, 2, 12, 16};
+  cfg.compliance.model = model;
+  cfg.compliance.layer_thickness = 2e-3;
+  cfg.compliance.layer_modulus = cfg.compliance.modulus1 = modulus;
+  cfg.compliance.modulus2 = modulus;
+  return cfg;
+}
+
+SkirtState SlappingSkirt() {
+  SkirtState s;
+  s.e0 = 15e-6;
+  s.gamma = 2e-4;
+  s.e0_dot = 0.02;
+  s.piston_velocity = 12.0;
+  return s;
+}
+
 }  // namespace
 
 class TestElasticFilm : public QObject {
@@ -174,6 +202,15 @@ class TestElasticFilm : public QObject {
       const double want =
           p * e_star / kPi *
           BoussinesqRectangle(-half.x[k], 0.03 - half.x[k], -half.y[k], 0.02 - half.y[k]);
+      QVERIFY(std::abs(delta[k] - want) <= 1e-12 * want);
+    }
+    // Mirrored in x about x = 0 and in y about y = 0.01: the whole film [-0.03, 0.03] x [0, 0.02].
+    const SurfaceCompliance cxy = SurfaceCompliance::Build(spec, half, 0.01, 0.0);
+    cxy.Apply(Eigen::VectorXd::Constant(half.NodeCount(), p), delta);
+    for (int k = 0; k < half.NodeCount(); ++k) {
+      const double want =
+          p * e_star / kPi *
+          BoussinesqRectangle(-0.03 - half.x[k], 0.03 - half.x[k], -half.y[k], 0.02 - half.y[k]);
       QVERIFY(std::abs(delta[k] - want) <= 1e-12 * want);
     }
     // Reciprocity on a uniform mesh: between nodes with whole (equal) cells the matrix is
@@ -247,6 +284,53 @@ class TestElasticFilm : public QObject {
           QVERIFY2(std::abs(x - y) <= 1e-10 * std::abs(y),
                    qPrintable(QString("%1 vs %2").arg(x).arg(y)));
         }
+      }
+    }
+  }
+
+  // The skirt: each panel's film is the rigid film plus the compliance (with the panel's mirror
+  // image about its thrust plane, built here separately) times its load; infinitely stiff
+  // surfaces give the rigid skirt's forces to 1e-10.
+  void elasticSkirtPanelsHoldTheirFixedPointAndTheStiffLimit() {
+    for (const ComplianceModel model :
+         {ComplianceModel::kElasticLayer, ComplianceModel::kHalfSpace}) {
+      const SkirtConfig cfg = ElasticSkirt(model, 5e9);
+      SkirtSolver solver(cfg);
+      const SkirtResult r = solver.Solve(SlappingSkirt());
+      QVERIFY2(r.elastic.converged, r.elastic.message.c_str());
+      QVERIFY(r.max_deformation > 0.05e-6);
+      SkirtConfig rigid_cfg = cfg;
+      rigid_cfg.compliance = {};
+      SkirtSolver rigid(rigid_cfg);
+      const SkirtResult rr = rigid.Solve(SlappingSkirt());
+      const Eigen::VectorXd& h_rigid = rigid.film_thickness();
+      for (int p = 0; p < 2; ++p) {
+        const ReynoldsFem& fem = solver.panel(p);
+        const std::vector<int>& nodes = solver.panel_nodes(p);
+        const double mirror = p == 0 ? 0.0 : kPi * cfg.geometry.radius;
+        Eigen::VectorXd cp;
+        SurfaceCompliance::Build(cfg.compliance, fem.mesh(), std::nullopt, mirror)
+            .Apply(fem.solution().pressure + fem.solution().contact_pressure, cp);
+        double worst = 0.0;
+        for (int k = 0; k < fem.NodeCount(); ++k)
+          worst = std::max(worst, std::abs(fem.film_thickness()[k] - h_rigid[nodes[k]] - cp[k]));
+        QVERIFY2(worst <= cfg.compliance.tolerance * fem.film_thickness().minCoeff(),
+                 qPrintable(QString("%1 panel %2: %3 m").arg(ToString(model)).arg(p).arg(worst)));
+      }
+      // The whole-skirt film is the rigid one plus the deformation.
+      QVERIFY((solver.film_thickness() - h_rigid - solver.deformation()).cwiseAbs().maxCoeff() <
+              1e-18);
+      qInfo("%s skirt, E 5 GPa: deformation %.3g um, lateral force %.5g N (rigid %.5g N)",
+            ToString(model), r.max_deformation * 1e6, r.lateral_force, rr.lateral_force);
+      SkirtSolver stiff(ElasticSkirt(model, 1e30));
+      const SkirtResult rs = stiff.Solve(SlappingSkirt());
+      for (const auto& [x, y] :
+           std::vector<std::pair<double, double>>{{rs.lateral_force, rr.lateral_force},
+                                                  {rs.moment_about_pin, rr.moment_about_pin},
+                                                  {rs.friction_force, rr.friction_force},
+                                                  {rs.moft, rr.moft}}) {
+        QVERIFY2(std::abs(x - y) <= 1e-10 * std::abs(y),
+                 qPrintable(QString("%1 vs %2").arg(x).arg(y)));
       }
     }
   }
