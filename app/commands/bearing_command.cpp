@@ -75,6 +75,10 @@ Command MakeBearingCommand() {
       {"elastic-layer", "T,E,NU",
        "elastic bearing lining of thickness T [m], Young's modulus E [Pa] and Poisson ratio NU "
        "on a rigid backing: the film and the lining's deformation solved together"},
+      {"compliance", "FILE.mtx",
+       "the bearing's compliance exported by a finite-element code: a Matrix Market matrix [m/N] "
+       "of the surface nodes listed in FILE.nodes.csv (x[m] = R psi around the bearing from its "
+       "reference axis, y[m] across the width; docs/compliance-files.md)"},
       {"half-space", "",
        "elastic journal and bearing as half-spaces (moduli --E1/--E2, ratios --nu1/--nu2): the "
        "film and the surfaces' deformation solved together"},
@@ -198,8 +202,22 @@ Command MakeBearingCommand() {
       pair.boundary_friction = args.Double("boundary-friction").value_or(0.13);
       in.surfaces = pair;
     }
-    if (args.Has("elastic-layer") && args.Has("half-space"))
-      throw InputError("--half-space", "", "either --elastic-layer or --half-space, not both");
+    if (int(args.Has("elastic-layer")) + int(args.Has("half-space")) + int(args.Has("compliance")) >
+        1) {
+      throw InputError("--compliance", args.Value("compliance").value_or(""),
+                       "one of --elastic-layer, --half-space or --compliance");
+    }
+    if (args.Has("compliance")) {
+      const std::string matrix = *args.Value("compliance");
+      const auto dot = matrix.rfind('.');
+      const std::string stem =
+          dot == std::string::npos || matrix.find('/', dot) != std::string::npos
+              ? matrix
+              : matrix.substr(0, dot);
+      in.compliance.model = lubrication::ComplianceModel::kImported;
+      in.compliance.imported = std::make_shared<const lubrication::ImportedCompliance>(
+          lubrication::ReadImportedCompliance(matrix, stem + ".nodes.csv"));
+    }
     if (args.Has("elastic-layer")) {
       const std::string text = *args.Value("elastic-layer");
       const std::vector<double> ten = ParseDoubleList("--elastic-layer", text);
@@ -224,7 +242,8 @@ Command MakeBearingCommand() {
                                                     .modulus2 = "--E2",
                                                     .poisson2 = "--nu2",
                                                     .tolerance = "elastic tolerance",
-                                                    .max_iterations = "elastic iterations"});
+                                                    .max_iterations = "elastic iterations",
+                                                    .imported = "--compliance"});
     const lubrication::BearingCalcResult r = lubrication::RunBearingCalculator(in);
     if (args.Has("json")) {
       nlohmann::json j;

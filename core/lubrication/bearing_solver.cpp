@@ -49,7 +49,8 @@ void BearingConfig::Validate(const std::string& prefix) const {
                                   .modulus2 = prefix + ".modulus_bearing",
                                   .poisson2 = prefix + ".poisson_bearing",
                                   .tolerance = prefix + ".elastic_tolerance",
-                                  .max_iterations = prefix + ".elastic_max_iterations"});
+                                  .max_iterations = prefix + ".elastic_max_iterations",
+                                  .imported = prefix + ".compliance_file"});
 }
 
 void ValidateOilFeed(const OilFeed& feed, double radius, double width, const OilFeedFields& names) {
@@ -318,6 +319,9 @@ const BearingResult& BearingSolver::SolveStep(const BearingState& s, double time
   params.u_diff = R * (s.omega_journal - s.omega_bearing);
   params.film = config_.film.get();
   params.time_step = time_step;
+  // An imported compliance is fixed in the bearing body: the film's theta = 0 lies at the body
+  // angle phi + pi - (bearing orientation).
+  elastic_.SetOffset(R * WrapTwoPi(s.line_of_centres_angle + kPi - s.bearing_angle));
   const ElasticSolveStats& elastic = elastic_.Solve(fem_, params);
   const ReynoldsSolution& sol = fem_.solution();
 

@@ -18,6 +18,8 @@ const char* ToString(ComplianceModel model) {
       return "elastic_layer";
     case ComplianceModel::kHalfSpace:
       return "half_space";
+    case ComplianceModel::kImported:
+      return "imported";
   }
   return "?";
 }
@@ -54,6 +56,9 @@ void ValidateCompliance(const ComplianceSpec& s, const ComplianceFields& names) 
       RequirePoisson(names.poisson1, s.poisson1);
       RequirePositive(names.modulus2, s.modulus2, "Pa");
       RequirePoisson(names.poisson2, s.poisson2);
+      break;
+    case ComplianceModel::kImported:
+      if (!s.imported) throw InputError(names.imported, "(none)", "a compliance file to import");
       break;
   }
   RequireInRange(names.tolerance, s.tolerance, 0.0, 0.01, true, false, "-");
@@ -102,6 +107,15 @@ SurfaceCompliance SurfaceCompliance::Build(const ComplianceSpec& spec, const Tri
           n, LayerCompliance(spec.layer_thickness, spec.layer_modulus, spec.layer_poisson)));
     case ComplianceModel::kHalfSpace:
       break;
+    case ComplianceModel::kImported: {
+      SurfaceCompliance c;
+      c.kind_ = Kind::kTransfer;
+      c.transfer_ = std::make_shared<ComplianceTransfer>(spec.imported, mesh, mirror_y, mirror_x,
+                                                         mesh.periodic_x ? mesh.x_period : 0.0,
+                                                         spec.imported->source);
+      c.nonnegative_ = c.transfer_->Nonnegative();
+      return c;
+    }
   }
   // Each node's cell: from the midpoints to its neighbours (the mesh edge at the border).
   const int nx = mesh.nx_nodes(), ny = mesh.ny_nodes();
@@ -178,19 +192,14 @@ void SurfaceCompliance::Apply(const Eigen::VectorXd& load, Eigen::VectorXd& out)
     case Kind::kDense:
       out.noalias() = dense_ * load;
       return;
+    case Kind::kTransfer:
+      transfer_->Apply(load, out);
+      return;
   }
 }
 
-double SurfaceCompliance::MaxDiagonal() const {
-  switch (kind_) {
-    case Kind::kNone:
-      return 0.0;
-    case Kind::kDiagonal:
-      return diagonal_.maxCoeff();
-    case Kind::kDense:
-      return dense_.diagonal().maxCoeff();
-  }
-  return 0.0;
+void SurfaceCompliance::SetOffset(double offset) {
+  if (transfer_) transfer_->SetOffset(offset);
 }
 
 double SurfaceCompliance::Diagonal(int k) const {
@@ -201,6 +210,8 @@ double SurfaceCompliance::Diagonal(int k) const {
       return diagonal_[k];
     case Kind::kDense:
       return dense_(k, k);
+    case Kind::kTransfer:
+      return transfer_->Diagonal(k);
   }
   return 0.0;
 }

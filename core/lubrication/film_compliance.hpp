@@ -27,6 +27,7 @@
 #include <string>
 
 #include "core/lubrication/film_models.hpp"
+#include "core/lubrication/imported_compliance.hpp"
 #include "core/lubrication/reynolds_fem.hpp"
 #include "core/lubrication/tri_mesh.hpp"
 
@@ -40,6 +41,8 @@ struct ComplianceSpec {
   double layer_poisson = 0.3;    ///< elastic layer: lining Poisson ratio nu, in (-1, 0.5)
   /// Half-space: the two surfaces' Young's moduli [Pa] and Poisson ratios.
   double modulus1 = 0.0, poisson1 = 0.3, modulus2 = 0.0, poisson2 = 0.3;
+  /// Imported: the FE surface's compliance (ReadImportedCompliance).
+  std::shared_ptr<const ImportedCompliance> imported;
   /// Converged when max_k |delta_k - (C P)_k| <= tolerance * min_k h_k (the film right to this
   /// fraction of the thinnest film).
   double tolerance = 1e-4;
@@ -53,6 +56,7 @@ struct ComplianceFields {
   std::string layer_thickness, layer_modulus, layer_poisson;
   std::string modulus1, poisson1, modulus2, poisson2;
   std::string tolerance, max_iterations;
+  std::string imported;  ///< the compliance file
 };
 
 /// Throws filmdyn::InputError naming the field: thickness and moduli must be > 0, Poisson ratios
@@ -83,8 +87,9 @@ class SurfaceCompliance {
   bool rigid() const { return kind_ == Kind::kNone; }
   /// out = C load.
   void Apply(const Eigen::VectorXd& load, Eigen::VectorXd& out) const;
-  /// The largest diagonal coefficient [m/Pa].
-  double MaxDiagonal() const;
+  /// Imported compliances: the film's x is the FE surface's minus `offset` [m] (a bearing's film
+  /// turns with its line of centres). Others: no effect.
+  void SetOffset(double offset);
   /// The diagonal coefficient of node k [m/Pa].
   double Diagonal(int k) const;
   const Eigen::MatrixXd& dense() const { return dense_; }
@@ -92,11 +97,12 @@ class SurfaceCompliance {
   bool nonnegative() const { return nonnegative_; }
 
  private:
-  enum class Kind { kNone, kDiagonal, kDense };
+  enum class Kind { kNone, kDiagonal, kDense, kTransfer };
   Kind kind_ = Kind::kNone;
   bool nonnegative_ = true;
   Eigen::VectorXd diagonal_;
   Eigen::MatrixXd dense_;
+  std::shared_ptr<ComplianceTransfer> transfer_;
 };
 
 /// Outcome of one coupled solve.
@@ -125,6 +131,8 @@ class ElasticFilm {
   const Eigen::VectorXd& deformation() const { return delta_; }
   const ElasticSolveStats& stats() const { return stats_; }
   const SurfaceCompliance& compliance() const { return compliance_; }
+  /// See SurfaceCompliance::SetOffset.
+  void SetOffset(double offset) { compliance_.SetOffset(offset); }
   /// Forgets the deformation (the next solve starts from the rigid film).
   void Reset() {
     delta_.resize(0);

@@ -26,8 +26,9 @@ const char* ToString(SkirtSupply supply);
 /// How the film's surfaces deform under the film and asperity pressure (film_compliance.hpp):
 /// kRigid (no deformation), kElasticLayer (a thin lining on a rigid backing, each point
 /// independent), kHalfSpace (both surfaces elastic half-spaces, Boussinesq).
-enum class ComplianceModel { kRigid, kElasticLayer, kHalfSpace };
-/// "rigid", "elastic_layer", "half_space".
+/// kImported: a compliance exported by a finite-element code (imported_compliance.hpp).
+enum class ComplianceModel { kRigid, kElasticLayer, kHalfSpace, kImported };
+/// "rigid", "elastic_layer", "half_space", "imported".
 const char* ToString(ComplianceModel model);
 
 }  // namespace filmdyn::lubrication

@@ -53,7 +53,8 @@ void SkirtConfig::Validate(const std::string& prefix) const {
                                   .modulus2 = prefix + ".modulus_liner",
                                   .poisson2 = prefix + ".poisson_liner",
                                   .tolerance = prefix + ".elastic_tolerance",
-                                  .max_iterations = prefix + ".elastic_max_iterations"});
+                                  .max_iterations = prefix + ".elastic_max_iterations",
+                                  .imported = prefix + ".compliance_file"});
 }
 
 void SkirtState::Validate(const std::string& prefix) const {

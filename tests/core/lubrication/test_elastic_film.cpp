@@ -4,10 +4,12 @@
 // h_rigid + C p at every converged solution), the infinitely stiff limit against the rigid
 // solver, and the elastic-layer bearing against an independent finite-difference solution
 // written here, over eps 0.2-0.9 at two layer compliances.
+#include <QTemporaryDir>
 #include <QtTest>
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <numbers>
 #include <vector>
 
@@ -16,6 +18,7 @@
 #include "core/lubrication/bearing_solver.hpp"
 #include "core/lubrication/ehd_validation.hpp"
 #include "core/lubrication/film_compliance.hpp"
+#include "core/lubrication/imported_compliance.hpp"
 #include "core/lubrication/skirt_solver.hpp"
 
 using namespace filmdyn;
@@ -134,6 +137,35 @@ SkirtState SlappingSkirt() {
   s.e0_dot = 0.02;
   s.piston_velocity = 12.0;
   return s;
+}
+
+// An "FE" compliance of a bearing surface written here: a periodic grid of nx x ny nodes over
+// the whole bearing (x = R psi, y across the width), C_ij = the half-space deflection at node i
+// per unit force spread over node j's cell (Love's rectangle / (pi E* A_j)), symmetrised.
+ImportedCompliance HalfSpaceBearingSurface(double radius, double width, int nx, int ny,
+                                           double e_star) {
+  ImportedCompliance c;
+  const double period = 2.0 * kPi * radius;
+  for (int i = 0; i < nx; ++i) c.x_lines.push_back(period * i / nx);
+  c.y_lines = Linspace(0.0, width, ny - 1);
+  const double dx = period / nx, dy = width / (ny - 1);
+  const int m = nx * ny;
+  c.matrix.resize(m, m);
+  for (int r = 0; r < m; ++r) {
+    const double xr = c.x_lines[r % nx], yr = c.y_lines[r / nx];
+    for (int q = 0; q < m; ++q) {
+      double ddx = c.x_lines[q % nx] - xr;
+      ddx -= period * std::round(ddx / period);
+      const int jq = q / nx;
+      const double y1 = jq == 0 ? 0.0 : c.y_lines[jq] - 0.5 * dy;
+      const double y2 = jq == ny - 1 ? width : c.y_lines[jq] + 0.5 * dy;
+      const double area = dx * (y2 - y1);
+      c.matrix(r, q) = e_star / kPi *
+                       BoussinesqRectangle(ddx - 0.5 * dx, ddx + 0.5 * dx, y1 - yr, y2 - yr) / area;
+    }
+  }
+  c.matrix = 0.5 * (c.matrix + c.matrix.transpose()).eval();
+  return c;
 }
 
 }  // namespace
@@ -380,6 +412,110 @@ class TestElasticFilm : public QObject {
     const double e4 = std::abs(SolveElasticSliderFem(slider, 2e-3, 3e9, 0.3, 400).load / fine - 1);
     qInfo("elastic slider load error: 100 cells %.3g, 200 %.3g, 400 %.3g", e1, e2, e4);
     QVERIFY(e2 < e1 / 3.0 && e4 < e2 / 3.0);
+  }
+
+  // An imported compliance written to files and read back is the same matrix (in any node
+  // order); on the film's own grid it reproduces the built-in half-space, on a coarser FE grid
+  // it agrees to the interpolation's accuracy; the bearing solved with it converges with
+  // h = h_rigid + T C T' A (p + p_c).
+  void importedComplianceAgreesWithTheBuiltInHalfSpace() {
+    QTemporaryDir dir;
+    const double radius = 0.025, width = 0.02;
+    const double e_star = CompositeCompliance(210e9, 0.3, 110e9, 0.33);
+    BearingConfig half = LayerBearing(1.0, 60, 8);
+    half.mesh.symmetric_half = false;
+    half.compliance.model = ComplianceModel::kHalfSpace;
+    half.compliance.modulus1 = 210e9;
+    half.compliance.poisson1 = 0.3;
+    half.compliance.modulus2 = 110e9;
+    half.compliance.poisson2 = 0.33;
+    BearingState s;
+    s.omega_journal = 314.0;
+    s.eps = 0.8;
+    const BearingResult built_in = BearingSolver(half).Solve(s);
+    QVERIFY(built_in.elastic.converged);
+    for (const int nx : {60, 30}) {
+      const int ny = nx == 60 ? 9 : 5;
+      const ImportedCompliance fe = HalfSpaceBearingSurface(radius, width, nx, ny, e_star);
+      const std::string mtx = (dir.path() + "/surface.mtx").toStdString();
+      const std::string csv = (dir.path() + "/surface.nodes.csv").toStdString();
+      WriteImportedCompliance(fe, mtx, csv);
+      const ImportedCompliance back = ReadImportedCompliance(mtx, csv);
+      QVERIFY((back.matrix - fe.matrix).cwiseAbs().maxCoeff() <= 1e-15 * fe.matrix.maxCoeff());
+      BearingConfig imported = half;
+      imported.compliance.model = ComplianceModel::kImported;
+      imported.compliance.imported = std::make_shared<const ImportedCompliance>(back);
+      BearingSolver solver(imported);
+      const BearingResult r = solver.Solve(s);
+      QVERIFY2(r.elastic.converged, r.elastic.message.c_str());
+      const double load = r.load / built_in.load - 1.0;
+      const double deformation = r.max_deformation / built_in.max_deformation - 1.0;
+      qInfo(
+          "FE grid %d x %d: load %+.4f %%, max deformation %+.4f %% against the built-in "
+          "half-space (%.4g N, %.3g um)",
+          nx, ny, 100 * load, 100 * deformation, built_in.load, built_in.max_deformation * 1e6);
+      const double tol = nx == 60 ? 0.01 : 0.05;
+      QVERIFY(std::abs(load) < tol && std::abs(deformation) < tol);
+    }
+  }
+
+  void badComplianceFilesNameTheFileAndLine() {
+    QTemporaryDir dir;
+    const std::string mtx = (dir.path() + "/c.mtx").toStdString();
+    const std::string csv = (dir.path() + "/c.nodes.csv").toStdString();
+    auto write = [](const std::string& path, const std::string& text) {
+      std::ofstream(path) << text;
+    };
+    auto message = [&]() -> QString {
+      try {
+        ReadImportedCompliance(mtx, csv);
+      } catch (const InputError& e) {
+        return QString::fromStdString(e.what());
+      }
+      return {};
+    };
+    const std::string nodes = "x[m],y[m]\n0,0\n1,0\n0,1\n1,1\n";
+    const std::string good =
+        "%%MatrixMarket matrix array real symmetric\n4 4\n2\n0.5\n0.2\n0.1\n2\n0.1\n0.2\n"
+        "2\n0.5\n2\n";
+    write(csv, nodes);
+    write(mtx, good);
+    QVERIFY2(message().isEmpty(), qPrintable(message()));
+    write(mtx, "%%MatrixMarket matrix array complex symmetric\n4 4\n");
+    QVERIFY(message().contains("c.mtx:1") && message().contains("real"));
+    write(mtx, "%%MatrixMarket matrix array real symmetric\n% size\n3 3\n");
+    QVERIFY2(message().contains("c.mtx:3") && message().contains("4 x 4"), qPrintable(message()));
+    write(mtx, "%%MatrixMarket matrix array real symmetric\n4 4\n2\n0.5\nabc\n");
+    QVERIFY2(message().contains("c.mtx:5") && message().contains("abc"), qPrintable(message()));
+    write(mtx, "%%MatrixMarket matrix coordinate real general\n4 4 2\n1 1 1\n2 1 0.5\n");
+    QVERIFY2(message().contains("every entry"), qPrintable(message()));
+    write(mtx,
+          "%%MatrixMarket matrix array real general\n4 4\n1\n0\n0\n0\n0.5\n1\n0\n0\n0\n0\n1\n"
+          "0\n0\n0\n0\n1\n");
+    QVERIFY2(message().contains("symmetric"), qPrintable(message()));
+    write(mtx, "%%MatrixMarket matrix array real symmetric\n4 4\n1\n2\n0\n0\n1\n0\n0\n1\n0\n1\n");
+    QVERIFY2(message().contains("positive definite"), qPrintable(message()));
+    write(mtx, good);
+    write(csv, "x[m],y[m]\n0,0\n1,0\n0,1\n2,1\n");
+    QVERIFY2(message().contains("grid"), qPrintable(message()));
+    write(csv, "x,y\n0,0\n1,0\n0,1\n1,1\n");
+    QVERIFY2(message().contains("c.nodes.csv:1") && message().contains("x[m],y[m]"),
+             qPrintable(message()));
+    write(csv, "x[m],y[m]\n0,0\n1,0\n0,nan\n1,1\n");
+    QVERIFY2(message().contains("c.nodes.csv:4"), qPrintable(message()));
+    // A film outside the FE surface: a bearing wider than the imported surface (5 mm of 20).
+    write(csv, "x[m],y[m]\n0,0\n0.1,0\n0,0.005\n0.1,0.005\n");
+    BearingConfig cfg = LayerBearing(1.0, 16, 4);
+    cfg.compliance.model = ComplianceModel::kImported;
+    cfg.compliance.imported =
+        std::make_shared<const ImportedCompliance>(ReadImportedCompliance(mtx, csv));
+    try {
+      BearingSolver solver(cfg);
+      QFAIL("a film outside the FE surface was accepted");
+    } catch (const InputError& e) {
+      QVERIFY2(QString(e.what()).contains("c.mtx") && QString(e.what()).contains("range"),
+               e.what());
+    }
   }
 
   void badComplianceInputNamesTheField() {
