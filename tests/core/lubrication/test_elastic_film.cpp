@@ -459,6 +459,50 @@ class TestElasticFilm : public QObject {
     }
   }
 
+  // The shipped CalculiX example (examples/calculix-bearing-shell): a uniform pressure deflects
+  // the shell's middle as the elastic layer of the same lining (its limit under a wide load),
+  // and the steady bearing with it agrees with the layer's.
+  void shippedCalculixShellAgreesWithTheElasticLayer() {
+    const std::string dir = std::string(FILMDYN_SOURCE_DIR) + "/examples/calculix-bearing-shell/";
+    auto fe = std::make_shared<const ImportedCompliance>(
+        ReadImportedCompliance(dir + "shell_compliance.mtx", dir + "shell_compliance.nodes.csv"));
+    QCOMPARE(fe->NodeCount(), 528);
+    const double layer = LayerCompliance(1.5e-3, 70e9, 0.33);
+    // A film mesh on the FE grid, uniform pressure: the middle row's deflection.
+    const TriMesh grid = MakeTensorMesh(fe->x_lines, fe->y_lines, true, 2.0 * kPi * 0.015);
+    ComplianceTransfer transfer(fe, grid, std::nullopt, std::nullopt, grid.x_period, "shell");
+    Eigen::VectorXd delta;
+    transfer.Apply(Eigen::VectorXd::Ones(grid.NodeCount()), delta);
+    const double middle = delta[grid.Node(0, grid.ny_nodes() / 2)];
+    qInfo("uniform pressure: FE shell %.6g m/Pa, elastic layer %.6g m/Pa", middle, layer);
+    QVERIFY(std::abs(middle / layer - 1.0) < 2e-3);
+    BearingConfig cfg;
+    cfg.geometry = {0.015, 0.022, 25e-6};
+    cfg.viscosity = 0.01;
+    cfg.mesh = {96, 20, false};
+    BearingConfig column = cfg;
+    cfg.compliance.model = ComplianceModel::kImported;
+    cfg.compliance.imported = fe;
+    column.compliance.model = ComplianceModel::kElasticLayer;
+    column.compliance.layer_thickness = 1.5e-3;
+    column.compliance.layer_modulus = 70e9;
+    column.compliance.layer_poisson = 0.33;
+    BearingSolver imported(cfg), built_in(column);
+    BearingState s;
+    s.omega_journal = 6000.0 * 2.0 * kPi / 60.0;
+    for (const double eps : {0.5, 0.8, 0.95}) {
+      s.eps = eps;
+      const BearingResult a = imported.Solve(s);
+      const BearingResult& b = built_in.Solve(s);
+      QVERIFY2(a.elastic.converged, a.elastic.message.c_str());
+      qInfo("eps %.2f: load %.5g vs %.5g N (%+.3f %%), max deformation %.4g vs %.4g um (%+.2f %%)",
+            eps, a.load, b.load, 100 * (a.load / b.load - 1), a.max_deformation * 1e6,
+            b.max_deformation * 1e6, 100 * (a.max_deformation / b.max_deformation - 1));
+      QVERIFY(std::abs(a.load / b.load - 1.0) < 0.01);
+      QVERIFY(std::abs(a.max_deformation / b.max_deformation - 1.0) < 0.05);
+    }
+  }
+
   void badComplianceFilesNameTheFileAndLine() {
     QTemporaryDir dir;
     const std::string mtx = (dir.path() + "/c.mtx").toStdString();
