@@ -18,6 +18,7 @@
 #include <QtTest>
 #include <cmath>
 
+#include "core/engine/case_schema.hpp"
 #include "ui/case_editor/array_table_model.hpp"
 #include "ui/case_editor/case_document.hpp"
 #include "ui/case_editor/case_editor.hpp"
@@ -182,6 +183,28 @@ class TestMainWindowAfterRun : public QObject {
         Save(&window, "case_big_end_cavitation.png");
         window.document()->undoStack()->undo();
         QVERIFY(window.document()->engineCase().big_end.supply_pressure_angles.empty());
+      }
+      // Elastic surfaces: the compliance row's choices; with "elastic_layer" the lining's
+      // thickness is in use (greyed with its reason while the surfaces are rigid).
+      {
+        QVERIFY(!filmdyn::engine::UnusedReason(window.document()->engineCase(),
+                                               "big_end.layer_thickness")
+                     .empty());
+        auto shown = window.document()->engineCase();
+        shown.big_end.compliance = filmdyn::lubrication::ComplianceModel::kElasticLayer;
+        window.document()->edit(shown, "elastic lining for the picture");
+        QVERIFY(filmdyn::engine::UnusedReason(window.document()->engineCase(),
+                                              "big_end.layer_thickness")
+                    .empty());
+        window.caseEditor()
+            ->parameterTable(filmdyn::ui::CaseGroup::kBigEnd)
+            ->scrollTo(model->index(model->rowOf("big_end.compliance"), 0),
+                       QAbstractItemView::PositionAtTop);
+        QTest::qWait(100);
+        Save(&window, "case_big_end_compliance.png");
+        window.document()->undoStack()->undo();
+        QCOMPARE(window.document()->engineCase().big_end.compliance,
+                 filmdyn::lubrication::ComplianceModel::kRigid);
       }
       QVERIFY(window.runAction()->isEnabled());
       window.runAction()->trigger();
