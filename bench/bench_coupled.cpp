@@ -4,8 +4,11 @@
 // the accuracy check; the price of the paper's explicit 1e-7 s scheme at our cost per step.
 // --jfo-ratio: the same run again with mass-conserving (JFO) cavitation in both joints, back to
 // back, and the ratio of the wall times (docs/performance.md, "Mass-conserving cavitation").
+// --versus key=value (repeatable): the same run again with these fields set, back to back, and
+// the ratio of the wall times (e.g. elastic surfaces: docs/performance.md, "Elastic surfaces").
 // Run on demand:
 //   build/bench/bench_coupled [model] [rpm] [--no-tight] [--coarse] [--profile] [--jfo-ratio]
+//   [--versus key=value ...]
 //   [--threads 1|2] [--vtol m/s] [--atol rad] [--wtol rad/s] [--set key=value ...]
 #include <algorithm>
 #include <chrono>
@@ -145,7 +148,7 @@ double RelDiff(double a, double b) { return std::abs(a - b) / std::max(std::abs(
 
 int main(int argc, char** argv) try {
   // Positional [model] [rpm], options anywhere.
-  std::vector<std::string> positional, sets;
+  std::vector<std::string> positional, sets, versus;
   bool tight = true;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
@@ -171,6 +174,8 @@ int main(int argc, char** argv) try {
       g_angular_velocity_tolerance = std::atof(value());
     } else if (arg == "--set") {
       sets.push_back(value());
+    } else if (arg == "--versus") {
+      versus.push_back(value());
     } else if (arg.rfind("--", 0) == 0) {
       throw std::invalid_argument("unknown option " + arg);
     } else {
@@ -209,6 +214,20 @@ int main(int argc, char** argv) try {
         jfo.wall_time / base.wall_time, jfo.wall_time, base.wall_time,
         static_cast<double>(jfo.stats.steps) / std::max(1L, base.stats.steps), jfo.cycles,
         base.cycles, (jfo.wall_time / jfo.cycles) / (base.wall_time / base.cycles));
+  }
+  if (!versus.empty()) {
+    std::vector<std::string> other_sets = sets;
+    other_sets.insert(other_sets.end(), versus.begin(), versus.end());
+    const io::LoadedCase other_case = io::LoadCase("", other_sets);
+    const engine::RunResult other =
+        Run(other_case, model, rpm, s.relative_tolerance, s.position_tolerance, "versus");
+    std::printf(
+        "versus / case: %s; wall time %.2f (%.2f s / %.2f s), steps %.2f, cycles %d / %d, per "
+        "cycle %.2f\n",
+        engine::StatusName(other.status).c_str(), other.wall_time / base.wall_time, other.wall_time,
+        base.wall_time, static_cast<double>(other.stats.steps) / std::max(1L, base.stats.steps),
+        other.cycles, base.cycles,
+        (other.wall_time / other.cycles) / (base.wall_time / base.cycles));
   }
   if (!tight) return 0;
   const engine::RunResult ref =
