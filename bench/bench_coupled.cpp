@@ -105,8 +105,8 @@ engine::RunResult Run(const io::LoadedCase& loaded, engine::Model model, double 
   }
   c.solver.relative_tolerance = rtol;
   c.solver.position_tolerance = ptol;
-  engine::RunConfig config =
-      engine::MakeRunConfig(c, model, rpm, io::PressureCurveForSpeed(loaded, rpm));
+  engine::RunConfig config = engine::MakeRunConfig(
+      c, model, rpm, io::PressureCurveForSpeed(loaded, rpm), loaded.directory);
   // Overrides of the derived absolute tolerances, scaled like the position tolerance (so the
   // tight run stays 100 x tighter).
   const double scale = ptol / loaded.value.solver.position_tolerance;

@@ -28,7 +28,8 @@ engine::RunConfig BuildRunConfig(const io::LoadedCase& loaded, engine::Model mod
   RequireInRange("--rpm", rpm, 0.0, 30000.0, true, false, "rpm");
   engine::PressureCurve pressure = pressure_csv ? io::ReadPressureCsvFile(*pressure_csv)
                                                 : io::PressureCurveForSpeed(loaded, rpm);
-  engine::RunConfig config = engine::MakeRunConfig(loaded.value, model, rpm, std::move(pressure));
+  engine::RunConfig config =
+      engine::MakeRunConfig(loaded.value, model, rpm, std::move(pressure), loaded.directory);
   if (time_limit != 0.0) {
     RequirePositive("--time-limit", time_limit, "s");
     config.wall_time_limit = time_limit;

@@ -413,6 +413,14 @@ CaseField Text(std::string path, std::string EngineCase::*member, const Info& in
   return f;
 }
 
+template <class Section>
+CaseField Text(std::string path, Section EngineCase::*section, std::string Section::*member,
+               const Info& info) {
+  CaseField f = Base(std::move(path), FieldKind::kText, info);
+  f.text = [section, member](EngineCase& c) -> std::string& { return c.*section.*member; };
+  return f;
+}
+
 // The short label of every field (CaseField::symbol): the paper's symbol where it has one, a
 // few words otherwise; those of the two joints say which joint where the symbol alone does not.
 void SetSymbols(std::vector<CaseField>& fields) {
@@ -491,6 +499,7 @@ void SetSymbols(std::vector<CaseField>& fields) {
       {"big_end.supply", "big-end oil supply"},
       {"big_end.compliance", "big-end surfaces"},
       {"big_end.layer_thickness", "t_lining"},
+      {"big_end.compliance_file", "big-end compliance file"},
       {"big_end.supply_pressure_angles", "supply-pressure curve"},
       {"big_end.supply_pressure_values", "supply-pressure curve"},
       {"big_end.supply_hole_angles", "supply-hole angles"},
@@ -692,6 +701,11 @@ void SetDescriptions(std::vector<CaseField>& fields) {
       {"big_end.layer_thickness",
        "Thickness of the bearing lining that deforms with the elastic-layer model (the backing "
        "behind it is taken as rigid)."},
+      {"big_end.compliance_file",
+       "The bearing's compliance computed by a finite-element program, for the \"imported\" "
+       "model: a Matrix Market file beside the case (its nodes in the file of the same name "
+       "ending .nodes.csv; the format is described in the documentation's compliance-files "
+       "page)."},
       {"big_end.supply",
        "Where oil enters the big-end film. \"line_of_centres\": no supply modelled, the film "
        "simply starts where the gap is widest (as the paper and the classic bearing tables do). "
@@ -1032,21 +1046,31 @@ std::vector<CaseField> MakeSchema() {
   }
   {
     using lubrication::ComplianceModel;
-    f.push_back(Choice("big_end.compliance", be, &B::compliance,
-                       {ToString(ComplianceModel::kRigid), ToString(ComplianceModel::kElasticLayer),
-                        ToString(ComplianceModel::kHalfSpace)},
-                       {G::kBigEnd,
-                        "Surface compliance",
-                        "",
-                        "",
-                        1.0,
-                        {},
-                        "\"rigid\" (the paper's), \"elastic_layer\" (the lining on a rigid "
-                        "backing) or \"half_space\" (journal and bearing)"}));
+    f.push_back(
+        Choice("big_end.compliance", be, &B::compliance,
+               {ToString(ComplianceModel::kRigid), ToString(ComplianceModel::kElasticLayer),
+                ToString(ComplianceModel::kHalfSpace), ToString(ComplianceModel::kImported)},
+               {G::kBigEnd,
+                "Surface compliance",
+                "",
+                "",
+                1.0,
+                {},
+                "\"rigid\" (the paper's), \"elastic_layer\" (the lining on a rigid "
+                "backing) \"half_space\" (journal and bearing) or \"imported\" (a finite-element "
+                "compliance file)"}));
   }
   f.push_back(Scalar("big_end.layer_thickness", be, &B::layer_thickness,
                      {G::kBigEnd, "Lining thickness (elastic layer)", "m", "mm", kMm,
                       Open(0.0, 1.0, true, false), "of the bearing lining on its rigid backing"}));
+  f.push_back(Text("big_end.compliance_file", be, &B::compliance_file,
+                   {G::kBigEnd,
+                    "Compliance file (imported)",
+                    "",
+                    "",
+                    1.0,
+                    {},
+                    "Matrix Market file beside the case; nodes in <name>.nodes.csv"}));
   f.push_back(Scalar("big_end.oil_feed_pressure", be, &B::oil_feed_pressure,
                      {G::kBigEnd, "Oil-supply pressure (gauge)", "Pa", "MPa", kMPa, GaugePressure(),
                       "at the holes or groove (constant; see supply_pressure_* for a curve)"}));
@@ -1377,6 +1401,9 @@ std::string UnusedReason(const EngineCase& c, const std::string& path) {
   if (path == "skirt.layer_thickness" &&
       c.skirt.compliance != lubrication::ComplianceModel::kElasticLayer)
     return "the skirt surfaces are not an elastic layer";
+  if (path == "big_end.compliance_file" &&
+      c.big_end.compliance != lubrication::ComplianceModel::kImported)
+    return "the big-end compliance is not imported";
   if (path == "big_end.layer_thickness" &&
       c.big_end.compliance != lubrication::ComplianceModel::kElasticLayer)
     return "the big-end surfaces are not an elastic layer";

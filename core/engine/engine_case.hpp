@@ -128,6 +128,10 @@ struct BigEndCase {
   /// elastic half-spaces (E_j, ν_j, E_b, ν_b).
   lubrication::ComplianceModel compliance = lubrication::ComplianceModel::kRigid;
   double layer_thickness = 0.3e-3;   ///< lining thickness [m] (assumed: a typical lining)
+  /// Imported compliance: the Matrix Market file (its nodes in the same name with .nodes.csv),
+  /// relative to the case file's folder (docs/compliance-files.md); the nodes' psi from the rod
+  /// axis toward the small end, counter-clockwise.
+  std::string compliance_file;
   double boundary_friction = 0.13;   ///< μ_f [-]
   /// Oil supply (lubrication::OilFeed): the film start at the line of centres (the paper's, no
   /// supply hardware), holes in the shell (fixed in the rod) or in the crank pin (turning with

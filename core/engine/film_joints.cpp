@@ -113,7 +113,8 @@ bool BigEndSolvesSymmetricHalf(const BigEndCase& be) {
   return be.mesh_z % 2 == 0 && be.mesh_z >= 4;
 }
 
-lubrication::BearingConfig BearingConfigFromCase(const EngineCase& c) {
+lubrication::BearingConfig BearingConfigFromCase(const EngineCase& c,
+                                                 const std::filesystem::path& case_directory) {
   const BigEndCase& be = c.big_end;
   lubrication::BearingConfig config;
   const JointFit fit = BigEndFit(c);
@@ -151,6 +152,23 @@ lubrication::BearingConfig BearingConfigFromCase(const EngineCase& c) {
   config.compliance.poisson1 = be.poisson_journal;
   config.compliance.modulus2 = be.modulus_bearing;
   config.compliance.poisson2 = be.poisson_bearing;
+  if (be.compliance == lubrication::ComplianceModel::kImported) {
+    if (be.compliance_file.empty()) {
+      throw InputError("big_end.compliance_file", "\"\"",
+                       "a Matrix Market file (with its .nodes.csv beside it) when "
+                       "big_end.compliance is \"imported\"");
+    }
+    std::filesystem::path matrix(be.compliance_file);
+    if (matrix.is_relative() && !case_directory.empty()) matrix = case_directory / matrix;
+    std::filesystem::path nodes = matrix;
+    nodes.replace_extension(".nodes.csv");
+    if (!std::filesystem::exists(matrix)) {
+      throw InputError("big_end.compliance_file", "\"" + be.compliance_file + "\"",
+                       "an existing file (looked for " + matrix.string() + ")");
+    }
+    config.compliance.imported = std::make_shared<const lubrication::ImportedCompliance>(
+        lubrication::ReadImportedCompliance(matrix.string(), nodes.string()));
+  }
   lubrication::SurfacePair pair;
   pair.sigma1 = be.roughness_journal;
   pair.sigma2 = be.roughness_bearing;
@@ -166,18 +184,21 @@ lubrication::BearingConfig BearingConfigFromCase(const EngineCase& c) {
   return config;
 }
 
-std::unique_ptr<multibody::JointForceElement> MakeLubricatedBigEnd(const EngineCase& c,
-                                                                   const CrankTrainLayout& layout) {
+std::unique_ptr<multibody::JointForceElement> MakeLubricatedBigEnd(
+    const EngineCase& c, const CrankTrainLayout& layout,
+    const std::filesystem::path& case_directory) {
   coupling::BigEndMounting mount;
   mount.journal_point = layout.crank_pin;
   mount.bearing_point = layout.rod_big_end;
-  lubrication::BearingConfig config = BearingConfigFromCase(c);
+  lubrication::BearingConfig config = BearingConfigFromCase(c, case_directory);
   // The case's supply angles are measured from the rod axis (toward the small end) and from the
   // crank web's axis (main journal to pin); the solver's, from each body's own x axis.
   auto axis_angle = [](const Eigen::Vector2d& from, const Eigen::Vector2d& to) {
     return std::atan2(to.y() - from.y(), to.x() - from.x());
   };
   const double rod_axis = axis_angle(layout.rod_big_end, layout.rod_small_end);
+  // An imported compliance's nodes are placed from the rod axis too.
+  config.compliance.imported_reference_angle = rod_axis;
   const double web_axis = axis_angle(layout.crank_main_journal, layout.crank_pin);
   const bool pin = config.feed.kind == lubrication::OilFeedKind::kPinHoles;
   for (double& a : config.feed.hole_angles) a += pin ? web_axis : rod_axis;
@@ -196,10 +217,12 @@ std::unique_ptr<multibody::JointForceElement> MakeLubricatedBigEnd(const EngineC
   return element;
 }
 
-LubricatedJointFactories FilmJointFactories() {
+LubricatedJointFactories FilmJointFactories(const std::filesystem::path& case_directory) {
   LubricatedJointFactories f;
   f.skirt = &MakeLubricatedSkirt;
-  f.big_end = &MakeLubricatedBigEnd;
+  f.big_end = [case_directory](const EngineCase& c, const CrankTrainLayout& layout) {
+    return MakeLubricatedBigEnd(c, layout, case_directory);
+  };
   return f;
 }
 

@@ -2,6 +2,7 @@
 /// @file The lubricated joints of a case: the mapping from the case's skirt, big-end, lubricant
 /// and surface fields to the coupling elements' plain solver configurations and mountings, and
 /// the factories BuildCrankTrain uses for the lubricated models.
+#include <filesystem>
 #include <memory>
 #include <string>
 
@@ -28,15 +29,19 @@ lubrication::SkirtConfig SkirtConfigFromCase(const EngineCase& engine_case);
 /// keeps the journal parallel to the bearing and every feed on the mid-plane, so the film is
 /// symmetric about it; an even axial count of at least 4 has a node row there.
 bool BigEndSolvesSymmetricHalf(const BigEndCase& big_end);
-/// The bearing solver configuration of a case (SurfaceModel from roughness, E and ν, μ_f, K).
-lubrication::BearingConfig BearingConfigFromCase(const EngineCase& engine_case);
+/// The bearing solver configuration of a case (SurfaceModel from roughness, E and ν, μ_f, K). An
+/// imported compliance is read from `big_end.compliance_file`, a relative name resolved against
+/// `case_directory` (empty: the working directory).
+lubrication::BearingConfig BearingConfigFromCase(const EngineCase& engine_case,
+                                                 const std::filesystem::path& case_directory = {});
 
 /// The lubricated skirt element of a case (liner = ground, the layout's piston).
 std::unique_ptr<multibody::JointForceElement> MakeLubricatedSkirt(const EngineCase& engine_case,
                                                                   const CrankTrainLayout& layout);
 /// The lubricated big-end element of a case (journal on the crank, bearing on the rod).
-std::unique_ptr<multibody::JointForceElement> MakeLubricatedBigEnd(const EngineCase& engine_case,
-                                                                   const CrankTrainLayout& layout);
+std::unique_ptr<multibody::JointForceElement> MakeLubricatedBigEnd(
+    const EngineCase& engine_case, const CrankTrainLayout& layout,
+    const std::filesystem::path& case_directory = {});
 /// The film meshes of a case in words, e.g. "skirt 15 + 2 + 15 x 20 elements; big end 100 x 10
 /// elements, graded 8:1 around and 4:1 across".
 std::string DescribeMeshes(const EngineCase& engine_case);
@@ -44,6 +49,6 @@ std::string DescribeMeshes(const EngineCase& engine_case);
 void UsePaperMeshes(EngineCase* engine_case);
 
 /// Both factories: what RunConfig uses for the lubricated models.
-LubricatedJointFactories FilmJointFactories();
+LubricatedJointFactories FilmJointFactories(const std::filesystem::path& case_directory = {});
 
 }  // namespace filmdyn::engine

@@ -81,14 +81,14 @@ std::string StatusName(RunStatus status) {
 }
 
 RunConfig MakeRunConfig(const EngineCase& engine_case, Model model, double rpm,
-                        PressureCurve pressure) {
+                        PressureCurve pressure, const std::filesystem::path& case_directory) {
   RunConfig config;
   config.engine_case = engine_case;
   ApplyModel(model, &config.engine_case);
   config.model = model;
   config.rpm = rpm;
   config.pressure = std::move(pressure);
-  config.factories = FilmJointFactories();
+  config.factories = FilmJointFactories(case_directory);
   const SolverCase& s = engine_case.solver;
   config.integrator.relative_tolerance = s.relative_tolerance;
   config.integrator.position_tolerance = s.position_tolerance;

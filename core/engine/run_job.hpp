@@ -3,6 +3,7 @@
 /// may stop the run, an atomic cancel flag. The CLI (`filmdyn run`) and the GUI worker make the
 /// same call; only the monitor differs.
 #include <atomic>
+#include <filesystem>
 #include <functional>
 #include <numbers>
 #include <optional>
@@ -83,8 +84,9 @@ struct RunConfig {
 void CheckRunMemory(const RunConfig& config);
 
 /// Fills the integrator tolerances from the case's solver section.
+/// `case_directory`: where the case's relative file names (an imported compliance) resolve.
 RunConfig MakeRunConfig(const EngineCase& engine_case, Model model, double rpm,
-                        PressureCurve pressure);
+                        PressureCurve pressure, const std::filesystem::path& case_directory = {});
 
 /// What the monitor sees after each output step.
 struct RunProgress {

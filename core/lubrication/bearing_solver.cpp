@@ -321,7 +321,8 @@ const BearingResult& BearingSolver::SolveStep(const BearingState& s, double time
   params.time_step = time_step;
   // An imported compliance is fixed in the bearing body: the film's theta = 0 lies at the body
   // angle phi + pi - (bearing orientation).
-  elastic_.SetOffset(R * WrapTwoPi(s.line_of_centres_angle + kPi - s.bearing_angle));
+  elastic_.SetOffset(R * WrapTwoPi(s.line_of_centres_angle + kPi - s.bearing_angle -
+                                   config_.compliance.imported_reference_angle));
   const ElasticSolveStats& elastic = elastic_.Solve(fem_, params);
   const ReynoldsSolution& sol = fem_.solution();
 

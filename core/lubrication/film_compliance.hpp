@@ -41,8 +41,10 @@ struct ComplianceSpec {
   double layer_poisson = 0.3;    ///< elastic layer: lining Poisson ratio nu, in (-1, 0.5)
   /// Half-space: the two surfaces' Young's moduli [Pa] and Poisson ratios.
   double modulus1 = 0.0, poisson1 = 0.3, modulus2 = 0.0, poisson2 = 0.3;
-  /// Imported: the FE surface's compliance (ReadImportedCompliance).
+  /// Imported: the FE surface's compliance (ReadImportedCompliance), and for a bearing the body
+  /// angle [rad] of its nodes' psi = 0 (0: the bearing body's own x axis).
   std::shared_ptr<const ImportedCompliance> imported;
+  double imported_reference_angle = 0.0;
   /// Converged when max_k |delta_k - (C P)_k| <= tolerance * min_k h_k (the film right to this
   /// fraction of the thinnest film).
   double tolerance = 1e-4;
