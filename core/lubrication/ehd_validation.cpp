@@ -72,18 +72,9 @@ ElasticSliderReference ElasticSliderByShooting(const InclinedSlider& s, double l
 
 ElasticSliderFem SolveElasticSliderFem(const InclinedSlider& s, double thickness, double modulus,
                                        double poisson, int n) {
-  const double width = 1e-4;
-  ReynoldsFem fem(MakeStripMesh(s.length, n, width), 0, ReynoldsOptions{});
+  SliderStrip strip = MakeSliderStrip(s, n);
+  ReynoldsFem& fem = *strip.fem;
   const TriMesh& m = fem.mesh();
-  for (int k = 0; k < m.NodeCount(); ++k) {
-    fem.film_thickness()[k] = s.h_inlet + (s.h_outlet - s.h_inlet) * m.x[k] / s.length;
-    fem.film_rate()[k] = 0.0;
-    fem.boundary_pressure()[k] = 0.0;
-  }
-  ReynoldsParams params;
-  params.viscosity = s.viscosity;
-  params.u_sum = s.speed;
-  params.u_diff = s.speed;
   ComplianceSpec spec;
   spec.model = ComplianceModel::kElasticLayer;
   spec.layer_thickness = thickness;
@@ -91,10 +82,10 @@ ElasticSliderFem SolveElasticSliderFem(const InclinedSlider& s, double thickness
   spec.layer_poisson = poisson;
   spec.tolerance = 1e-8;  // the film to 1e-8 of its thinnest: below the comparison's tolerance
   ElasticFilm film(SurfaceCompliance::Build(spec, m, std::nullopt), spec);
-  const ElasticSolveStats& stats = film.Solve(fem, params);
+  const ElasticSolveStats& stats = film.Solve(fem, strip.params);
   ElasticSliderFem out;
   out.converged = stats.converged;
-  out.load = fem.Integrate(fem.solution().pressure) / width;
+  out.load = fem.Integrate(fem.solution().pressure) / SliderStrip::kStripWidth;
   out.peak_pressure = fem.solution().pressure.maxCoeff();
   out.max_deformation = stats.max_deformation;
   return out;

@@ -56,25 +56,31 @@ double InclinedSlider::ShearThinningLoad(const CrossLaw& law) const {
   });
 }
 
-SliderFem SolveSliderFem(const InclinedSlider& s, const PressureViscosity& law, int n,
-                         const CrossLaw* shear) {
-  const double width = 1e-4;
-  ReynoldsFem fem(MakeStripMesh(s.length, n, width), 0, ReynoldsOptions{});
+SliderStrip MakeSliderStrip(const InclinedSlider& s, int n) {
+  SliderStrip strip;
+  strip.fem = std::make_unique<ReynoldsFem>(MakeStripMesh(s.length, n, SliderStrip::kStripWidth), 0,
+                                            ReynoldsOptions{});
+  ReynoldsFem& fem = *strip.fem;
   const TriMesh& m = fem.mesh();
   for (int k = 0; k < m.NodeCount(); ++k) {
     fem.film_thickness()[k] = s.h_inlet + (s.h_outlet - s.h_inlet) * m.x[k] / s.length;
     fem.film_rate()[k] = 0.0;
     fem.boundary_pressure()[k] = 0.0;
   }
-  ReynoldsParams params;
-  params.viscosity = s.viscosity;
-  params.u_sum = s.speed;
-  params.u_diff = s.speed;
-  params.pressure_viscosity = &law;
-  params.shear_thinning = shear;
-  const ReynoldsSolution& sol = fem.Solve(params);
+  strip.params.viscosity = s.viscosity;
+  strip.params.u_sum = s.speed;
+  strip.params.u_diff = s.speed;
+  return strip;
+}
+
+SliderFem SolveSliderFem(const InclinedSlider& s, const PressureViscosity& law, int n,
+                         const CrossLaw* shear) {
+  SliderStrip strip = MakeSliderStrip(s, n);
+  strip.params.pressure_viscosity = &law;
+  strip.params.shear_thinning = shear;
+  const ReynoldsSolution& sol = strip.fem->Solve(strip.params);
   SliderFem out;
-  out.load = fem.Integrate(sol.pressure) / width;
+  out.load = strip.fem->Integrate(sol.pressure) / SliderStrip::kStripWidth;
   out.peak_pressure = sol.pressure.maxCoeff();
   return out;
 }

@@ -3,10 +3,12 @@
 /// `filmdyn validate`, docs/validation/lubricant.md): the plane inclined slider with Barus
 /// viscosity against its semi-analytic solution, and Roelands' reduced pressure against an
 /// independent adaptive quadrature.
+#include <memory>
 #include <vector>
 
 #include "core/base/validation_row.hpp"
 #include "core/lubrication/oil.hpp"
+#include "core/lubrication/reynolds_fem.hpp"
 
 namespace filmdyn::lubrication {
 
@@ -30,6 +32,16 @@ struct InclinedSlider {
   /// quadrature [N/m].
   double ShearThinningLoad(const CrossLaw& law) const;
 };
+
+/// The slider on a strip of n elements along x (width kStripWidth, no flow across it): the
+/// solver with the rigid film, zero squeeze and p = 0 at both ends set, and its parameters
+/// (isoviscous, no pressure or shear law).
+struct SliderStrip {
+  static constexpr double kStripWidth = 1e-4;  ///< [m]
+  std::unique_ptr<ReynoldsFem> fem;
+  ReynoldsParams params;
+};
+SliderStrip MakeSliderStrip(const InclinedSlider& slider, int n);
 
 /// Load per unit width and peak pressure of the slider solved by ReynoldsFem on a strip of n
 /// elements along x.
