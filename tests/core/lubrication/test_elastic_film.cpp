@@ -381,7 +381,7 @@ class TestElasticFilm : public QObject {
         s.eps = eps;
         const BearingResult& r = solver.Solve(s);
         QVERIFY(r.elastic.converged);
-        const FdBearing fd = SolveFd(0.025, 0.02, 25e-6, 0.01, omega, eps, layer, 240, 24);
+        const FdBearing fd = SolveFd(0.025, 0.02, 25e-6, 0.01, omega, eps, layer, 160, 16);
         const double load_err = r.load / fd.load - 1.0;
         const double att_err = r.attitude_deg / fd.attitude_deg - 1.0;
         qInfo(
