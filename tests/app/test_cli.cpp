@@ -428,6 +428,46 @@ class TestCli : public QObject {
 
   // The calculator's oil options: the viscosity a Vogel law gives at the temperature (reported
   // as viscosity_used), Barus raising the load, and clear errors for what does not fit.
+  // Elastic surfaces in the calculator: an elastic lining, the half-space, an imported FE
+  // compliance (the shipped CalculiX shell); --json says the model and max_deformation [m]; bad
+  // values name the option, a bad file names the file.
+  void bearingSolvesElasticSurfaces() {
+    const Result rigid = Run({"bearing", "--eps", "0.8", "--mesh", "96x16", "--json"});
+    QCOMPARE(rigid.exit_code, 0);
+    const QJsonObject r = QJsonDocument::fromJson(rigid.out.toUtf8()).object();
+    QCOMPARE(r["compliance"].toString(), QString("rigid"));
+    QCOMPARE(r["max_deformation"].toDouble(), 0.0);
+    const Result layer = Run({"bearing", "--eps", "0.8", "--mesh", "96x16", "--elastic-layer",
+                              "2e-3,3e9,0.3", "--json"});
+    QVERIFY2(layer.exit_code == 0, qPrintable(layer.err));
+    const QJsonObject l = QJsonDocument::fromJson(layer.out.toUtf8()).object();
+    QCOMPARE(l["compliance"].toString(), QString("elastic_layer"));
+    QVERIFY(l["max_deformation"].toDouble() > 0.1e-6);
+    QVERIFY(l["load"].toDouble() < 0.98 * r["load"].toDouble());  // the film opens
+    QVERIFY(l["elastic_residual"].toDouble() <= l["elastic_tolerance"].toDouble());
+    const Result half =
+        Run({"bearing", "--eps", "0.8", "--mesh", "96x16", "--half-space", "--json"});
+    QVERIFY2(half.exit_code == 0, qPrintable(half.err));
+    QCOMPARE(QJsonDocument::fromJson(half.out.toUtf8()).object()["compliance"].toString(),
+             QString("half_space"));
+    const QString shell =
+        QString(FILMDYN_SOURCE_DIR) + "/examples/calculix-bearing-shell/shell_compliance.mtx";
+    const Result fe = Run({"bearing", "--eps", "0.8", "--radius", "0.015", "--length", "0.022",
+                           "--mesh", "96x16", "--compliance", shell, "--json"});
+    QVERIFY2(fe.exit_code == 0, qPrintable(fe.err));
+    const QJsonObject f = QJsonDocument::fromJson(fe.out.toUtf8()).object();
+    QCOMPARE(f["compliance"].toString(), QString("imported"));
+    QVERIFY(f["max_deformation"].toDouble() > 0.0);
+    const Result nu = Run({"bearing", "--eps", "0.8", "--elastic-layer", "1e-3,10e9,0.5"});
+    QVERIFY(nu.exit_code != 0 && nu.err.contains("--elastic-layer NU"));
+    const Result both =
+        Run({"bearing", "--eps", "0.8", "--elastic-layer", "1e-3,10e9,0.3", "--half-space"});
+    QVERIFY(both.exit_code != 0 && both.err.contains("one of --elastic-layer"));
+    const Result missing = Run({"bearing", "--eps", "0.8", "--compliance", "/nonexistent/c.mtx"});
+    QVERIFY2(missing.exit_code != 0 && missing.err.contains("/nonexistent/c"),
+             qPrintable(missing.err));
+  }
+
   void bearingTakesOilTemperatureAndPressureLaws() {
     const Result vogel = Run(
         {"bearing", "--eps", "0.6", "--vogel", "6.9e-5,1050,165", "--temperature", "90", "--json"});
