@@ -37,12 +37,24 @@ Films FilmsOf(const EngineCase& c) {
   return {c.skirt.model == JointModel::kLubricated, c.big_end.model == JointModel::kLubricated};
 }
 
+// The dense half-space compliance of a film of n nodes (lubrication::SurfaceCompliance):
+// n^2 doubles. Imported compliances are counted by their files' size when read, not here.
+double ComplianceBytes(lubrication::ComplianceModel model, double n) {
+  return model == lubrication::ComplianceModel::kHalfSpace ? n * n * sizeof(double) : 0.0;
+}
+
 double SolverBytes(const EngineCase& c) {
   const FilmMeshSizes m = FilmMeshSizesOf(c);
   const Films films = FilmsOf(c);
   double bytes = 0.0;
-  if (films.skirt) bytes += 2.0 * SystemBytes(m.skirt_unknowns / 2.0);
-  if (films.big_end) bytes += SystemBytes(m.big_end_unknowns);
+  if (films.skirt) {
+    bytes += 2.0 * SystemBytes(m.skirt_unknowns / 2.0);
+    bytes += 2.0 * ComplianceBytes(c.skirt.compliance, m.skirt_unknowns / 2.0);
+  }
+  if (films.big_end) {
+    bytes += SystemBytes(m.big_end_unknowns);
+    bytes += ComplianceBytes(c.big_end.compliance, m.big_end_unknowns);
+  }
   return bytes;
 }
 

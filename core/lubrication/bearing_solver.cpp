@@ -51,6 +51,8 @@ void BearingConfig::Validate(const std::string& prefix) const {
                                   .tolerance = prefix + ".elastic_tolerance",
                                   .max_iterations = prefix + ".elastic_max_iterations",
                                   .imported = prefix + ".compliance_file"});
+  RequireHalfSpaceSize(compliance, long(mesh.n_theta) * (mesh.n_z + 1), prefix + ".compliance",
+                       "the mesh (" + prefix + ".mesh)");
 }
 
 void ValidateOilFeed(const OilFeed& feed, double radius, double width, const OilFeedFields& names) {

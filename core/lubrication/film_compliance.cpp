@@ -65,6 +65,15 @@ void ValidateCompliance(const ComplianceSpec& s, const ComplianceFields& names) 
   RequireInRange(names.max_iterations, s.max_iterations, 1, 1000);
 }
 
+void RequireHalfSpaceSize(const ComplianceSpec& spec, long nodes, const std::string& field,
+                          const std::string& mesh_fields) {
+  if (spec.model != ComplianceModel::kHalfSpace || nodes <= kMaxHalfSpaceNodes) return;
+  throw InputError(field, "\"half_space\" on a film of " + std::to_string(nodes) + " nodes",
+                   "a film of at most " + std::to_string(kMaxHalfSpaceNodes) +
+                       " nodes (its influence matrix is dense): coarsen " + mesh_fields +
+                       " or choose \"elastic_layer\"");
+}
+
 double LayerCompliance(double t, double e, double nu) {
   return t * (1.0 + nu) * (1.0 - 2.0 * nu) / (e * (1.0 - nu));
 }
@@ -147,37 +156,58 @@ SurfaceCompliance SurfaceCompliance::Build(const ComplianceSpec& spec, const Tri
     if (dx < -0.5 * period) dx += period;
     return dx;
   };
-  Eigen::MatrixXd c(n, n);
-  for (int jr = 0; jr < ny; ++jr) {
-    for (int ir = 0; ir < nx; ++ir) {
-      const int r = mesh.Node(ir, jr);
-      const double yr0 = mesh.y_lines[jr];
-      for (int js = 0; js < ny; ++js) {
-        for (int is = 0; is < nx; ++is) {
-          const double dx = wrap(mesh.x_lines[is] - mesh.x_lines[ir]);
-          const double x1 = dx + (xl[is] - mesh.x_lines[is]);
-          const double x2 = dx + (xr[is] - mesh.x_lines[is]);
-          const double y1 = yl[js] - yr0, y2 = yr[js] - yr0;
-          double v = BoussinesqRectangle(x1, x2, y1, y2);
-          // The mirror images of the source cell: about y = mirror_y, x = mirror_x, and both.
-          double mx1 = 0.0, mx2 = 0.0, my1 = 0.0, my2 = 0.0;
-          if (mirror_x) {
-            const double xr0 = mesh.x_lines[ir];
-            mx1 = 2.0 * *mirror_x - xr[is] - xr0;
-            mx2 = 2.0 * *mirror_x - xl[is] - xr0;
-            v += BoussinesqRectangle(mx1, mx2, y1, y2);
-          }
-          if (mirror_y) {
-            my1 = 2.0 * *mirror_y - yr[js] - yr0;
-            my2 = 2.0 * *mirror_y - yl[js] - yr0;
-            v += BoussinesqRectangle(x1, x2, my1, my2);
-          }
-          if (mirror_x && mirror_y) v += BoussinesqRectangle(mx1, mx2, my1, my2);
-          c(r, mesh.Node(is, js)) = scale * v;
-        }
-      }
+  // One coefficient: receiver (ir, jr), source cell (is, js) and its mirror images.
+  auto coefficient = [&](int ir, int jr, int is, int js) {
+    const double yr0 = mesh.y_lines[jr];
+    const double dx = wrap(mesh.x_lines[is] - mesh.x_lines[ir]);
+    const double x1 = dx + (xl[is] - mesh.x_lines[is]);
+    const double x2 = dx + (xr[is] - mesh.x_lines[is]);
+    const double y1 = yl[js] - yr0, y2 = yr[js] - yr0;
+    double v = BoussinesqRectangle(x1, x2, y1, y2);
+    // The mirror images of the source cell: about y = mirror_y, x = mirror_x, and both.
+    double mx1 = 0.0, mx2 = 0.0, my1 = 0.0, my2 = 0.0;
+    if (mirror_x) {
+      const double xr0 = mesh.x_lines[ir];
+      mx1 = 2.0 * *mirror_x - xr[is] - xr0;
+      mx2 = 2.0 * *mirror_x - xl[is] - xr0;
+      v += BoussinesqRectangle(mx1, mx2, y1, y2);
     }
+    if (mirror_y) {
+      my1 = 2.0 * *mirror_y - yr[js] - yr0;
+      my2 = 2.0 * *mirror_y - yl[js] - yr0;
+      v += BoussinesqRectangle(x1, x2, my1, my2);
+    }
+    if (mirror_x && mirror_y) v += BoussinesqRectangle(mx1, mx2, my1, my2);
+    return scale * v;
+  };
+  // A uniform periodic mesh (a bearing without circumferential grading) is invariant under
+  // turning: the coefficient depends on the column difference only, nx ny^2 of them instead of
+  // (nx ny)^2.
+  bool uniform = mesh.periodic_x;
+  for (int i = 0; uniform && i < nx; ++i)
+    uniform = std::abs(mesh.ColumnWidth(i) - mesh.ColumnWidth(0)) <= 1e-12 * mesh.ColumnWidth(0);
+  Eigen::MatrixXd c(n, n);
+  if (uniform) {
+    std::vector<double> table(static_cast<std::size_t>(nx) * ny * ny);
+    for (int d = 0; d < nx; ++d)
+      for (int jr = 0; jr < ny; ++jr)
+        for (int js = 0; js < ny; ++js)
+          table[(static_cast<std::size_t>(d) * ny + jr) * ny + js] = coefficient(0, jr, d, js);
+    for (int jr = 0; jr < ny; ++jr)
+      for (int ir = 0; ir < nx; ++ir)
+        for (int js = 0; js < ny; ++js)
+          for (int is = 0; is < nx; ++is) {
+            const int d = (is - ir + nx) % nx;
+            c(mesh.Node(ir, jr), mesh.Node(is, js)) =
+                table[(static_cast<std::size_t>(d) * ny + jr) * ny + js];
+          }
+    return Dense(std::move(c));
   }
+  for (int jr = 0; jr < ny; ++jr)
+    for (int ir = 0; ir < nx; ++ir)
+      for (int js = 0; js < ny; ++js)
+        for (int is = 0; is < nx; ++is)
+          c(mesh.Node(ir, jr), mesh.Node(is, js)) = coefficient(ir, jr, is, js);
   return Dense(std::move(c));
 }
 

@@ -66,6 +66,14 @@ struct ComplianceFields {
 /// fields are checked.
 void ValidateCompliance(const ComplianceSpec& spec, const ComplianceFields& names);
 
+/// The largest film (nodes) the half-space model takes: its influence matrix is dense (8 n^2
+/// bytes: 800 MB here, and n^2 of Love's rectangles to build).
+inline constexpr long kMaxHalfSpaceNodes = 10000;
+/// Throws InputError naming `field` when the half-space model is chosen for a film of more than
+/// kMaxHalfSpaceNodes nodes (`mesh_fields` names the mesh to coarsen).
+void RequireHalfSpaceSize(const ComplianceSpec& spec, long nodes, const std::string& field,
+                          const std::string& mesh_fields);
+
 /// The elastic layer's compliance t (1 + nu)(1 - 2 nu) / (E (1 - nu)) [m/Pa].
 double LayerCompliance(double thickness, double modulus, double poisson);
 /// The pair's 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2 [1/Pa].

@@ -55,6 +55,9 @@ void SkirtConfig::Validate(const std::string& prefix) const {
                                   .tolerance = prefix + ".elastic_tolerance",
                                   .max_iterations = prefix + ".elastic_max_iterations",
                                   .imported = prefix + ".compliance_file"});
+  RequireHalfSpaceSize(compliance,
+                       long(std::max(mesh.n_thrust, mesh.n_anti) + 1) * (mesh.n_axial + 1),
+                       prefix + ".compliance", "the mesh (" + prefix + ".mesh)");
 }
 
 void SkirtState::Validate(const std::string& prefix) const {
