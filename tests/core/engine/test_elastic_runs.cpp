@@ -1,0 +1,135 @@
+// Engine runs with elastic surfaces (docs/validation/ehd.md, "Engine runs"): an elastic-layer
+// big end and skirt, and the shipped CalculiX shell as the big end's compliance. A suite of its
+// own: the thread-sanitizer check runs test_run_job's threaded suite, and these runs (each a
+// coupled film solve per evaluation) would take it past its time limit.
+#include <QtTest>
+
+#include <algorithm>
+#include <string>
+
+#include "core/base/input_error.hpp"
+#include "core/engine/film_joints.hpp"
+#include "core/engine/run_job.hpp"
+#include "core/io/case_file.hpp"
+#include "core/lubrication/film_compliance.hpp"
+
+using namespace filmdyn;
+
+namespace {
+engine::RunConfig DefaultConfig(double rpm, engine::Model model) {
+  const io::LoadedCase loaded = io::LoadCase({});
+  return engine::MakeRunConfig(loaded.value, model, rpm, io::PressureCurveForSpeed(loaded, rpm));
+}
+}  // namespace
+
+class TestElasticRuns : public QObject {
+  Q_OBJECT
+ private slots:
+  // An elastic-layer big end runs to its periodic state; at every reported sample its largest
+  // deformation is the layer's compliance times the largest film + asperity pressure (the
+  // column model, within the coupled solve's tolerance), and it opens the thinnest film.
+  void elasticLayerBigEndReportsItsDeformation() {
+    double moft[2] = {};
+    for (int k = 0; k < 2; ++k) {
+      engine::RunConfig config = DefaultConfig(3000, engine::Model::kOnlyLbrbe);
+      config.engine_case.solver.error_estimate = 0;
+      engine::BigEndCase& b = config.engine_case.big_end;
+      b.mesh_theta = 48;
+      b.mesh_z = 6;
+      if (k == 1) {
+        b.compliance = lubrication::ComplianceModel::kElasticLayer;
+        b.layer_thickness = 1e-3;
+        b.modulus_bearing = 20e9;
+      }
+      const engine::RunResult r = engine::RunJob(config);
+      QVERIFY2(r.status == engine::RunStatus::kCompleted, r.message.c_str());
+      moft[k] = 1e9;
+      const double layer = lubrication::LayerCompliance(1e-3, 20e9, b.poisson_bearing);
+      double largest = 0.0;
+      for (const auto& s : r.samples) {
+        moft[k] = std::min(moft[k], s.bearing.moft);
+        largest = std::max(largest, s.bearing.max_deformation);
+        if (k == 0) {
+          QCOMPARE(s.bearing.max_deformation, 0.0);
+          continue;
+        }
+        const double tol = 1e-4 * s.bearing.moft;
+        QVERIFY(s.bearing.max_deformation >= layer * s.bearing.max_pressure - tol);
+        QVERIFY(s.bearing.max_deformation <=
+                layer * (s.bearing.max_pressure + s.bearing.max_contact_pressure) + tol);
+      }
+      if (k == 1) {
+        qInfo("largest big-end deformation %.4f um", largest * 1e6);
+        QVERIFY(largest > 0.1e-6);
+      }
+    }
+    qInfo("min big-end MOFT: rigid %.4f um, elastic layer %.4f um", moft[0] * 1e6, moft[1] * 1e6);
+    QVERIFY(std::abs(moft[1] - moft[0]) > 0.01 * moft[0]);
+  }
+
+  // The skirt likewise: an elastic surface layer on the skirt, the largest deformation at each
+  // sample the layer's compliance times the largest film + asperity pressure.
+  void elasticLayerSkirtReportsItsDeformation() {
+    engine::RunConfig config = DefaultConfig(3000, engine::Model::kOnlySkirt);
+    engine::EngineCase& c = config.engine_case;
+    c.solver.error_estimate = 0;
+    c.skirt.compliance = lubrication::ComplianceModel::kElasticLayer;
+    c.skirt.layer_thickness = 2e-3;
+    c.skirt.modulus_skirt = 5e9;
+    const engine::RunResult r = engine::RunJob(config);
+    QVERIFY2(r.status == engine::RunStatus::kCompleted, r.message.c_str());
+    const double layer = lubrication::LayerCompliance(2e-3, 5e9, c.skirt.poisson_skirt);
+    double largest = 0.0;
+    for (const auto& s : r.samples) {
+      largest = std::max(largest, s.skirt.max_deformation);
+      // Each panel's solve holds 1e-4 of its own thinnest film: within 1e-4 of 100 um (no film
+      // on this skirt is thicker).
+      const double tol = 1e-4 * 100e-6;
+      QVERIFY(s.skirt.max_deformation >= layer * s.skirt.max_pressure - tol);
+      QVERIFY2(s.skirt.max_deformation <=
+                   layer * (s.skirt.max_pressure + s.skirt.max_contact_pressure) + tol,
+               qPrintable(QString("at %1: %2 > %3 (p %4, pc %5, moft %6)")
+                              .arg(s.crank_angle)
+                              .arg(s.skirt.max_deformation)
+                              .arg(layer * (s.skirt.max_pressure + s.skirt.max_contact_pressure))
+                              .arg(s.skirt.max_pressure)
+                              .arg(s.skirt.max_contact_pressure)
+                              .arg(s.skirt.moft)));
+    }
+    qInfo("largest skirt deformation %.4f um", largest * 1e6);
+    QVERIFY(largest > 0.1e-6);
+  }
+
+  // The big end with the shipped CalculiX shell's compliance (examples/calculix-bearing-shell)
+  // runs through the run-in to its periodic state and deforms; without a file, or with a file
+  // that is not there, the case is refused naming the field.
+  void importedBigEndComplianceRuns() {
+    engine::RunConfig config = DefaultConfig(3000, engine::Model::kOnlyLbrbe);
+    engine::EngineCase& c = config.engine_case;
+    c.solver.error_estimate = 0;
+    c.big_end.mesh_theta = 48;
+    c.big_end.mesh_z = 6;
+    c.big_end.compliance = lubrication::ComplianceModel::kImported;
+    for (const std::string bad : {"", "no-such-file.mtx"}) {
+      c.big_end.compliance_file = bad;
+      config.factories = engine::FilmJointFactories(FILMDYN_SOURCE_DIR);
+      try {
+        engine::RunJob(config);
+        QFAIL("a missing compliance file was accepted");
+      } catch (const InputError& e) {
+        QCOMPARE(e.field(), std::string("big_end.compliance_file"));
+      }
+    }
+    c.big_end.compliance_file = "examples/calculix-bearing-shell/shell_compliance.mtx";
+    config.factories = engine::FilmJointFactories(FILMDYN_SOURCE_DIR);
+    const engine::RunResult r = engine::RunJob(config);
+    QVERIFY2(r.status == engine::RunStatus::kCompleted, r.message.c_str());
+    double largest = 0.0;
+    for (const auto& s : r.samples) largest = std::max(largest, s.bearing.max_deformation);
+    qInfo("imported big end: largest deformation %.4f um", largest * 1e6);
+    QVERIFY(largest > 0.1e-6);
+  }
+};
+
+QTEST_APPLESS_MAIN(TestElasticRuns)
+#include "test_elastic_runs.moc"
