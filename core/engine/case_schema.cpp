@@ -1057,7 +1057,7 @@ std::vector<CaseField> MakeSchema() {
                 1.0,
                 {},
                 "\"rigid\" (the paper's), \"elastic_layer\" (the lining on a rigid "
-                "backing) \"half_space\" (journal and bearing) or \"imported\" (a finite-element "
+                "backing), \"half_space\" (journal and bearing) or \"imported\" (a finite-element "
                 "compliance file)"}));
   }
   f.push_back(Scalar("big_end.layer_thickness", be, &B::layer_thickness,
