@@ -208,15 +208,9 @@ Command MakeBearingCommand() {
                        "one of --elastic-layer, --half-space or --compliance");
     }
     if (args.Has("compliance")) {
-      const std::string matrix = *args.Value("compliance");
-      const auto dot = matrix.rfind('.');
-      const std::string stem =
-          dot == std::string::npos || matrix.find('/', dot) != std::string::npos
-              ? matrix
-              : matrix.substr(0, dot);
       in.compliance.model = lubrication::ComplianceModel::kImported;
       in.compliance.imported = std::make_shared<const lubrication::ImportedCompliance>(
-          lubrication::ReadImportedCompliance(matrix, stem + ".nodes.csv"));
+          lubrication::ReadImportedCompliance(*args.Value("compliance")));
     }
     if (args.Has("elastic-layer")) {
       const std::string text = *args.Value("elastic-layer");

@@ -160,14 +160,12 @@ lubrication::BearingConfig BearingConfigFromCase(const EngineCase& c,
     }
     std::filesystem::path matrix(be.compliance_file);
     if (matrix.is_relative() && !case_directory.empty()) matrix = case_directory / matrix;
-    std::filesystem::path nodes = matrix;
-    nodes.replace_extension(".nodes.csv");
     if (!std::filesystem::exists(matrix)) {
       throw InputError("big_end.compliance_file", "\"" + be.compliance_file + "\"",
                        "an existing file (looked for " + matrix.string() + ")");
     }
     config.compliance.imported = std::make_shared<const lubrication::ImportedCompliance>(
-        lubrication::ReadImportedCompliance(matrix.string(), nodes.string()));
+        lubrication::ReadImportedCompliance(matrix.string()));
   }
   lubrication::SurfacePair pair;
   pair.sigma1 = be.roughness_journal;

@@ -266,14 +266,13 @@ const ElasticSolveStats& ElasticFilm::Solve(ReynoldsFem& fem, const ReynoldsPara
   const int n = fem.NodeCount();
   if (compliance_.rigid() || !(target_ > 0.0)) {
     delta_.setZero(n);
-    if (fem.film_thickness().minCoeff() <= 0.0) {
+    if (!compliance_.rigid() && fem.film_thickness().minCoeff() <= 0.0) {
       stats_.converged = false;
       stats_.message = "the film is closed (h <= 0) and the surfaces are rigid";
       return stats_;
     }
     fem.Solve(params);
     stats_.film_solves = 1;
-    delta_.setZero(n);
     return stats_;
   }
   h_rigid_ = fem.film_thickness();
@@ -342,7 +341,7 @@ const ElasticSolveStats& ElasticFilm::Finish(ReynoldsFem& fem, const ReynoldsPar
 
 bool ElasticFilm::Newton(ReynoldsFem& fem, const ReynoldsParams& params, std::string& why) {
   const int n = fem.NodeCount();
-  Eigen::VectorXd r(n), r_trial(n), load0(n), step(n), trial(n);
+  Eigen::VectorXd r(n), r_trial(n), cload0(n), step(n), trial(n);
   auto fail = [&](const std::string& reason) {
     why = reason;
     return false;
@@ -366,7 +365,7 @@ bool ElasticFilm::Newton(ReynoldsFem& fem, const ReynoldsParams& params, std::st
                   FormatValue(stats_.tolerance) + " m)");
     }
     // (I - C P') s = -r by GMRES(kKrylov) from s = 0; P' v ~ (P(h + tau v) - P(h)) / tau.
-    load0 = load_;
+    cload0 = cload_;  // C P at the base point: each product differences C P (C is linear)
     const Eigen::VectorXd delta0 = delta_;
     // Right preconditioner: I + C_kk 2 P_k / h_k, the local part of I - C P' with the film's
     // own scaling (a film opened uniformly by dh carries the pressure P (1 - 2 dh / h): p ~
@@ -392,8 +391,7 @@ bool ElasticFilm::Newton(ReynoldsFem& fem, const ReynoldsParams& params, std::st
         break;
       }
       ++stats_.krylov_iterations;
-      compliance_.Apply((load_ - load0) * (scale_ / tau), w);
-      w = v - w;
+      w = v - (scale_ / tau) * (cload_ - cload0);
       for (int i = 0; i <= k; ++i) {  // modified Gram-Schmidt
         hess(i, k) = w.dot(basis[static_cast<std::size_t>(i)]);
         w -= hess(i, k) * basis[static_cast<std::size_t>(i)];

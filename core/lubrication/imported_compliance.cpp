@@ -5,8 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
-#include <map>
 #include <sstream>
 #include <stdexcept>
 
@@ -56,6 +56,14 @@ int IndexOf(const std::vector<double>& lines, double x) {
 }
 
 }  // namespace
+
+std::string NodesFileFor(const std::string& matrix_path) {
+  return std::filesystem::path(matrix_path).replace_extension(".nodes.csv").string();
+}
+
+ImportedCompliance ReadImportedCompliance(const std::string& matrix_path) {
+  return ReadImportedCompliance(matrix_path, NodesFileFor(matrix_path));
+}
 
 ImportedCompliance ReadImportedCompliance(const std::string& matrix_path,
                                           const std::string& nodes_path) {

@@ -36,6 +36,13 @@ struct ImportedCompliance {
   int NodeCount() const { return static_cast<int>(x_lines.size() * y_lines.size()); }
 };
 
+/// The nodes file that goes with a matrix file: its name with the extension replaced by
+/// `.nodes.csv` (housing.mtx -> housing.nodes.csv).
+std::string NodesFileFor(const std::string& matrix_path);
+
+/// Reads the matrix file and its nodes file (NodesFileFor).
+ImportedCompliance ReadImportedCompliance(const std::string& matrix_path);
+
 /// Reads and checks the two files. Throws filmdyn::InputError naming the file, the line and the
 /// value: not Matrix Market, not real, a size that does not match the nodes, entries missing or
 /// not finite, not symmetric, not positive definite; a nodes file without its header, with a row
