@@ -30,8 +30,9 @@ cmake --build "$asan" -j "$jobs"
 echo "sanitizers: ASan + UBSan build done at $(( $(date +%s) - start )) s"
 filmdyn_sanitizer_env
 # The tests labelled 'long' are left out here: the estimate's own test (two full coupled runs at
-# several speeds, ~160 s in Release) and `filmdyn reproduce` (six runs of the paper's study, ~110 s
-# under ASan); their code paths are those of the run-job, coupled-run and CLI tests.
+# several speeds, ~160 s in Release), `filmdyn reproduce` (six runs of the paper's study, ~110 s
+# under ASan) and the engine runs with elastic joints (~120 s under ASan); their code paths are
+# those of the run-job, coupled-run, CLI and elastic-film tests.
 # The GL tests (label 'gl') run without leak detection: Mesa's driver is unloaded at exit and
 # leaves allocations no stack can be attributed to; ASan and UBSan still check them.
 (cd "$asan" && ctest --output-on-failure -j "${FILMDYN_TEST_JOBS:-2}" -LE 'long|gl' --timeout 900)

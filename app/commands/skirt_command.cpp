@@ -117,7 +117,7 @@ Command MakeSkirtCommand() {
       "  filmdyn skirt --map /tmp/map --speed 10 --tilts -5e-4,0,5e-4";
   command.run = [](const Args& args, Streams& streams) {
     const io::LoadedCase loaded = LoadCaseArgument(args, &streams.err);
-    lubrication::SkirtConfig config = engine::SkirtConfigFromCase(loaded.value);
+    lubrication::SkirtConfig config = engine::SkirtConfigFromCase(loaded.value, loaded.directory);
     if (const auto mesh = args.Value("mesh")) config.mesh = ParseSkirtMesh(*mesh);
     const auto speed = args.Double("speed");
     if (!speed) throw InputError("--speed", "(missing)", "give the piston speed [m/s]");

@@ -458,6 +458,7 @@ void SetSymbols(std::vector<CaseField>& fields) {
       {"skirt.poisson_liner", "ν_liner"},
       {"skirt.compliance", "skirt surfaces"},
       {"skirt.layer_thickness", "t_skirt layer"},
+      {"skirt.compliance_file", "skirt compliance file"},
       {"skirt.boundary_friction", "μ_f skirt"},
       {"skirt.cavitation", "skirt cavitation"},
       {"skirt.piston_expansion", "α piston"},
@@ -608,11 +609,17 @@ void SetDescriptions(std::vector<CaseField>& fields) {
        "not (as in the paper). \"elastic_layer\": the skirt's surface layer, of the given "
        "thickness, is squeezed point by point against a rigid body (its Young's modulus and "
        "Poisson ratio are the skirt's). \"half_space\": skirt and liner deform as elastic "
-       "half-spaces under each panel's film. The film and the deformation are then solved "
+       "half-spaces under each panel's film. \"imported\": the skirt deforms as a finite-element "
+       "model of it says (the compliance file). The film and the deformation are then solved "
        "together at every step."},
       {"skirt.layer_thickness",
        "Thickness of the skirt's surface layer that deforms with the elastic-layer model (the "
        "piston behind it is taken as rigid)."},
+      {"skirt.compliance_file",
+       "The skirt's compliance computed by a finite-element program, for the \"imported\" "
+       "model: a Matrix Market file beside the case (its nodes in the file of the same name "
+       "ending .nodes.csv, placed by their angle from the thrust axis and their distance from "
+       "the skirt top; the format is described in the documentation's compliance-files page)."},
       {"skirt.boundary_friction",
        "Friction coefficient where skirt and liner asperities touch (boundary lubrication)."},
       {"skirt.cavitation",
@@ -891,21 +898,31 @@ std::vector<CaseField> MakeSchema() {
       {G::kSkirt, "Liner Poisson ratio ν_liner", "-", "–", 1.0, PoissonRatio(), "of the liner"}));
   {
     using lubrication::ComplianceModel;
-    f.push_back(Choice("skirt.compliance", sk, &S::compliance,
-                       {ToString(ComplianceModel::kRigid), ToString(ComplianceModel::kElasticLayer),
-                        ToString(ComplianceModel::kHalfSpace)},
-                       {G::kSkirt,
-                        "Surface compliance",
-                        "",
-                        "",
-                        1.0,
-                        {},
-                        "\"rigid\" (the paper's), \"elastic_layer\" (the skirt's surface on a "
-                        "rigid body) or \"half_space\" (skirt and liner)"}));
+    f.push_back(
+        Choice("skirt.compliance", sk, &S::compliance,
+               {ToString(ComplianceModel::kRigid), ToString(ComplianceModel::kElasticLayer),
+                ToString(ComplianceModel::kHalfSpace), ToString(ComplianceModel::kImported)},
+               {G::kSkirt,
+                "Surface compliance",
+                "",
+                "",
+                1.0,
+                {},
+                "\"rigid\" (the paper's), \"elastic_layer\" (the skirt's surface on a "
+                "rigid body), \"half_space\" (skirt and liner) or \"imported\" (a "
+                "finite-element compliance file)"}));
   }
   f.push_back(Scalar("skirt.layer_thickness", sk, &S::layer_thickness,
                      {G::kSkirt, "Surface layer thickness (elastic layer)", "m", "mm", kMm,
                       Open(0.0, 1.0, true, false), "of the skirt's deforming surface layer"}));
+  f.push_back(Text("skirt.compliance_file", sk, &S::compliance_file,
+                   {G::kSkirt,
+                    "Compliance file (imported)",
+                    "",
+                    "",
+                    1.0,
+                    {},
+                    "Matrix Market file beside the case; nodes in <name>.nodes.csv"}));
   f.push_back(Scalar("skirt.boundary_friction", sk, &S::boundary_friction,
                      {G::kSkirt, "Boundary friction μ_f", "-", "–", 1.0, Between(0.0, 1.0),
                       "friction coefficient of asperity contact; Table I: 0.13"}));
@@ -1401,6 +1418,9 @@ std::string UnusedReason(const EngineCase& c, const std::string& path) {
   if (path == "skirt.layer_thickness" &&
       c.skirt.compliance != lubrication::ComplianceModel::kElasticLayer)
     return "the skirt surfaces are not an elastic layer";
+  if (path == "skirt.compliance_file" &&
+      c.skirt.compliance != lubrication::ComplianceModel::kImported)
+    return "the skirt compliance is not imported";
   if (path == "big_end.compliance_file" &&
       c.big_end.compliance != lubrication::ComplianceModel::kImported)
     return "the big-end compliance is not imported";

@@ -74,10 +74,14 @@ struct SkirtCase {
   double modulus_liner = 110.0e9;   ///< E of the liner [Pa] (assumed: grey cast iron)
   double poisson_liner = 0.26;      ///< ν of the liner [-] (assumed)
   /// Elastic surfaces (lubrication::ComplianceSpec): rigid (the paper's), the skirt's surface as
-  /// an elastic layer of layer_thickness on a rigid body (E_skirt, ν_skirt), or skirt and liner
-  /// as elastic half-spaces (E_skirt, ν_skirt, E_liner, ν_liner).
+  /// an elastic layer of layer_thickness on a rigid body (E_skirt, ν_skirt), skirt and liner
+  /// as elastic half-spaces (E_skirt, ν_skirt, E_liner, ν_liner), or imported from an FE model.
   lubrication::ComplianceModel compliance = lubrication::ComplianceModel::kRigid;
   double layer_thickness = 1.0e-3;  ///< elastic layer thickness [m] (assumed: a skirt wall)
+  /// Imported compliance: the Matrix Market file (its nodes in the same name with .nodes.csv),
+  /// relative to the case file's folder (docs/compliance-files.md); the nodes' alpha from the
+  /// thrust axis, y from the skirt top.
+  std::string compliance_file;
   double boundary_friction = 0.13;  ///< μ_f [-]
   /// Barrel profile h_skirt(y): axial positions from the skirt top [m] and radial drop [m].
   std::vector<double> profile_y = {0.0, 7.0e-3, 14.0e-3, 21.0e-3, 28.0e-3};

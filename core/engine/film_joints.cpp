@@ -28,7 +28,32 @@ lubrication::OilSpec::AtTemperature JointOilAt(const EngineCase& c, const JointO
                                  joint + ".oil.temperature");
 }
 
-lubrication::SkirtConfig SkirtConfigFromCase(const EngineCase& c) {
+namespace {
+
+// An imported compliance named in the case (`field`): a relative name is resolved against the
+// case's folder.
+std::shared_ptr<const lubrication::ImportedCompliance> ReadComplianceFile(
+    const std::string& field, const std::string& file,
+    const std::filesystem::path& case_directory) {
+  if (file.empty()) {
+    throw InputError(field, "\"\"",
+                     "a Matrix Market file (with its .nodes.csv beside it) when the compliance "
+                     "is \"imported\"");
+  }
+  std::filesystem::path matrix(file);
+  if (matrix.is_relative() && !case_directory.empty()) matrix = case_directory / matrix;
+  if (!std::filesystem::exists(matrix)) {
+    throw InputError(field, "\"" + file + "\"",
+                     "an existing file (looked for " + matrix.string() + ")");
+  }
+  return std::make_shared<const lubrication::ImportedCompliance>(
+      lubrication::ReadImportedCompliance(matrix.string()));
+}
+
+}  // namespace
+
+lubrication::SkirtConfig SkirtConfigFromCase(const EngineCase& c,
+                                             const std::filesystem::path& case_directory) {
   const SkirtCase& sk = c.skirt;
   lubrication::SkirtConfig config;
   lubrication::SkirtGeometry& g = config.geometry;
@@ -69,6 +94,9 @@ lubrication::SkirtConfig SkirtConfigFromCase(const EngineCase& c) {
   config.compliance.poisson1 = sk.poisson_skirt;
   config.compliance.modulus2 = sk.modulus_liner;
   config.compliance.poisson2 = sk.poisson_liner;
+  if (sk.compliance == lubrication::ComplianceModel::kImported)
+    config.compliance.imported =
+        ReadComplianceFile("skirt.compliance_file", sk.compliance_file, case_directory);
   lubrication::SurfacePair pair;
   pair.sigma1 = sk.roughness_skirt;
   pair.sigma2 = sk.roughness_liner;
@@ -84,8 +112,9 @@ lubrication::SkirtConfig SkirtConfigFromCase(const EngineCase& c) {
   return config;
 }
 
-std::unique_ptr<multibody::JointForceElement> MakeLubricatedSkirt(const EngineCase& c,
-                                                                  const CrankTrainLayout& layout) {
+std::unique_ptr<multibody::JointForceElement> MakeLubricatedSkirt(
+    const EngineCase& c, const CrankTrainLayout& layout,
+    const std::filesystem::path& case_directory) {
   coupling::SkirtMounting mount;
   mount.com_lateral_offset = c.geometry.piston_com_lateral_offset;
   mount.skirt_top_to_com = c.geometry.skirt_top_to_com;
@@ -103,8 +132,8 @@ std::unique_ptr<multibody::JointForceElement> MakeLubricatedSkirt(const EngineCa
   const double y0 = height(best - 1), y1 = height(best), y2 = height(best + 1);
   const double den = y0 - 2.0 * y1 + y2;
   mount.pin_y_at_tdc = den < 0.0 ? y1 - 0.125 * (y2 - y0) * (y2 - y0) / den : y1;
-  return std::make_unique<coupling::LubricatedSkirtElement>(SkirtConfigFromCase(c), layout.piston,
-                                                            mount);
+  return std::make_unique<coupling::LubricatedSkirtElement>(SkirtConfigFromCase(c, case_directory),
+                                                            layout.piston, mount);
 }
 
 bool BigEndSolvesSymmetricHalf(const BigEndCase& be) {
@@ -152,21 +181,9 @@ lubrication::BearingConfig BearingConfigFromCase(const EngineCase& c,
   config.compliance.poisson1 = be.poisson_journal;
   config.compliance.modulus2 = be.modulus_bearing;
   config.compliance.poisson2 = be.poisson_bearing;
-  if (be.compliance == lubrication::ComplianceModel::kImported) {
-    if (be.compliance_file.empty()) {
-      throw InputError("big_end.compliance_file", "\"\"",
-                       "a Matrix Market file (with its .nodes.csv beside it) when "
-                       "big_end.compliance is \"imported\"");
-    }
-    std::filesystem::path matrix(be.compliance_file);
-    if (matrix.is_relative() && !case_directory.empty()) matrix = case_directory / matrix;
-    if (!std::filesystem::exists(matrix)) {
-      throw InputError("big_end.compliance_file", "\"" + be.compliance_file + "\"",
-                       "an existing file (looked for " + matrix.string() + ")");
-    }
-    config.compliance.imported = std::make_shared<const lubrication::ImportedCompliance>(
-        lubrication::ReadImportedCompliance(matrix.string()));
-  }
+  if (be.compliance == lubrication::ComplianceModel::kImported)
+    config.compliance.imported =
+        ReadComplianceFile("big_end.compliance_file", be.compliance_file, case_directory);
   lubrication::SurfacePair pair;
   pair.sigma1 = be.roughness_journal;
   pair.sigma2 = be.roughness_bearing;
@@ -217,7 +234,9 @@ std::unique_ptr<multibody::JointForceElement> MakeLubricatedBigEnd(
 
 LubricatedJointFactories FilmJointFactories(const std::filesystem::path& case_directory) {
   LubricatedJointFactories f;
-  f.skirt = &MakeLubricatedSkirt;
+  f.skirt = [case_directory](const EngineCase& c, const CrankTrainLayout& layout) {
+    return MakeLubricatedSkirt(c, layout, case_directory);
+  };
   f.big_end = [case_directory](const EngineCase& c, const CrankTrainLayout& layout) {
     return MakeLubricatedBigEnd(c, layout, case_directory);
   };

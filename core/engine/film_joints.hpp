@@ -23,8 +23,11 @@ lubrication::OilSpec::AtTemperature JointOilAt(const EngineCase& c, const JointO
                                                const std::string& joint);
 
 /// The skirt solver configuration of a case (mesh: the case's counts). Throws InputError naming
-/// the field when the case has no skirt clearance or its surfaces are invalid.
-lubrication::SkirtConfig SkirtConfigFromCase(const EngineCase& engine_case);
+/// the field when the case has no skirt clearance or its surfaces are invalid. An imported
+/// compliance is read from `skirt.compliance_file`, a relative name resolved against
+/// `case_directory` (empty: the working directory).
+lubrication::SkirtConfig SkirtConfigFromCase(const EngineCase& engine_case,
+                                             const std::filesystem::path& case_directory = {});
 /// Whether the big end's film is solved over the symmetric half of the width: the planar model
 /// keeps the journal parallel to the bearing and every feed on the mid-plane, so the film is
 /// symmetric about it; an even axial count of at least 4 has a node row there.
@@ -36,8 +39,9 @@ lubrication::BearingConfig BearingConfigFromCase(const EngineCase& engine_case,
                                                  const std::filesystem::path& case_directory = {});
 
 /// The lubricated skirt element of a case (liner = ground, the layout's piston).
-std::unique_ptr<multibody::JointForceElement> MakeLubricatedSkirt(const EngineCase& engine_case,
-                                                                  const CrankTrainLayout& layout);
+std::unique_ptr<multibody::JointForceElement> MakeLubricatedSkirt(
+    const EngineCase& engine_case, const CrankTrainLayout& layout,
+    const std::filesystem::path& case_directory = {});
 /// The lubricated big-end element of a case (journal on the crank, bearing on the rod).
 std::unique_ptr<multibody::JointForceElement> MakeLubricatedBigEnd(
     const EngineCase& engine_case, const CrankTrainLayout& layout,

@@ -104,7 +104,7 @@ SurfaceCompliance SurfaceCompliance::Dense(Eigen::MatrixXd matrix) {
 
 SurfaceCompliance SurfaceCompliance::Build(const ComplianceSpec& spec, const TriMesh& mesh,
                                            std::optional<double> mirror_y,
-                                           std::optional<double> mirror_x) {
+                                           std::optional<double> mirror_x, double imported_period) {
   if (mirror_x && mesh.periodic_x)
     throw std::logic_error("SurfaceCompliance::Build: a periodic mesh has no mirror in x");
   const int n = mesh.NodeCount();
@@ -119,9 +119,9 @@ SurfaceCompliance SurfaceCompliance::Build(const ComplianceSpec& spec, const Tri
     case ComplianceModel::kImported: {
       SurfaceCompliance c;
       c.kind_ = Kind::kTransfer;
-      c.transfer_ = std::make_shared<ComplianceTransfer>(spec.imported, mesh, mirror_y, mirror_x,
-                                                         mesh.periodic_x ? mesh.x_period : 0.0,
-                                                         spec.imported->source);
+      c.transfer_ = std::make_shared<ComplianceTransfer>(
+          spec.imported, mesh, mirror_y, mirror_x,
+          mesh.periodic_x ? mesh.x_period : imported_period, spec.imported->source);
       c.nonnegative_ = c.transfer_->Nonnegative();
       return c;
     }
@@ -220,7 +220,10 @@ void SurfaceCompliance::Apply(const Eigen::VectorXd& load, Eigen::VectorXd& out)
       out = diagonal_.cwiseProduct(load);
       return;
     case Kind::kDense:
-      out.noalias() = dense_ * load;
+      // Column by column, skipping the unloaded (cavitated) nodes.
+      out.setZero(load.size());
+      for (Eigen::Index j = 0; j < load.size(); ++j)
+        if (load[j] != 0.0) out.noalias() += load[j] * dense_.col(j);
       return;
     case Kind::kTransfer:
       transfer_->Apply(load, out);
@@ -341,18 +344,40 @@ const ElasticSolveStats& ElasticFilm::Finish(ReynoldsFem& fem, const ReynoldsPar
 
 bool ElasticFilm::Newton(ReynoldsFem& fem, const ReynoldsParams& params, std::string& why) {
   const int n = fem.NodeCount();
-  Eigen::VectorXd r(n), r_trial(n), cload0(n), step(n), trial(n);
+  Eigen::VectorXd r(n), r_trial(n), cload0(n), step(n), trial(n), res(n), v(n), w(n);
   auto fail = [&](const std::string& reason) {
     why = reason;
     return false;
   };
   if (!Residual(fem, params, delta_, r)) return fail("film solve failed");
-  // GMRES workspace (one cycle of up to kKrylov directions: the products are film solves).
-  constexpr int kKrylov = 40;
-  std::vector<Eigen::VectorXd> basis;
-  Eigen::MatrixXd hess = Eigen::MatrixXd::Zero(kKrylov + 1, kKrylov);
-  Eigen::VectorXd cs(kKrylov), sn(kKrylov), g(kKrylov + 1), y(kKrylov);
-  Eigen::VectorXd w(n), r_pert(n);
+  if (recycled_u_.size() > 0 && recycled_u_.front().size() != n) ForgetDirections();
+  // Tries delta_ + lambda step for lambda = 1, 1/2, ... (up to `cuts` halvings): the first trial
+  // that lowers |R|_2 by the factor `decrease` (relative to lambda) is taken into delta_ and r.
+  auto line_search = [&](int cuts, double decrease, double& lambda) {
+    const Eigen::VectorXd delta0 = delta_, load0 = load_, cload0 = cload_;
+    const double norm0 = r.norm();
+    lambda = 1.0;
+    for (int ls = 0; ls <= cuts; ++ls, lambda *= 0.5) {
+      trial = delta0 + lambda * step;
+      // A compliance with no negative coefficient opens the film wherever it is loaded: the
+      // solution has delta >= 0, and iterates are kept there (projected steps), away from the
+      // films thinner than the rigid one where the asperity pressure rises without bound.
+      if (compliance_.nonnegative()) trial = trial.cwiseMax(0.0);
+      // The film may not close by more than three quarters at any node in one step.
+      if ((trial - delta0).cwiseQuotient(h_rigid_ + delta0).minCoeff() < -0.75) continue;
+      if (!Residual(fem, params, trial, r_trial)) continue;
+      if (r_trial.norm() <= (1.0 - decrease * lambda) * norm0) {
+        delta_ = trial;
+        r = r_trial;
+        return true;
+      }
+    }
+    // Leave the film solver's inputs, the load and its C P at the iterate kept.
+    fem.film_thickness() = h_rigid_ + delta_;
+    load_ = load0;
+    cload_ = cload0;
+    return false;
+  };
   for (int it = 0;; ++it) {
     const double h_min = (h_rigid_ + delta_).minCoeff();
     stats_.tolerance = spec_.tolerance * h_min;
@@ -364,91 +389,101 @@ bool ElasticFilm::Newton(ReynoldsFem& fem, const ReynoldsParams& params, std::st
                   " Newton iterations (residual " + FormatValue(stats_.residual) + " m, allowed " +
                   FormatValue(stats_.tolerance) + " m)");
     }
-    // (I - C P') s = -r by GMRES(kKrylov) from s = 0; P' v ~ (P(h + tau v) - P(h)) / tau.
-    cload0 = cload_;  // C P at the base point: each product differences C P (C is linear)
+    const double beta = r.norm();
+    // The Newton equations (I - C P') s = -r, first in the directions kept from earlier solves
+    // (their images under an earlier Jacobian: the state, hence P', moves little from one solve
+    // to the next), at the price of one film solve for the trial. Where those directions
+    // resolve little of r, or the trial does not lower the residual by half, fresh ones.
+    // Room for new directions: the oldest kept ones go first (an orthonormal set stays one).
+    constexpr std::size_t kRoom = 8;
+    if (recycled_u_.size() + kRoom > static_cast<std::size_t>(kKrylov)) {
+      const auto drop = static_cast<std::ptrdiff_t>(recycled_u_.size() + kRoom - kKrylov);
+      recycled_u_.erase(recycled_u_.begin(), recycled_u_.begin() + drop);
+      recycled_c_.erase(recycled_c_.begin(), recycled_c_.begin() + drop);
+    }
+    step.setZero(n);
+    res = -r;
+    for (std::size_t i = 0; i < recycled_u_.size(); ++i) {
+      const double a = recycled_c_[i].dot(res);
+      step += a * recycled_u_[i];
+      res -= a * recycled_c_[i];
+    }
+    bool stale = !recycled_u_.empty();
+    if (stale) {
+      double lambda = 1.0;
+      if (res.norm() <= 0.5 * beta) {
+        ++stats_.recycled_steps;
+        if (line_search(0, 0.5, lambda)) continue;
+        ForgetDirections();
+        stale = false;
+        step.setZero(n);
+        res = -r;
+      }
+    }
+    // GCR with a right preconditioner; P' v ~ (P(h + tau v) - P(h)) / tau, differencing the base
+    // point's C P (C is linear). The directions U and their orthonormal images J U are kept for
+    // the next iterations and solves.
+    cload0 = cload_;
     const Eigen::VectorXd delta0 = delta_;
+    const Eigen::VectorXd load0 = load_;
     // Right preconditioner: I + C_kk 2 P_k / h_k, the local part of I - C P' with the film's
     // own scaling (a film opened uniformly by dh carries the pressure P (1 - 2 dh / h): p ~
-    // 1/h^2 for Reynolds' equation), which takes the steep, thin-film modes out of GMRES' way.
+    // 1/h^2 for Reynolds' equation), which takes the steep, thin-film modes out of GCR's way.
     Eigen::VectorXd precond(n);
     for (int k = 0; k < n; ++k) {
-      precond[k] = 1.0 + 2.0 * scale_ * compliance_.Diagonal(k) * std::max(load_[k], 0.0) /
-                             (h_rigid_[k] + delta_[k]);
+      precond[k] = 1.0 + 2.0 * scale_ * compliance_.Diagonal(k) * std::max(load0[k], 0.0) /
+                             (h_rigid_[k] + delta0[k]);
     }
-    const double beta = r.norm();
-    basis.assign(1, -r / beta);
-    g.setZero();
-    g[0] = beta;
-    int k_used = 0;
     const double goal = 1e-3 * beta;  // the linear equations solved to 1e-3 of the residual
     bool film_failed = false;
-    for (int k = 0; k < kKrylov; ++k) {
-      const Eigen::VectorXd v = basis[static_cast<std::size_t>(k)].cwiseQuotient(precond);
+    auto solved = [&] {
+      return res.norm() <= goal || res.cwiseAbs().maxCoeff() <= 0.25 * stats_.tolerance;
+    };
+    while (recycled_u_.size() < static_cast<std::size_t>(kKrylov) && !solved()) {
+      v = res.cwiseQuotient(precond);
       const double tau = 1e-6 * h_min / std::max(v.cwiseAbs().maxCoeff(), 1e-300);
-      trial = delta0 + tau * v;
-      if (!Residual(fem, params, trial, r_pert)) {
+      if (!Residual(fem, params, delta0 + tau * v, r_trial)) {
         film_failed = true;
         break;
       }
       ++stats_.krylov_iterations;
       w = v - (scale_ / tau) * (cload_ - cload0);
-      for (int i = 0; i <= k; ++i) {  // modified Gram-Schmidt
-        hess(i, k) = w.dot(basis[static_cast<std::size_t>(i)]);
-        w -= hess(i, k) * basis[static_cast<std::size_t>(i)];
+      for (std::size_t i = 0; i < recycled_u_.size(); ++i) {  // modified Gram-Schmidt
+        const double a = recycled_c_[i].dot(w);
+        w -= a * recycled_c_[i];
+        v -= a * recycled_u_[i];
       }
-      hess(k + 1, k) = w.norm();
-      for (int i = 0; i < k; ++i) {  // earlier Givens rotations
-        const double a = cs[i] * hess(i, k) + sn[i] * hess(i + 1, k);
-        hess(i + 1, k) = -sn[i] * hess(i, k) + cs[i] * hess(i + 1, k);
-        hess(i, k) = a;
-      }
-      const double denom = std::hypot(hess(k, k), hess(k + 1, k));
-      cs[k] = hess(k, k) / denom;
-      sn[k] = hess(k + 1, k) / denom;
-      const double norm_w = hess(k + 1, k);
-      hess(k, k) = denom;
-      hess(k + 1, k) = 0.0;
-      g[k + 1] = -sn[k] * g[k];
-      g[k] = cs[k] * g[k];
-      k_used = k + 1;
-      if (std::abs(g[k + 1]) <= goal || norm_w <= 1e-14 * beta) break;
-      basis.push_back(w / norm_w);
+      const double norm_w = w.norm();
+      if (!(norm_w > 1e-14 * beta)) break;
+      recycled_c_.push_back(w / norm_w);
+      recycled_u_.push_back(v / norm_w);
+      const double a = recycled_c_.back().dot(res);
+      step += a * recycled_u_.back();
+      res -= a * recycled_c_.back();
     }
-    if (film_failed || k_used == 0) return fail("film solve failed during the Newton iteration");
-    for (int i = k_used - 1; i >= 0; --i) {  // back substitution
-      double s = g[i];
-      for (int j = i + 1; j < k_used; ++j) s -= hess(i, j) * y[j];
-      y[i] = s / hess(i, i);
+    // The base point's solution and C P, for the line search's reference.
+    load_ = load0;
+    cload_ = cload0;
+    if (film_failed || recycled_u_.empty()) {
+      ForgetDirections();
+      return fail("film solve failed during the Newton iteration");
     }
-    step.setZero(n);
-    for (int i = 0; i < k_used; ++i) step += y[i] * basis[static_cast<std::size_t>(i)];
-    step = step.cwiseQuotient(precond);
-    // Backtracking on |R|_2 (the film must stay open: h > 0 everywhere).
+    // Backtracking on |R|_2 (the film must stay open: h > 0 everywhere). No decrease down to a
+    // step of 1/64 is the sign of a start outside Newton's basin: the continuation (Solve) then
+    // takes a smaller step in the compliance.
     double lambda = 1.0;
-    bool accepted = false;
-    for (int ls = 0; ls < 7; ++ls, lambda *= 0.5) {
-      trial = delta0 + lambda * step;
-      // A compliance with no negative coefficient opens the film wherever it is loaded: the
-      // solution has delta >= 0, and iterates are kept there (projected steps), away from the
-      // films thinner than the rigid one where the asperity pressure rises without bound.
-      if (compliance_.nonnegative()) trial = trial.cwiseMax(0.0);
-      // The film may not close by more than three quarters at any node in one step.
-      if ((trial - delta0).cwiseQuotient(h_rigid_ + delta0).minCoeff() < -0.75) continue;
-      if (!Residual(fem, params, trial, r_trial)) continue;
-      if (r_trial.norm() <= (1.0 - 1e-4 * lambda) * beta) {
-        accepted = true;
-        break;
-      }
-    }
-    // A step cut below 1/64 is the sign of a start outside Newton's basin: the continuation
-    // (Solve) then takes a smaller step in the compliance.
-    if (!accepted || lambda < 1.0 / 64.0) {
+    if (!line_search(6, 1e-4, lambda)) {
+      ForgetDirections();
+      if (stale) continue;  // again, with fresh directions only
       return fail("line search found no decrease of the deformation residual (residual " +
                   FormatValue(stats_.residual) + " m)");
     }
-    delta_ = trial;
-    r = r_trial;
   }
+}
+
+void ElasticFilm::ForgetDirections() {
+  recycled_u_.clear();
+  recycled_c_.clear();
 }
 
 }  // namespace filmdyn::lubrication

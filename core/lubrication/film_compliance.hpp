@@ -25,6 +25,7 @@
 #include <Eigen/Dense>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "core/lubrication/film_models.hpp"
 #include "core/lubrication/imported_compliance.hpp"
@@ -90,10 +91,13 @@ class SurfaceCompliance {
   static SurfaceCompliance Dense(Eigen::MatrixXd matrix);
   /// The spec's compliance on `mesh`. `mirror_y`: the mesh is one half of a film symmetric about
   /// the line y = mirror_y (the other half's load deforms this half too); `mirror_x` likewise
-  /// about x = mirror_x (not on a periodic mesh).
+  /// about x = mirror_x (not on a periodic mesh). `imported_period`: an imported grid's period
+  /// in x when the film mesh itself is not periodic (a skirt panel on a whole-skirt FE model;
+  /// 0: none, a periodic film mesh's own period is used).
   static SurfaceCompliance Build(const ComplianceSpec& spec, const TriMesh& mesh,
                                  std::optional<double> mirror_y,
-                                 std::optional<double> mirror_x = std::nullopt);
+                                 std::optional<double> mirror_x = std::nullopt,
+                                 double imported_period = 0.0);
   bool rigid() const { return kind_ == Kind::kNone; }
   /// out = C load.
   void Apply(const Eigen::VectorXd& load, Eigen::VectorXd& out) const;
@@ -120,7 +124,8 @@ struct ElasticSolveStats {
   bool converged = true;
   int iterations = 0;            ///< Newton iterations (all continuation stages)
   int film_solves = 0;           ///< film solves in all (residuals, Krylov products, line search)
-  int krylov_iterations = 0;     ///< GMRES iterations in all
+  int krylov_iterations = 0;     ///< Krylov (GCR) products in all
+  int recycled_steps = 0;        ///< Newton steps tried in the directions kept from earlier solves
   double residual = 0.0;         ///< max_k |delta_k - (C P)_k| at the end [m]
   double tolerance = 0.0;        ///< the residual allowed [m]
   double max_deformation = 0.0;  ///< max_k delta_k [m]
@@ -147,6 +152,7 @@ class ElasticFilm {
   void Reset() {
     delta_.resize(0);
     last_min_film_ = 0.0;
+    ForgetDirections();
   }
   /// The share of the compliance applied, in [0, 1] (1 = the surfaces' own): an engine run
   /// phases the compliance in over its run-in, as it does the pressure law.
@@ -160,6 +166,8 @@ class ElasticFilm {
   // Newton's method from delta_ on the compliance scaled by scale_; false (and why) when it
   // does not converge.
   bool Newton(ReynoldsFem& fem, const ReynoldsParams& params, std::string& why);
+  // Drops the Krylov directions kept for the next Newton steps.
+  void ForgetDirections();
   // Ends a solve: on failure the fem is left at delta_ and the status says why.
   const ElasticSolveStats& Finish(ReynoldsFem& fem, const ReynoldsParams& params,
                                   const std::string& failure);
@@ -171,6 +179,10 @@ class ElasticFilm {
   double target_ = 1.0;  // the share a solve must reach (SetScale)
   double last_min_film_ = 0.0;  // the thinnest film of the last converged solve [m]
   ElasticSolveStats stats_;
+  // Krylov directions U of earlier Newton steps and their orthonormal images (I - C P') U at
+  // the point they were made: the next steps try them first (at most kKrylov).
+  static constexpr int kKrylov = 40;
+  std::vector<Eigen::VectorXd> recycled_u_, recycled_c_;
 };
 
 }  // namespace filmdyn::lubrication

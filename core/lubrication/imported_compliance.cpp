@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <numeric>
 #include <sstream>
 #include <stdexcept>
 
@@ -253,7 +254,33 @@ ComplianceTransfer::ComplianceTransfer(std::shared_ptr<const ImportedCompliance>
   if (mirror_x_ && mirror_y_)
     throw std::logic_error("ComplianceTransfer: one mirror (x or y), not both");
   nonnegative_ = fe_->matrix.minCoeff() >= 0.0;
+  // A surface's compliance decays with the distance between its nodes (fast for a shell on a
+  // stiff backing): each row drops its smallest coefficients while their magnitudes sum to at
+  // most kDroppedShare of the row's, and the product skips the unloaded (cavitated) nodes.
+  const Eigen::MatrixXd& c = fe_->matrix;
+  const int m = static_cast<int>(c.rows());
+  std::vector<Eigen::Triplet<double>> kept;
+  std::vector<int> order(static_cast<std::size_t>(m));
+  for (int i = 0; i < m; ++i) {
+    std::iota(order.begin(), order.end(), 0);
+    std::sort(order.begin(), order.end(),
+              [&](int a, int b) { return std::abs(c(i, a)) < std::abs(c(i, b)); });
+    const double allowed = kDroppedShare * c.row(i).cwiseAbs().sum();
+    double dropped = 0.0;
+    std::size_t first = 0;
+    while (first < order.size() && dropped + std::abs(c(i, order[first])) <= allowed)
+      dropped += std::abs(c(i, order[first++]));
+    for (std::size_t q = first; q < order.size(); ++q)
+      kept.emplace_back(i, order[q], c(i, order[q]));
+  }
+  kept_.resize(m, m);
+  kept_.setFromTriplets(kept.begin(), kept.end());
   Compute();
+}
+
+double ComplianceTransfer::KeptShare() const {
+  const double m = static_cast<double>(kept_.rows());
+  return m > 0 ? static_cast<double>(kept_.nonZeros()) / (m * m) : 0.0;
 }
 
 void ComplianceTransfer::SetOffset(double offset) {
@@ -330,7 +357,13 @@ void ComplianceTransfer::Apply(const Eigen::VectorXd& load, Eigen::VectorXd& out
     if (!mirror_.empty())
       for (int q = 0; q < 4; ++q) force_[mirror_[k].node[q]] += mirror_[k].w[q] * f;
   }
-  displacement_.noalias() = fe_->matrix * force_;
+  displacement_.setZero(m);
+  for (int j = 0; j < m; ++j) {
+    const double f = force_[j];
+    if (f == 0.0) continue;
+    for (Eigen::SparseMatrix<double>::InnerIterator it(kept_, j); it; ++it)
+      displacement_[it.row()] += it.value() * f;
+  }
   out.resize(static_cast<long>(n));
   for (std::size_t k = 0; k < n; ++k) {
     double d = 0.0;

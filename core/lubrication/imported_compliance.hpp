@@ -18,6 +18,7 @@
 /// the film is a symmetric half); the FE nodes' displacements come back by the same weights. So
 /// the film's compliance is T C T' A, applied in O(m^2 + n) without forming it.
 #include <Eigen/Dense>
+#include <Eigen/Sparse>
 #include <array>
 #include <memory>
 #include <optional>
@@ -68,9 +69,16 @@ class ComplianceTransfer {
   /// The film's x is the FE grid's x minus `offset` [m] (a bearing's film turns with its line
   /// of centres): the weights are recomputed when it changes.
   void SetOffset(double offset);
+  /// The film's deformation under `load` [Pa]: the FE matrix applied without its smallest
+  /// coefficients (those of a row whose magnitudes sum to at most kDroppedShare of the row's):
+  /// the deformation differs from the whole matrix's by at most kDroppedShare of the largest
+  /// row sum times the largest load.
   void Apply(const Eigen::VectorXd& load, Eigen::VectorXd& out) const;
   double Diagonal(int k) const;
   bool Nonnegative() const { return nonnegative_; }
+  static constexpr double kDroppedShare = 1e-6;
+  /// Coefficients kept of the FE matrix (a share of its size).
+  double KeptShare() const;
 
  private:
   struct Weights {
@@ -87,6 +95,7 @@ class ComplianceTransfer {
   std::string field_;
   std::vector<Weights> own_, mirror_;
   bool nonnegative_ = false;
+  Eigen::SparseMatrix<double> kept_;  // the FE matrix without its dropped coefficients
   mutable Eigen::VectorXd force_, displacement_;
 };
 

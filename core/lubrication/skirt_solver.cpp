@@ -73,6 +73,24 @@ const char* ToString(SkirtSupply supply) {
   return supply == SkirtSupply::kFlooded ? "flooded" : "starved";
 }
 
+namespace {
+
+// An imported skirt grid that closes around the circumference (its x lines from 0 to 2 pi R
+// less one spacing, x = R alpha) is periodic: the thrust panel's mirror image (alpha < 0) lies
+// across alpha = 0. A grid over a part of the skirt is not.
+double ImportedPeriod(const ComplianceSpec& spec, double radius) {
+  if (spec.model != ComplianceModel::kImported || !spec.imported) return 0.0;
+  const std::vector<double>& x = spec.imported->x_lines;
+  if (x.size() < 3) return 0.0;
+  double widest = 0.0;
+  for (std::size_t i = 1; i < x.size(); ++i) widest = std::max(widest, x[i] - x[i - 1]);
+  const double circumference = 2.0 * kPi * radius;
+  const double closing = circumference - (x.back() - x.front());
+  return closing > 0.0 && closing <= 1.01 * widest ? circumference : 0.0;
+}
+
+}  // namespace
+
 TriMesh SkirtSolver::MakeMesh(const SkirtGeometry& g, const SkirtMeshSpec& spec) {
   // Node lines through the kinks of the profile and ovality tables (ConformingLines), so that
   // the piecewise-linear film thickness is exact on the mesh and refining it converges at the
@@ -162,7 +180,8 @@ SkirtSolver::SkirtSolver(SkirtConfig config)
       // (alpha = 0) or anti-thrust (alpha = pi) plane.
       const double mirror = p == 0 ? 0.0 : kPi * g.radius;
       panel->elastic = ElasticFilm(
-          SurfaceCompliance::Build(config_.compliance, panel->fem->mesh(), std::nullopt, mirror),
+          SurfaceCompliance::Build(config_.compliance, panel->fem->mesh(), std::nullopt, mirror,
+                                   ImportedPeriod(config_.compliance, g.radius)),
           config_.compliance);
     }
     panels_.push_back(std::move(panel));
@@ -302,6 +321,7 @@ const SkirtResult& SkirtSolver::SolveStep(const SkirtState& s, double time_step)
     r.elastic.iterations += es.iterations;
     r.elastic.film_solves += es.film_solves;
     r.elastic.krylov_iterations += es.krylov_iterations;
+    r.elastic.recycled_steps += es.recycled_steps;
     r.elastic.residual = std::max(r.elastic.residual, es.residual);
     r.elastic.tolerance = std::max(r.elastic.tolerance, es.tolerance);
     if (!es.converged && r.elastic.converged) {

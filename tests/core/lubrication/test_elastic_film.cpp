@@ -476,6 +476,27 @@ class TestElasticFilm : public QObject {
     const double middle = delta[grid.Node(0, grid.ny_nodes() / 2)];
     qInfo("uniform pressure: FE shell %.6g m/Pa, elastic layer %.6g m/Pa", middle, layer);
     QVERIFY(std::abs(middle / layer - 1.0) < 2e-3);
+    // The product drops each row's smallest coefficients (those summing to at most
+    // kDroppedShare of the row) and skips unloaded nodes: against the whole matrix, on a load
+    // that is zero on a third of the nodes, within the bound that rule gives.
+    Eigen::VectorXd load = Eigen::VectorXd::Zero(grid.NodeCount());
+    for (int k = 0; k < grid.NodeCount(); ++k)
+      if (k % 3 != 0) load[k] = 1e6 * (1.0 + std::sin(0.37 * k));
+    const std::vector<double> area = LumpedAreas(grid);
+    Eigen::VectorXd force(grid.NodeCount());
+    for (int k = 0; k < grid.NodeCount(); ++k) force[k] = area[k] * load[k];
+    // The grid's nodes are the FE nodes in the reader's order (x fastest).
+    Eigen::VectorXd whole = fe->matrix * force;
+    transfer.Apply(load, delta);
+    const double bound = ComplianceTransfer::kDroppedShare *
+                         fe->matrix.cwiseAbs().rowwise().sum().maxCoeff() * force.maxCoeff();
+    const double diff = (delta - whole).cwiseAbs().maxCoeff();
+    qInfo(
+        "sparse product: %.3g of the coefficients kept, max difference %.3g m (bound %.3g m, "
+        "deformation %.3g m)",
+        transfer.KeptShare(), diff, bound, whole.maxCoeff());
+    QVERIFY(diff <= bound);
+    QVERIFY(transfer.KeptShare() < 0.5);
     BearingConfig cfg;
     cfg.geometry = {0.015, 0.022, 25e-6};
     cfg.viscosity = 0.01;
@@ -500,6 +521,61 @@ class TestElasticFilm : public QObject {
             b.max_deformation * 1e6, 100 * (a.max_deformation / b.max_deformation - 1));
       QVERIFY(std::abs(a.load / b.load - 1.0) < 0.01);
       QVERIFY(std::abs(a.max_deformation / b.max_deformation - 1.0) < 0.05);
+    }
+  }
+
+  // A skirt on an imported whole-skirt grid (periodic around the circumference, x = R alpha
+  // from the thrust axis): with a diagonal matrix of the layer's compliance over each FE node's
+  // area, on a grid through the film's own node lines, the imported skirt is the elastic-layer
+  // skirt node for node — which needs the panels' mirror images (across alpha = 0 by the
+  // period, across alpha = pi inside the grid) to land where they should.
+  void importedWholeSkirtGridMatchesTheLayerOnTheSameLines() {
+    SkirtConfig layer = ElasticSkirt(ComplianceModel::kElasticLayer, 5e9);
+    layer.geometry.alpha1 = layer.geometry.alpha2 = kPi / 4.0;
+    layer.mesh = {15, 30, 15, 16};  // every x line on the pi R / 60 grid, y every 2 mm
+    const double c_layer =
+        LayerCompliance(layer.compliance.layer_thickness, layer.compliance.layer_modulus, 0.3);
+    auto fe = std::make_shared<ImportedCompliance>();
+    fe->source = "whole-skirt.mtx";
+    const double radius = layer.geometry.radius, dx = kPi * radius / 60.0, dy = 0.002;
+    for (int i = 0; i < 120; ++i) fe->x_lines.push_back(i * dx);
+    for (int j = 0; j <= 16; ++j) fe->y_lines.push_back(j * dy);
+    const int m = fe->NodeCount();
+    fe->matrix = Eigen::MatrixXd::Zero(m, m);
+    for (int j = 0; j <= 16; ++j)
+      for (int i = 0; i < 120; ++i)
+        fe->matrix(i + 120 * j, i + 120 * j) = c_layer / (dx * dy * (j == 0 || j == 16 ? 0.5 : 1));
+    SkirtConfig imported = layer;
+    imported.compliance.model = ComplianceModel::kImported;
+    imported.compliance.imported = fe;
+    SkirtSolver a(imported), b(layer);
+    const SkirtResult ra = a.Solve(SlappingSkirt());
+    const SkirtResult& rb = b.Solve(SlappingSkirt());
+    QVERIFY2(ra.elastic.converged, ra.elastic.message.c_str());
+    qInfo(
+        "imported whole-skirt grid vs elastic layer: lateral force %.8g / %.8g N, max "
+        "deformation %.6g / %.6g um",
+        ra.lateral_force, rb.lateral_force, ra.max_deformation * 1e6, rb.max_deformation * 1e6);
+    QVERIFY(rb.max_deformation > 0.05e-6);
+    // Both solves hold the film to 1e-4 of its thinnest: the answers agree far closer.
+    QVERIFY(std::abs(ra.lateral_force / rb.lateral_force - 1.0) < 1e-5);
+    QVERIFY(std::abs(ra.moment_about_pin / rb.moment_about_pin - 1.0) < 1e-5);
+    QVERIFY(std::abs(ra.max_deformation / rb.max_deformation - 1.0) < 1e-4);
+    // A grid over part of the skirt only (no period) that misses the thrust panel's mirror
+    // image is refused, naming the file.
+    auto part = std::make_shared<ImportedCompliance>(*fe);
+    part->x_lines.resize(60);
+    Eigen::MatrixXd pm = Eigen::MatrixXd::Zero(60 * 17, 60 * 17);
+    for (int j = 0; j <= 16; ++j)
+      for (int i = 0; i < 60; ++i)
+        pm(i + 60 * j, i + 60 * j) = fe->matrix(i + 120 * j, i + 120 * j);
+    part->matrix = pm;
+    imported.compliance.imported = part;
+    QVERIFY_THROWS_EXCEPTION(InputError, SkirtSolver{imported});
+    try {
+      SkirtSolver refused(imported);
+    } catch (const InputError& e) {
+      QVERIFY2(QString(e.what()).contains("whole-skirt.mtx"), e.what());
     }
   }
 
@@ -575,7 +651,8 @@ class TestElasticFilm : public QObject {
                                  "j.E2",
                                  "j.nu2",
                                  "j.tol",
-                                 "j.iter"};
+                                 "j.iter",
+                                 "j.file"};
     auto message = [&](const ComplianceSpec& bad) -> QString {
       try {
         ValidateCompliance(bad, names);
