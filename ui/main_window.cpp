@@ -341,6 +341,8 @@ void MainWindow::startRun() {
   request.engine_case = document_->engineCase();
   request.model = RunModelKey(request.engine_case).toStdString();
   request.rpm = request.engine_case.operating.rpm;
+  if (!document_->filePath().isEmpty())
+    request.case_directory = QFileInfo(document_->filePath()).absolutePath().toStdString();
   RunHandle run = run_controller_->start(std::move(request));
   if (!run) return;
   run_state_label_->setStyleSheet({});
@@ -521,7 +523,9 @@ bool MainWindow::openStudyPointRun(int number, QString* error) {
   RunRequest request;
   try {
     // The point's case: the study's base case with the point's values (a run folder holds none).
-    request.engine_case = batch::LoadPointCase(study_view_->study(), row->point).value;
+    const io::LoadedCase point = batch::LoadPointCase(study_view_->study(), row->point);
+    request.engine_case = point.value;
+    request.case_directory = point.directory.string();
     request.model = engine::ModelName(engine::ModelOfCase(request.engine_case));
     request.rpm = request.engine_case.operating.rpm;
   } catch (const std::exception& e) {

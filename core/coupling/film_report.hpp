@@ -77,6 +77,9 @@ struct SkirtFilmSample {
   /// top [m] (the solver's skirt coordinates).
   double moft_alpha = 0.0, moft_y = 0.0;
   double min_gap = 0.0;  ///< smallest geometric gap over the panels (< 0: piston in the liner) [m]
+  /// The smallest rigid gap the film is solved at: 0 with rigid surfaces, below 0 with elastic
+  /// ones (LubricatedSkirtElement::MinGapAllowed) [m].
+  double min_gap_allowed = 0.0;
   long clamped_nodes = 0;
   double power = 0.0;  ///< power of the film forces on the piston, F ė0 + M γ̇ + F_f u_p [W] (≤ 0)
   /// The state the film was solved at (the integrated state; the skirt solver's conventions):

@@ -62,6 +62,11 @@ SkirtKinematics LubricatedSkirtElement::Kinematics(const BodyState& piston) cons
   return k;
 }
 
+double LubricatedSkirtElement::MinGapAllowed() const {
+  const lubrication::SkirtConfig& c = solver_->config();
+  return c.compliance.rigid() ? 0.0 : -kElasticPenetration * c.geometry.radial_clearance;
+}
+
 void LubricatedSkirtElement::PhasePressureLawIn(double end_time) {
   ramp_ = PressureLawRamp(solver_->config().pressure_viscosity, end_time);
   compliance_end_time_ = solver_->config().compliance.rigid() ? 0.0 : end_time;
@@ -191,6 +196,7 @@ void LubricatedSkirtElement::ReportFilm(SkirtFilmSample* skirt, BearingFilmSampl
   f.moft_alpha = result_.moft_alpha;
   f.moft_y = result_.moft_y;
   f.min_gap = kin_.min_gap;
+  f.min_gap_allowed = MinGapAllowed();
   f.clamped_nodes = result_.clamped_nodes;
   f.e0 = kin_.state.e0;
   f.tilt = kin_.state.gamma;

@@ -46,6 +46,14 @@ struct SkirtKinematics {
 class LubricatedSkirtElement final : public multibody::JointForceElement,
                                      public FilmReporter {
  public:
+  /// With elastic surfaces the piston may pass the rigid liner's wall while the deformation
+  /// keeps the film open (a thin skirt wall gives way by more than its clearance: the shipped
+  /// CalculiX skirt by 34 um against 25 um): the rigid gap may fall to this many radial
+  /// clearances below zero, as the big end's eccentricity may reach
+  /// LubricatedBigEndElement::kEpsMaxElastic.
+  static constexpr double kElasticPenetration = 2.0;
+  /// The smallest rigid gap the film is solved at [m] (0: rigid surfaces; below: contact).
+  double MinGapAllowed() const;
   /// `piston`: body index; the liner is the ground.
   LubricatedSkirtElement(lubrication::SkirtConfig config, multibody::BodyIndex piston,
                          SkirtMounting mounting);

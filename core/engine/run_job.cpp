@@ -536,7 +536,8 @@ std::string FilmTrouble(const CrankTrainSample& s) {
         "with this clearance/viscosity",
         s.bearing.eps);
   }
-  if (s.skirt.present && (!std::isfinite(s.skirt.min_gap) || s.skirt.min_gap <= 0.0)) {
+  if (s.skirt.present &&
+      (!std::isfinite(s.skirt.min_gap) || s.skirt.min_gap <= s.skirt.min_gap_allowed)) {
     return fmt::format(
         "piston skirt touches the liner (smallest gap {:.3g} um): the skirt film cannot carry "
         "the side force with this clearance/profile",

@@ -123,7 +123,20 @@ SurfaceCompliance SurfaceCompliance::Build(const ComplianceSpec& spec, const Tri
           spec.imported, mesh, mirror_y, mirror_x,
           mesh.periodic_x ? mesh.x_period : imported_period, spec.imported->source);
       c.nonnegative_ = c.transfer_->Nonnegative();
-      return c;
+      if (mesh.periodic_x) return c;  // a bearing: the weights follow its line of centres
+      // A film that does not move over the FE surface (a skirt panel): its own matrix, formed
+      // once column by column, costs n^2 per product instead of the FE grid's m^2.
+      Eigen::MatrixXd film(n, n);
+      Eigen::VectorXd unit = Eigen::VectorXd::Zero(n), column;
+      for (int j = 0; j < n; ++j) {
+        unit[j] = 1.0;
+        c.transfer_->Apply(unit, column);
+        film.col(j) = column;
+        unit[j] = 0.0;
+      }
+      SurfaceCompliance d = Dense(std::move(film));
+      d.nonnegative_ = c.nonnegative_;
+      return d;
     }
   }
   // Each node's cell: from the midpoints to its neighbours (the mesh edge at the border).
@@ -287,18 +300,44 @@ const ElasticSolveStats& ElasticFilm::Solve(ReynoldsFem& fem, const ReynoldsPara
   // integration or a root search).
   if (delta_.size() == n) {
     scale_ = target_;
+    const Eigen::VectorXd last_delta = delta_;
     // Where that leaves the film thinner than half the last solution's thinnest, open it to
     // that much (the film cannot close faster between two nearby solves).
     if (last_min_film_ > 0.0)
       delta_ = delta_.cwiseMax((0.5 * last_min_film_ - h_rigid_.array()).matrix());
     if (Newton(fem, params, why)) return Finish(fem, params, "");
+    // Continuation in the rigid film, from the last converged solve's to this one, in steps
+    // (halved first, doubled after a success, quartered after a failure): each stage starts
+    // inside Newton's basin. It also takes a film the rigid surfaces close (the piston or the
+    // journal past the rigid wall) from the last open one.
+    if (last_h_rigid_.size() == n && scale_ == target_) {
+      const Eigen::VectorXd h_target = h_rigid_, h_last = last_h_rigid_;
+      Eigen::VectorXd converged = last_delta;
+      double done = 0.0, step = 0.5;
+      while (step >= 1.0 / 1024.0) {
+        const double share = std::min(1.0, done + step);
+        h_rigid_ = h_last + share * (h_target - h_last);
+        delta_ = converged;
+        if (Newton(fem, params, why)) {
+          done = share;
+          converged = delta_;
+          if (done == 1.0) return Finish(fem, params, "");
+          step *= 2.0;
+        } else {
+          step *= 0.25;
+        }
+      }
+      h_rigid_ = h_target;
+      delta_ = last_delta;
+    }
   }
   if (closed > 0) {
     stats_.converged = false;
-    stats_.message = "the rigid film is closed at " + std::to_string(closed) +
-                     " nodes (the journal is past the rigid wall) and the deformation " +
-                     (delta_.size() == n ? "of the last solve does not open it (" + why + ")"
-                                         : "is not known yet (no earlier solve)");
+    stats_.message =
+        "the rigid film is closed at " + std::to_string(closed) +
+        " nodes (the surfaces are past each other's rigid position) and the deformation " +
+        (delta_.size() == n ? "of the last solve does not open it (" + why + ")"
+                            : "is not known yet (no earlier solve)");
     if (delta_.size() != n) delta_.setZero(n);
     return stats_;
   }
@@ -338,7 +377,10 @@ const ElasticSolveStats& ElasticFilm::Finish(ReynoldsFem& fem, const ReynoldsPar
     stats_.message = failure;
   }
   stats_.max_deformation = delta_.maxCoeff();
-  if (stats_.converged) last_min_film_ = (h_rigid_ + delta_).minCoeff();
+  if (stats_.converged) {
+    last_min_film_ = (h_rigid_ + delta_).minCoeff();
+    last_h_rigid_ = h_rigid_;
+  }
   return stats_;
 }
 
@@ -394,13 +436,9 @@ bool ElasticFilm::Newton(ReynoldsFem& fem, const ReynoldsParams& params, std::st
     // (their images under an earlier Jacobian: the state, hence P', moves little from one solve
     // to the next), at the price of one film solve for the trial. Where those directions
     // resolve little of r, or the trial does not lower the residual by half, fresh ones.
-    // Room for new directions: the oldest kept ones go first (an orthonormal set stays one).
-    constexpr std::size_t kRoom = 8;
-    if (recycled_u_.size() + kRoom > static_cast<std::size_t>(kKrylov)) {
-      const auto drop = static_cast<std::ptrdiff_t>(recycled_u_.size() + kRoom - kKrylov);
-      recycled_u_.erase(recycled_u_.begin(), recycled_u_.begin() + drop);
-      recycled_c_.erase(recycled_c_.begin(), recycled_c_.begin() + drop);
-    }
+    // A full set is dropped whole (keeping the newest directions instead measured slower: the
+    // oldest images are the stalest).
+    if (recycled_u_.size() >= static_cast<std::size_t>(kKrylov)) ForgetDirections();
     step.setZero(n);
     res = -r;
     for (std::size_t i = 0; i < recycled_u_.size(); ++i) {

@@ -101,8 +101,9 @@ class SurfaceCompliance {
   bool rigid() const { return kind_ == Kind::kNone; }
   /// out = C load.
   void Apply(const Eigen::VectorXd& load, Eigen::VectorXd& out) const;
-  /// Imported compliances: the film's x is the FE surface's minus `offset` [m] (a bearing's film
-  /// turns with its line of centres). Others: no effect.
+  /// Imported compliances on a periodic film mesh: the film's x is the FE surface's minus
+  /// `offset` [m] (a bearing's film turns with its line of centres). Others: no effect (on a
+  /// film mesh that is not periodic the imported compliance is formed once on the film nodes).
   void SetOffset(double offset);
   /// The diagonal coefficient of node k [m/Pa].
   double Diagonal(int k) const;
@@ -152,6 +153,7 @@ class ElasticFilm {
   void Reset() {
     delta_.resize(0);
     last_min_film_ = 0.0;
+    last_h_rigid_.resize(0);
     ForgetDirections();
   }
   /// The share of the compliance applied, in [0, 1] (1 = the surfaces' own): an engine run
@@ -175,6 +177,7 @@ class ElasticFilm {
   SurfaceCompliance compliance_;
   ComplianceSpec spec_;
   Eigen::VectorXd h_rigid_, delta_, load_, cload_;
+  Eigen::VectorXd last_h_rigid_;  // the rigid film of the last converged solve (with delta_)
   double scale_ = 1.0;   // continuation: the share of the compliance applied
   double target_ = 1.0;  // the share a solve must reach (SetScale)
   double last_min_film_ = 0.0;  // the thinnest film of the last converged solve [m]

@@ -296,7 +296,10 @@ const SkirtResult& SkirtSolver::SolveStep(const SkirtState& s, double time_step)
   for (int k = 0; k < n; ++k) {
     h_[k] = h_static_[k] - (s.e0 + arm_[k] * s.gamma) * cos_[k];  // paper eq. 2, our sign
     hdot_[k] = -(s.e0_dot + arm_[k] * s.gamma_dot) * cos_[k];     // paper eq. 3
-    if (h_[k] < config_.min_film) {
+    // Rigid surfaces: a film thinner than min_film is held there (and counted). Elastic ones:
+    // the rigid film may close (the piston past the liner's wall) where the deformation opens
+    // it; the coupled solve refuses a film it cannot open.
+    if (h_[k] < config_.min_film && config_.compliance.rigid()) {
       h_[k] = config_.min_film;
       ++r.clamped_nodes;
     }

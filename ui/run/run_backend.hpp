@@ -22,6 +22,9 @@ struct RunRequest {
   engine::EngineCase engine_case;  ///< a copy: the user may keep editing while it runs
   std::string model;               ///< "ideal", "only-skirt", "only-lbrbe", "skirt-lbrbe"
   double rpm = 0.0;
+  /// The case file's folder: the files the case names (e.g. a compliance file) by a relative
+  /// path are found from there. Empty: the working directory (an unsaved case).
+  std::string case_directory;
 };
 
 struct RunProgress {

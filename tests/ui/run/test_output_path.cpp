@@ -10,6 +10,7 @@
 #include <QtTest>
 #include <nlohmann/json.hpp>
 
+#include "core/base/input_error.hpp"
 #include "core/io/case_file.hpp"
 #include "ui/run/run_backend.hpp"
 #include "ui/run/run_record.hpp"
@@ -91,6 +92,25 @@ class TestOutputPath : public QObject {
     QVERIFY(cli_fields.size() >= 2);
     QCOMPARE(Tree(gui_out + "/fields"), cli_fields);
     QCOMPARE(Tree(dir.filePath("gui_fields")), cli_fields);
+  }
+
+  // A file the case names by a relative path (a compliance file) is looked for in the case
+  // file's folder, which the GUI's run request carries, as `filmdyn run` does.
+  void relativeCaseFilesAreFoundBesideTheCase() {
+    QTemporaryDir dir;
+    filmdyn::io::LoadedCase loaded = filmdyn::io::LoadCase(
+        {}, {"big_end.compliance=imported", "big_end.compliance_file=housing.mtx"});
+    filmdyn::ui::RunRequest request{loaded.value, "skirt-lbrbe", 6000.0, dir.path().toStdString()};
+    filmdyn::ui::RunRecord record(1, request);
+    std::atomic<bool> cancel{false};
+    try {
+      filmdyn::ui::CoreRunBackend()(request, cancel, record);
+      QFAIL("a missing compliance file was accepted");
+    } catch (const filmdyn::InputError& e) {
+      QCOMPARE(e.field(), std::string("big_end.compliance_file"));
+      const std::string expected = (dir.path() + "/housing.mtx").toStdString();
+      QVERIFY2(std::string(e.what()).find(expected) != std::string::npos, e.what());
+    }
   }
 };
 
