@@ -293,8 +293,8 @@ const ElasticSolveStats& ElasticFilm::Solve(ReynoldsFem& fem, const ReynoldsPara
   }
   h_rigid_ = fem.film_thickness();
   std::string why;
-  // A rigid film closed somewhere (the journal past the rigid wall): only the deformation can
-  // open it, so the solve must start from one that does.
+  // A rigid film closed somewhere (the journal or piston past the rigid wall): only the deformation
+  // can open it, so the solve must start from one that does.
   const int closed = static_cast<int>((h_rigid_.array() <= 0.0).count());
   // From the last solve's deformation (the state moves little between the solves of a time
   // integration or a root search).

@@ -108,8 +108,8 @@ void CaseDocument::edit(const engine::EngineCase& new_case, const QString& descr
 
 void CaseDocument::setParameter(const std::string& path, double si_value) {
   const CaseParameter* p = FindCaseParameter(path);
-  Q_ASSERT(p != nullptr && !p->choice);
-  if (p == nullptr || p->choice) return;  // a choice is set by name (setChoice)
+  Q_ASSERT(p != nullptr && !p->choice && !p->text);
+  if (p == nullptr || p->choice || p->text) return;  // set by name (setChoice, setText)
   engine::EngineCase next = case_;
   p->set(next, si_value);
   // Merge repeated edits of the same cell into one undo step.
@@ -130,6 +130,17 @@ bool CaseDocument::setChoice(const std::string& path, const std::string& name) {
   edit(
       next,
       QObject::tr("Set %1 to “%2”").arg(QString::fromStdString(who), QString::fromStdString(name)));
+  return true;
+}
+
+bool CaseDocument::setText(const std::string& path, const std::string& value) {
+  const CaseParameter* p = FindCaseParameter(path);
+  if (p == nullptr || !p->text) return false;
+  engine::EngineCase next = case_;
+  std::string& text = p->field->text(next);
+  if (text == value) return true;
+  text = value;
+  edit(next, QObject::tr("Set %1").arg(p->label));
   return true;
 }
 

@@ -37,6 +37,8 @@ class CaseDocument : public QObject {
   /// Sets a choice parameter (CaseParameter::choice) by dotted path to one of its names; undoable,
   /// one undo step per change. False (the case unchanged) when `name` is not one of its choices.
   bool setChoice(const std::string& path, const std::string& name);
+  /// Sets a text parameter (CaseParameter::text); false when `path` is not one.
+  bool setText(const std::string& path, const std::string& value);
 
   QString filePath() const { return file_path_; }
   bool isModified() const { return !undo_stack_.isClean(); }

@@ -27,7 +27,11 @@ std::vector<CaseParameter> MakeParameters() {
     const bool number =
         field.kind == engine::FieldKind::kNumber || field.kind == engine::FieldKind::kInteger;
     const bool choice = field.kind == engine::FieldKind::kChoice && !SetByRunModel(field);
-    if (!number && !choice) continue;
+    // Text in a group's table: the file names a joint reads (the case's own name and
+    // description have their place elsewhere).
+    const bool text =
+        field.kind == engine::FieldKind::kText && field.group != engine::FieldGroup::kCase;
+    if (!number && !choice && !text) continue;
     CaseParameter p;
     p.group = field.group;
     p.path = field.path;
@@ -35,6 +39,8 @@ std::vector<CaseParameter> MakeParameters() {
     p.field = &field;
     if (choice) {
       p.choice = true;
+    } else if (text) {
+      p.text = true;
     } else {
       p.unit = QString::fromStdString(field.display_unit);
       p.to_si = field.display_scale;

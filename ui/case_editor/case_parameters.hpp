@@ -31,6 +31,9 @@ struct CaseParameter {
   /// One of the names field->choices (FieldKind::kChoice), edited with a combo box: the value is
   /// field->choice / set_choice, the unit empty, and get, set and check are empty.
   bool choice = false;
+  /// A name of a file the case refers to (FieldKind::kText, e.g. a compliance file), edited as
+  /// text: the value is field->text, the unit empty, and get, set and check are empty.
+  bool text = false;
   const engine::CaseField* field = nullptr;  ///< core's schema row (help, SI unit, range)
   std::function<double(const engine::EngineCase&)> get;  ///< SI
   std::function<void(engine::EngineCase&, double)> set;  ///< SI
@@ -38,7 +41,7 @@ struct CaseParameter {
   std::function<void(const std::string& field, double si_value)> check;
 };
 
-/// Every scalar parameter (numbers, integers, choices), in editor order.
+/// Every scalar parameter (numbers, integers, choices, the joints' file names), in editor order.
 const std::vector<CaseParameter>& CaseParameters();
 /// The parameter with this dotted path, or nullptr.
 const CaseParameter* FindCaseParameter(const std::string& path);

@@ -65,6 +65,11 @@ QVariant ParameterTableModel::data(const QModelIndex& index, int role) const {
           return p.label;
         case kValue: {
           if (p.choice) return choiceText(p);
+          if (p.text) {
+            // The field's accessor hands out the member for editing; it is only read here.
+            return QString::fromStdString(
+                p.field->text(const_cast<engine::EngineCase&>(document_->engineCase())));
+          }
           const double display = p.get(document_->engineCase()) / p.to_si;
           if (role == Qt::EditRole) return FormatDisplayNumber(display);
           return bad && std::isnan(display) ? tr("(invalid)") : FormatDisplayNumber(display);
@@ -97,7 +102,8 @@ QVariant ParameterTableModel::data(const QModelIndex& index, int role) const {
         return QBrush(QColor(150, 150, 150));
       break;
     case Qt::TextAlignmentRole:
-      if (index.column() == kValue && !p.choice) return int(Qt::AlignRight | Qt::AlignVCenter);
+      if (index.column() == kValue && !p.choice && !p.text)
+        return int(Qt::AlignRight | Qt::AlignVCenter);
       break;
     case Qt::UserRole:
       return QString::fromStdString(p.path);
@@ -127,6 +133,7 @@ bool ParameterTableModel::setData(const QModelIndex& index, const QVariant& valu
     if (name == choiceText(p)) return true;
     return document_->setChoice(p.path, name.toStdString());
   }
+  if (p.text) return document_->setText(p.path, value.toString().toStdString());
   const double display = ParseUserNumber(value.toString());
   const double si = display * p.to_si;
   const double old = p.get(document_->engineCase());

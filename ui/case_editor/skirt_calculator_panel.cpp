@@ -2,6 +2,7 @@
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QFileInfo>
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QHeaderView>
@@ -12,6 +13,7 @@
 #include <QVBoxLayout>
 #include <QtConcurrent/QtConcurrentRun>
 #include <cmath>
+#include <filesystem>
 #include <numbers>
 
 #include "core/base/input_error.hpp"
@@ -60,12 +62,15 @@ lubrication::SkirtInputNames LabelNames() {
   return {"e0", "Tilt", "Speed", "de0/dt", "Tilt rate", "Side force", "Moment"};
 }
 
-SkirtCalculation Calculate(const engine::EngineCase& engine_case, SkirtCalculatorPanel::Mode mode,
-                           std::map<std::string, double> si,
+// `case_directory`: the case file's folder (files the case names relative to it).
+SkirtCalculation Calculate(const engine::EngineCase& engine_case, std::string case_directory,
+                           SkirtCalculatorPanel::Mode mode, std::map<std::string, double> si,
                            std::shared_ptr<std::atomic<bool>> cancel) {
   SkirtCalculation out;
   try {
-    lubrication::SkirtCalculator calc(engine::SkirtConfigFromCase(engine_case), LabelNames());
+    lubrication::SkirtCalculator calc(
+        engine::SkirtConfigFromCase(engine_case, std::filesystem::path(case_directory)),
+        LabelNames());
     calc.SetStopCheck([cancel] { return cancel->load(); });
     if (mode == SkirtCalculatorPanel::Mode::kState) {
       lubrication::SkirtState s;
@@ -245,7 +250,10 @@ void SkirtCalculatorPanel::start() {
   for (const InputSpec& spec : InputSpecs())
     si[spec.key] = inputs_.at(spec.key)->value() * spec.scale;
   status_->setText(tr("Computing…"));
-  watcher_.setFuture(QtConcurrent::run(Calculate, document_->engineCase(),
+  const QString path = document_->filePath();
+  const std::string folder =
+      path.isEmpty() ? std::string() : QFileInfo(path).absolutePath().toStdString();
+  watcher_.setFuture(QtConcurrent::run(Calculate, document_->engineCase(), folder,
                                        Mode(mode_->currentData().toInt()), si, cancel_));
 }
 

@@ -100,6 +100,13 @@ class TestCaseSchema : public QObject {
         ++scalars;
         QVERIFY2(row->choice && row->field == &field && row->unit.isEmpty(), field.path.c_str());
         QCOMPARE(row->group, field.group);
+      } else if (field.kind == engine::FieldKind::kText) {
+        // The file names a joint reads have a row of their tab; the case's name does not.
+        const ui::CaseParameter* row = ui::FindCaseParameter(field.path);
+        QCOMPARE(row == nullptr, field.group == engine::FieldGroup::kCase);
+        if (row == nullptr) continue;
+        ++scalars;
+        QVERIFY2(row->text && !row->choice && row->field == &field, field.path.c_str());
       }
     }
     QCOMPARE(int(ui::CaseParameters().size()), scalars);
@@ -107,6 +114,31 @@ class TestCaseSchema : public QObject {
     QVERIFY(ui::SetByRunModel(*engine::FindCaseField("big_end.model")));
     QVERIFY(ui::FindCaseParameter("big_end.cavitation") != nullptr);
     QVERIFY(ui::FindCaseParameter("skirt.cavitation") != nullptr);
+  }
+
+  // A file name typed in its row is the case's (one undo step), greyed with its reason while
+  // the joint does not use it.
+  void fileNameRowsEditTheCase() {
+    ui::CaseDocument document;
+    document.reset(DefaultCase());
+    ui::ParameterTableModel model(&document, engine::FieldGroup::kSkirt);
+    const QModelIndex cell =
+        model.index(model.rowOf("skirt.compliance_file"), ui::ParameterTableModel::kValue);
+    QVERIFY(cell.isValid());
+    QVERIFY(model.flags(cell) & Qt::ItemIsEditable);
+    QVERIFY(model.data(cell.siblingAtColumn(ui::ParameterTableModel::kNote), Qt::DisplayRole)
+                .toString()
+                .startsWith("not used"));
+    QVERIFY(model.setData(cell, "fe/skirt.mtx", Qt::EditRole));
+    QCOMPARE(document.engineCase().skirt.compliance_file, std::string("fe/skirt.mtx"));
+    QCOMPARE(model.data(cell, Qt::DisplayRole).toString(), QString("fe/skirt.mtx"));
+    QVERIFY(document.setChoice("skirt.compliance", "imported"));
+    QVERIFY(!model.data(cell.siblingAtColumn(ui::ParameterTableModel::kNote), Qt::DisplayRole)
+                 .toString()
+                 .startsWith("not used"));
+    document.undoStack()->undo();
+    document.undoStack()->undo();
+    QVERIFY(document.engineCase().skirt.compliance_file.empty());
   }
 
   void everyChoiceRoundTripsThroughFileSetAndEditor() {

@@ -206,6 +206,32 @@ class TestMainWindowAfterRun : public QObject {
         QCOMPARE(window.document()->engineCase().big_end.compliance,
                  filmdyn::lubrication::ComplianceModel::kRigid);
       }
+      // The skirt's compliance from a finite-element model: the file row in use, the layer's
+      // thickness greyed with its reason.
+      {
+        tabs->setCurrentIndex(3);
+        auto shown = window.document()->engineCase();
+        shown.skirt.compliance = filmdyn::lubrication::ComplianceModel::kImported;
+        shown.skirt.compliance_file = "examples/calculix-skirt-shell/skirt_compliance.mtx";
+        window.document()->edit(shown, "FE skirt for the picture");
+        QVERIFY(
+            filmdyn::engine::UnusedReason(window.document()->engineCase(), "skirt.compliance_file")
+                .empty());
+        QVERIFY(
+            !filmdyn::engine::UnusedReason(window.document()->engineCase(), "skirt.layer_thickness")
+                 .empty());
+        auto* skirt = window.caseEditor()->parameterModel(filmdyn::ui::CaseGroup::kSkirt);
+        window.caseEditor()
+            ->parameterTable(filmdyn::ui::CaseGroup::kSkirt)
+            ->scrollTo(skirt->index(skirt->rowOf("skirt.compliance"), 0),
+                       QAbstractItemView::PositionAtTop);
+        QTest::qWait(100);
+        Save(&window, "case_skirt_compliance.png");
+        window.document()->undoStack()->undo();
+        QCOMPARE(window.document()->engineCase().skirt.compliance,
+                 filmdyn::lubrication::ComplianceModel::kRigid);
+        tabs->setCurrentIndex(4);
+      }
       QVERIFY(window.runAction()->isEnabled());
       window.runAction()->trigger();
       QVERIFY(finished.wait(400000));
