@@ -341,8 +341,7 @@ void MainWindow::startRun() {
   request.engine_case = document_->engineCase();
   request.model = RunModelKey(request.engine_case).toStdString();
   request.rpm = request.engine_case.operating.rpm;
-  if (!document_->filePath().isEmpty())
-    request.case_directory = QFileInfo(document_->filePath()).absolutePath().toStdString();
+  request.case_directory = document_->caseDirectory();
   RunHandle run = run_controller_->start(std::move(request));
   if (!run) return;
   run_state_label_->setStyleSheet({});

@@ -310,7 +310,7 @@ const ElasticSolveStats& ElasticFilm::Solve(ReynoldsFem& fem, const ReynoldsPara
     // (halved first, doubled after a success, quartered after a failure): each stage starts
     // inside Newton's basin. It also takes a film the rigid surfaces close (the piston or the
     // journal past the rigid wall) from the last open one.
-    if (last_h_rigid_.size() == n && scale_ == target_) {
+    if (last_h_rigid_.size() == n) {
       const Eigen::VectorXd h_target = h_rigid_, h_last = last_h_rigid_;
       Eigen::VectorXd converged = last_delta;
       double done = 0.0, step = 0.5;
@@ -395,10 +395,10 @@ bool ElasticFilm::Newton(ReynoldsFem& fem, const ReynoldsParams& params, std::st
   if (recycled_u_.size() > 0 && recycled_u_.front().size() != n) ForgetDirections();
   // Tries delta_ + lambda step for lambda = 1, 1/2, ... (up to `cuts` halvings): the first trial
   // that lowers |R|_2 by the factor `decrease` (relative to lambda) is taken into delta_ and r.
-  auto line_search = [&](int cuts, double decrease, double& lambda) {
+  auto line_search = [&](int cuts, double decrease) {
     const Eigen::VectorXd delta0 = delta_, load0 = load_, cload0 = cload_;
     const double norm0 = r.norm();
-    lambda = 1.0;
+    double lambda = 1.0;
     for (int ls = 0; ls <= cuts; ++ls, lambda *= 0.5) {
       trial = delta0 + lambda * step;
       // A compliance with no negative coefficient opens the film wherever it is loaded: the
@@ -448,10 +448,9 @@ bool ElasticFilm::Newton(ReynoldsFem& fem, const ReynoldsParams& params, std::st
     }
     bool stale = !recycled_u_.empty();
     if (stale) {
-      double lambda = 1.0;
       if (res.norm() <= 0.5 * beta) {
         ++stats_.recycled_steps;
-        if (line_search(0, 0.5, lambda)) continue;
+        if (line_search(0, 0.5)) continue;
         ForgetDirections();
         stale = false;
         step.setZero(n);
@@ -507,10 +506,9 @@ bool ElasticFilm::Newton(ReynoldsFem& fem, const ReynoldsParams& params, std::st
       return fail("film solve failed during the Newton iteration");
     }
     // Backtracking on |R|_2 (the film must stay open: h > 0 everywhere). No decrease down to a
-    // step of 1/64 is the sign of a start outside Newton's basin: the continuation (Solve) then
-    // takes a smaller step in the compliance.
-    double lambda = 1.0;
-    if (!line_search(6, 1e-4, lambda)) {
+    // step of 1/64 is the sign of a start outside Newton's basin: the continuations (Solve) then
+    // take a smaller step in the rigid film or the compliance.
+    if (!line_search(6, 1e-4)) {
       ForgetDirections();
       if (stale) continue;  // again, with fresh directions only
       return fail("line search found no decrease of the deformation residual (residual " +

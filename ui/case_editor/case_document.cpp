@@ -1,5 +1,7 @@
 #include "ui/case_editor/case_document.hpp"
 
+#include <QFileInfo>
+
 #include <QUndoCommand>
 #include <algorithm>
 #include <cmath>
@@ -131,6 +133,10 @@ bool CaseDocument::setChoice(const std::string& path, const std::string& name) {
       next,
       QObject::tr("Set %1 to “%2”").arg(QString::fromStdString(who), QString::fromStdString(name)));
   return true;
+}
+
+std::string CaseDocument::caseDirectory() const {
+  return file_path_.isEmpty() ? std::string() : QFileInfo(file_path_).absolutePath().toStdString();
 }
 
 bool CaseDocument::setText(const std::string& path, const std::string& value) {

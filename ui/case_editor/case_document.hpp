@@ -41,6 +41,9 @@ class CaseDocument : public QObject {
   bool setText(const std::string& path, const std::string& value);
 
   QString filePath() const { return file_path_; }
+  /// The saved case file's folder, where the files the case names by a relative path are found
+  /// (empty for an unsaved case: the working directory).
+  std::string caseDirectory() const;
   bool isModified() const { return !undo_stack_.isClean(); }
 
   /// Starts a new document (no undo history, unmodified).

@@ -2,7 +2,6 @@
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
-#include <QFileInfo>
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QHeaderView>
@@ -250,10 +249,8 @@ void SkirtCalculatorPanel::start() {
   for (const InputSpec& spec : InputSpecs())
     si[spec.key] = inputs_.at(spec.key)->value() * spec.scale;
   status_->setText(tr("Computing…"));
-  const QString path = document_->filePath();
-  const std::string folder =
-      path.isEmpty() ? std::string() : QFileInfo(path).absolutePath().toStdString();
-  watcher_.setFuture(QtConcurrent::run(Calculate, document_->engineCase(), folder,
+  watcher_.setFuture(QtConcurrent::run(Calculate, document_->engineCase(),
+                                       document_->caseDirectory(),
                                        Mode(mode_->currentData().toInt()), si, cancel_));
 }
 
