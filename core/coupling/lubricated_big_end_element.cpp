@@ -86,9 +86,9 @@ BigEndKinematics LubricatedBigEndElement::Kinematics(const BodyState& crank,
   return k;
 }
 
-void LubricatedBigEndElement::PhasePressureLawIn(double end_time) {
-  ramp_ = PressureLawRamp(solver_->config().pressure_viscosity, end_time);
-  compliance_end_time_ = solver_->config().compliance.rigid() ? 0.0 : end_time;
+void LubricatedBigEndElement::PhaseIn(double law_end_time, double compliance_end_time) {
+  ramp_ = PressureLawRamp(solver_->config().pressure_viscosity, law_end_time);
+  compliance_end_time_ = solver_->config().compliance.rigid() ? 0.0 : compliance_end_time;
 }
 
 const lubrication::BearingResult& LubricatedBigEndElement::SolveFilm(

@@ -71,8 +71,9 @@ class LubricatedBigEndElement final : public multibody::JointForceElement,
   void SetSupplyPressure(std::function<double(double)> pressure_of_crank_angle) {
     supply_pressure_ = std::move(pressure_of_crank_angle);
   }
-  /// Phases the oil's pressure-viscosity law in from t = 0 to `end_time` [s] (PressureLawRamp).
-  void PhasePressureLawIn(double end_time);
+  /// Phases the oil's pressure-viscosity law in from t = 0 to `law_end_time` [s]
+  /// (PressureLawRamp), and elastic surfaces' compliance to `compliance_end_time` (RunInScale).
+  void PhaseIn(double law_end_time, double compliance_end_time);
   /// A cancel honoured inside the film solve (ReynoldsFem::SetStopCheck).
   void SetStopCheck(const StopCheck& check) { solver_->fem().SetStopCheck(check); }
   /// Re-solves at the last state evaluated without a Jacobian if a Jacobian evaluation has left

@@ -67,9 +67,9 @@ double LubricatedSkirtElement::MinGapAllowed() const {
   return c.compliance.rigid() ? 0.0 : -kElasticPenetration * c.geometry.radial_clearance;
 }
 
-void LubricatedSkirtElement::PhasePressureLawIn(double end_time) {
-  ramp_ = PressureLawRamp(solver_->config().pressure_viscosity, end_time);
-  compliance_end_time_ = solver_->config().compliance.rigid() ? 0.0 : end_time;
+void LubricatedSkirtElement::PhaseIn(double law_end_time, double compliance_end_time) {
+  ramp_ = PressureLawRamp(solver_->config().pressure_viscosity, law_end_time);
+  compliance_end_time_ = solver_->config().compliance.rigid() ? 0.0 : compliance_end_time;
 }
 
 void LubricatedSkirtElement::SolveAt(const lubrication::SkirtState& state) {

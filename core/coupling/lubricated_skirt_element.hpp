@@ -77,8 +77,9 @@ class LubricatedSkirtElement final : public multibody::JointForceElement,
   const lubrication::SkirtResult& last_result() const { return result_; }
   /// 2: the skirt's thrust and anti-thrust panels solved side by side (SkirtSolver::SetThreads).
   void SetPanelThreads(int threads) { solver_->SetThreads(threads); }
-  /// Phases the oil's pressure-viscosity law in from t = 0 to `end_time` [s] (PressureLawRamp).
-  void PhasePressureLawIn(double end_time);
+  /// Phases the oil's pressure-viscosity law in from t = 0 to `law_end_time` [s]
+  /// (PressureLawRamp), and elastic surfaces' compliance to `compliance_end_time` (RunInScale).
+  void PhaseIn(double law_end_time, double compliance_end_time);
   /// A cancel honoured inside the film solves (ReynoldsFem::SetStopCheck).
   void SetStopCheck(const StopCheck& check) { solver_->SetStopCheck(check); }
   long reynolds_solves() const { return solves_; }

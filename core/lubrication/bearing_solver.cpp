@@ -298,6 +298,28 @@ void BearingSolver::AcceptStep(double t) {
   if (Transient()) history_.Push(t, {fem_.solution().void_content});
 }
 
+Eigen::VectorXd BearingSolver::PredictorInputs(const BearingState& s) const {
+  // The film (line-of-centres frame): eps, its rate and the surface speeds; the angles between
+  // that frame and the bodies (cosine and sine: smooth through a turn) where the film depends
+  // on them: the imported compliance and a shell's feed turn with the bearing, pin holes with
+  // the journal; a supply pressure that varies over the cycle.
+  std::vector<double> z = {s.eps, s.eps_dot,
+                           s.omega_journal + s.omega_bearing - 2.0 * s.line_of_centres_rate,
+                           s.omega_journal - s.omega_bearing};
+  const OilFeed::Kind feed = config_.feed.kind;
+  if (config_.compliance.model == ComplianceModel::kImported ||
+      feed == OilFeed::Kind::kShellHoles || feed == OilFeed::Kind::kGroove) {
+    z.push_back(std::cos(s.line_of_centres_angle - s.bearing_angle));
+    z.push_back(std::sin(s.line_of_centres_angle - s.bearing_angle));
+  }
+  if (feed == OilFeed::Kind::kPinHoles) {
+    z.push_back(std::cos(s.line_of_centres_angle - s.journal_angle));
+    z.push_back(std::sin(s.line_of_centres_angle - s.journal_angle));
+  }
+  if (s.supply_pressure) z.push_back(*s.supply_pressure);
+  return Eigen::Map<const Eigen::VectorXd>(z.data(), static_cast<Eigen::Index>(z.size()));
+}
+
 const BearingResult& BearingSolver::SolveStep(const BearingState& s, double time_step) {
   // Elastic surfaces: the journal may pass the rigid wall (eps >= 1) where the deformation keeps
   // the film open (ElasticFilm refuses a film it cannot open).
@@ -325,7 +347,7 @@ const BearingResult& BearingSolver::SolveStep(const BearingState& s, double time
   // angle phi + pi - (bearing orientation).
   elastic_.SetOffset(R * WrapTwoPi(s.line_of_centres_angle + kPi - s.bearing_angle -
                                    config_.compliance.imported_reference_angle));
-  const ElasticSolveStats& elastic = elastic_.Solve(fem_, params);
+  const ElasticSolveStats& elastic = elastic_.Solve(fem_, params, PredictorInputs(s));
   const ReynoldsSolution& sol = fem_.solution();
 
   BearingResult& r = result_;

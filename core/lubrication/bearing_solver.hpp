@@ -211,6 +211,8 @@ class BearingSolver {
   const BearingResult& SolveStep(const BearingState& state, double time_step);
   /// Holds the supply's nodes at the supply pressure (extra fixed nodes of this solve).
   void MarkSupplyNodes(const BearingState& state);
+  // The film's inputs for the deformation's predictor (ElasticFilm::Solve).
+  Eigen::VectorXd PredictorInputs(const BearingState& state) const;
 
   BearingConfig config_;
   ReynoldsFem fem_;

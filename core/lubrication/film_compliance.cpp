@@ -248,6 +248,14 @@ void SurfaceCompliance::SetOffset(double offset) {
   if (transfer_) transfer_->SetOffset(offset);
 }
 
+const Eigen::VectorXd& SurfaceCompliance::LastSurfaceDeformation() const {
+  return transfer_->LastSurfaceDeformation();
+}
+
+void SurfaceCompliance::Interpolate(const Eigen::VectorXd& surface, Eigen::VectorXd& out) const {
+  transfer_->Interpolate(surface, out);
+}
+
 double SurfaceCompliance::Diagonal(int k) const {
   switch (kind_) {
     case Kind::kNone:
@@ -277,6 +285,65 @@ bool ElasticFilm::Residual(ReynoldsFem& fem, const ReynoldsParams& params,
   return true;
 }
 
+const ElasticSolveStats& ElasticFilm::Solve(ReynoldsFem& fem, const ReynoldsParams& params,
+                                            const Eigen::VectorXd& inputs) {
+  inputs_.resize(inputs.size() + 1);
+  inputs_ << inputs, target_;  // the compliance's share moves the deformation as an input does
+  Solve(fem, params);
+  inputs_.resize(0);
+  return stats_;
+}
+
+bool ElasticFilm::Predict(const Eigen::VectorXd& z, Eigen::VectorXd& delta) const {
+  const int m = static_cast<int>(solved_.size());
+  if (z.size() == 0 || m < 2 || solved_.back().inputs.size() != z.size()) return false;
+  // Each input measured by its spread over the points and the new one (an input that does not
+  // change carries no weight), around the nearest point.
+  const int d = static_cast<int>(z.size());
+  Eigen::VectorXd spread = (z - solved_.back().inputs).cwiseAbs();
+  for (const Solved& s : solved_)
+    spread = spread.cwiseMax((s.inputs - solved_.back().inputs).cwiseAbs());
+  Eigen::VectorXd w(d);
+  for (int j = 0; j < d; ++j) w[j] = spread[j] > 0.0 ? 1.0 / spread[j] : 0.0;
+  int ref = m - 1;
+  double nearest = (z - solved_[ref].inputs).cwiseProduct(w).squaredNorm();
+  for (int i = 0; i < m - 1; ++i) {
+    const double dist = (z - solved_[i].inputs).cwiseProduct(w).squaredNorm();
+    if (dist < nearest) {
+      nearest = dist;
+      ref = i;
+    }
+  }
+  const Solved& r = solved_[ref];
+  Eigen::VectorXd field = r.deformation;
+  if (nearest > 0.0) {
+    // delta(z) ~ delta_ref + sum_i x_i (delta_i - delta_ref), the weights x fitting the inputs'
+    // differences in least squares, ridge-regularised: points much nearer to the reference than
+    // the new one (a Newton iterate, a Jacobian column) carry little weight, so that their
+    // deformations' noise (the tolerance) is not extrapolated. Where the compliance moves over
+    // the film, the fit is made on the body surface's deformation and interpolated onto the film.
+    Eigen::MatrixXd a(d, m - 1);
+    for (int i = 0, col = 0; i < m; ++i)
+      if (i != ref) a.col(col++) = (solved_[i].inputs - r.inputs).cwiseProduct(w);
+    const Eigen::VectorXd b = (z - r.inputs).cwiseProduct(w);
+    Eigen::MatrixXd g = a.transpose() * a;
+    g.diagonal().array() += kRidge * kRidge;
+    const Eigen::VectorXd x = g.ldlt().solve(a.transpose() * b);
+    for (int i = 0, col = 0; i < m; ++i)
+      if (i != ref) field += x[col++] * (solved_[i].deformation - r.deformation);
+  }
+  if (compliance_.Moves()) {
+    compliance_.Interpolate(field, delta);
+  } else {
+    delta = std::move(field);
+  }
+  return delta.size() == delta_.size() && delta.allFinite();
+}
+
+void ElasticFilm::KeepSurface() {
+  if (compliance_.Moves()) surface_ = scale_ * compliance_.LastSurfaceDeformation();
+}
+
 const ElasticSolveStats& ElasticFilm::Solve(ReynoldsFem& fem, const ReynoldsParams& params) {
   stats_ = ElasticSolveStats{};
   const int n = fem.NodeCount();
@@ -301,6 +368,11 @@ const ElasticSolveStats& ElasticFilm::Solve(ReynoldsFem& fem, const ReynoldsPara
   if (delta_.size() == n) {
     scale_ = target_;
     const Eigen::VectorXd last_delta = delta_;
+    Eigen::VectorXd predicted;
+    if (Predict(inputs_, predicted)) {
+      delta_ = predicted;
+      if (compliance_.nonnegative()) delta_ = delta_.cwiseMax(0.0);
+    }
     // Where that leaves the film thinner than half the last solution's thinnest, open it to
     // that much (the film cannot close faster between two nearby solves).
     if (last_min_film_ > 0.0)
@@ -380,6 +452,11 @@ const ElasticSolveStats& ElasticFilm::Finish(ReynoldsFem& fem, const ReynoldsPar
   if (stats_.converged) {
     last_min_film_ = (h_rigid_ + delta_).minCoeff();
     last_h_rigid_ = h_rigid_;
+    if (inputs_.size() > 0) {
+      if (!solved_.empty() && solved_.back().inputs.size() != inputs_.size()) solved_.clear();
+      if (solved_.size() == static_cast<std::size_t>(kPredictorPoints)) solved_.pop_front();
+      solved_.push_back({inputs_, compliance_.Moves() ? surface_ : delta_});
+    }
   }
   return stats_;
 }
@@ -392,6 +469,7 @@ bool ElasticFilm::Newton(ReynoldsFem& fem, const ReynoldsParams& params, std::st
     return false;
   };
   if (!Residual(fem, params, delta_, r)) return fail("film solve failed");
+  KeepSurface();
   if (recycled_u_.size() > 0 && recycled_u_.front().size() != n) ForgetDirections();
   // Tries delta_ + lambda step for lambda = 1, 1/2, ... (up to `cuts` halvings): the first trial
   // that lowers |R|_2 by the factor `decrease` (relative to lambda) is taken into delta_ and r.
@@ -411,6 +489,7 @@ bool ElasticFilm::Newton(ReynoldsFem& fem, const ReynoldsParams& params, std::st
       if (r_trial.norm() <= (1.0 - decrease * lambda) * norm0) {
         delta_ = trial;
         r = r_trial;
+        KeepSurface();
         return true;
       }
     }

@@ -23,6 +23,7 @@
 /// film solver itself, every film model plugs in unchanged; each Krylov product costs one
 /// warm-started film solve.
 #include <Eigen/Dense>
+#include <deque>
 #include <optional>
 #include <string>
 #include <vector>
@@ -105,6 +106,13 @@ class SurfaceCompliance {
   /// `offset` [m] (a bearing's film turns with its line of centres). Others: no effect (on a
   /// film mesh that is not periodic the imported compliance is formed once on the film nodes).
   void SetOffset(double offset);
+  /// Whether the compliance moves over the film (an imported one on a periodic film: the film
+  /// turns against the body). Its deformation is then best described on the body's surface.
+  bool Moves() const { return kind_ == Kind::kTransfer && transfer_->Moves(); }
+  /// Moves(): the body surface's deformation of the last Apply; Interpolate puts such a
+  /// deformation onto the film at the current offset.
+  const Eigen::VectorXd& LastSurfaceDeformation() const;
+  void Interpolate(const Eigen::VectorXd& surface, Eigen::VectorXd& out) const;
   /// The diagonal coefficient of node k [m/Pa].
   double Diagonal(int k) const;
   const Eigen::MatrixXd& dense() const { return dense_; }
@@ -144,6 +152,14 @@ class ElasticFilm {
   /// and the film's other inputs (rate, boundary) are set; on return the fem holds the deformed
   /// film and its solution. Rigid: one plain solve.
   const ElasticSolveStats& Solve(ReynoldsFem& fem, const ReynoldsParams& params);
+  /// Solve with the film's inputs: the numbers the rigid film, its rate and the speeds are made
+  /// from (e.g. an eccentricity, its rate, the surface speeds, the cosine and sine of an angle),
+  /// each smooth in time. Newton then starts from the deformation a linear model of the last
+  /// converged solves predicts for these inputs (instead of the last deformation): in a time
+  /// integration the solves follow the state, and the prediction starts Newton within a few
+  /// tolerances far more often.
+  const ElasticSolveStats& Solve(ReynoldsFem& fem, const ReynoldsParams& params,
+                                 const Eigen::VectorXd& inputs);
   const Eigen::VectorXd& deformation() const { return delta_; }
   const ElasticSolveStats& stats() const { return stats_; }
   const SurfaceCompliance& compliance() const { return compliance_; }
@@ -154,6 +170,8 @@ class ElasticFilm {
     delta_.resize(0);
     last_min_film_ = 0.0;
     last_h_rigid_.resize(0);
+    solved_.clear();
+    surface_.resize(0);
     ForgetDirections();
   }
   /// The share of the compliance applied, in [0, 1] (1 = the surfaces' own): an engine run
@@ -168,6 +186,11 @@ class ElasticFilm {
   // Newton's method from delta_ on the compliance scaled by scale_; false (and why) when it
   // does not converge.
   bool Newton(ReynoldsFem& fem, const ReynoldsParams& params, std::string& why);
+  // The deformation a linear model of the converged solves kept predicts at `inputs` (false
+  // when there are too few to fit one).
+  bool Predict(const Eigen::VectorXd& inputs, Eigen::VectorXd& delta) const;
+  // Keeps the body surface's deformation of the residual just evaluated (at delta_).
+  void KeepSurface();
   // Drops the Krylov directions kept for the next Newton steps.
   void ForgetDirections();
   // Ends a solve: on failure the fem is left at delta_ and the status says why.
@@ -186,6 +209,19 @@ class ElasticFilm {
   // the point they were made: the next steps try them first (at most kKrylov).
   static constexpr int kKrylov = 40;
   std::vector<Eigen::VectorXd> recycled_u_, recycled_c_;
+  // The last converged solves that came with inputs (the compliance's share appended), newest
+  // last, at most kPredictorPoints: the predictor's data.
+  // `deformation`: the film's, or the body surface's where the compliance moves over the film
+  // (on the film nodes the deformation then also changes as they pass the FE grid's lines).
+  struct Solved {
+    Eigen::VectorXd inputs, deformation;
+  };
+  static constexpr int kPredictorPoints = 10;
+  // The predictor's ridge on the fitted weights (inputs measured by their spread).
+  static constexpr double kRidge = 0.01;
+  std::deque<Solved> solved_;
+  Eigen::VectorXd inputs_;   // the current solve's (empty: no prediction)
+  Eigen::VectorXd surface_;  // Moves(): the body surface's deformation at delta_
 };
 
 }  // namespace filmdyn::lubrication

@@ -69,11 +69,18 @@ class ComplianceTransfer {
   /// The film's x is the FE grid's x minus `offset` [m] (a bearing's film turns with its line
   /// of centres): the weights are recomputed when it changes.
   void SetOffset(double offset);
+  /// Whether the film moves over the FE grid (a periodic grid: SetOffset turns the film).
+  bool Moves() const { return period_ > 0.0; }
   /// The film's deformation under `load` [Pa]: the FE matrix applied without its smallest
   /// coefficients (those of a row whose magnitudes sum to at most kDroppedShare of the row's):
   /// the deformation differs from the whole matrix's by at most kDroppedShare of the largest
   /// row sum times the largest load.
   void Apply(const Eigen::VectorXd& load, Eigen::VectorXd& out) const;
+  /// The FE surface's nodal deformation of the last Apply (before its interpolation onto the
+  /// film) [m/Pa times the load's unit].
+  const Eigen::VectorXd& LastSurfaceDeformation() const { return displacement_; }
+  /// A deformation of the FE surface's nodes interpolated onto the film nodes (as Apply does).
+  void Interpolate(const Eigen::VectorXd& surface, Eigen::VectorXd& out) const;
   double Diagonal(int k) const;
   bool Nonnegative() const { return nonnegative_; }
   static constexpr double kDroppedShare = 1e-6;

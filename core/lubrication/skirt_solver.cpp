@@ -246,7 +246,12 @@ void SkirtSolver::SolvePanel(Panel& pa, const SkirtState& s, double time_step) {
   params.u_diff = s.piston_velocity;  // U1 - U2, surface 1 = skirt (at rest)
   params.film = config_.film.get();
   params.time_step = time_step;
-  pa.elastic_stats = pa.elastic.Solve(fem, params);
+  // The film's inputs for the deformation's predictor (ElasticFilm): the piston's secondary
+  // motion and speed, and where a starved skirt's leading edge meets the liner's oil.
+  Eigen::VectorXd inputs(config_.supply == SkirtSupply::kStarved ? 6 : 5);
+  inputs.head<5>() << s.e0, s.gamma, s.e0_dot, s.gamma_dot, s.piston_velocity;
+  if (inputs.size() == 6) inputs[5] = s.stroke_position;
+  pa.elastic_stats = pa.elastic.Solve(fem, params, inputs);
   const ReynoldsSolution& sol = fem.solution();
   pa.stats = sol.stats;
 

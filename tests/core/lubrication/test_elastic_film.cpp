@@ -19,6 +19,7 @@
 #include "core/lubrication/ehd_validation.hpp"
 #include "core/lubrication/film_compliance.hpp"
 #include "core/lubrication/imported_compliance.hpp"
+#include "core/lubrication/oil_validation.hpp"
 #include "core/lubrication/skirt_solver.hpp"
 
 using namespace filmdyn;
@@ -457,6 +458,89 @@ class TestElasticFilm : public QObject {
       const double tol = nx == 60 ? 0.01 : 0.05;
       QVERIFY(std::abs(load) < tol && std::abs(deformation) < tol);
     }
+  }
+
+  // The deformation's predictor (a linear model of the last solves over the film's inputs): a
+  // slider whose films move smoothly, solved once with its inputs and once without, step for
+  // step. Both hold every solve to the tolerance (so the answers agree to about that), and the
+  // predicted start saves film solves.
+  void predictedDeformationKeepsTheAnswerWithFewerFilmSolves() {
+    for (const ComplianceModel model :
+         {ComplianceModel::kElasticLayer, ComplianceModel::kHalfSpace}) {
+      InclinedSlider slider;
+      SliderStrip with = MakeSliderStrip(slider, 120), without = MakeSliderStrip(slider, 120);
+      ComplianceSpec spec;
+      spec.model = model;
+      spec.layer_thickness = 2e-3;
+      spec.layer_modulus = 3e9;
+      spec.modulus1 = spec.modulus2 = 6e9;
+      ElasticFilm a(SurfaceCompliance::Build(spec, with.fem->mesh(), std::nullopt), spec);
+      ElasticFilm b(SurfaceCompliance::Build(spec, without.fem->mesh(), std::nullopt), spec);
+      const TriMesh& m = with.fem->mesh();
+      long solves_a = 0, solves_b = 0;
+      double worst = 0.0;
+      for (int step = 0; step < 60; ++step) {
+        const double t = 0.05 * step;
+        const double h_in = 10e-6 * (1.0 + 0.3 * std::sin(t)),
+                     h_out = 5e-6 * (1.0 + 0.2 * std::sin(1.7 * t));
+        const double speed = 10.0 * (1.0 + 0.2 * std::cos(t));
+        for (SliderStrip* strip : {&with, &without}) {
+          for (int k = 0; k < m.NodeCount(); ++k)
+            strip->fem->film_thickness()[k] = h_in + (h_out - h_in) * m.x[k] / slider.length;
+          strip->params.u_sum = strip->params.u_diff = speed;
+        }
+        const ElasticSolveStats& sa =
+            a.Solve(*with.fem, with.params, Eigen::Vector3d(h_in, h_out, speed));
+        QVERIFY2(sa.converged, sa.message.c_str());
+        solves_a += sa.film_solves;
+        const ElasticSolveStats& sb = b.Solve(*without.fem, without.params);
+        QVERIFY2(sb.converged, sb.message.c_str());
+        solves_b += sb.film_solves;
+        const double allowed = std::max(sa.tolerance, sb.tolerance);
+        worst =
+            std::max(worst, (a.deformation() - b.deformation()).cwiseAbs().maxCoeff() / allowed);
+      }
+      qInfo(
+          "%s: film solves %ld with the predictor, %ld without; deformations differ by at most "
+          "%.2f tolerances",
+          ToString(model), solves_a, solves_b, worst);
+      QVERIFY(worst <= 4.0);
+      QVERIFY(solves_a < 0.8 * solves_b);
+    }
+  }
+
+  // A compliance that moves over the film (an imported grid round a whole bearing, the line of
+  // centres turning against it) is predicted on the body's surface: a journal orbiting through
+  // 40 states, each solved from the last ones, gives what a fresh solver gives at that state.
+  void movingComplianceIsPredictedOnTheBodySurface() {
+    const double radius = 0.025, width = 0.02;
+    BearingConfig cfg = LayerBearing(1.0, 60, 8);
+    cfg.mesh.symmetric_half = false;
+    cfg.compliance.model = ComplianceModel::kImported;
+    cfg.compliance.imported = std::make_shared<const ImportedCompliance>(HalfSpaceBearingSurface(
+        radius, width, 30, 5, CompositeCompliance(210e9, 0.3, 110e9, 0.33)));
+    BearingSolver warm(cfg);
+    long solves = 0;
+    double worst = 0.0;
+    for (int step = 0; step < 40; ++step) {
+      const double t = 0.02 * step;
+      BearingState s;
+      s.omega_journal = 314.0;
+      s.eps = 0.7 + 0.15 * std::sin(3.0 * t);
+      s.eps_dot = 0.45 * std::cos(3.0 * t);
+      s.line_of_centres_angle = 2.0 * t;
+      s.line_of_centres_rate = 2.0;
+      s.bearing_angle = -0.5 * t;
+      const BearingResult r = warm.Solve(s);
+      QVERIFY2(r.elastic.converged, r.elastic.message.c_str());
+      solves += r.elastic.film_solves;
+      const BearingResult fresh = BearingSolver(cfg).Solve(s);
+      QVERIFY2(fresh.elastic.converged, fresh.elastic.message.c_str());
+      worst = std::max(worst, std::abs(r.load / fresh.load - 1.0));
+    }
+    qInfo("orbit of 40 states: %.2f film solves per solve, loads within %.2g of fresh solves",
+          solves / 40.0, worst);
+    QVERIFY(worst < 1e-3);
   }
 
   // The shipped CalculiX example (examples/calculix-bearing-shell): a uniform pressure deflects
