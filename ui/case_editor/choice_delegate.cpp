@@ -69,4 +69,10 @@ void ChoiceDelegate::setModelData(QWidget* editor, QAbstractItemModel* model,
   if (combo->currentIndex() >= 0) model->setData(index, combo->currentText(), Qt::EditRole);
 }
 
+void ChoiceDelegate::initStyleOption(QStyleOptionViewItem* option, const QModelIndex& index) const {
+  QStyledItemDelegate::initStyleOption(option, index);
+  option->features &= ~QStyleOptionViewItem::WrapText;
+  option->textElideMode = Qt::ElideLeft;
+}
+
 }  // namespace filmdyn::ui

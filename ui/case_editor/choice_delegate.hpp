@@ -22,6 +22,10 @@ class ChoiceDelegate : public QStyledItemDelegate {
   void setEditorData(QWidget* editor, const QModelIndex& index) const override;
   void setModelData(QWidget* editor, QAbstractItemModel* model,
                     const QModelIndex& index) const override;
+
+ protected:
+  /// One line, elided on the left: a file name too long for the cell keeps its own name.
+  void initStyleOption(QStyleOptionViewItem* option, const QModelIndex& index) const override;
 };
 
 }  // namespace filmdyn::ui

@@ -91,6 +91,11 @@ QVariant ParameterTableModel::data(const QModelIndex& index, int role) const {
     case Qt::ToolTipRole:
       // A bad cell: core's reason (also shown in the status bar); otherwise what the input is.
       if (bad) return QString::fromStdString(issue->second);
+      if (p.text && index.column() == kValue) {  // the whole text first (the cell may elide it)
+        const std::string text =
+            p.field->text(const_cast<engine::EngineCase&>(document_->engineCase()));
+        if (!text.empty()) return QString::fromStdString(text) + "\n\n" + FieldToolTip(*p.field);
+      }
       return FieldToolTip(*p.field);
     case Qt::BackgroundRole:
       if (bad) return QBrush(QColor(255, 205, 205));

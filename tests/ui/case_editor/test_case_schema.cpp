@@ -132,6 +132,8 @@ class TestCaseSchema : public QObject {
     QVERIFY(model.setData(cell, "fe/skirt.mtx", Qt::EditRole));
     QCOMPARE(document.engineCase().skirt.compliance_file, std::string("fe/skirt.mtx"));
     QCOMPARE(model.data(cell, Qt::DisplayRole).toString(), QString("fe/skirt.mtx"));
+    // The whole name in the tooltip (the narrow cell elides it on the left).
+    QVERIFY(model.data(cell, Qt::ToolTipRole).toString().startsWith("fe/skirt.mtx\n"));
     QVERIFY(document.setChoice("skirt.compliance", "imported"));
     QVERIFY(!model.data(cell.siblingAtColumn(ui::ParameterTableModel::kNote), Qt::DisplayRole)
                  .toString()
