@@ -289,10 +289,8 @@ void ComplianceTransfer::SetOffset(double offset) {
   Compute();
 }
 
-ComplianceTransfer::Weights ComplianceTransfer::WeightsAt(double x, double y) const {
-  const std::vector<double>& xl = fe_->x_lines;
+ComplianceTransfer::AxisPart ComplianceTransfer::YPart(double y) const {
   const std::vector<double>& yl = fe_->y_lines;
-  const int nx = static_cast<int>(xl.size());
   const double ty = 1e-9 * (yl.back() - yl.front());
   if (y < yl.front() - ty || y > yl.back() + ty) {
     throw InputError(field_, fmt::format("film point y = {:g} m", y),
@@ -302,48 +300,81 @@ ComplianceTransfer::Weights ComplianceTransfer::WeightsAt(double x, double y) co
   y = std::clamp(y, yl.front(), yl.back());
   int j = static_cast<int>(std::upper_bound(yl.begin(), yl.end(), y) - yl.begin()) - 1;
   j = std::clamp(j, 0, static_cast<int>(yl.size()) - 2);
-  const double sy = (y - yl[j]) / (yl[j + 1] - yl[j]);
-  int i0 = 0, i1 = 0;
-  double sx = 0.0;
+  return {j, j + 1, (y - yl[j]) / (yl[j + 1] - yl[j])};
+}
+
+ComplianceTransfer::AxisPart ComplianceTransfer::XPart(double x) const {
+  const std::vector<double>& xl = fe_->x_lines;
+  const int nx = static_cast<int>(xl.size());
   if (period_ > 0.0) {
     x = std::fmod(x - xl.front(), period_);
     if (x < 0.0) x += period_;
     x += xl.front();
     int i = static_cast<int>(std::upper_bound(xl.begin(), xl.end(), x) - xl.begin()) - 1;
     i = std::clamp(i, 0, nx - 1);
-    i0 = i;
-    i1 = (i + 1) % nx;
     const double right = i + 1 < nx ? xl[i + 1] : xl.front() + period_;
-    sx = (x - xl[i]) / (right - xl[i]);
-  } else {
-    const double tx = 1e-9 * (xl.back() - xl.front());
-    if (x < xl.front() - tx || x > xl.back() + tx) {
-      throw InputError(field_, fmt::format("film point x = {:g} m", x),
-                       fmt::format("a film inside the FE surface's x range [{:g}, {:g}] m",
-                                   xl.front(), xl.back()));
-    }
-    x = std::clamp(x, xl.front(), xl.back());
-    int i = static_cast<int>(std::upper_bound(xl.begin(), xl.end(), x) - xl.begin()) - 1;
-    i = std::clamp(i, 0, nx - 2);
-    i0 = i;
-    i1 = i + 1;
-    sx = (x - xl[i]) / (xl[i + 1] - xl[i]);
+    return {i, (i + 1) % nx, (x - xl[i]) / (right - xl[i])};
   }
-  Weights w;
-  w.node = {i0 + nx * j, i1 + nx * j, i0 + nx * (j + 1), i1 + nx * (j + 1)};
-  w.w = {(1 - sx) * (1 - sy), sx * (1 - sy), (1 - sx) * sy, sx * sy};
-  return w;
+  const double tx = 1e-9 * (xl.back() - xl.front());
+  if (x < xl.front() - tx || x > xl.back() + tx) {
+    throw InputError(field_, fmt::format("film point x = {:g} m", x),
+                     fmt::format("a film inside the FE surface's x range [{:g}, {:g}] m",
+                                 xl.front(), xl.back()));
+  }
+  x = std::clamp(x, xl.front(), xl.back());
+  int i = static_cast<int>(std::upper_bound(xl.begin(), xl.end(), x) - xl.begin()) - 1;
+  i = std::clamp(i, 0, nx - 2);
+  return {i, i + 1, (x - xl[i]) / (xl[i + 1] - xl[i])};
 }
 
 void ComplianceTransfer::Compute() {
   const std::size_t n = film_x_.size();
-  own_.resize(n);
   const bool mirrored = mirror_y_ || mirror_x_;
+  if (x_keys_.empty()) {
+    // Once: each film node's (and mirror image's) y part, which no offset changes, and its x
+    // among the film's distinct x values (a film mesh has few: its x lines), whose parts are
+    // all an offset changes.
+    auto own_x = [&](std::size_t k) { return film_x_[k]; };
+    auto mirror_x = [&](std::size_t k) {
+      return mirror_x_ ? 2.0 * *mirror_x_ - film_x_[k] : film_x_[k];
+    };
+    std::vector<double> xs(film_x_);
+    if (mirror_x_)
+      for (std::size_t k = 0; k < n; ++k) xs.push_back(mirror_x(k));
+    std::sort(xs.begin(), xs.end());
+    xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
+    x_keys_ = std::move(xs);
+    auto key = [&](double x) {
+      return static_cast<int>(std::lower_bound(x_keys_.begin(), x_keys_.end(), x) -
+                              x_keys_.begin());
+    };
+    key_own_.resize(n);
+    y_own_.resize(n);
+    key_mirror_.resize(mirrored ? n : 0);
+    y_mirror_.resize(mirrored ? n : 0);
+    for (std::size_t k = 0; k < n; ++k) {
+      key_own_[k] = key(own_x(k));
+      y_own_[k] = YPart(film_y_[k]);
+      if (!mirrored) continue;
+      key_mirror_[k] = key(mirror_x(k));
+      y_mirror_[k] = YPart(mirror_y_ ? 2.0 * *mirror_y_ - film_y_[k] : film_y_[k]);
+    }
+  }
+  std::vector<AxisPart> x_parts(x_keys_.size());
+  for (std::size_t u = 0; u < x_keys_.size(); ++u) x_parts[u] = XPart(x_keys_[u] + offset_);
+  const int nx = static_cast<int>(fe_->x_lines.size());
+  auto combine = [nx](const AxisPart& a, const AxisPart& b) {
+    Weights w;
+    w.node = {a.i0 + nx * b.i0, a.i1 + nx * b.i0, a.i0 + nx * b.i1, a.i1 + nx * b.i1};
+    w.w = {(1 - a.s) * (1 - b.s), a.s * (1 - b.s), (1 - a.s) * b.s, a.s * b.s};
+    return w;
+  };
+  own_.resize(n);
   mirror_.resize(mirrored ? n : 0);
   for (std::size_t k = 0; k < n; ++k) {
-    own_[k] = WeightsAt(film_x_[k] + offset_, film_y_[k]);
-    if (mirror_y_) mirror_[k] = WeightsAt(film_x_[k] + offset_, 2.0 * *mirror_y_ - film_y_[k]);
-    if (mirror_x_) mirror_[k] = WeightsAt(2.0 * *mirror_x_ - film_x_[k] + offset_, film_y_[k]);
+    own_[k] = combine(x_parts[static_cast<std::size_t>(key_own_[k])], y_own_[k]);
+    if (mirrored)
+      mirror_[k] = combine(x_parts[static_cast<std::size_t>(key_mirror_[k])], y_mirror_[k]);
   }
 }
 

@@ -92,7 +92,13 @@ class ComplianceTransfer {
     std::array<int, 4> node{};
     std::array<double, 4> w{};
   };
-  Weights WeightsAt(double x, double y) const;
+  // One axis's bilinear part: the grid lines i0, i1 around the point and its share s of the way.
+  struct AxisPart {
+    int i0 = 0, i1 = 0;
+    double s = 0.0;
+  };
+  AxisPart XPart(double x) const;  // throws InputError naming the film point outside the grid
+  AxisPart YPart(double y) const;
   void Compute();
 
   std::shared_ptr<const ImportedCompliance> fe_;
@@ -101,6 +107,11 @@ class ComplianceTransfer {
   double period_ = 0.0, offset_ = 0.0;
   std::string field_;
   std::vector<Weights> own_, mirror_;
+  // Compute's cache: the film's distinct x values, each node's (and mirror image's) among them
+  // and y part.
+  std::vector<double> x_keys_;
+  std::vector<int> key_own_, key_mirror_;
+  std::vector<AxisPart> y_own_, y_mirror_;
   bool nonnegative_ = false;
   Eigen::SparseMatrix<double> kept_;  // the FE matrix without its dropped coefficients
   mutable Eigen::VectorXd force_, displacement_;
