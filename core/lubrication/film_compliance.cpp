@@ -248,14 +248,6 @@ void SurfaceCompliance::SetOffset(double offset) {
   if (transfer_) transfer_->SetOffset(offset);
 }
 
-const Eigen::VectorXd& SurfaceCompliance::LastSurfaceDeformation() const {
-  return transfer_->LastSurfaceDeformation();
-}
-
-void SurfaceCompliance::Interpolate(const Eigen::VectorXd& surface, Eigen::VectorXd& out) const {
-  transfer_->Interpolate(surface, out);
-}
-
 double SurfaceCompliance::Diagonal(int k) const {
   switch (kind_) {
     case Kind::kNone:
@@ -315,13 +307,16 @@ bool ElasticFilm::Predict(const Eigen::VectorXd& z, Eigen::VectorXd& delta) cons
     }
   }
   const Solved& r = solved_[ref];
-  Eigen::VectorXd field = r.deformation;
+  Eigen::VectorXd field = r.field;
   if (nearest > 0.0) {
     // delta(z) ~ delta_ref + sum_i x_i (delta_i - delta_ref), the weights x fitting the inputs'
     // differences in least squares, ridge-regularised: points much nearer to the reference than
     // the new one (a Newton iterate, a Jacobian column) carry little weight, so that their
     // deformations' noise (the tolerance) is not extrapolated. Where the compliance moves over
-    // the film, the fit is made on the body surface's deformation and interpolated onto the film.
+    // the film, the fit is made on the film's load and the deformation is C (at the new offset)
+    // times the predicted load: on the film nodes the deformation also changes with the offset,
+    // as they pass the FE grid's lines, which a fit of the deformation itself misses (in the
+    // default engine run by 16-64 tolerances where the load's misses by 1-4).
     Eigen::MatrixXd a(d, m - 1);
     for (int i = 0, col = 0; i < m; ++i)
       if (i != ref) a.col(col++) = (solved_[i].inputs - r.inputs).cwiseProduct(w);
@@ -330,18 +325,15 @@ bool ElasticFilm::Predict(const Eigen::VectorXd& z, Eigen::VectorXd& delta) cons
     g.diagonal().array() += kRidge * kRidge;
     const Eigen::VectorXd x = g.ldlt().solve(a.transpose() * b);
     for (int i = 0, col = 0; i < m; ++i)
-      if (i != ref) field += x[col++] * (solved_[i].deformation - r.deformation);
+      if (i != ref) field += x[col++] * (solved_[i].field - r.field);
   }
   if (compliance_.Moves()) {
-    compliance_.Interpolate(field, delta);
+    compliance_.Apply(field, delta);  // C at the current offset: one product
+    delta *= target_;
   } else {
     delta = std::move(field);
   }
   return delta.size() == delta_.size() && delta.allFinite();
-}
-
-void ElasticFilm::KeepSurface() {
-  if (compliance_.Moves()) surface_ = scale_ * compliance_.LastSurfaceDeformation();
 }
 
 const ElasticSolveStats& ElasticFilm::Solve(ReynoldsFem& fem, const ReynoldsParams& params) {
@@ -455,7 +447,7 @@ const ElasticSolveStats& ElasticFilm::Finish(ReynoldsFem& fem, const ReynoldsPar
     if (inputs_.size() > 0) {
       if (!solved_.empty() && solved_.back().inputs.size() != inputs_.size()) solved_.clear();
       if (solved_.size() == static_cast<std::size_t>(kPredictorPoints)) solved_.pop_front();
-      solved_.push_back({inputs_, compliance_.Moves() ? surface_ : delta_});
+      solved_.push_back({inputs_, compliance_.Moves() ? load_ : delta_});
     }
   }
   return stats_;
@@ -469,7 +461,6 @@ bool ElasticFilm::Newton(ReynoldsFem& fem, const ReynoldsParams& params, std::st
     return false;
   };
   if (!Residual(fem, params, delta_, r)) return fail("film solve failed");
-  KeepSurface();
   if (recycled_u_.size() > 0 && recycled_u_.front().size() != n) ForgetDirections();
   // Tries delta_ + lambda step for lambda = 1, 1/2, ... (up to `cuts` halvings): the first trial
   // that lowers |R|_2 by the factor `decrease` (relative to lambda) is taken into delta_ and r.
@@ -489,7 +480,6 @@ bool ElasticFilm::Newton(ReynoldsFem& fem, const ReynoldsParams& params, std::st
       if (r_trial.norm() <= (1.0 - decrease * lambda) * norm0) {
         delta_ = trial;
         r = r_trial;
-        KeepSurface();
         return true;
       }
     }

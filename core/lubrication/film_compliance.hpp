@@ -107,12 +107,8 @@ class SurfaceCompliance {
   /// film mesh that is not periodic the imported compliance is formed once on the film nodes).
   void SetOffset(double offset);
   /// Whether the compliance moves over the film (an imported one on a periodic film: the film
-  /// turns against the body). Its deformation is then best described on the body's surface.
+  /// turns against the body, SetOffset).
   bool Moves() const { return kind_ == Kind::kTransfer && transfer_->Moves(); }
-  /// Moves(): the body surface's deformation of the last Apply; Interpolate puts such a
-  /// deformation onto the film at the current offset.
-  const Eigen::VectorXd& LastSurfaceDeformation() const;
-  void Interpolate(const Eigen::VectorXd& surface, Eigen::VectorXd& out) const;
   /// The diagonal coefficient of node k [m/Pa].
   double Diagonal(int k) const;
   const Eigen::MatrixXd& dense() const { return dense_; }
@@ -171,7 +167,6 @@ class ElasticFilm {
     last_min_film_ = 0.0;
     last_h_rigid_.resize(0);
     solved_.clear();
-    surface_.resize(0);
     ForgetDirections();
   }
   /// The share of the compliance applied, in [0, 1] (1 = the surfaces' own): an engine run
@@ -189,8 +184,6 @@ class ElasticFilm {
   // The deformation a linear model of the converged solves kept predicts at `inputs` (false
   // when there are too few to fit one).
   bool Predict(const Eigen::VectorXd& inputs, Eigen::VectorXd& delta) const;
-  // Keeps the body surface's deformation of the residual just evaluated (at delta_).
-  void KeepSurface();
   // Drops the Krylov directions kept for the next Newton steps.
   void ForgetDirections();
   // Ends a solve: on failure the fem is left at delta_ and the status says why.
@@ -211,17 +204,17 @@ class ElasticFilm {
   std::vector<Eigen::VectorXd> recycled_u_, recycled_c_;
   // The last converged solves that came with inputs (the compliance's share appended), newest
   // last, at most kPredictorPoints: the predictor's data.
-  // `deformation`: the film's, or the body surface's where the compliance moves over the film
-  // (on the film nodes the deformation then also changes as they pass the FE grid's lines).
+  // `field`: the film's deformation or, where the compliance moves over the film, its load
+  // (film + asperity pressure): the deformation then also changes as the film's nodes pass the
+  // FE grid's lines, which C at the new offset applied to the predicted load carries exactly.
   struct Solved {
-    Eigen::VectorXd inputs, deformation;
+    Eigen::VectorXd inputs, field;
   };
   static constexpr int kPredictorPoints = 10;
   // The predictor's ridge on the fitted weights (inputs measured by their spread).
   static constexpr double kRidge = 0.01;
   std::deque<Solved> solved_;
-  Eigen::VectorXd inputs_;   // the current solve's (empty: no prediction)
-  Eigen::VectorXd surface_;  // Moves(): the body surface's deformation at delta_
+  Eigen::VectorXd inputs_;  // the current solve's (empty: no prediction)
 };
 
 }  // namespace filmdyn::lubrication

@@ -395,15 +395,10 @@ void ComplianceTransfer::Apply(const Eigen::VectorXd& load, Eigen::VectorXd& out
     for (Eigen::SparseMatrix<double>::InnerIterator it(kept_, j); it; ++it)
       displacement_[it.row()] += it.value() * f;
   }
-  Interpolate(displacement_, out);
-}
-
-void ComplianceTransfer::Interpolate(const Eigen::VectorXd& surface, Eigen::VectorXd& out) const {
-  const std::size_t n = own_.size();
   out.resize(static_cast<long>(n));
   for (std::size_t k = 0; k < n; ++k) {
     double d = 0.0;
-    for (int q = 0; q < 4; ++q) d += own_[k].w[q] * surface[own_[k].node[q]];
+    for (int q = 0; q < 4; ++q) d += own_[k].w[q] * displacement_[own_[k].node[q]];
     out[static_cast<long>(k)] = d;
   }
 }

@@ -76,11 +76,6 @@ class ComplianceTransfer {
   /// the deformation differs from the whole matrix's by at most kDroppedShare of the largest
   /// row sum times the largest load.
   void Apply(const Eigen::VectorXd& load, Eigen::VectorXd& out) const;
-  /// The FE surface's nodal deformation of the last Apply (before its interpolation onto the
-  /// film) [m/Pa times the load's unit].
-  const Eigen::VectorXd& LastSurfaceDeformation() const { return displacement_; }
-  /// A deformation of the FE surface's nodes interpolated onto the film nodes (as Apply does).
-  void Interpolate(const Eigen::VectorXd& surface, Eigen::VectorXd& out) const;
   double Diagonal(int k) const;
   bool Nonnegative() const { return nonnegative_; }
   static constexpr double kDroppedShare = 1e-6;

@@ -510,9 +510,10 @@ class TestElasticFilm : public QObject {
   }
 
   // A compliance that moves over the film (an imported grid round a whole bearing, the line of
-  // centres turning against it) is predicted on the body's surface: a journal orbiting through
-  // 40 states, each solved from the last ones, gives what a fresh solver gives at that state.
-  void movingComplianceIsPredictedOnTheBodySurface() {
+  // centres turning against it) is predicted through the film's load (C at the new angle times
+  // the predicted load): a journal orbiting through 40 states, each solved from the last ones,
+  // gives what a fresh solver gives at that state.
+  void movingComplianceIsPredictedThroughTheLoad() {
     const double radius = 0.025, width = 0.02;
     BearingConfig cfg = LayerBearing(1.0, 60, 8);
     cfg.mesh.symmetric_half = false;
@@ -541,6 +542,8 @@ class TestElasticFilm : public QObject {
     qInfo("orbit of 40 states: %.2f film solves per solve, loads within %.2g of fresh solves",
           solves / 40.0, worst);
     QVERIFY(worst < 1e-3);
+    // Measured 3.05 (a fit of the deformation itself, interpolated from the FE grid: 4.22).
+    QVERIFY(solves / 40.0 < 3.6);
   }
 
   // The shipped CalculiX example (examples/calculix-bearing-shell): a uniform pressure deflects
