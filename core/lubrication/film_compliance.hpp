@@ -19,9 +19,11 @@
 /// delta) = 0 with P the film solver's map from a film to its load (with its own cavitation,
 /// pressure and shear laws), the Newton equations (I - C P') s = -R solved by GMRES with the
 /// products P' v taken as directional differences of film solves (a Jacobian-free
-/// Newton-Krylov method), globalised by a backtracking line search on max|R|. Because P is the
-/// film solver itself, every film model plugs in unchanged; each Krylov product costs one
-/// warm-started film solve.
+/// Newton-Krylov method; GCR whose directions are kept from solve to solve), globalised by a
+/// backtracking line search on |R|. Because P is the film solver itself, every film model plugs
+/// in unchanged; each Krylov product costs one warm-started film solve. In a time integration
+/// Newton starts from a deformation predicted by a linear model of the last converged solves
+/// over the film's inputs (docs/validation/ehd.md, "Where Newton starts").
 #include <Eigen/Dense>
 #include <deque>
 #include <optional>
@@ -202,11 +204,11 @@ class ElasticFilm {
   // the point they were made: the next steps try them first (at most kKrylov).
   static constexpr int kKrylov = 40;
   std::vector<Eigen::VectorXd> recycled_u_, recycled_c_;
-  // The last converged solves that came with inputs (the compliance's share appended), newest
-  // last, at most kPredictorPoints: the predictor's data.
-  // `field`: the film's deformation or, where the compliance moves over the film, its load
-  // (film + asperity pressure): the deformation then also changes as the film's nodes pass the
-  // FE grid's lines, which C at the new offset applied to the predicted load carries exactly.
+  // The predictor's data: the last converged solves that came with inputs (the compliance's
+  // share appended), newest last, at most kPredictorPoints. `field` is the film's deformation
+  // or, where the compliance moves over the film, its load (film + asperity pressure): the
+  // deformation then also changes as the film's nodes pass the FE grid's lines, which C at the
+  // new offset applied to the predicted load carries exactly.
   struct Solved {
     Eigen::VectorXd inputs, field;
   };
