@@ -580,8 +580,18 @@ bool ElasticFilm::Newton(ReynoldsFem& fem, const ReynoldsParams& params, std::st
     if (!line_search(6, 1e-4)) {
       ForgetDirections();
       if (stale) continue;  // again, with fresh directions only
+      // A Newton step far larger than the residual it answers: I - C P' is nearly singular,
+      // the film-surface equilibrium turns here (docs/validation/ehd.md, known limits).
+      const double gain = step.norm() / beta;
       return fail("line search found no decrease of the deformation residual (residual " +
-                  FormatValue(stats_.residual) + " m)");
+                  FormatValue(stats_.residual) + " m" +
+                  (gain > kTurningGain
+                       ? "; the Newton step is " + FormatValue(std::round(gain)) +
+                             " times the residual: the film-surface equilibrium has a turning "
+                             "point here, past which the quasi-static elastic model has no "
+                             "nearby solution"
+                       : std::string()) +
+                  ")");
     }
   }
 }

@@ -203,6 +203,9 @@ class ElasticFilm {
   // Krylov directions U of earlier Newton steps and their orthonormal images (I - C P') U at
   // the point they were made: the next steps try them first (at most kKrylov).
   static constexpr int kKrylov = 40;
+  // A failed Newton step this many times the residual it answers is reported as a turning
+  // point of the equilibrium (measured 200 at the CalculiX skirt's; about 1 in a good step).
+  static constexpr double kTurningGain = 20.0;
   std::vector<Eigen::VectorXd> recycled_u_, recycled_c_;
   // The predictor's data: the last converged solves that came with inputs (the compliance's
   // share appended), newest last, at most kPredictorPoints. `field` is the film's deformation

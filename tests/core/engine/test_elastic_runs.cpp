@@ -162,6 +162,26 @@ class TestElasticRuns : public QObject {
     QVERIFY(moft[1] < 0.9 * moft[0]);
     QVERIFY(e0[1] > e0[0]);
   }
+
+  // A known limit, stated as what the user sees: below 6000 rpm the CalculiX skirt's film-shell
+  // equilibrium turns shortly after firing (docs/validation/ehd.md). The run ends failed with a
+  // status naming the joint, the panel, the crank angle, the residual and the turning point, and
+  // keeps the samples it reached.
+  void importedSkirtTurningPointEndsTheRunClearly() {
+    engine::RunConfig config = DefaultConfig(5000, engine::Model::kOnlySkirt);
+    engine::EngineCase& c = config.engine_case;
+    c.solver.error_estimate = 0;
+    c.skirt.compliance = lubrication::ComplianceModel::kImported;
+    c.skirt.compliance_file = "examples/calculix-skirt-shell/skirt_compliance.mtx";
+    config.factories = engine::FilmJointFactories(FILMDYN_SOURCE_DIR);
+    const engine::RunResult r = engine::RunJob(config);
+    qInfo("%s", r.message.c_str());
+    QCOMPARE(r.status, engine::RunStatus::kFailed);
+    for (const char* part :
+         {"skirt elastic film", "thrust panel", "residual", "turning point", "°CA"})
+      QVERIFY2(r.message.find(part) != std::string::npos, part);
+    QVERIFY(!r.samples.empty());
+  }
 };
 
 QTEST_APPLESS_MAIN(TestElasticRuns)
