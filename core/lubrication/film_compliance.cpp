@@ -290,7 +290,7 @@ bool ElasticFilm::Predict(const Eigen::VectorXd& z, Eigen::VectorXd& delta) cons
   const int m = static_cast<int>(solved_.size());
   if (z.size() == 0 || m < 2 || solved_.back().inputs.size() != z.size()) return false;
   // Each input measured by its spread over the points and the new one (an input that does not
-  // change carries no weight), around the nearest point.
+  // change carries no weight); the reference is the point nearest the new one in that measure.
   const int d = static_cast<int>(z.size());
   Eigen::VectorXd spread = (z - solved_.back().inputs).cwiseAbs();
   for (const Solved& s : solved_)

@@ -334,7 +334,6 @@ void ComplianceTransfer::Compute() {
     // Once: each film node's (and mirror image's) y part, which no offset changes, and its x
     // among the film's distinct x values (a film mesh has few: its x lines), whose parts are
     // all an offset changes.
-    auto own_x = [&](std::size_t k) { return film_x_[k]; };
     auto mirror_x = [&](std::size_t k) {
       return mirror_x_ ? 2.0 * *mirror_x_ - film_x_[k] : film_x_[k];
     };
@@ -353,15 +352,15 @@ void ComplianceTransfer::Compute() {
     key_mirror_.resize(mirrored ? n : 0);
     y_mirror_.resize(mirrored ? n : 0);
     for (std::size_t k = 0; k < n; ++k) {
-      key_own_[k] = key(own_x(k));
+      key_own_[k] = key(film_x_[k]);
       y_own_[k] = YPart(film_y_[k]);
       if (!mirrored) continue;
       key_mirror_[k] = key(mirror_x(k));
       y_mirror_[k] = YPart(mirror_y_ ? 2.0 * *mirror_y_ - film_y_[k] : film_y_[k]);
     }
   }
-  std::vector<AxisPart> x_parts(x_keys_.size());
-  for (std::size_t u = 0; u < x_keys_.size(); ++u) x_parts[u] = XPart(x_keys_[u] + offset_);
+  x_parts_.resize(x_keys_.size());
+  for (std::size_t u = 0; u < x_keys_.size(); ++u) x_parts_[u] = XPart(x_keys_[u] + offset_);
   const int nx = static_cast<int>(fe_->x_lines.size());
   auto combine = [nx](const AxisPart& a, const AxisPart& b) {
     Weights w;
@@ -372,9 +371,9 @@ void ComplianceTransfer::Compute() {
   own_.resize(n);
   mirror_.resize(mirrored ? n : 0);
   for (std::size_t k = 0; k < n; ++k) {
-    own_[k] = combine(x_parts[static_cast<std::size_t>(key_own_[k])], y_own_[k]);
+    own_[k] = combine(x_parts_[static_cast<std::size_t>(key_own_[k])], y_own_[k]);
     if (mirrored)
-      mirror_[k] = combine(x_parts[static_cast<std::size_t>(key_mirror_[k])], y_mirror_[k]);
+      mirror_[k] = combine(x_parts_[static_cast<std::size_t>(key_mirror_[k])], y_mirror_[k]);
   }
 }
 

@@ -103,10 +103,10 @@ class ComplianceTransfer {
   std::string field_;
   std::vector<Weights> own_, mirror_;
   // Compute's cache: the film's distinct x values, each node's (and mirror image's) among them
-  // and y part.
+  // and y part; the x parts at the current offset (kept to spare the allocation per offset).
   std::vector<double> x_keys_;
   std::vector<int> key_own_, key_mirror_;
-  std::vector<AxisPart> y_own_, y_mirror_;
+  std::vector<AxisPart> y_own_, y_mirror_, x_parts_;
   bool nonnegative_ = false;
   Eigen::SparseMatrix<double> kept_;  // the FE matrix without its dropped coefficients
   mutable Eigen::VectorXd force_, displacement_;

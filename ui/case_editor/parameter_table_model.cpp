@@ -25,6 +25,14 @@ QString FormatDisplayNumber(double value) {
   return QLocale::c().toString(value, 'g', 6);
 }
 
+namespace {
+// A text parameter's value. The field's accessor hands out the member for editing; it is only
+// read here.
+std::string TextOf(const CaseParameter& p, const engine::EngineCase& engine_case) {
+  return p.field->text(const_cast<engine::EngineCase&>(engine_case));
+}
+}  // namespace
+
 ParameterTableModel::ParameterTableModel(CaseDocument* document, CaseGroup group, QObject* parent)
     : QAbstractTableModel(parent), document_(document) {
   for (const CaseParameter& p : CaseParameters()) {
@@ -65,11 +73,7 @@ QVariant ParameterTableModel::data(const QModelIndex& index, int role) const {
           return p.label;
         case kValue: {
           if (p.choice) return choiceText(p);
-          if (p.text) {
-            // The field's accessor hands out the member for editing; it is only read here.
-            return QString::fromStdString(
-                p.field->text(const_cast<engine::EngineCase&>(document_->engineCase())));
-          }
+          if (p.text) return QString::fromStdString(TextOf(p, document_->engineCase()));
           const double display = p.get(document_->engineCase()) / p.to_si;
           if (role == Qt::EditRole) return FormatDisplayNumber(display);
           return bad && std::isnan(display) ? tr("(invalid)") : FormatDisplayNumber(display);
@@ -92,8 +96,7 @@ QVariant ParameterTableModel::data(const QModelIndex& index, int role) const {
       // A bad cell: core's reason (also shown in the status bar); otherwise what the input is.
       if (bad) return QString::fromStdString(issue->second);
       if (p.text && index.column() == kValue) {  // the whole text first (the cell may elide it)
-        const std::string text =
-            p.field->text(const_cast<engine::EngineCase&>(document_->engineCase()));
+        const std::string text = TextOf(p, document_->engineCase());
         if (!text.empty()) return QString::fromStdString(text) + "\n\n" + FieldToolTip(*p.field);
       }
       return FieldToolTip(*p.field);
