@@ -286,9 +286,11 @@ const BearingResult& BearingSolver::SolveAt(const BearingState& state, double t)
   if (!Transient()) return SolveStep(state, 0.0);
   const FilmHistory::Entry* from = history_.Before(t);
   if (from == nullptr) {
-    SolveStep(state, 0.0);
-    if (history_.empty()) history_.Push(t, {fem_.solution().void_content});
-    return result_;
+    if (!history_.empty()) return SolveStep(state, 0.0);  // before the start: not stepped to
+    // The integration starts from a flooded film, the clearance full of oil; the film at t
+    // steps from it over a negligible interval.
+    history_.Push(FilmHistory::StartTime(t), {Eigen::VectorXd::Zero(fem_.NodeCount())});
+    from = history_.Before(t);
   }
   fem_.void_history() = from->void_content.front();
   return SolveStep(state, t - from->time);

@@ -179,7 +179,8 @@ class BearingSolver {
   const BearingResult& Solve(const BearingState& state);
   /// A solve at time t of a time integration. With JFO cavitation the film steps from the
   /// history's latest accepted state before t (FilmHistory); the first solve, with no history
-  /// yet, is quasi-static and becomes the history's starting state. Other models: Solve(state).
+  /// yet, starts the history with a flooded film (no void anywhere) just before t and steps
+  /// from it. Other models: Solve(state).
   const BearingResult& SolveAt(const BearingState& state, double t);
   /// The last solve (SolveAt at t) is the film of an accepted step at t: recorded in history().
   void AcceptStep(double t);

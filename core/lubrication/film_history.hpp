@@ -10,6 +10,8 @@
 /// output time inside the last step (t_{n-1}, t_n] therefore steps from t_{n-1}, as the step
 /// itself did: the last three entries are kept.
 #include <Eigen/Core>
+#include <algorithm>
+#include <cmath>
 #include <deque>
 #include <vector>
 
@@ -36,6 +38,9 @@ class FilmHistory {
     while (entries_.size() > kKept) entries_.pop_front();
   }
   const Entry& latest() const { return entries_.back(); }
+  /// The time of the starting state of an integration whose first film solve is at t: just
+  /// before it (1 ns, or 1e-12 of t), so that the first solve steps from it like any other.
+  static double StartTime(double t) { return t - std::max(1e-9, 1e-12 * std::abs(t)); }
 
  private:
   static constexpr size_t kKept = 3;

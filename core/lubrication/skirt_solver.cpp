@@ -280,9 +280,12 @@ const SkirtResult& SkirtSolver::SolveAt(const SkirtState& state, double t) {
   if (!Transient()) return SolveStep(state, 0.0);
   const FilmHistory::Entry* from = history_.Before(t);
   if (from == nullptr) {
-    SolveStep(state, 0.0);
-    if (history_.empty()) history_.Push(t, VoidContent());
-    return result_;
+    if (!history_.empty()) return SolveStep(state, 0.0);  // before the start: not stepped to
+    // The integration starts from a flooded film (as BearingSolver::SolveAt).
+    std::vector<Eigen::VectorXd> flooded;
+    for (const auto& pa : panels_) flooded.push_back(Eigen::VectorXd::Zero(pa->fem->NodeCount()));
+    history_.Push(FilmHistory::StartTime(t), std::move(flooded));
+    from = history_.Before(t);
   }
   for (size_t p = 0; p < panels_.size(); ++p)
     panels_[p]->fem->void_history() = from->void_content[p];

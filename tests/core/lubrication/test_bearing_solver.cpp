@@ -1,5 +1,6 @@
 // Big-end bearing solver: conventions (frames, signs), mesh convergence, symmetric half,
-// smooth limit of the rough-surface model, mixed lubrication, calculator modes.
+// smooth limit of the rough-surface model, mixed lubrication, calculator modes, the flooded start
+// of a time integration's mass-conserving film.
 #include <QtTest>
 
 #include <cmath>
@@ -51,6 +52,34 @@ class TestBearing : public QObject {
     const BearingResult r2 = solver.Solve(s);
     QVERIFY(std::abs(r2.force_t + r0.force_t) < 1e-6 * r0.load);
     QVERIFY(r2.friction_torque_journal > 0.0);
+  }
+
+  // A time integration's mass-conserving film starts flooded: the first solve steps from a film
+  // without void a negligible interval before it (voids have had no time to open), and the
+  // history starts there — not from the quasi-static film of the first state, whose void the
+  // state alone decides (and leaves undetermined where the surfaces do not slide).
+  void transientJfoStartsFromAFloodedFilm() {
+    BearingConfig jfo = Bearing();
+    jfo.solver.cavitation = CavitationModel::kJfo;
+    BearingState s;
+    s.eps = 0.6;
+    s.omega_journal = 300.0;
+    BearingSolver solver(jfo);
+    const double t = 0.01;
+    solver.SolveAt(s, t);
+    QCOMPARE(solver.history().latest().time, FilmHistory::StartTime(t));
+    QVERIFY(solver.history().latest().time < t);
+    QCOMPARE(solver.history().latest().void_content.front().cwiseAbs().maxCoeff(), 0.0);
+    const double start_void = solver.fields().void_content.maxCoeff();
+    BearingSolver quasi_static(jfo);
+    quasi_static.Solve(s);
+    const double steady_void = quasi_static.fields().void_content.maxCoeff();
+    qInfo("largest void: first solve %.3g m, quasi-static film %.3g m", start_void, steady_void);
+    QVERIFY(start_void < 1e-6 * 25e-6);
+    QVERIFY(steady_void > 0.1 * 25e-6);
+    // The next accepted step steps from the flooded start like any other.
+    solver.AcceptStep(t);
+    QCOMPARE(solver.history().latest().time, t);
   }
 
   void wedgeUsesHalfSumOfSpeedsMinusTwicePhiDot() {
