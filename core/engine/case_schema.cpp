@@ -1427,6 +1427,38 @@ std::string UnusedReason(const EngineCase& c, const std::string& path) {
   if (path == "big_end.layer_thickness" &&
       c.big_end.compliance != lubrication::ComplianceModel::kElasticLayer)
     return "the big-end surfaces are not an elastic layer";
+  // The oil supplies: what the supply choices leave unused. A supply pressure or a liner-film
+  // table the choice cannot use is an error (CheckCaseConsistency), not an unused field: it
+  // stays editable so that it can be removed.
+  {
+    using lubrication::OilFeedKind;
+    const BigEndCase& b = c.big_end;
+    const std::string feed = fmt::format("the oil supply is \"{}\"", ToString(b.supply));
+    const bool holes = b.supply == OilFeedKind::kShellHoles || b.supply == OilFeedKind::kPinHoles;
+    if ((path == "big_end.supply_hole_angles" || path == "big_end.supply_hole_diameter") && !holes)
+      return feed + "; holes feed the film only with \"shell_holes\" or \"pin_holes\"";
+    if (path.rfind("big_end.groove_", 0) == 0 && b.supply != OilFeedKind::kGroove)
+      return feed + "; the groove feeds the film only with \"groove\"";
+    const bool curve = !b.supply_pressure_angles.empty() || !b.supply_pressure_values.empty();
+    if (b.supply != OilFeedKind::kLineOfCentres && curve && path == "big_end.oil_feed_pressure")
+      return "the supply pressure follows the curve over the crank angle";
+    if (b.supply == OilFeedKind::kLineOfCentres) {
+      if (path == "big_end.oil_feed_pressure" && b.oil_feed_pressure == 0.0)
+        return feed + "; a supply pressure needs holes or a groove";
+      if ((path == "big_end.supply_pressure_angles" || path == "big_end.supply_pressure_values") &&
+          !curve)
+        return feed + "; a supply pressure needs holes or a groove";
+    }
+    const SkirtCase& sk = c.skirt;
+    const bool film_path = path == "skirt.oil_film" || path == "skirt.oil_film_positions" ||
+                           path == "skirt.oil_film_values";
+    if (film_path && sk.supply != lubrication::SkirtSupply::kStarved)
+      return fmt::format(
+          "the skirt supply is \"{}\"; the liner's oil film feeds only a \"starved\" skirt",
+          ToString(sk.supply));
+    if (path == "skirt.oil_film" && !sk.oil_film_positions.empty())
+      return "the liner's oil film is the table over the liner position";
+  }
   if (path.rfind("lubricant.", 0) == 0) return oil_reason(c.lubricant, path.substr(10));
   for (const auto& [joint, oil] : {std::pair{std::string("skirt"), &c.skirt.oil},
                                    std::pair{std::string("big_end"), &c.big_end.oil}}) {

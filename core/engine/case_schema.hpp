@@ -100,8 +100,10 @@ void CheckCaseConsistency(const EngineCase& engine_case);
 /// clearance beside the cold one ("hot: 6.41 µm (cold 25.00 µm)"); empty when there is nothing
 /// to add.
 std::string DerivedNote(const EngineCase& engine_case, const std::string& path);
-/// Why a scalar field is not used with the case's choices (e.g. "the viscosity follows Vogel's
-/// law" for lubricant.viscosity), or empty when it is used: the editor greys such rows.
+/// Why a field (a scalar, or a list by any of its columns' paths) is not used with the case's
+/// choices (e.g. "the viscosity follows Vogel's law" for lubricant.viscosity), or empty when it
+/// is used: the editor greys such rows and list tables. A value the choices make an error (a
+/// supply pressure without holes or groove) is not "unused": it stays editable.
 std::string UnusedReason(const EngineCase& engine_case, const std::string& path);
 
 }  // namespace filmdyn::engine

@@ -157,6 +157,7 @@ void AssumedInputsWarning(const engine::EngineCase& c, std::vector<RunWarning>* 
     if (!f || f->group == engine::FieldGroup::kSolver) continue;
     if (!skirt && path.rfind("skirt.", 0) == 0) continue;
     if (!big_end && path.rfind("big_end.", 0) == 0) continue;
+    if (!engine::UnusedReason(run_case, path).empty()) continue;  // the run does not read it
     if (SameValue(*f, run_case, assumed_case)) w.fields.push_back(path);
   }
   if (w.fields.empty()) return;

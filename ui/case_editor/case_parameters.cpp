@@ -117,54 +117,10 @@ QString CaseListColumnTitle(const engine::CaseField& field) {
 }
 
 QString ListUnusedReason(const CaseListTable& table, const engine::EngineCase& c) {
-  // The one table of which choice makes which list irrelevant (core: film_joints.cpp and the
-  // supply checks of case_schema.cpp).
-  struct Rule {
-    const char* list;    // CaseListTable::key
-    const char* choice;  // the choice field that decides
-    std::vector<std::string> used_with;
-    const char* why;
-    bool unused_only_when_empty;
-  };
-  static const std::vector<Rule> rules = {
-      {"big_end.supply_hole_angles",
-       "big_end.supply",
-       {"shell_holes", "pin_holes"},
-       QT_TRANSLATE_NOOP("CaseEditor",
-                         "holes feed the film only with “shell_holes” or “pin_holes”"),
-       false},
-      {"big_end.supply_pressure_angles",
-       "big_end.supply",
-       {"shell_holes", "pin_holes", "groove"},
-       QT_TRANSLATE_NOOP("CaseEditor", "a supply pressure needs holes or a groove"),
-       true},
-      {"skirt.oil_film_positions",
-       "skirt.supply",
-       {"starved"},
-       QT_TRANSLATE_NOOP("CaseEditor", "the liner's oil film feeds only a “starved” skirt"),
-       false},
-  };
-  for (const Rule& rule : rules) {
-    if (table.key != rule.list) continue;
-    const engine::CaseField* field = engine::FindCaseField(rule.choice);
-    if (field == nullptr) return {};
-    const int k = field->choice(c);
-    if (k < 0 || k >= int(field->choices.size())) return {};  // core names the bad choice
-    const std::string& name = field->choices[size_t(k)];
-    if (std::find(rule.used_with.begin(), rule.used_with.end(), name) != rule.used_with.end()) {
-      return {};
-    }
-    if (rule.unused_only_when_empty) {
-      auto& located = const_cast<engine::EngineCase&>(c);  // the accessor only locates the list
-      for (const engine::CaseField* column : table.columns) {
-        if (!column->list(located).empty()) return {};
-      }
-    }
-    return QObject::tr("Not used while the %1 is “%2”: %3.")
-        .arg(QString::fromStdString(field->label).toLower(), QString::fromStdString(name),
-             QCoreApplication::translate("CaseEditor", rule.why));
-  }
-  return {};
+  // Core decides, for the table's first column as for any field (engine::UnusedReason).
+  const std::string unused = engine::UnusedReason(c, table.key);
+  if (unused.empty()) return {};
+  return QObject::tr("Not used: %1.").arg(QString::fromStdString(unused));
 }
 
 const std::vector<CaseParameter>& CaseParameters() {

@@ -82,12 +82,13 @@ QVariant ParameterTableModel::data(const QModelIndex& index, int role) const {
           return p.unit;
         case kNote:
           if (bad) return QString::fromStdString(issue->second);
-          if (assumed != document_->engineCase().assumed.end()) {
-            return tr("assumed: %1").arg(QString::fromStdString(assumed->second));
-          }
+          // Unused first: where it was assumed matters only once the field is read.
           if (const std::string unused = engine::UnusedReason(document_->engineCase(), p.path);
               !unused.empty()) {
             return tr("not used: %1").arg(QString::fromStdString(unused));
+          }
+          if (assumed != document_->engineCase().assumed.end()) {
+            return tr("assumed: %1").arg(QString::fromStdString(assumed->second));
           }
           return QString::fromStdString(engine::DerivedNote(document_->engineCase(), p.path));
       }

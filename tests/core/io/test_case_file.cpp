@@ -94,6 +94,42 @@ class TestCaseFile : public QObject {
       QVERIFY2(c.assumed.count(field) && !c.assumed.at(field).empty(), field);
     }
   }
+  // The oil supplies' fields the choices leave unused are named with the choice; a value the
+  // choice makes an error (a supply pressure with the film starting at the line of centres) is
+  // not called unused.
+  void unusedSupplyFieldsNameTheChoice() {
+    using engine::UnusedReason;
+    engine::EngineCase c = io::LoadCase({}).value;
+    using lubrication::OilFeedKind;
+    QCOMPARE(c.big_end.supply, OilFeedKind::kLineOfCentres);
+    for (const char* path :
+         {"big_end.supply_hole_diameter", "big_end.supply_hole_angles", "big_end.groove_width",
+          "big_end.oil_feed_pressure", "big_end.supply_pressure_values", "skirt.oil_film",
+          "skirt.oil_film_positions"}) {
+      QVERIFY2(!UnusedReason(c, path).empty(), path);
+    }
+    QVERIFY(QString::fromStdString(UnusedReason(c, "big_end.groove_width"))
+                .contains("\"line_of_centres\""));
+    QVERIFY(QString::fromStdString(UnusedReason(c, "skirt.oil_film")).contains("\"flooded\""));
+    c.big_end.oil_feed_pressure = 3e5;  // an error with this supply, not unused
+    QVERIFY(UnusedReason(c, "big_end.oil_feed_pressure").empty());
+    c.big_end.supply = OilFeedKind::kGroove;
+    QVERIFY(UnusedReason(c, "big_end.groove_width").empty());
+    QVERIFY(UnusedReason(c, "big_end.oil_feed_pressure").empty());
+    QVERIFY(!UnusedReason(c, "big_end.supply_hole_diameter").empty());
+    c.big_end.supply_pressure_angles = {0.0, 2.0};
+    c.big_end.supply_pressure_values = {3e5, 4e5};
+    QVERIFY(QString::fromStdString(UnusedReason(c, "big_end.oil_feed_pressure")).contains("curve"));
+    c.big_end.supply = OilFeedKind::kShellHoles;
+    QVERIFY(UnusedReason(c, "big_end.supply_hole_diameter").empty());
+    c.skirt.supply = lubrication::SkirtSupply::kStarved;
+    QVERIFY(UnusedReason(c, "skirt.oil_film").empty());
+    QVERIFY(UnusedReason(c, "skirt.oil_film_values").empty());
+    c.skirt.oil_film_positions = {0.0, 0.05};
+    c.skirt.oil_film_values = {5e-6, 6e-6};
+    QVERIFY(QString::fromStdString(UnusedReason(c, "skirt.oil_film")).contains("table"));
+  }
+
   void roundTrip() {
     engine::EngineCase c = io::CaseFromJson(DefaultJson());
     c.geometry.pin_offset = -1.25e-3;

@@ -83,6 +83,15 @@ QString NoteOf(MainWindow& window, CaseGroup group, const std::string& path) {
   return model->index(model->rowOf(path), ParameterTableModel::kNote).data().toString();
 }
 
+// A scalar row greyed as unused: grey text and a "not used: ..." note.
+bool Greyed(MainWindow& window, CaseGroup group, const std::string& path) {
+  ParameterTableModel* model = window.caseEditor()->parameterModel(group);
+  const QModelIndex value = model->index(model->rowOf(path), ParameterTableModel::kValue);
+  const QVariant brush = value.data(Qt::ForegroundRole);
+  return brush.isValid() && brush.value<QBrush>().color() == QColor(150, 150, 150) &&
+         NoteOf(window, group, path).startsWith("not used: ");
+}
+
 }  // namespace
 
 class TestCaseEditorLists : public QObject {
@@ -294,9 +303,23 @@ class TestCaseEditorLists : public QObject {
     QVERIFY(!editor->listEnabled(kCurve));
     QVERIFY2(editor->listHint(kCurve)->text().contains("holes or a groove"),
              qPrintable(editor->listHint(kCurve)->text()));
+    // The supply's scalar rows likewise; the assumed supply pressure says first that it is not
+    // read (where its value came from matters once it is).
+    const auto big_end = CaseGroup::kBigEnd;
+    QVERIFY2(Greyed(window, big_end, "big_end.supply_hole_diameter"),
+             qPrintable(NoteOf(window, big_end, "big_end.supply_hole_diameter")));
+    QVERIFY(NoteOf(window, big_end, "big_end.supply_hole_diameter").contains("line_of_centres"));
+    QVERIFY(Greyed(window, big_end, "big_end.groove_width"));
+    QVERIFY(Greyed(window, big_end, "big_end.groove_start_angle"));
+    QVERIFY(document->engineCase().assumed.count("big_end.oil_feed_pressure"));
+    QVERIFY2(Greyed(window, big_end, "big_end.oil_feed_pressure"),
+             qPrintable(NoteOf(window, big_end, "big_end.oil_feed_pressure")));
 
     // Crank-pin holes: both tables are read.
     QVERIFY(document->setChoice("big_end.supply", "pin_holes"));
+    QVERIFY(!Greyed(window, big_end, "big_end.supply_hole_diameter"));
+    QVERIFY(!Greyed(window, big_end, "big_end.oil_feed_pressure"));
+    QVERIFY(Greyed(window, big_end, "big_end.groove_width"));
     QVERIFY(editor->listEnabled(kHoles));
     QVERIFY(editor->listTable(kHoles)->isEnabled());
     QVERIFY(ListButton(window, kHoles, "import")->isEnabled());
@@ -307,6 +330,9 @@ class TestCaseEditorLists : public QObject {
     QVERIFY(!editor->listEnabled(kHoles));
     QVERIFY2(hint->isVisible() && hint->text().contains("groove"), qPrintable(hint->text()));
     QVERIFY(editor->listEnabled(kCurve));
+    QVERIFY(Greyed(window, big_end, "big_end.supply_hole_diameter"));
+    QVERIFY(!Greyed(window, big_end, "big_end.groove_width"));
+    QVERIFY(!Greyed(window, big_end, "big_end.oil_feed_pressure"));
     // Undo: the crank-pin holes again.
     document->undoStack()->undo();
     QVERIFY(editor->listEnabled(kHoles));
@@ -315,6 +341,10 @@ class TestCaseEditorLists : public QObject {
     QTemporaryDir dir;
     WriteFile(dir.filePath("curve.csv"), SupplyCurveFile().text);
     QVERIFY(editor->importListCsv(kCurve, dir.filePath("curve.csv")));
+    // The curve replaces the constant supply pressure.
+    QVERIFY2(Greyed(window, big_end, "big_end.oil_feed_pressure") &&
+                 NoteOf(window, big_end, "big_end.oil_feed_pressure").contains("curve"),
+             qPrintable(NoteOf(window, big_end, "big_end.oil_feed_pressure")));
     QVERIFY(document->setChoice("big_end.supply", "line_of_centres"));
     QVERIFY(!editor->listEnabled(kHoles));
     QVERIFY(editor->listEnabled(kCurve));
@@ -326,10 +356,12 @@ class TestCaseEditorLists : public QObject {
     QVERIFY(!editor->listEnabled(film));
     QVERIFY2(editor->listHint(film)->text().contains("flooded"),
              qPrintable(editor->listHint(film)->text()));
+    QVERIFY(Greyed(window, CaseGroup::kSkirt, "skirt.oil_film"));
     QVERIFY(document->setChoice("skirt.cavitation", "jfo"));
     QVERIFY(document->setChoice("skirt.supply", "starved"));
     QVERIFY(editor->listEnabled(film));
     QVERIFY(editor->listHint(film)->text().isEmpty());
+    QVERIFY(!Greyed(window, CaseGroup::kSkirt, "skirt.oil_film"));
     // Tables no choice decides are always enabled.
     QVERIFY(editor->listEnabled("skirt.profile_y") && editor->listEnabled("skirt.ovality_h"));
   }
