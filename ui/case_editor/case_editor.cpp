@@ -244,9 +244,9 @@ QWidget* CaseEditor::makeParameterPage(CaseGroup group) {
     table->setParent(split);
     split->addWidget(table);
     lists->setParent(split);
-    // Room for the charts' tick labels and titles (below ~250 px Qt Charts elides them to
+    // Room for the charts' tick labels and titles (below ~280 px Qt Charts elides them to
     // "…"); a long list of rows scrolls instead.
-    lists->setMinimumHeight(250);
+    lists->setMinimumHeight(280);
     split->addWidget(lists);
     const int rows_height = table->horizontalHeader()->sizeHint().height() +
                             model->rowCount() * table->verticalHeader()->defaultSectionSize() +
