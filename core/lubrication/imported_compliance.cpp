@@ -289,42 +289,35 @@ void ComplianceTransfer::SetOffset(double offset) {
   Compute();
 }
 
-ComplianceTransfer::AxisPart ComplianceTransfer::YPart(double y) const {
-  const std::vector<double>& yl = fe_->y_lines;
-  const double ty = 1e-9 * (yl.back() - yl.front());
-  if (y < yl.front() - ty || y > yl.back() + ty) {
-    throw InputError(field_, fmt::format("film point y = {:g} m", y),
-                     fmt::format("a film inside the FE surface's y range [{:g}, {:g}] m",
-                                 yl.front(), yl.back()));
+ComplianceTransfer::AxisPart ComplianceTransfer::BoundedPart(const std::vector<double>& lines,
+                                                             double v, const char* axis) const {
+  const double tol = 1e-9 * (lines.back() - lines.front());
+  if (v < lines.front() - tol || v > lines.back() + tol) {
+    throw InputError(field_, fmt::format("film point {} = {:g} m", axis, v),
+                     fmt::format("a film inside the FE surface's {} range [{:g}, {:g}] m", axis,
+                                 lines.front(), lines.back()));
   }
-  y = std::clamp(y, yl.front(), yl.back());
-  int j = static_cast<int>(std::upper_bound(yl.begin(), yl.end(), y) - yl.begin()) - 1;
-  j = std::clamp(j, 0, static_cast<int>(yl.size()) - 2);
-  return {j, j + 1, (y - yl[j]) / (yl[j + 1] - yl[j])};
+  v = std::clamp(v, lines.front(), lines.back());
+  int i = static_cast<int>(std::upper_bound(lines.begin(), lines.end(), v) - lines.begin()) - 1;
+  i = std::clamp(i, 0, static_cast<int>(lines.size()) - 2);
+  return {i, i + 1, (v - lines[i]) / (lines[i + 1] - lines[i])};
+}
+
+ComplianceTransfer::AxisPart ComplianceTransfer::YPart(double y) const {
+  return BoundedPart(fe_->y_lines, y, "y");
 }
 
 ComplianceTransfer::AxisPart ComplianceTransfer::XPart(double x) const {
   const std::vector<double>& xl = fe_->x_lines;
+  if (!(period_ > 0.0)) return BoundedPart(xl, x, "x");
   const int nx = static_cast<int>(xl.size());
-  if (period_ > 0.0) {
-    x = std::fmod(x - xl.front(), period_);
-    if (x < 0.0) x += period_;
-    x += xl.front();
-    int i = static_cast<int>(std::upper_bound(xl.begin(), xl.end(), x) - xl.begin()) - 1;
-    i = std::clamp(i, 0, nx - 1);
-    const double right = i + 1 < nx ? xl[i + 1] : xl.front() + period_;
-    return {i, (i + 1) % nx, (x - xl[i]) / (right - xl[i])};
-  }
-  const double tx = 1e-9 * (xl.back() - xl.front());
-  if (x < xl.front() - tx || x > xl.back() + tx) {
-    throw InputError(field_, fmt::format("film point x = {:g} m", x),
-                     fmt::format("a film inside the FE surface's x range [{:g}, {:g}] m",
-                                 xl.front(), xl.back()));
-  }
-  x = std::clamp(x, xl.front(), xl.back());
+  x = std::fmod(x - xl.front(), period_);
+  if (x < 0.0) x += period_;
+  x += xl.front();
   int i = static_cast<int>(std::upper_bound(xl.begin(), xl.end(), x) - xl.begin()) - 1;
-  i = std::clamp(i, 0, nx - 2);
-  return {i, i + 1, (x - xl[i]) / (xl[i + 1] - xl[i])};
+  i = std::clamp(i, 0, nx - 1);
+  const double right = i + 1 < nx ? xl[i + 1] : xl.front() + period_;
+  return {i, (i + 1) % nx, (x - xl[i]) / (right - xl[i])};
 }
 
 void ComplianceTransfer::Compute() {

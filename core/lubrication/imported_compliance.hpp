@@ -94,6 +94,8 @@ class ComplianceTransfer {
   };
   AxisPart XPart(double x) const;  // throws InputError naming the film point outside the grid
   AxisPart YPart(double y) const;
+  // A non-periodic axis: its grid lines, the point, the axis's name ("x", "y") for the error.
+  AxisPart BoundedPart(const std::vector<double>& lines, double v, const char* axis) const;
   void Compute();
 
   std::shared_ptr<const ImportedCompliance> fe_;
