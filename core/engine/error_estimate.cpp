@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/engine/case_schema.hpp"
 
@@ -127,6 +128,71 @@ CoarseCompanion MakeCoarseCompanion(const EngineCase& engine_case) {
   companion.tolerance_factor = 1.0;
   c.solver.error_estimate = 0;
   return companion;
+}
+
+double FigureScatter::RelativeHalfSpread() const {
+  const double half = 0.5 * (max - min);
+  if (half == 0.0) return 0.0;
+  return figure.value != 0.0 ? half / std::abs(figure.value)
+                             : std::numeric_limits<double>::infinity();
+}
+
+DisplayUnit HeadlineDisplayUnit(const std::string& key) {
+  const std::size_t open = key.rfind('[');
+  const std::size_t close = key.rfind(']');
+  const std::string si = open == std::string::npos || close == std::string::npos || close < open
+                             ? std::string()
+                             : key.substr(open + 1, close - open - 1);
+  if (si == "m") return {"µm", 1e6};
+  if (si == "Pa") return {"MPa", 1e-6};
+  if (si == "-") return {"", 1.0};
+  return {si, 1.0};
+}
+
+std::string CycleScatter::Summary() const {
+  constexpr double kNoted = 1e-3;  // figures that moved less are not listed
+  std::vector<const FigureScatter*> moved;
+  for (const FigureScatter& f : figures)
+    if (f.RelativeHalfSpread() > kNoted) moved.push_back(&f);
+  std::sort(moved.begin(), moved.end(), [](const FigureScatter* a, const FigureScatter* b) {
+    return a->RelativeHalfSpread() > b->RelativeHalfSpread();
+  });
+  const std::string span = fmt::format("over cycles {}–{}", first_cycle, last_cycle);
+  if (moved.empty())
+    return span + " the headline figures moved by less than ±0.1 % of the reported values";
+  std::string text =
+      fmt::format("{} the headline figures moved by up to ±{:.2g} % of the reported values:", span,
+                  100.0 * moved.front()->RelativeHalfSpread());
+  for (std::size_t i = 0; i < moved.size(); ++i) {
+    const FigureScatter& f = *moved[i];
+    const DisplayUnit u = HeadlineDisplayUnit(f.figure.key);
+    text += fmt::format("{} {} {:.4g}–{:.4g}{}{} (±{:.2g} %)", i == 0 ? "" : ",", f.figure.label,
+                        f.min * u.scale, f.max * u.scale, u.unit.empty() ? "" : " ", u.unit,
+                        100.0 * f.RelativeHalfSpread());
+  }
+  return text;
+}
+
+std::optional<CycleScatter> ScatterOverCycles(
+    const std::vector<std::vector<HeadlineFigure>>& per_cycle) {
+  const int cycles = static_cast<int>(per_cycle.size());
+  if (cycles < 2 || per_cycle.back().empty()) return std::nullopt;
+  CycleScatter scatter;
+  scatter.last_cycle = cycles;
+  // The first cycle holds the start-up transient: left out when two others remain.
+  scatter.first_cycle = std::max(cycles >= 3 ? 2 : 1, cycles - kScatterCycles + 1);
+  for (const HeadlineFigure& reported : per_cycle.back()) {
+    FigureScatter f{.figure = reported, .min = reported.value, .max = reported.value};
+    for (int c = scatter.first_cycle; c <= cycles; ++c) {
+      for (const HeadlineFigure& other : per_cycle[c - 1]) {
+        if (other.key != reported.key) continue;
+        f.min = std::min(f.min, other.value);
+        f.max = std::max(f.max, other.value);
+      }
+    }
+    scatter.figures.push_back(f);
+  }
+  return scatter;
 }
 
 ErrorEstimate EstimateErrors(const std::vector<CrankTrainSample>& samples,

@@ -80,6 +80,42 @@ struct ErrorEstimate {
   std::string Summary() const;
 };
 
+/// How a person reads a headline figure: its unit from the key ("bearing_moft_min[m]") — lengths
+/// in µm, pressures in MPa, the rest in SI — and the factor from SI.
+struct DisplayUnit {
+  std::string unit;  ///< UTF-8, empty for a ratio
+  double scale = 1.0;
+};
+DisplayUnit HeadlineDisplayUnit(const std::string& key);
+
+/// How a headline figure scattered over the last cycles of a run that found no periodic steady
+/// state: the smallest and largest of its per-cycle values.
+struct FigureScatter {
+  HeadlineFigure figure;  ///< the reported (last) cycle's value
+  double min = 0.0, max = 0.0;
+  /// (max − min) / 2 over |the reported value| (0 when the value is 0 and nothing moved).
+  double RelativeHalfSpread() const;
+};
+
+/// The scatter of a run's headline figures over its last cycles.
+struct CycleScatter {
+  int first_cycle = 0, last_cycle = 0;  ///< 1-based, inclusive
+  std::vector<FigureScatter> figures;
+  /// One sentence: "over cycles 8–12 the headline figures moved by up to ±2.7 % of the reported
+  /// values: min skirt MOFT 5.56–5.87 µm (±2.7 %), …" — the figures that moved by more than
+  /// ±0.1 %, largest first.
+  std::string Summary() const;
+};
+
+/// Cycles a scatter spans: the last kScatterCycles, leaving out the first (the start-up
+/// transient) when at least two others remain.
+inline constexpr int kScatterCycles = 5;
+
+/// The scatter of the headline figures over the last cycles, from each cycle's figures in
+/// cycle order (RunResult::cycle_headlines). Empty with fewer than two cycles.
+std::optional<CycleScatter> ScatterOverCycles(
+    const std::vector<std::vector<HeadlineFigure>>& per_cycle);
+
 /// Richardson's estimate from the run's and the coarse run's reported cycles.
 ErrorEstimate EstimateErrors(const std::vector<CrankTrainSample>& samples,
                              const std::vector<CrankTrainSample>& coarse_samples,

@@ -136,6 +136,10 @@ struct RunResult {
   int cycles_to_steady_state = 0;         ///< 0 when not reached
   double cycle_change = 0.0;              ///< last cycle-to-cycle change / range (largest quantity)
   std::string worst_quantity;             ///< the quantity furthest from periodicity (last cycle)
+  /// The headline figures of every completed cycle, in cycle order (HeadlineFigures; the last is
+  /// the reported cycle's): with no periodic steady state, ScatterOverCycles says how far they
+  /// move from cycle to cycle.
+  std::vector<std::vector<HeadlineFigure>> cycle_headlines;
   long reynolds_solves = 0;               ///< Reynolds (FEM + cavitation) solves, both joints
   long reynolds_factorizations = 0;       ///< their numeric LDLᵀ factorisations
   multibody::SolverStats stats;

@@ -50,6 +50,8 @@ RunSummary SummarizeRun(const std::string& case_name, const engine::RunConfig& c
     if (f.key == "bearing_fpl_mean[W]") s.mean_fpl_bearing_w = f.value;
   }
   s.error_estimate = result.error_estimate;
+  if (result.status == engine::RunStatus::kNotConverged)
+    s.cycle_scatter = engine::ScatterOverCycles(result.cycle_headlines);
   s.warnings = RunWarnings(config, result);
   s.kpis = RunKpisOf(config, result);
   auto oil_used = [&](engine::JointOil oil, const std::string& joint,
@@ -269,6 +271,16 @@ json SummaryToJson(const RunSummary& s) {
   json headline = json::object();
   for (const engine::HeadlineFigure& f : s.headline) headline[f.key] = f.value;
   j["headline"] = headline;
+  if (s.cycle_scatter) {
+    json figures = json::object();
+    for (const engine::FigureScatter& f : s.cycle_scatter->figures)
+      figures[f.figure.key] = {{"min", f.min}, {"max", f.max}};
+    j["cycle_scatter"] = {{"first_cycle", s.cycle_scatter->first_cycle},
+                          {"last_cycle", s.cycle_scatter->last_cycle},
+                          {"figures", figures}};
+  } else {
+    j["cycle_scatter"] = nullptr;
+  }
   const engine::ErrorEstimate& e = s.error_estimate;
   json figures = json::object();
   for (const engine::FigureError& f : e.figures) {
@@ -397,6 +409,24 @@ RunSummary FromJson(const json& j) {
   if (!headline.is_object()) throw std::runtime_error("\"headline\" is not an object");
   for (const auto& [key, value] : headline.items()) {
     s.headline.push_back(engine::HeadlineFigureFor(key, Get<double>(headline, key, "headline")));
+  }
+  if (j.contains("cycle_scatter") && !j.at("cycle_scatter").is_null()) {
+    const json& o = j.at("cycle_scatter");
+    engine::CycleScatter scatter;
+    scatter.first_cycle = Get<int>(o, "first_cycle", "cycle_scatter");
+    scatter.last_cycle = Get<int>(o, "last_cycle", "cycle_scatter");
+    json figures = json::object();
+    Read(o, "figures", "cycle_scatter", &figures);
+    if (!figures.is_object())
+      throw std::runtime_error("\"cycle_scatter.figures\" is not an object");
+    for (const engine::HeadlineFigure& f : s.headline) {  // the reported values, in their order
+      if (!figures.contains(f.key)) continue;
+      const std::string where = "cycle_scatter.figures." + f.key;
+      scatter.figures.push_back({.figure = f,
+                                 .min = Get<double>(figures.at(f.key), "min", where),
+                                 .max = Get<double>(figures.at(f.key), "max", where)});
+    }
+    s.cycle_scatter = scatter;
   }
   json error = json::object();
   Read(j, "discretisation_error", "", &error);

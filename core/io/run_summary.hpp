@@ -89,6 +89,9 @@ struct RunSummary {
   std::vector<engine::HeadlineFigure> headline;
   /// Their estimated discretisation error ("discretisation_error").
   engine::ErrorEstimate error_estimate;
+  /// A run that found no periodic steady state: how far the headline figures moved over its last
+  /// cycles ("cycle_scatter"; null otherwise; engine::ScatterOverCycles).
+  std::optional<engine::CycleScatter> cycle_scatter;
   /// The engineering warnings of the run (io::RunWarnings; "warnings").
   std::vector<RunWarning> warnings;
   /// The engine KPIs of the reported cycle per lubricated joint (io::RunKpisOf; "kpis"; empty

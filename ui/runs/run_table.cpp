@@ -33,13 +33,9 @@ void ShowErrorEstimate(const engine::ErrorEstimate& e, QTableWidgetItem* cell) {
   }
   QString tip = QString::fromStdString(e.Summary());
   for (const engine::FigureError& f : e.figures) {
-    // Unit from the key ("bearing_moft_min[m]"): lengths in µm, pressures in MPa.
-    const QString key = QString::fromStdString(f.figure.key);
-    double scale = 1.0;
-    QString unit = key.section('[', 1).section(']', 0, 0);
-    if (unit == "m") scale = 1e6, unit = "µm";
-    if (unit == "Pa") scale = 1e-6, unit = "MPa";
-    if (unit == "-") unit.clear();
+    const engine::DisplayUnit display = engine::HeadlineDisplayUnit(f.figure.key);
+    const double scale = display.scale;
+    const QString unit = QString::fromStdString(display.unit);
     tip += QString("\n%1: %2 %3, %4%5 % → %6 %3")
                .arg(QString::fromStdString(f.figure.label))
                .arg(QString::number(f.figure.value * scale, 'g', 5))

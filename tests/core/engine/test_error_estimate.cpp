@@ -117,6 +117,58 @@ class TestErrorEstimate : public QObject {
              e.Summary().c_str());
   }
 
+  // The scatter of the headline figures over a run's last cycles: which cycles, the extremes,
+  // the sentence a warning carries.
+  void scatterOverCyclesSpansTheLastCycles() {
+    auto cycle = [](double moft, double fpl, double eps) {
+      return std::vector<engine::HeadlineFigure>{
+          engine::HeadlineFigureFor("bearing_moft_min[m]", moft),
+          engine::HeadlineFigureFor("bearing_eps_max[-]", eps),
+          engine::HeadlineFigureFor("bearing_fpl_mean[W]", fpl)};
+    };
+    std::vector<std::vector<engine::HeadlineFigure>> per_cycle = {cycle(9e-6, 300.0, 0.5)};
+    QVERIFY(!engine::ScatterOverCycles(per_cycle));  // nothing to compare with
+    per_cycle.push_back(cycle(2.0e-6, 200.0, 0.9));
+    auto s = engine::ScatterOverCycles(per_cycle);
+    QVERIFY(s);  // two cycles: both, the first included
+    QCOMPARE(s->first_cycle, 1);
+    QCOMPARE(s->last_cycle, 2);
+    QCOMPARE(s->figures[0].min, 2.0e-6);
+    QCOMPARE(s->figures[0].max, 9e-6);
+    per_cycle.push_back(cycle(2.2e-6, 200.1, 0.9));
+    s = engine::ScatterOverCycles(per_cycle);
+    QCOMPARE(s->first_cycle, 2);  // the start-up cycle left out once two others remain
+    QCOMPARE(s->figures[0].min, 2.0e-6);
+    QCOMPARE(s->figures[0].max, 2.2e-6);
+    QCOMPARE(s->figures[0].figure.value, 2.2e-6);  // the reported (last) cycle's
+    for (int c = 0; c < 5; ++c) per_cycle.push_back(cycle(2.1e-6 + 1e-8 * c, 200.0, 0.9));
+    s = engine::ScatterOverCycles(per_cycle);  // 8 cycles: the last 5
+    QCOMPARE(s->first_cycle, 4);
+    QCOMPARE(s->last_cycle, 8);
+    QCOMPARE(s->figures[0].min, 2.1e-6);
+    QCOMPARE(s->figures[0].max, 2.14e-6);
+    QCOMPARE(s->figures[2].min, 200.0);  // cycle 3's 200.1 is outside the span
+    QCOMPARE(s->figures[2].max, 200.0);
+    QCOMPARE(s->figures[0].RelativeHalfSpread(), 0.02e-6 / 2.14e-6);
+    // The sentence: figures that moved by more than ±0.1 %, largest first, in display units.
+    QCOMPARE(s->Summary(),
+             std::string("over cycles 4–8 the headline figures moved by up to ±0.93 % of the "
+                         "reported values: min big-end MOFT 2.1–2.14 µm (±0.93 %)"));
+    per_cycle.push_back(cycle(2.14e-6, 200.0, 0.9));
+    per_cycle.push_back(cycle(2.14e-6, 200.0, 0.9));
+    per_cycle.push_back(cycle(2.14e-6, 200.0, 0.9));
+    per_cycle.push_back(cycle(2.14e-6, 200.0, 0.9));
+    per_cycle.push_back(cycle(2.1405e-6, 200.0, 0.9));
+    QCOMPARE(engine::ScatterOverCycles(per_cycle)->Summary(),
+             std::string("over cycles 9–13 the headline figures moved by less than ±0.1 % of "
+                         "the reported values"));
+    const engine::DisplayUnit pa = engine::HeadlineDisplayUnit("skirt_peak_pressure[Pa]");
+    QCOMPARE(pa.unit, std::string("MPa"));
+    QCOMPARE(pa.scale, 1e-6);
+    QCOMPARE(engine::HeadlineDisplayUnit("bearing_eps_max[-]").unit, std::string());
+    QCOMPARE(engine::HeadlineDisplayUnit("skirt_fpl_mean[W]").unit, std::string("W"));
+  }
+
   void offAndUnavailableSayWhy() {
     engine::RunConfig config = Config(6000, 1);
     config.engine_case.solver.error_estimate = 0;

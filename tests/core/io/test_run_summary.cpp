@@ -38,6 +38,9 @@ io::RunSummary Full() {
       .headline = {{"skirt_fpl_mean[W]", "mean skirt FPL", 659.75, false},
                    {"bearing_moft_min[m]", "min big-end MOFT", 1.1e-6, true}},
       .error_estimate = {},
+      .cycle_scatter =
+          engine::CycleScatter{
+              3, 7, {{{"bearing_moft_min[m]", "min big-end MOFT", 1.1e-6, true}, 1.05e-6, 1.2e-6}}},
       .warnings = {},
       .kpis = {}};
   engine::ErrorEstimate& e = s.error_estimate;
@@ -167,6 +170,7 @@ class TestRunSummary : public QObject {
                             "solver",
                             "pressure_curve",
                             "headline",
+                            "cycle_scatter",
                             "discretisation_error",
                             "warnings",
                             "kpis",
@@ -174,7 +178,7 @@ class TestRunSummary : public QObject {
                             "clearance"}) {
       QVERIFY2(j.contains(key), key);
     }
-    QCOMPARE(j.size(), std::size_t(23));
+    QCOMPARE(j.size(), std::size_t(24));
     QCOMPARE(j["clearance"]["skirt"]["hot[m]"].get<double>(), 18.5e-6);
     QCOMPARE(j["oil"]["skirt"]["viscosity[Pa*s]"].get<double>(), 0.0061);
     QCOMPARE(j["discretisation_error"]["figures"]["bearing_moft_min[m]"]["relative"].get<double>(),
@@ -185,6 +189,18 @@ class TestRunSummary : public QObject {
     QCOMPARE(back.error_estimate.figures.at(0).figure.label, std::string("min big-end MOFT"));
     QCOMPARE(back.error_estimate.worst_relative, 0.03);
     QVERIFY(j["mean_fpl_w"]["bearing"].is_null());
+    // The scatter over the last cycles of a run without a periodic state: null otherwise, and a
+    // summary written before it existed reads without it.
+    QCOMPARE(j["cycle_scatter"]["first_cycle"].get<int>(), 3);
+    QCOMPARE(j["cycle_scatter"]["figures"]["bearing_moft_min[m]"]["max"].get<double>(), 1.2e-6);
+    QCOMPARE(back.cycle_scatter->figures.at(0).min, 1.05e-6);
+    QCOMPARE(back.cycle_scatter->figures.at(0).figure.label, std::string("min big-end MOFT"));
+    nlohmann::json older = j;
+    older.erase("cycle_scatter");
+    QVERIFY(!io::SummaryFromJson(older).cycle_scatter);
+    io::RunSummary periodic = Full();
+    periodic.cycle_scatter.reset();
+    QVERIFY(io::SummaryToJson(periodic)["cycle_scatter"].is_null());
     // KPIs: one object per lubricated joint; no crank angle for a peak of 0; the slap's events.
     QCOMPARE(j["kpis"]["skirt"]["slap_events"].size(), std::size_t(2));
     QCOMPARE(j["kpis"]["skirt"]["slap_events"][1]["direction"].get<std::string>(),
@@ -233,7 +249,8 @@ class TestRunSummary : public QObject {
     }
     QCOMPARE(s.extremes.at("gas_force[N]").min, lo);
     QCOMPARE(s.extremes.at("gas_force[N]").max, hi);
-    QCOMPARE(*s.mean_fpl_skirt_w, 0.0);  // ideal joints: frictionless
+    QVERIFY(!s.mean_fpl_skirt_w);                    // ideal joints: no film, no FPL figure
+    QVERIFY(!s.cycle_scatter);                       // periodic, and no headline figures
     QVERIFY(!s.extremes.contains("skirt_moft[m]"));  // no film: no values, no extremes
     QVERIFY(!s.kpis.skirt && !s.kpis.big_end);       // nor KPIs
   }

@@ -309,6 +309,25 @@ class TestRunWarnings : public QObject {
     QVERIFY(w->value > c.solver.steady_state_tolerance);
     QCOMPARE(w->limit, c.solver.steady_state_tolerance);
     QVERIFY(QString::fromStdString(w->message).contains("2 cycles"));
+    // One set of headline figures per cycle, the last the reported cycle's; the warning says how
+    // far they moved (cycle 2 still holds the start-up transient: more than ±0.1 %).
+    QCOMPARE(result.cycle_headlines.size(), std::size_t(2));
+    const std::vector<engine::HeadlineFigure> reported = engine::HeadlineFigures(result.samples);
+    QCOMPARE(result.cycle_headlines.back().size(), reported.size());
+    for (std::size_t i = 0; i < reported.size(); ++i)
+      QCOMPARE(result.cycle_headlines.back()[i].value, reported[i].value);
+    const auto scatter = engine::ScatterOverCycles(result.cycle_headlines);
+    QVERIFY(scatter);
+    QCOMPARE(scatter->first_cycle, 1);
+    QCOMPARE(scatter->last_cycle, 2);
+    for (std::size_t i = 0; i < reported.size(); ++i) {
+      const double a = result.cycle_headlines[0][i].value, b = reported[i].value;
+      QCOMPARE(scatter->figures[i].min, std::min(a, b));
+      QCOMPARE(scatter->figures[i].max, std::max(a, b));
+    }
+    QVERIFY2(QString::fromStdString(w->message)
+                 .contains("over cycles 1–2 the headline figures moved by up to ±"),
+             w->message.c_str());
   }
 };
 
