@@ -7,6 +7,7 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QFormLayout>
+#include <QGraphicsLayout>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QInputDialog>
@@ -66,6 +67,8 @@ QChart* MakeChart(const QString& x_title, const QString& y_title) {
   auto* chart = new QChart;
   chart->legend()->hide();
   chart->setMargins(QMargins(4, 4, 4, 4));
+  chart->layout()->setContentsMargins(0, 0, 0, 0);  // the plot area's height is the y title's room
+  chart->setBackgroundRoundness(0);
   auto* x = new QValueAxis;
   auto* y = new QValueAxis;
   x->setTitleText(x_title);
@@ -244,9 +247,8 @@ QWidget* CaseEditor::makeParameterPage(CaseGroup group) {
     table->setParent(split);
     split->addWidget(table);
     lists->setParent(split);
-    // Room for the charts' tick labels and titles (below ~280 px Qt Charts elides them to
-    // "…"); a long list of rows scrolls instead.
-    lists->setMinimumHeight(280);
+    // The lists' minimum height is their layout's: the charts' own minimum (below) plus the
+    // heading and whichever note lines show; a long list of rows scrolls instead.
     split->addWidget(lists);
     const int rows_height = table->horizontalHeader()->sizeHint().height() +
                             model->rowCount() * table->verticalHeader()->defaultSectionSize() +
@@ -309,6 +311,9 @@ QWidget* CaseEditor::makeListBlock(const CaseListTable& list, QWidget* parent) {
     auto* view = new QChartView(block.chart, tables);
     view->setRenderHint(QPainter::Antialiasing);
     view->setMinimumWidth(160);
+    // Room for the tick labels and the axis titles: with a plot area under ~160 px Qt Charts
+    // elides the y title ("gauge pressure [..."), with or without rows.
+    view->setMinimumHeight(210);
     tables->addWidget(view);
     // The table as narrow as its headers allow, the chart taking the rest.
     tables->setStretchFactor(0, 0);

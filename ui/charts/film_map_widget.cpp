@@ -160,11 +160,17 @@ void FilmMapWidget::paintEvent(QPaintEvent*) {
   }
   painter.drawText(QRectF(plot.left(), plot.bottom() + line + 6, plot.width(), line),
                    Qt::AlignHCenter, d.x_title);
+  // The y title beside the plot, longer than the plot if it must (a short map in a small
+  // panel), within the widget; elided only when even that is too short.
   painter.save();
-  painter.translate(line / 2.0 + 2, plot.center().y());
+  const double room = height() - 4.0;
+  const QString y_title = fm.elidedText(d.y_title, Qt::ElideRight, int(room));
+  const double length = std::min(room, fm.horizontalAdvance(y_title) + 8.0);
+  const double centre =
+      std::clamp(double(plot.center().y()), 2.0 + length / 2.0, height() - 2.0 - length / 2.0);
+  painter.translate(line / 2.0 + 2, centre);
   painter.rotate(-90);
-  painter.drawText(QRectF(-plot.height() / 2.0, -line / 2.0, plot.height(), line), Qt::AlignCenter,
-                   d.y_title);
+  painter.drawText(QRectF(-length / 2.0, -line / 2.0, length, line), Qt::AlignCenter, y_title);
   painter.restore();
   // Edge cues.
   QFont bold = font();
