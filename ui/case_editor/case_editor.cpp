@@ -247,8 +247,9 @@ QWidget* CaseEditor::makeParameterPage(CaseGroup group) {
     table->setParent(split);
     split->addWidget(table);
     lists->setParent(split);
-    // The lists' minimum height is their layout's: the charts' own minimum (below) plus the
-    // heading and whichever note lines show; a long list of rows scrolls instead.
+    // Room for the charts' tick labels and titles (below ~280 px Qt Charts elides them to
+    // "…"); a long list of rows scrolls instead.
+    lists->setMinimumHeight(280);
     split->addWidget(lists);
     const int rows_height = table->horizontalHeader()->sizeHint().height() +
                             model->rowCount() * table->verticalHeader()->defaultSectionSize() +
@@ -311,9 +312,6 @@ QWidget* CaseEditor::makeListBlock(const CaseListTable& list, QWidget* parent) {
     auto* view = new QChartView(block.chart, tables);
     view->setRenderHint(QPainter::Antialiasing);
     view->setMinimumWidth(160);
-    // Room for the tick labels and the axis titles: with a plot area under ~160 px Qt Charts
-    // elides the y title ("gauge pressure [..."), with or without rows.
-    view->setMinimumHeight(210);
     tables->addWidget(view);
     // The table as narrow as its headers allow, the chart taking the rest.
     tables->setStretchFactor(0, 0);
