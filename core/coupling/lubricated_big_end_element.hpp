@@ -55,6 +55,11 @@ class LubricatedBigEndElement final : public multibody::JointForceElement,
   bool Concurrent() const override { return true; }
   /// Mass-conserving cavitation carries the film's void content from step to step.
   bool WantsAcceptedSteps() const override { return solver_->Transient(); }
+  /// The void content's local error (JFO: backward Euler, outside the integrator's error
+  /// test) kept at the integrator's position tolerance: lubrication::FilmHistory::NextStepLimit.
+  double StepLimit(double length_tolerance) const override {
+    return solver_->history().NextStepLimit(length_tolerance);
+  }
   void OnStepAccepted(double t, const multibody::SystemState& state) override;
   void ReportFilm(SkirtFilmSample* skirt, BearingFilmSample* bearing) const override;
 

@@ -270,24 +270,6 @@ std::vector<RunWarning> RunWarnings(const engine::RunConfig& config,
       w.message += "; " + scatter->Summary();
     out.push_back(std::move(w));
   }
-  // A starved skirt's oil content is advanced at first order in time, outside the integrator's
-  // error control, and its film is partial everywhere: its figures depend on the tolerances
-  // (measured in docs/validation/cavitation.md, "Starved skirt: the tolerances").
-  if (skirt && c.skirt.supply == lubrication::SkirtSupply::kStarved) {
-    RunWarning w;
-    w.code = "starved_time_error";
-    w.joint = "skirt";
-    w.value = c.solver.position_tolerance;
-    w.message = fmt::format(
-        "starved skirt: its film's oil content is advanced at first order in time, outside the "
-        "integrator's error control, so its figures depend on the solver tolerances (measured: "
-        "the minimum film changed by 3–5 % for each 10× tighter solver.position_tolerance "
-        "and solver.relative_tolerance, from the default 1e-10 m and 1e-7 down to 1e-13 m and "
-        "1e-10, peak pressures by more); compare a run with both 10× tighter ({:g} m and {:g}) "
-        "before relying on its figures",
-        0.1 * c.solver.position_tolerance, 0.1 * c.solver.relative_tolerance);
-    out.push_back(std::move(w));
-  }
   // A catalogue oil at a film temperature outside its fit's range.
   for (const auto& [lubricated, oil, joint, balanced] :
        {std::tuple{skirt, c.skirt.oil, "skirt", result.skirt_film_temperature},
@@ -336,7 +318,6 @@ std::string WarningShortText(const RunWarning& w) {
   if (w.code == "not_periodic") return fmt::format("not periodic ({:.2g} %)", 100.0 * w.value);
   if (w.code == "assumed_inputs") return fmt::format("{:.0f} assumed inputs", w.value);
   if (w.code == "synthetic_pressure") return "synthetic pressure";
-  if (w.code == "starved_time_error") return "starved skirt: time error";
   if (w.code == "oil_extrapolated") {
     return fmt::format("oil extrapolated {}", w.joint == "skirt" ? "skirt" : "big end");
   }

@@ -38,6 +38,37 @@ class FilmHistory {
     while (entries_.size() > kKept) entries_.pop_front();
   }
   const Entry& latest() const { return entries_.back(); }
+  /// The next step that keeps the void content's local error (backward Euler: about
+  /// Δt²/2 · |d²V/dt²|, from the last three entries) at `tolerance` [m] in the root mean square
+  /// over the nodes; nodes whose void opened or closed within those entries are left out (their
+  /// rate jumps by the complementarity, not by a lack of smoothness). 0: no limit (fewer than
+  /// three entries, or no error).
+  double NextStepLimit(double tolerance) const {
+    if (entries_.size() < 3 || !(tolerance > 0.0)) return 0.0;
+    const Entry& a = entries_[entries_.size() - 3];
+    const Entry& b = entries_[entries_.size() - 2];
+    const Entry& c = entries_.back();
+    const double h1 = b.time - a.time, h2 = c.time - b.time;
+    if (!(h1 > 0.0 && h2 > 0.0)) return 0.0;
+    double sum = 0.0;
+    long count = 0;
+    for (std::size_t s = 0;
+         s < c.void_content.size() && s < a.void_content.size() && s < b.void_content.size(); ++s) {
+      const Eigen::VectorXd &va = a.void_content[s], &vb = b.void_content[s],
+                            &vc = c.void_content[s];
+      if (va.size() != vc.size() || vb.size() != vc.size()) continue;
+      for (Eigen::Index i = 0; i < vc.size(); ++i) {
+        ++count;
+        if (!(va[i] > 0.0 && vb[i] > 0.0 && vc[i] > 0.0)) continue;
+        const double second = 2.0 * ((vc[i] - vb[i]) / h2 - (vb[i] - va[i]) / h1) / (h1 + h2);
+        const double error = 0.5 * h2 * h2 * second;
+        sum += (error / tolerance) * (error / tolerance);
+      }
+    }
+    if (count == 0 || sum == 0.0) return 0.0;
+    const double rms = std::sqrt(sum / double(count));
+    return 0.9 * h2 * std::sqrt(1.0 / rms);
+  }
   /// The time of the starting state of an integration whose first film solve is at t: just
   /// before it (1 ns, or 1e-12 of t), so that the first solve steps from it like any other.
   static double StartTime(double t) { return t - std::max(1e-9, 1e-12 * std::abs(t)); }

@@ -52,6 +52,10 @@ class ForceElement {
   virtual void OnStepAccepted(double /*t*/, const SystemState& /*state*/) {}
   /// True when the element needs OnStepAccepted (it costs the integrator a step-by-step loop).
   virtual bool WantsAcceptedSteps() const { return false; }
+  /// After OnStepAccepted: the largest next step that keeps the local error of the element's own
+  /// history (e.g. a film's void content, advanced at first order outside the integrator's error
+  /// test) within `length_tolerance` [m], the integrator's position tolerance; 0 = no limit.
+  virtual double StepLimit(double /*length_tolerance*/) const { return 0.0; }
 
  private:
   std::string name_;

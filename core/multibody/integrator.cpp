@@ -27,6 +27,7 @@ struct Integrator::Impl {
   std::string last_failure;  // the last EvaluationFailure CVODE recovered from (or not)
   SystemState scratch;
   SystemState accepted;  // the end of the last accepted step (AdvanceTo, step by step)
+  double applied_max_step = 0.0;  // CVODE's largest step now (0: none)
 
   ~Impl() {
     if (solver) SUNLinSolFree(solver);
@@ -151,6 +152,7 @@ void Integrator::Initialize(double t0, const SystemState& state) {
   m.Check(CVodeSetMaxOrd(m.cvode, m.config.max_order), "SetMaxOrd");
   m.Check(CVodeSetMaxNumSteps(m.cvode, m.config.max_steps_per_output), "SetMaxNumSteps");
   if (m.config.max_step > 0) m.Check(CVodeSetMaxStep(m.cvode, m.config.max_step), "SetMaxStep");
+  m.applied_max_step = m.config.max_step;
   m.scratch = state;
   t_ = t0;
 }
@@ -180,6 +182,15 @@ SystemState Integrator::AdvanceTo(double t_out) {
       m.Check(flag, "step");
       m.Unpack(m.y, &m.accepted);
       m.system->OnStepAccepted(t_step, m.accepted);
+      // An element's own limit on the next step (a film history's local error, at the position
+      // tolerance), within the configured largest step.
+      double h_max = m.system->StepLimit(m.config.position_tolerance);
+      if (m.config.max_step > 0.0 && (h_max == 0.0 || m.config.max_step < h_max))
+        h_max = m.config.max_step;
+      if (h_max != m.applied_max_step) {
+        m.Check(CVodeSetMaxStep(m.cvode, h_max), "SetMaxStep");
+        m.applied_max_step = h_max;
+      }
     }
     m.Check(CVodeGetDky(m.cvode, t_out, 0, m.y), "GetDky");
     t_reached = t_out;

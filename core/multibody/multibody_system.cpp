@@ -90,6 +90,15 @@ void MultibodySystem::OnStepAccepted(double t, const SystemState& state) {
     if (e->WantsAcceptedSteps()) e->OnStepAccepted(t, state);
 }
 
+double MultibodySystem::StepLimit(double length_tolerance) const {
+  double limit = 0.0;
+  for (const auto& e : elements_) {
+    const double l = e->WantsAcceptedSteps() ? e->StepLimit(length_tolerance) : 0.0;
+    if (l > 0.0 && (limit == 0.0 || l < limit)) limit = l;
+  }
+  return limit;
+}
+
 Eigen::VectorXd MultibodySystem::AppliedForces(double t, const SystemState& state) {
   ThrowIfStopRequested(stop_check_);
   const int n = NumCoordinates();

@@ -74,6 +74,9 @@ class MultibodySystem {
   bool WantsAcceptedSteps() const;
   /// Passes an accepted integrator step's end to the elements that want it.
   void OnStepAccepted(double t, const SystemState& state);
+  /// After OnStepAccepted: the smallest of the elements' step limits (ForceElement::StepLimit)
+  /// [s]; 0 = none.
+  double StepLimit(double length_tolerance) const;
 
   /// Sum of all applied forces Q (3n) at the state.
   Eigen::VectorXd AppliedForces(double t, const SystemState& state);

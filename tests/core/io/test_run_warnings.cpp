@@ -292,35 +292,6 @@ class TestRunWarnings : public QObject {
     QCOMPARE(*r.bearing_contact_friction_force, 0.0);
   }
 
-  // A starved skirt's figures carry a time error outside the integrator's control: its runs
-  // say so and name the tolerances to tighten; a flooded skirt's do not.
-  void starvedSkirtWarnsOfItsTimeError() {
-    engine::EngineCase c = CoarseCase();
-    c.solver.max_cycles = 1;
-    for (const bool starved : {false, true}) {
-      if (starved) {
-        c.skirt.cavitation = lubrication::CavitationModel::kJfo;
-        c.skirt.supply = lubrication::SkirtSupply::kStarved;
-      }
-      const engine::RunConfig config = Config(c, engine::Model::kOnlySkirt, 6000.0);
-      const engine::RunResult result = engine::RunJob(config);
-      QVERIFY2(!result.samples.empty(), result.message.c_str());
-      const std::vector<io::RunWarning> warnings = io::RunWarnings(config, result);
-      const auto w = std::find_if(warnings.begin(), warnings.end(), [](const io::RunWarning& x) {
-        return x.code == "starved_time_error";
-      });
-      QCOMPARE(w != warnings.end(), starved);
-      if (!starved) continue;
-      QCOMPARE(w->joint, std::string("skirt"));
-      QCOMPARE(w->value, c.solver.position_tolerance);
-      const QString message = QString::fromStdString(w->message);
-      QVERIFY2(message.contains("solver.position_tolerance") &&
-                   message.contains("solver.relative_tolerance") && message.contains("1e-11 m"),
-               w->message.c_str());
-      QCOMPARE(io::WarningShortText(*w), std::string("starved skirt: time error"));
-    }
-  }
-
   void stoppedBeforePeriodicWarns() {
     engine::EngineCase c = CoarseCase();
     c.solver.run_in_angle = 0.0;  // the start-up transient is still in cycle 2

@@ -8,6 +8,7 @@
 
 #include "core/lubrication/bearing_calculator.hpp"
 #include "core/lubrication/bearing_solver.hpp"
+#include "core/lubrication/film_history.hpp"
 #include "core/lubrication/surface_film.hpp"
 #include "core/lubrication/validation_cases.hpp"
 
@@ -58,6 +59,39 @@ class TestBearing : public QObject {
   // without void a negligible interval before it (voids have had no time to open), and the
   // history starts there — not from the quasi-static film of the first state, whose void the
   // state alone decides (and leaves undetermined where the surfaces do not slide).
+  // The step limit from the void content's local error: backward Euler's error over the next
+  // step is Δt²/2 · V'' (V'' from the last three entries), kept at the tolerance in the root mean
+  // square over the nodes; nodes whose void opened or closed in those entries, and a history of
+  // fewer than three entries, give no limit.
+  void filmHistoryLimitsTheNextStepByTheVoidsLocalError() {
+    FilmHistory history;
+    auto entry = [](double t) {
+      // Node 0: V = 1e-6 + 3 t² (V'' = 6); node 1 full; node 2 opens at the last entry;
+      // node 3: V linear in t (no error).
+      Eigen::VectorXd v(4);
+      v << 1e-6 + 3.0 * t * t, 0.0, t > 2.5e-6 ? 1e-7 : 0.0, 2e-6 + 0.5 * t;
+      return std::vector<Eigen::VectorXd>{v};
+    };
+    history.Push(1e-6, entry(1e-6));
+    history.Push(2e-6, entry(2e-6));
+    QCOMPARE(history.NextStepLimit(1e-10), 0.0);  // two entries: no second derivative
+    history.Push(4e-6, entry(4e-6));              // steps of 1 and 2 µs
+    const double h2 = 2e-6, tolerance = 1e-16;
+    const double error = 0.5 * h2 * h2 * 6.0;  // node 0 (the others: none)
+    const double rms = std::sqrt(std::pow(error / tolerance, 2) / 4.0);  // over the 4 nodes
+    QVERIFY(std::abs(history.NextStepLimit(tolerance) - 0.9 * h2 / std::sqrt(rms)) <
+            1e-6 * 0.9 * h2 / std::sqrt(rms));
+    QCOMPARE(history.NextStepLimit(0.0), 0.0);  // no tolerance: no limit
+    FilmHistory linear;                         // a void that moves linearly: no error
+    for (double t : {1e-6, 2e-6, 4e-6}) {
+      Eigen::VectorXd v(1);
+      v << 1e-6 + 0.5 * t;
+      linear.Push(t, {v});
+    }
+    const double none = linear.NextStepLimit(1e-10);  // round-off's curvature only
+    QVERIFY2(none == 0.0 || none > 1e-3, qPrintable(QString::number(none)));
+  }
+
   void transientJfoStartsFromAFloodedFilm() {
     BearingConfig jfo = Bearing();
     jfo.solver.cavitation = CavitationModel::kJfo;
