@@ -149,6 +149,14 @@ DisplayUnit HeadlineDisplayUnit(const std::string& key) {
   return {si, 1.0};
 }
 
+namespace {
+// "0.93", "4.4", "790": two significant digits, whole numbers from 10 on (no exponent).
+std::string Percent(double fraction) {
+  const double percent = 100.0 * fraction;
+  return percent < 10.0 ? fmt::format("{:.2g}", percent) : fmt::format("{:.0f}", percent);
+}
+}  // namespace
+
 std::string CycleScatter::Summary() const {
   constexpr double kNoted = 1e-3;  // figures that moved less are not listed
   std::vector<const FigureScatter*> moved;
@@ -161,14 +169,14 @@ std::string CycleScatter::Summary() const {
   if (moved.empty())
     return span + " the headline figures moved by less than ±0.1 % of the reported values";
   std::string text =
-      fmt::format("{} the headline figures moved by up to ±{:.2g} % of the reported values:", span,
-                  100.0 * moved.front()->RelativeHalfSpread());
+      fmt::format("{} the headline figures moved by up to ±{} % of the reported values:", span,
+                  Percent(moved.front()->RelativeHalfSpread()));
   for (std::size_t i = 0; i < moved.size(); ++i) {
     const FigureScatter& f = *moved[i];
     const DisplayUnit u = HeadlineDisplayUnit(f.figure.key);
-    text += fmt::format("{} {} {:.4g}–{:.4g}{}{} (±{:.2g} %)", i == 0 ? "" : ",", f.figure.label,
+    text += fmt::format("{} {} {:.4g}–{:.4g}{}{} (±{} %)", i == 0 ? "" : ",", f.figure.label,
                         f.min * u.scale, f.max * u.scale, u.unit.empty() ? "" : " ", u.unit,
-                        100.0 * f.RelativeHalfSpread());
+                        Percent(f.RelativeHalfSpread()));
   }
   return text;
 }

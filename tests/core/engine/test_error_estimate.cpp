@@ -154,6 +154,13 @@ class TestErrorEstimate : public QObject {
     QCOMPARE(s->Summary(),
              std::string("over cycles 4–8 the headline figures moved by up to ±0.93 % of the "
                          "reported values: min big-end MOFT 2.1–2.14 µm (±0.93 %)"));
+    // Large spreads in whole percent, not with an exponent.
+    std::vector<std::vector<engine::HeadlineFigure>> start = {cycle(9e-6, 300.0, 0.5),
+                                                              cycle(1e-6, 200.0, 0.9)};
+    QCOMPARE(engine::ScatterOverCycles(start)->Summary(),
+             std::string("over cycles 1–2 the headline figures moved by up to ±400 % of the "
+                         "reported values: min big-end MOFT 1–9 µm (±400 %), mean big-end FPL "
+                         "200–300 W (±25 %), max big-end eccentricity ratio 0.5–0.9 (±22 %)"));
     per_cycle.push_back(cycle(2.14e-6, 200.0, 0.9));
     per_cycle.push_back(cycle(2.14e-6, 200.0, 0.9));
     per_cycle.push_back(cycle(2.14e-6, 200.0, 0.9));
