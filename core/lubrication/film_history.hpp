@@ -52,8 +52,9 @@ class FilmHistory {
     if (!(h1 > 0.0 && h2 > 0.0)) return 0.0;
     double sum = 0.0;
     long count = 0;
-    for (std::size_t s = 0;
-         s < c.void_content.size() && s < a.void_content.size() && s < b.void_content.size(); ++s) {
+    const std::size_t solvers =
+        std::min({a.void_content.size(), b.void_content.size(), c.void_content.size()});
+    for (std::size_t s = 0; s < solvers; ++s) {
       const Eigen::VectorXd &va = a.void_content[s], &vb = b.void_content[s],
                             &vc = c.void_content[s];
       if (va.size() != vc.size() || vb.size() != vc.size()) continue;

@@ -3,9 +3,10 @@
 // film fraction stays in [0, 1], the supply flow follows a supply-pressure curve through crank-pin
 // holes, both joints together keep their accounts, and bad supply input is refused naming the
 // field; a film solve that does not converge is never used: the run ends naming the joint, with
-// what was computed kept; a JFO skirt starting at firing TDC runs (the film starts flooded). The
-// oscillatory squeeze benchmark and the starved skirt are in the lubrication and skirt-calculator
-// suites; docs/validation/cavitation.md has the figures.
+// what was computed kept; a JFO skirt starting at firing TDC runs (the film starts flooded); a
+// starved skirt's figures converge with the tolerances (the void's own error limits the steps).
+// The oscillatory squeeze benchmark and the steady starved skirt are in the lubrication and
+// skirt-calculator suites; docs/validation/cavitation.md has the figures.
 #include <QtTest>
 
 #include <cmath>

@@ -1,6 +1,6 @@
 // Big-end bearing solver: conventions (frames, signs), mesh convergence, symmetric half,
 // smooth limit of the rough-surface model, mixed lubrication, calculator modes, the flooded start
-// of a time integration's mass-conserving film.
+// of a time integration's mass-conserving film and the step limit from its void's local error.
 #include <QtTest>
 
 #include <cmath>
