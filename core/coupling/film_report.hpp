@@ -5,6 +5,9 @@
 #include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <utility>
+#include <vector>
 
 namespace filmdyn::lubrication {
 struct ReynoldsStats;
@@ -52,6 +55,32 @@ struct OilAccount {
   }
 };
 
+/// The peak film pressure of every accepted time step of a mass-conserving (JFO) film, whose
+/// steps the element sees one by one, until an output sample takes them: a spike between two
+/// output samples (an impact lasting a fraction of the output interval) is then not lost.
+class StepPeaks {
+ public:
+  /// Books the accepted step at t; entries at or after t (a restarted integration) are dropped.
+  void Book(double t, double peak_pressure) {
+    while (!entries_.empty() && entries_.back().first >= t) entries_.pop_back();
+    entries_.emplace_back(t, peak_pressure);
+  }
+  /// The largest of the entries at or before t, which are removed; NaN when there is none.
+  double Take(double t) {
+    double largest = std::numeric_limits<double>::quiet_NaN();
+    std::size_t taken = 0;
+    while (taken < entries_.size() && entries_[taken].first <= t) {
+      if (!(entries_[taken].second <= largest)) largest = entries_[taken].second;
+      ++taken;
+    }
+    entries_.erase(entries_.begin(), entries_.begin() + static_cast<std::ptrdiff_t>(taken));
+    return largest;
+  }
+
+ private:
+  std::vector<std::pair<double, double>> entries_;  // (time [s], peak film pressure [Pa])
+};
+
 /// Film quantities of the lubricated skirt at one instant (present = false with an ideal liner).
 /// Forces on the piston: lateral along +X (thrust side), friction along the bore, + toward the
 /// crank (skirt solver convention), moment about the pin (generalised force on the tilt).
@@ -64,6 +93,9 @@ struct SkirtFilmSample {
   double moft = 0.0;                  ///< [m]
   double fpl = 0.0;                   ///< friction power loss [W]
   double max_pressure = 0.0;          ///< peak hydrodynamic film pressure [Pa]
+  /// The largest peak film pressure of the accepted integrator steps since the previous output
+  /// sample, up to this one [Pa] (StepPeaks; mass-conserving films only, NaN otherwise).
+  double step_peak_pressure = std::numeric_limits<double>::quiet_NaN();
   double max_contact_pressure = 0.0;  ///< peak asperity contact pressure [Pa]
   /// Largest opening of the film by the surfaces' elastic deformation [m] (0 when rigid).
   double max_deformation = 0.0;
@@ -110,6 +142,9 @@ struct BearingFilmSample {
   double moft = 0.0;                                             ///< [m]
   double fpl = 0.0;                                              ///< [W]
   double max_pressure = 0.0;          ///< peak hydrodynamic film pressure [Pa]
+  /// The largest peak film pressure of the accepted integrator steps since the previous output
+  /// sample, up to this one [Pa] (StepPeaks; mass-conserving films only, NaN otherwise).
+  double step_peak_pressure = std::numeric_limits<double>::quiet_NaN();
   double max_contact_pressure = 0.0;  ///< peak asperity contact pressure [Pa]
   /// Largest opening of the film by the surfaces' elastic deformation [m] (0 when rigid).
   double max_deformation = 0.0;
@@ -151,6 +186,10 @@ class FilmReporter {
  public:
   virtual ~FilmReporter() = default;
   virtual void ReportFilm(SkirtFilmSample* skirt, BearingFilmSample* bearing) const = 0;
+  /// Called once per output sample at time t, after ReportFilm: fills the joint's
+  /// step_peak_pressure from the steps booked up to t (StepPeaks::Take). Default: nothing booked.
+  virtual void TakeStepPeaks(double /*t*/, SkirtFilmSample* /*skirt*/,
+                             BearingFilmSample* /*bearing*/) {}
 };
 
 }  // namespace filmdyn::coupling

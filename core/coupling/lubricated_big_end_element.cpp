@@ -207,10 +207,16 @@ void LubricatedBigEndElement::OnStepAccepted(double t, const multibody::SystemSt
   const lubrication::BearingResult& r = solver_->result();
   oil_.Book(t, dt, r.feed_flow, r.side_flow, r.squeeze_rate, r.void_volume,
             r.stats.fraction_excess);
+  step_peaks_.Book(t, r.max_pressure);
   solver_->AcceptStep(t);
   // Evaluations after this step from the new history; the fields are no longer the cache's.
   cache_valid_ = false;
   solver_at_cache_ = false;
+}
+
+void LubricatedBigEndElement::TakeStepPeaks(double t, SkirtFilmSample*,
+                                            BearingFilmSample* bearing) {
+  bearing->step_peak_pressure = step_peaks_.Take(t);
 }
 
 void LubricatedBigEndElement::RefreshFields() {

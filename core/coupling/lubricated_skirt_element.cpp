@@ -165,10 +165,15 @@ void LubricatedSkirtElement::OnStepAccepted(double t, const multibody::SystemSta
   }
   const lubrication::SkirtResult& r = solver_->result();
   oil_.Book(t, dt, r.inflow, r.outflow, r.squeeze_rate, r.void_volume, r.stats.fraction_excess);
+  step_peaks_.Book(t, r.max_pressure);
   solver_->AcceptStep(t);
   // Evaluations after this step from the new history; the fields are no longer the cache's.
   cache_valid_ = false;
   solver_at_cache_ = false;
+}
+
+void LubricatedSkirtElement::TakeStepPeaks(double t, SkirtFilmSample* skirt, BearingFilmSample*) {
+  skirt->step_peak_pressure = step_peaks_.Take(t);
 }
 
 void LubricatedSkirtElement::RefreshFields() {

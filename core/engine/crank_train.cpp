@@ -196,8 +196,9 @@ CrankTrainSample SampleCrankTrain(CrankTrain& train, const EngineCase& c, double
   s.crank_torque = sys.Reaction(lay.crank_drive, t, state, lambda).on_j[2];
   // Film joints were just evaluated at the integrated state by sys.AppliedForces.
   for (multibody::JointForceElement* element : {train.skirt_element, train.big_end_element}) {
-    if (const auto* reporter = dynamic_cast<const coupling::FilmReporter*>(element)) {
+    if (auto* reporter = dynamic_cast<coupling::FilmReporter*>(element)) {
       reporter->ReportFilm(&s.skirt, &s.bearing);
+      reporter->TakeStepPeaks(t, &s.skirt, &s.bearing);
     }
   }
   if (s.bearing.present) s.big_end_force_on_rod = s.bearing.force_on_rod;

@@ -82,6 +82,9 @@ struct CrankTrainSample {
   BearingFilmSample bearing;          ///< lubricated big end
 };
 
+/// The train at an output time t: evaluates the system at `state` and reports every quantity.
+/// Call once per output sample, in time order: the film joints hand over the peak pressures of
+/// their accepted steps up to t (coupling::StepPeaks), which a second call at t no longer has.
 CrankTrainSample SampleCrankTrain(CrankTrain& train, const EngineCase& engine_case, double t,
                                   const multibody::SystemState& state);
 

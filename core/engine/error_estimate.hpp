@@ -12,6 +12,8 @@
 /// error is then (f − f_coarse) / (r^p − 1) with p = 2 the figures' observed order, signed:
 /// converged value ≈ f + error. It sees the coupled result (the coarse films move the journal and the
 /// piston). Justification and its check against converged solutions: docs/validation/errors.md.
+#include <cstddef>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -39,6 +41,41 @@ std::vector<HeadlineFigure> HeadlineFigures(const std::vector<CrankTrainSample>&
 /// unknown key keeps itself as label; "bearing_…" keys belong to the big end).
 HeadlineFigure HeadlineFigureFor(const std::string& key, double value);
 
+/// Ratio of a peak's largest output sample to the larger of the two samples beside it above
+/// which the output samples do not resolve the peak in time. A peak shaped like a Gaussian whose
+/// width at half height spans w output intervals is down to 2^(-4/w²) of its height one
+/// interval away: 1/1.5 at w = 2.6. A narrower peak (an impact lasting a fraction of an output
+/// interval) is reported at whatever height the samples happen to catch.
+inline constexpr double kUnresolvedPeakRatio = 1.5;
+
+/// A peak headline figure (a joint's peak film pressure) with the output samples beside it and,
+/// for a mass-conserving film, the peak of its accepted integrator steps between the samples.
+struct SampledPeak {
+  HeadlineFigure figure;  ///< value = the largest sample
+  std::size_t index = 0;  ///< that sample
+  /// The samples before and after it; NaN past an end of samples that are not a whole cycle.
+  double before = std::numeric_limits<double>::quiet_NaN();
+  double after = std::numeric_limits<double>::quiet_NaN();
+  /// The largest step_peak_pressure of the samples (NaN when the film books no steps) and the
+  /// sample that took it (the steps since the sample before it).
+  double step_peak = std::numeric_limits<double>::quiet_NaN();
+  std::size_t step_index = 0;
+  /// value / the larger neighbour (infinite when both are zero, 1 without neighbours).
+  double Ratio() const;
+  /// step_peak / value (1 without step peaks).
+  double StepRatio() const;
+  /// Either ratio above kUnresolvedPeakRatio: a spike the output samples do not resolve — they
+  /// catch it only in part, or miss it and the steps between them show it.
+  bool Unresolved() const {
+    return Ratio() > kUnresolvedPeakRatio || StepRatio() > kUnresolvedPeakRatio;
+  }
+};
+
+/// The peak figures of the samples' joints (skirt, then big end) with their neighbours.
+/// `whole_cycle`: the samples are one periodic cycle, the last one beside the first.
+std::vector<SampledPeak> SampledPeaks(const std::vector<CrankTrainSample>& samples,
+                                      bool whole_cycle);
+
 /// The coarse companion of a case: meshes with half the elements (never below each count's
 /// minimum), the same gradings, the same tolerances (`tolerance_factor` = 1; kept in the
 /// summary so that a reader sees what the companion used).
@@ -56,6 +93,10 @@ struct FigureError {
   double coarse_value = 0.0;  ///< the same figure of the coarse run
   double error = 0.0;         ///< signed estimate: converged ≈ value + error (SI)
   double relative = 0.0;      ///< |error| / |value|
+  /// false: a peak figure that the output samples of the run or of its companion do not resolve
+  /// in time (SampledPeak::Unresolved); the two compared values are then whatever the samples
+  /// caught, so the figure is left out of the worst estimate and the summary says so.
+  bool resolved_in_time = true;
 };
 
 /// The estimate of a run.
@@ -65,7 +106,7 @@ struct ErrorEstimate {
   std::string status = "off";
   std::string message;
   std::vector<FigureError> figures;
-  double worst_relative = 0.0;   ///< the largest relative estimate
+  double worst_relative = 0.0;   ///< the largest relative estimate (figures resolved in time)
   std::string worst_label;       ///< its figure
   double threshold = 0.01;       ///< a warning is due above this relative error
   double skirt_ratio = 0.0, big_end_ratio = 0.0, tolerance_factor = 0.0;

@@ -289,7 +289,8 @@ json SummaryToJson(const RunSummary& s) {
                              {"error", f.error},
                              {"relative", f.relative},
                              {"order", f.figure.order},
-                             {"extrapolated", f.figure.value + f.error}};
+                             {"extrapolated", f.figure.value + f.error},
+                             {"resolved_in_time", f.resolved_in_time}};
   }
   j["discretisation_error"] = {
       {"status", e.status},
@@ -457,6 +458,7 @@ RunSummary FromJson(const json& j) {
     fe.error = Get<double>(f, "error", at);
     fe.relative = Get<double>(f, "relative", at);
     Read(f, "order", at, &fe.figure.order);
+    Read(f, "resolved_in_time", at, &fe.resolved_in_time);  // absent before: resolved
     e.figures.push_back(fe);
   }
   json warnings = json::array();

@@ -102,6 +102,58 @@ void FilmRatioWarning(const std::vector<engine::CrankTrainSample>& samples, bool
   out->push_back(std::move(w));
 }
 
+// Peak film pressures the output samples do not resolve in time (engine::SampledPeak), one
+// warning per joint.
+void UnresolvedPeakWarnings(const std::vector<engine::CrankTrainSample>& samples,
+                            double output_interval, bool whole_cycle,
+                            std::vector<RunWarning>* out) {
+  for (const engine::SampledPeak& peak : engine::SampledPeaks(samples, whole_cycle)) {
+    if (!peak.Unresolved()) continue;
+    RunWarning w;
+    w.code = "unresolved_peak";
+    w.joint = peak.figure.big_end ? "big_end" : "skirt";
+    w.value =
+        std::min(std::max(peak.Ratio(), peak.StepRatio()), std::numeric_limits<double>::max());
+    w.limit = engine::kUnresolvedPeakRatio;
+    const bool caught = peak.Ratio() > engine::kUnresolvedPeakRatio;
+    const double step_at = CrankAngleDeg(samples[peak.step_index]);
+    const std::string steps = fmt::format(
+        "the integrator's steps between the samples reached {:.4g} MPa in the output "
+        "interval before {:.4g} °CA",
+        peak.step_peak * 1e-6, step_at);
+    const std::string why = fmt::format(
+        "it lasts less than about three output intervals ({:.3g} °CA), so the peak figure is "
+        "whatever "
+        "the samples caught (an impact, e.g. a big-end journal crossing a cavitated "
+        "mass-conserving film onto the full film beyond it); a smaller solver.output_interval "
+        "resolves it",
+        output_interval * kDeg);
+    if (caught) {
+      // The samples caught the spike in part: it stands out of the samples beside it.
+      w.crank_angle_deg = CrankAngleDeg(samples[peak.index]);
+      std::string beside;
+      for (double v : {peak.before, peak.after}) {
+        if (!std::isfinite(v)) continue;
+        beside += fmt::format("{}{:.3g}", beside.empty() ? "" : " and ", v * 1e-6);
+      }
+      w.message = fmt::format(
+          "{} {:.4g} MPa at {:.4g} °CA is a spike the output samples do not resolve (the samples "
+          "beside it show {} MPa{}): {}",
+          peak.figure.label, peak.figure.value * 1e-6, *w.crank_angle_deg, beside,
+          peak.StepRatio() > 1.0 ? "; " + steps : std::string(), why);
+    } else {
+      // The samples missed it: only the steps between them saw it.
+      w.crank_angle_deg = step_at;
+      w.message = fmt::format(
+          "the output samples miss a spike of the {}: {}, {:.2g} times the largest sample "
+          "({:.4g} MPa at {:.4g} °CA); {}",
+          peak.figure.label.substr(std::string("peak ").size()), steps, peak.StepRatio(),
+          peak.figure.value * 1e-6, CrankAngleDeg(samples[peak.index]), why);
+    }
+    out->push_back(std::move(w));
+  }
+}
+
 // The embedded default case, read once.
 const LoadedCase* DefaultCase() {
   static const std::optional<LoadedCase> loaded = []() -> std::optional<LoadedCase> {
@@ -247,6 +299,7 @@ std::vector<RunWarning> RunWarnings(const engine::RunConfig& config,
       out.push_back(std::move(w));
     }
   }
+  UnresolvedPeakWarnings(samples, c.solver.output_interval, whole_cycle, &out);
   if (result.status == engine::RunStatus::kNotConverged) {
     RunWarning w;
     w.code = "not_periodic";
@@ -318,6 +371,9 @@ std::string WarningShortText(const RunWarning& w) {
   if (w.code == "not_periodic") return fmt::format("not periodic ({:.2g} %)", 100.0 * w.value);
   if (w.code == "assumed_inputs") return fmt::format("{:.0f} assumed inputs", w.value);
   if (w.code == "synthetic_pressure") return "synthetic pressure";
+  if (w.code == "unresolved_peak") {
+    return fmt::format("peak spike ×{:.2g} {}", w.value, w.joint == "skirt" ? "skirt" : "big end");
+  }
   if (w.code == "oil_extrapolated") {
     return fmt::format("oil extrapolated {}", w.joint == "skirt" ? "skirt" : "big end");
   }

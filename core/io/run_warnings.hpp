@@ -1,8 +1,9 @@
 #pragma once
 /// @file Engineering warnings about a finished run: the one definition of what FilmDyn warns
 /// about once a run has ended — a film thinner than three times or than the surface roughness,
-/// a big-end journal close to the bearing wall, no periodic steady state, inputs still at the
-/// values the default case assumes, the synthetic cylinder pressure. summary.json ("warnings"),
+/// a big-end journal close to the bearing wall, a peak film pressure between output samples, no
+/// periodic steady state, inputs still at the values the default case assumes, the synthetic
+/// cylinder pressure. summary.json ("warnings"),
 /// the CLI and the GUI's run table show the same list. Codes and keys: docs/outputs.md.
 #include <optional>
 #include <string>
@@ -23,7 +24,9 @@ inline constexpr double kHighEccentricity = 0.95;
 /// One warning. Stable codes: "asperity_contact", "mixed_lubrication" (film ratios; the worse
 /// of the two per joint), "high_eccentricity", "not_periodic", "assumed_inputs",
 /// "synthetic_pressure", "oil_extrapolated" (a catalogue oil outside its fit's temperatures;
-/// value: the film temperature [K], limit: the bound it passes [K]).
+/// value: the film temperature [K], limit: the bound it passes [K]), "unresolved_peak" (a peak
+/// film pressure standing alone between its output samples; value: its ratio to the larger
+/// sample beside it, limit: engine::kUnresolvedPeakRatio).
 struct RunWarning {
   std::string code;
   std::string joint;    ///< "skirt", "big_end", or empty (the whole run)

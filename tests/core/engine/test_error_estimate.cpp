@@ -117,6 +117,83 @@ class TestErrorEstimate : public QObject {
              e.Summary().c_str());
   }
 
+  // A peak film pressure the output samples do not resolve in time: a Gaussian peak whose width
+  // at half height spans w output intervals is down to 2^(-4/w²) one interval away, so its ratio
+  // to the larger neighbour is 2^(4/w²): resolved at w = 4 (1.19), not at w = 2 (2). Neighbours
+  // wrap round a whole cycle; the steps' peaks between samples flag a spike the samples miss;
+  // the estimate leaves an unresolved peak out of its worst figure and says so.
+  void peaksBetweenOutputSamplesAreFlagged() {
+    const int n = 40;
+    auto cycle = [&](double width, int centre) {
+      std::vector<engine::CrankTrainSample> samples(n);
+      for (int k = 0; k < n; ++k) {
+        const int d = std::min(std::abs(k - centre), n - std::abs(k - centre));  // periodic
+        samples[k].bearing.present = true;
+        samples[k].bearing.moft = 1e-6;
+        samples[k].bearing.max_pressure = 1e8 * std::pow(2.0, -4.0 * d * d / (width * width));
+      }
+      return samples;
+    };
+    for (const double width : {4.0, 2.0}) {
+      const auto peaks = engine::SampledPeaks(cycle(width, 10), true);
+      QCOMPARE(peaks.size(), std::size_t(1));  // the big end's; no skirt
+      const engine::SampledPeak& p = peaks[0];
+      QCOMPARE(p.figure.key, std::string("bearing_peak_pressure[Pa]"));
+      QCOMPARE(p.index, std::size_t(10));
+      QCOMPARE(p.figure.value, 1e8);
+      QVERIFY(std::abs(p.Ratio() - std::pow(2.0, 4.0 / (width * width))) < 1e-12);
+      QVERIFY(std::isnan(p.step_peak));
+      QCOMPARE(p.StepRatio(), 1.0);
+      QCOMPARE(p.Unresolved(), width < 2.6);
+    }
+    // At the first sample: the last one is beside it only in a whole cycle.
+    const auto at_start = cycle(2.0, 0);
+    const engine::SampledPeak whole = engine::SampledPeaks(at_start, true).at(0);
+    QCOMPARE(whole.before, at_start.back().bearing.max_pressure);
+    QCOMPARE(whole.after, at_start[1].bearing.max_pressure);
+    const engine::SampledPeak part = engine::SampledPeaks(at_start, false).at(0);
+    QVERIFY(std::isnan(part.before));
+    QCOMPARE(part.Ratio(), 2.0);
+    // A spike the samples miss: a smooth sampled peak, the steps between samples 24 and 25 at
+    // three times its height.
+    auto missed = cycle(6.0, 10);
+    for (auto& s : missed) s.bearing.step_peak_pressure = 0.9 * s.bearing.max_pressure;
+    missed[25].bearing.step_peak_pressure = 3e8;
+    const engine::SampledPeak m = engine::SampledPeaks(missed, true).at(0);
+    QVERIFY(m.Ratio() < engine::kUnresolvedPeakRatio);
+    QCOMPARE(m.step_peak, 3e8);
+    QCOMPARE(m.step_index, std::size_t(25));
+    QCOMPARE(m.StepRatio(), 3.0);
+    QVERIFY(m.Unresolved());
+    // The estimate: MOFT off by 1 %, the unresolved peak by 50 % — the worst is the MOFT.
+    const auto fine = cycle(2.0, 10);
+    auto coarse = fine;
+    for (auto& s : coarse) {
+      s.bearing.moft *= 0.97;
+      s.bearing.max_pressure *= 0.5;
+    }
+    engine::CoarseCompanion companion;
+    companion.big_end_ratio = 2.0;
+    const engine::ErrorEstimate e = engine::EstimateErrors(fine, coarse, companion);
+    QCOMPARE(e.status, std::string("estimated"));
+    for (const engine::FigureError& f : e.figures) {
+      QCOMPARE(f.resolved_in_time, f.figure.key != "bearing_peak_pressure[Pa]");
+    }
+    QCOMPARE(e.worst_label, std::string("min big-end MOFT"));
+    QVERIFY(std::abs(e.worst_relative - 0.01) < 1e-9);  // 0.03 / 3 of a MOFT of 1
+    QVERIFY2(QString::fromStdString(e.Summary())
+                 .contains("peak big-end film pressure not estimated (a spike between output "
+                           "samples)"),
+             e.Summary().c_str());
+    // Resolved in both runs: estimated like any other figure.
+    auto smooth = cycle(6.0, 10), smooth_coarse = smooth;
+    for (auto& s : smooth_coarse) s.bearing.max_pressure *= 0.5;
+    const engine::ErrorEstimate r = engine::EstimateErrors(smooth, smooth_coarse, companion);
+    QCOMPARE(r.worst_label, std::string("peak big-end film pressure"));
+    QVERIFY(std::all_of(r.figures.begin(), r.figures.end(),
+                        [](const engine::FigureError& f) { return f.resolved_in_time; }));
+  }
+
   // The scatter of the headline figures over a run's last cycles: which cycles, the extremes,
   // the sentence a warning carries.
   void scatterOverCyclesSpansTheLastCycles() {

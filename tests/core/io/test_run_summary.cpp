@@ -45,7 +45,12 @@ io::RunSummary Full() {
       .kpis = {}};
   engine::ErrorEstimate& e = s.error_estimate;
   e.status = "estimated";
-  e.figures = {{{"bearing_moft_min[m]", "min big-end MOFT", 1.1e-6, true}, 1.0e-6, 3.3e-8, 0.03}};
+  e.figures = {{{"bearing_moft_min[m]", "min big-end MOFT", 1.1e-6, true}, 1.0e-6, 3.3e-8, 0.03},
+               {{"bearing_peak_pressure[Pa]", "peak big-end film pressure", 1.8e9, true},
+                1.4e8,
+                5.5e8,
+                0.31,
+                false}};
   e.worst_relative = 0.03;
   e.worst_label = "min big-end MOFT";
   e.skirt_ratio = 2.0;
@@ -188,6 +193,13 @@ class TestRunSummary : public QObject {
     const io::RunSummary back = io::SummaryFromJson(j);
     QCOMPARE(back.error_estimate.figures.at(0).figure.label, std::string("min big-end MOFT"));
     QCOMPARE(back.error_estimate.worst_relative, 0.03);
+    // A peak the samples do not resolve in time stays marked; older summaries read it resolved.
+    QVERIFY(back.error_estimate.figures.at(0).resolved_in_time);
+    QVERIFY(!back.error_estimate.figures.at(1).resolved_in_time);
+    nlohmann::json before_marks = j;
+    before_marks["discretisation_error"]["figures"]["bearing_peak_pressure[Pa]"].erase(
+        "resolved_in_time");
+    QVERIFY(io::SummaryFromJson(before_marks).error_estimate.figures.at(1).resolved_in_time);
     QVERIFY(j["mean_fpl_w"]["bearing"].is_null());
     // The scatter over the last cycles of a run without a periodic state: null otherwise, and a
     // summary written before it existed reads without it.
