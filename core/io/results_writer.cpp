@@ -57,6 +57,8 @@ const std::vector<ResultColumn>& ResultColumns() {
       {"bearing_side_flow[m^3/s]", &OutputRow::bearing_side_flow, "cm^3/s", 1e6},
       {"skirt_max_deformation[m]", &OutputRow::skirt_max_deformation, "um", 1e6},
       {"bearing_max_deformation[m]", &OutputRow::bearing_max_deformation, "um", 1e6},
+      {"skirt_step_peak_pressure[Pa]", &OutputRow::skirt_step_peak_pressure, "MPa", 1e-6},
+      {"bearing_step_peak_pressure[Pa]", &OutputRow::bearing_step_peak_pressure, "MPa", 1e-6},
       {"piston_position[m]", &OutputRow::piston_position, "mm", 1e3},
       {"piston_velocity[m/s]", &OutputRow::piston_velocity, "m/s", 1.0},
       {"piston_acceleration[m/s^2]", &OutputRow::piston_acceleration, "m/s^2", 1.0},
@@ -259,6 +261,8 @@ OutputRow RowFromSample(const engine::CrankTrainSample& s, engine::Model model,
     r.skirt_outflow = s.skirt.outflow;
     r.skirt_wetted_fraction = s.skirt.wetted_fraction;
     r.skirt_max_deformation = s.skirt.max_deformation;
+    if (std::isfinite(s.skirt.step_peak_pressure))
+      r.skirt_step_peak_pressure = s.skirt.step_peak_pressure;
   }
   if (big_end_lubricated && s.bearing.present) {
     r.bearing_moft = s.bearing.moft;
@@ -273,6 +277,8 @@ OutputRow RowFromSample(const engine::CrankTrainSample& s, engine::Model model,
     r.bearing_supply_flow = s.bearing.supply_flow;
     r.bearing_side_flow = s.bearing.side_flow;
     r.bearing_max_deformation = s.bearing.max_deformation;
+    if (std::isfinite(s.bearing.step_peak_pressure))
+      r.bearing_step_peak_pressure = s.bearing.step_peak_pressure;
   }
   if (!big_end_lubricated) {  // ideal pin joint: frictionless
     r.bearing_fpl = 0.0;

@@ -256,7 +256,15 @@ class TestCoupledCavitation : public QObject {
     };
     const auto [config, r] = run(2.0);
     long booked = 0;
-    for (const auto& s : r.samples) booked += std::isfinite(s.bearing.step_peak_pressure);
+    for (const auto& s : r.samples) {
+      booked += std::isfinite(s.bearing.step_peak_pressure);
+      // results.csv's column: the sample's steps' peak, empty when no step ended in the interval.
+      const io::OutputRow row = io::RowFromSample(s, config.model, 0.0);
+      QCOMPARE(row.bearing_step_peak_pressure.has_value(),
+               std::isfinite(s.bearing.step_peak_pressure));
+      if (row.bearing_step_peak_pressure)
+        QCOMPARE(*row.bearing_step_peak_pressure, s.bearing.step_peak_pressure);
+    }
     QVERIFY(booked > 0.9 * double(r.samples.size()));  // steps are shorter than 2 °CA nearly always
     const engine::SampledPeak coarse = engine::SampledPeaks(r.samples, true).at(0);
     const double step_at = io::CycleCrankAngleDeg(r.samples[coarse.step_index].crank_angle);

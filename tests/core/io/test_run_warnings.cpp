@@ -153,6 +153,7 @@ class TestRunWarnings : public QObject {
       const FramePeaks& p = peaks.at(int(k));
       // Reynolds films have no step-by-step history: no peaks between the samples.
       QVERIFY(std::isnan(s.skirt.step_peak_pressure) && std::isnan(s.bearing.step_peak_pressure));
+      QVERIFY(!r.skirt_step_peak_pressure && !r.bearing_step_peak_pressure);  // empty cells
       // Peaks: at least every nodal value of the step's frame, and attained.
       for (const auto& [peak, nodal] : {std::pair{*r.skirt_peak_pressure, p.skirt_p},
                                         {*r.skirt_peak_contact_pressure, p.skirt_pc},
