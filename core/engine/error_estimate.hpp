@@ -60,7 +60,8 @@ struct SampledPeak {
   /// sample that took it (the steps since the sample before it).
   double step_peak = std::numeric_limits<double>::quiet_NaN();
   std::size_t step_index = 0;
-  /// value / the larger neighbour (infinite when both are zero, 1 without neighbours).
+  /// value / the larger neighbour (infinite when both neighbours are zero and the value is not;
+  /// 1 without neighbours).
   double Ratio() const;
   /// step_peak / value (1 without step peaks).
   double StepRatio() const;

@@ -124,9 +124,9 @@ void UnresolvedPeakWarnings(const std::vector<engine::CrankTrainSample>& samples
     const std::string why = fmt::format(
         "it lasts less than about three output intervals ({:.3g} °CA), so the peak figure is "
         "whatever "
-        "the samples caught (an impact, e.g. a big-end journal crossing a cavitated "
-        "mass-conserving film onto the full film beyond it); a smaller solver.output_interval "
-        "resolves it",
+        "the samples caught (an impact: a big-end journal or a skirt crossing a cavitated or "
+        "starved film onto the full film beyond it); a smaller solver.output_interval resolves "
+        "it",
         output_interval * kDeg);
     if (caught) {
       // The samples caught the spike in part: it stands out of the samples beside it.
