@@ -238,7 +238,7 @@ class TestCoupledCavitation : public QObject {
     QVERIFY(std::isnan(peaks.Take(10.0)));
   }
 
-  // The impact at the load reversal (gas-exchange TDC): the journal crosses the cavitated film
+  // The impact at the load reversal (firing TDC): the journal crosses the cavitated film
   // and meets the full film beyond it, a pressure spike about 0.1 °CA long. The 2 °CA output
   // samples miss it; the peaks of the integrator's accepted steps between them do not, and the
   // run warns. At 0.02 °CA samples it is resolved: the samples' peak is within 10 % of the
