@@ -26,10 +26,10 @@ struct OutputRow {
       bigend_force_rod_x, bigend_force_rod_y, bearing_eps_rate,
       // Oil flows of each joint and the skirt's oil-covered share:
       skirt_inflow, skirt_outflow, skirt_wetted_fraction, bearing_supply_flow, bearing_side_flow,
-      // Elastic surfaces: the largest film opening by deformation (0 when rigid):
-      skirt_max_deformation, bearing_max_deformation,
       // Mass-conserving films: the peak pressure of the integrator's steps since the last row:
       skirt_step_peak_pressure, bearing_step_peak_pressure,
+      // Elastic surfaces: the largest film opening by deformation (0 when rigid):
+      skirt_max_deformation, bearing_max_deformation,
       // Extras (after the core columns):
       piston_position, piston_velocity, piston_acceleration, rod_angle, rod_angular_velocity,
       rod_angular_acceleration, pin_force_x, pin_force_y, main_bearing_force_x,

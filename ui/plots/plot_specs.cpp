@@ -167,11 +167,15 @@ std::vector<PlotSpec> Make() {
        DifferenceVsAngle("big end, film", Column::kBearingFpl, Column::kBearingContactFpl, 1.0),
        VsAngle("big end, asperities", Column::kBearingContactFpl, 1.0)},
       true));
-  plots.push_back(VsCrankAngle("peak_pressure", QObject::tr("Peak film pressure"),
-                               QObject::tr("peak film pressure [MPa]"), "MPa",
-                               {VsAngle("skirt", Column::kSkirtPeakPressure, 1e-6),
-                                VsAngle("big end", Column::kBearingPeakPressure, 1e-6)},
-                               true));
+  plots.push_back(VsCrankAngle(
+      "peak_pressure", QObject::tr("Peak film pressure"), QObject::tr("peak film pressure [MPa]"),
+      "MPa",
+      {VsAngle("skirt", Column::kSkirtPeakPressure, 1e-6),
+       VsAngle("big end", Column::kBearingPeakPressure, 1e-6),
+       // Mass-conserving films: what the steps between rows saw.
+       VsAngle("skirt, steps between samples", Column::kSkirtStepPeakPressure, 1e-6),
+       VsAngle("big end, steps between samples", Column::kBearingStepPeakPressure, 1e-6)},
+      true));
   plots.push_back(VsCrankAngle("peak_contact_pressure",
                                QObject::tr("Peak asperity contact pressure"),
                                QObject::tr("peak contact pressure [MPa]"), "MPa",

@@ -40,11 +40,13 @@ enum class Column {
   kBigEndForceRodX,
   kBigEndForceRodY,
   kBearingEpsRate,
-  kSkirtInflow,          ///< oil into the skirt film through its boundary [m^3/s]
-  kSkirtOutflow,         ///< oil out of it [m^3/s]
-  kSkirtWettedFraction,  ///< oil-covered share of the skirt panels [-]
-  kBearingSupplyFlow,    ///< oil into the big-end film through its supply [m^3/s]
-  kBearingSideFlow,      ///< oil out of the big end's edges [m^3/s]
+  kSkirtInflow,              ///< oil into the skirt film through its boundary [m^3/s]
+  kSkirtOutflow,             ///< oil out of it [m^3/s]
+  kSkirtWettedFraction,      ///< oil-covered share of the skirt panels [-]
+  kBearingSupplyFlow,        ///< oil into the big-end film through its supply [m^3/s]
+  kBearingSideFlow,          ///< oil out of the big end's edges [m^3/s]
+  kSkirtStepPeakPressure,    ///< JFO skirt: peak pressure of the steps since the last row [Pa]
+  kBearingStepPeakPressure,  ///< JFO big end: the same [Pa]
   kCount
 };
 constexpr int kColumnCount = int(Column::kCount);
