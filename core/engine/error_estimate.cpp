@@ -24,12 +24,6 @@ double SpacingRatio(double elements, double coarse_elements) {
   return std::sqrt(elements / coarse_elements);
 }
 
-
-
-}  // namespace
-
-namespace {
-
 enum class Reduction { kMin, kMax, kMean };
 
 struct HeadlineDefinition {
@@ -38,7 +32,9 @@ struct HeadlineDefinition {
   bool big_end;
   double (*value)(const CrankTrainSample&);
   Reduction reduction;
-  bool sampled_peak;  ///< a peak of a film quantity that can spike between output samples
+  /// A peak that can spike between output samples: the film's peak at the integrator's steps
+  /// since the sample before (NaN when the film books none); nullptr for the other figures.
+  double (*between_samples)(const CrankTrainSample&);
   /// Order of convergence in the element size. Observed in the coupled run over three meshes
   /// (big end 50 x 5 ... 200 x 20 graded, skirt 12 + 2 + 12 x 16 ... 48 + 8 + 48 x 64) at 2000
   /// and 6000 rpm: 1.86-2.22 for every figure (docs/validation/errors.md), so 2 for all; kept per
@@ -51,21 +47,30 @@ const std::vector<HeadlineDefinition>& Definitions() {
   using S = CrankTrainSample;
   static const std::vector<HeadlineDefinition> table = {
       {"skirt_moft_min[m]", "min skirt MOFT", false, [](const S& s) { return s.skirt.moft; },
-       Reduction::kMin, false, 2.0},
+       Reduction::kMin, nullptr, 2.0},
       {"skirt_peak_pressure[Pa]", "peak skirt film pressure", false,
-       [](const S& s) { return s.skirt.max_pressure; }, Reduction::kMax, true, 2.0},
+       [](const S& s) { return s.skirt.max_pressure; }, Reduction::kMax,
+       [](const S& s) { return s.skirt.step_peak_pressure; }, 2.0},
       {"skirt_fpl_mean[W]", "mean skirt FPL", false, [](const S& s) { return s.skirt.fpl; },
-       Reduction::kMean, false, 2.0},
+       Reduction::kMean, nullptr, 2.0},
       {"bearing_moft_min[m]", "min big-end MOFT", true, [](const S& s) { return s.bearing.moft; },
-       Reduction::kMin, false, 2.0},
+       Reduction::kMin, nullptr, 2.0},
       {"bearing_eps_max[-]", "max big-end eccentricity ratio", true,
-       [](const S& s) { return s.bearing.eps; }, Reduction::kMax, false, 2.0},
+       [](const S& s) { return s.bearing.eps; }, Reduction::kMax, nullptr, 2.0},
       {"bearing_peak_pressure[Pa]", "peak big-end film pressure", true,
-       [](const S& s) { return s.bearing.max_pressure; }, Reduction::kMax, true, 2.0},
+       [](const S& s) { return s.bearing.max_pressure; }, Reduction::kMax,
+       [](const S& s) { return s.bearing.step_peak_pressure; }, 2.0},
       {"bearing_fpl_mean[W]", "mean big-end FPL", true, [](const S& s) { return s.bearing.fpl; },
-       Reduction::kMean, false, 2.0},
+       Reduction::kMean, nullptr, 2.0},
   };
   return table;
+}
+
+// Whether the samples have the figure's joint (a lubricated skirt / big end).
+bool HasJoint(const std::vector<CrankTrainSample>& samples, bool big_end) {
+  return std::any_of(samples.begin(), samples.end(), [big_end](const CrankTrainSample& s) {
+    return big_end ? s.bearing.present : s.skirt.present;
+  });
 }
 
 }  // namespace
@@ -80,10 +85,7 @@ HeadlineFigure HeadlineFigureFor(const std::string& key, double value) {
 std::vector<HeadlineFigure> HeadlineFigures(const std::vector<CrankTrainSample>& samples) {
   std::vector<HeadlineFigure> figures;
   if (samples.empty()) return figures;
-  const bool skirt = std::any_of(samples.begin(), samples.end(),
-                                 [](const CrankTrainSample& s) { return s.skirt.present; });
-  const bool big_end = std::any_of(samples.begin(), samples.end(),
-                                   [](const CrankTrainSample& s) { return s.bearing.present; });
+  const bool skirt = HasJoint(samples, false), big_end = HasJoint(samples, true);
   for (const HeadlineDefinition& d : Definitions()) {
     if (d.big_end ? !big_end : !skirt) continue;
     double best = d.reduction == Reduction::kMax ? -HUGE_VAL : HUGE_VAL, sum = 0.0;
@@ -119,12 +121,9 @@ std::vector<SampledPeak> SampledPeaks(const std::vector<CrankTrainSample>& sampl
   std::vector<SampledPeak> peaks;
   const std::size_t n = samples.size();
   if (n == 0) return peaks;
-  const bool skirt = std::any_of(samples.begin(), samples.end(),
-                                 [](const CrankTrainSample& s) { return s.skirt.present; });
-  const bool big_end = std::any_of(samples.begin(), samples.end(),
-                                   [](const CrankTrainSample& s) { return s.bearing.present; });
+  const bool skirt = HasJoint(samples, false), big_end = HasJoint(samples, true);
   for (const HeadlineDefinition& d : Definitions()) {
-    if (!d.sampled_peak || (d.big_end ? !big_end : !skirt)) continue;
+    if (!d.between_samples || (d.big_end ? !big_end : !skirt)) continue;
     std::size_t at = 0;
     for (std::size_t k = 1; k < n; ++k)
       if (d.value(samples[k]) > d.value(samples[at])) at = k;
@@ -134,8 +133,7 @@ std::vector<SampledPeak> SampledPeaks(const std::vector<CrankTrainSample>& sampl
     if (n >= 2 && (at > 0 || whole_cycle)) peak.before = d.value(samples[(at + n - 1) % n]);
     if (n >= 2 && (at + 1 < n || whole_cycle)) peak.after = d.value(samples[(at + 1) % n]);
     for (std::size_t k = 0; k < n; ++k) {
-      const double step =
-          d.big_end ? samples[k].bearing.step_peak_pressure : samples[k].skirt.step_peak_pressure;
+      const double step = d.between_samples(samples[k]);
       if (std::isfinite(step) && !(step <= peak.step_peak)) {
         peak.step_peak = step;
         peak.step_index = k;
@@ -317,7 +315,7 @@ std::string ErrorEstimate::Summary() const {
     spikes += e.figure.label;
   }
   if (!spikes.empty()) {
-    spikes = fmt::format("; {} not estimated (a spike between output samples)", spikes);
+    spikes = fmt::format("; {} {}", spikes, kUnresolvedPeakNote);
   }
   if (worst_relative <= threshold) {
     return fmt::format("estimated discretisation error <= {:.2g} % (largest: {}){}",

@@ -100,6 +100,9 @@ struct FigureError {
   bool resolved_in_time = true;
 };
 
+/// What the summary line and the GUI say of a figure that is not resolved_in_time.
+inline constexpr const char* kUnresolvedPeakNote = "not estimated (a spike between output samples)";
+
 /// The estimate of a run.
 struct ErrorEstimate {
   /// "estimated"; "off" (solver.error_estimate = 0); "not-applicable" (no lubricated joint);

@@ -123,10 +123,9 @@ void UnresolvedPeakWarnings(const std::vector<engine::CrankTrainSample>& samples
         peak.step_peak * 1e-6, step_at);
     const std::string why = fmt::format(
         "it lasts less than about three output intervals ({:.3g} °CA), so the peak figure is "
-        "whatever "
-        "the samples caught (an impact: a big-end journal or a skirt crossing a cavitated or "
-        "starved film onto the full film beyond it); a smaller solver.output_interval resolves "
-        "it",
+        "whatever the samples caught (an impact: a big-end journal or a skirt crossing a "
+        "cavitated or starved film onto the full film beyond it); a smaller "
+        "solver.output_interval resolves it",
         output_interval * kDeg);
     if (caught) {
       // The samples caught the spike in part: it stands out of the samples beside it.
@@ -145,9 +144,9 @@ void UnresolvedPeakWarnings(const std::vector<engine::CrankTrainSample>& samples
       // The samples missed it: only the steps between them saw it.
       w.crank_angle_deg = step_at;
       w.message = fmt::format(
-          "the output samples miss a spike of the {}: {}, {:.2g} times the largest sample "
-          "({:.4g} MPa at {:.4g} °CA); {}",
-          peak.figure.label.substr(std::string("peak ").size()), steps, peak.StepRatio(),
+          "the output samples miss a spike of the {} film pressure: {}, {:.2g} times the largest "
+          "sample ({:.4g} MPa at {:.4g} °CA); {}",
+          peak.figure.big_end ? "big-end" : "skirt", steps, peak.StepRatio(),
           peak.figure.value * 1e-6, CrankAngleDeg(samples[peak.index]), why);
     }
     out->push_back(std::move(w));

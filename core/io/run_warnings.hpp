@@ -3,8 +3,8 @@
 /// about once a run has ended — a film thinner than three times or than the surface roughness,
 /// a big-end journal close to the bearing wall, a peak film pressure between output samples, no
 /// periodic steady state, inputs still at the values the default case assumes, the synthetic
-/// cylinder pressure. summary.json ("warnings"),
-/// the CLI and the GUI's run table show the same list. Codes and keys: docs/outputs.md.
+/// cylinder pressure. summary.json ("warnings"), the CLI and the GUI's run table show the same
+/// list. Codes and keys: docs/outputs.md.
 #include <optional>
 #include <string>
 #include <utility>
@@ -25,8 +25,8 @@ inline constexpr double kHighEccentricity = 0.95;
 /// of the two per joint), "high_eccentricity", "not_periodic", "assumed_inputs",
 /// "synthetic_pressure", "oil_extrapolated" (a catalogue oil outside its fit's temperatures;
 /// value: the film temperature [K], limit: the bound it passes [K]), "unresolved_peak" (a peak
-/// film pressure standing alone between its output samples; value: its ratio to the larger
-/// sample beside it, limit: engine::kUnresolvedPeakRatio).
+/// film pressure the output samples do not resolve, engine::SampledPeak; value: the larger of
+/// its Ratio and StepRatio, limit: engine::kUnresolvedPeakRatio).
 struct RunWarning {
   std::string code;
   std::string joint;    ///< "skirt", "big_end", or empty (the whole run)

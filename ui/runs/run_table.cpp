@@ -37,10 +37,11 @@ void ShowErrorEstimate(const engine::ErrorEstimate& e, QTableWidgetItem* cell) {
     const double scale = display.scale;
     const QString unit = QString::fromStdString(display.unit);
     if (!f.resolved_in_time) {
-      tip += QString("\n%1: %2 %3, not estimated (a spike between output samples)")
+      tip += QString("\n%1: %2 %3, %4")
                  .arg(QString::fromStdString(f.figure.label))
                  .arg(QString::number(f.figure.value * scale, 'g', 5))
-                 .arg(unit);
+                 .arg(unit)
+                 .arg(QString::fromUtf8(engine::kUnresolvedPeakNote));
       continue;
     }
     tip += QString("\n%1: %2 %3, %4%5 % → %6 %3")
