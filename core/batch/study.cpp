@@ -260,14 +260,6 @@ std::string ReadText(const fs::path& path, const std::string& what) {
   return io::ReadInputFile(path, what, kMaxStudyFileBytes);
 }
 
-// "a,b" CSV cell: quoted when it holds a comma or a quote.
-std::string CsvCell(const std::string& text) {
-  if (text.find_first_of(",\"\n") == std::string::npos) return text;
-  std::string quoted = "\"";
-  for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return quoted + "\"";
-}
-
 std::string FactorHeader(const StudyFactor& f) {
   return f.path + (f.is_text() || f.unit.empty() ? "" : "[" + f.unit + "]");
 }
@@ -531,11 +523,11 @@ std::string StudyJson(const Study& s) {
 
 void WriteDesignCsv(std::ostream& out, const Study& study, const std::vector<StudyPoint>& points) {
   out << "point,folder";
-  for (const StudyFactor& f : study.factors) out << "," << CsvCell(FactorHeader(f));
+  for (const StudyFactor& f : study.factors) out << "," << io::CsvCell(FactorHeader(f));
   out << "\n";
   for (const StudyPoint& p : points) {
     out << p.number << "," << p.folder;
-    for (const std::string& v : p.values) out << "," << CsvCell(v);
+    for (const std::string& v : p.values) out << "," << io::CsvCell(v);
     out << "\n";
   }
 }
@@ -594,6 +586,7 @@ std::vector<StudyRow> CollectStudy(const fs::path& dir, const Study& study) {
         row.status = figures.status;
         row.wall_time_s = figures.wall_time_s;
         row.figures = figures.figures;
+        row.notes = figures.notes;
       } catch (const std::exception& e) {
         row.reason = e.what();
       }
@@ -605,20 +598,21 @@ std::vector<StudyRow> CollectStudy(const fs::path& dir, const Study& study) {
 
 void WriteStudyCsv(std::ostream& out, const Study& study, const std::vector<StudyRow>& rows) {
   out << "point,folder";
-  for (const StudyFactor& f : study.factors) out << "," << CsvCell(FactorHeader(f));
+  for (const StudyFactor& f : study.factors) out << "," << io::CsvCell(FactorHeader(f));
   out << ",state,status,wall_time[s]";
   for (const io::ComparisonFigure& figure : io::ComparisonFigures()) out << "," << figure.key;
-  out << ",reason\n";
+  out << ",reason,notes\n";
   for (const StudyRow& r : rows) {
     out << r.point.number << "," << r.point.folder;
-    for (const std::string& v : r.point.values) out << "," << CsvCell(v);
-    out << "," << PointStateName(r.state) << "," << CsvCell(r.status) << ",";
+    for (const std::string& v : r.point.values) out << "," << io::CsvCell(v);
+    out << "," << PointStateName(r.state) << "," << io::CsvCell(r.status) << ",";
     if (r.wall_time_s) out << fmt::format("{:.3f}", *r.wall_time_s);
     for (const auto& value : r.figures) {
       out << ",";
       if (value) out << fmt::format("{:.10g}", *value);
     }
-    out << "," << CsvCell(r.state == PointState::kDone ? std::string() : r.reason) << "\n";
+    out << "," << io::CsvCell(r.state == PointState::kDone ? std::string() : r.reason) << ","
+        << io::CsvCell(io::NotesText(r.notes)) << "\n";
   }
 }
 
@@ -756,6 +750,14 @@ std::string StudyMarkdown(const Study& study, const std::vector<StudyRow>& rows,
   };
   md << "## Points\n\n" << header();
   for (const StudyRow& r : rows) md << line(r);
+  bool noted = false;
+  for (const StudyRow& r : rows) {
+    for (const std::string& note : r.notes) {
+      if (!noted) md << "\nNotes:\n\n";
+      noted = true;
+      md << "- point " << r.point.number << ": " << note << "\n";
+    }
+  }
 
   // Main effects: for each factor with discrete levels, the mean of each figure over the done
   // points at each level.

@@ -116,11 +116,13 @@ struct StudyRow {
   std::string reason;  ///< why a point failed or is incomplete
   std::optional<double> wall_time_s;
   std::vector<std::optional<double>> figures;  ///< io::ComparisonFigures(), SI
+  std::vector<std::string> notes;              ///< figures left out (io::ComparisonRow::notes)
 };
 
 /// Reads every point's folder under `dir` (design.csv gives the points).
 std::vector<StudyRow> CollectStudy(const std::filesystem::path& dir, const Study& study);
-/// study.csv (SI): point, folder, the factors, state, status, wall time, the figures.
+/// study.csv (SI): point, folder, the factors, state, status, wall time, the figures, the reason
+/// of a point that is not done, the notes (figures left out).
 void WriteStudyCsv(std::ostream& out, const Study& study, const std::vector<StudyRow>& rows);
 /// The index in io::ComparisonFigures() of the figure whose key (a study.csv column, e.g.
 /// "mean_bearing_fpl[W]") is `key`. Throws InputError("--rank-by", key, "must be one of: …"),

@@ -101,13 +101,13 @@ std::vector<HeadlineFigure> HeadlineFigures(const std::vector<CrankTrainSample>&
   return figures;
 }
 
-double SampledPeak::Ratio() const {
+double NeighbourRatio(double value, double before, double after) {
   double beside = -HUGE_VAL;
   for (double v : {before, after})
     if (std::isfinite(v)) beside = std::max(beside, v);
   if (beside == -HUGE_VAL) return 1.0;  // no neighbour to judge by
-  if (beside > 0.0) return figure.value / beside;
-  return figure.value > 0.0 ? HUGE_VAL : 1.0;
+  if (beside > 0.0) return value / beside;
+  return value > 0.0 ? HUGE_VAL : 1.0;
 }
 
 double SampledPeak::StepRatio() const {
@@ -207,34 +207,44 @@ std::string CycleScatter::Summary() const {
   constexpr double kNoted = 1e-3;  // figures that moved less are not listed
   std::vector<const FigureScatter*> moved;
   for (const FigureScatter& f : figures)
-    if (f.RelativeHalfSpread() > kNoted) moved.push_back(&f);
+    if (f.resolved_in_time && f.RelativeHalfSpread() > kNoted) moved.push_back(&f);
   std::sort(moved.begin(), moved.end(), [](const FigureScatter* a, const FigureScatter* b) {
     return a->RelativeHalfSpread() > b->RelativeHalfSpread();
   });
-  const std::string span = fmt::format("over cycles {}–{}", first_cycle, last_cycle);
-  if (moved.empty())
-    return span + " the headline figures moved by less than ±0.1 % of the reported values";
-  std::string text =
-      fmt::format("{} the headline figures moved by up to ±{} % of the reported values:", span,
-                  Percent(moved.front()->RelativeHalfSpread()));
-  for (std::size_t i = 0; i < moved.size(); ++i) {
-    const FigureScatter& f = *moved[i];
+  const auto range = [](const FigureScatter& f) {
     const DisplayUnit u = HeadlineDisplayUnit(f.figure.key);
-    text += fmt::format("{} {} {:.4g}–{:.4g}{}{} (±{} %)", i == 0 ? "" : ",", f.figure.label,
-                        f.min * u.scale, f.max * u.scale, u.unit.empty() ? "" : " ", u.unit,
-                        Percent(f.RelativeHalfSpread()));
+    return fmt::format("{} {:.4g}–{:.4g}{}{}", f.figure.label, f.min * u.scale, f.max * u.scale,
+                       u.unit.empty() ? "" : " ", u.unit);
+  };
+  const std::string span = fmt::format("over cycles {}–{}", first_cycle, last_cycle);
+  std::string text;
+  if (moved.empty()) {
+    text = span + " the headline figures moved by less than ±0.1 % of the reported values";
+  } else {
+    text = fmt::format("{} the headline figures moved by up to ±{} % of the reported values:", span,
+                       Percent(moved.front()->RelativeHalfSpread()));
+    for (std::size_t i = 0; i < moved.size(); ++i) {
+      text += fmt::format("{} {} (±{} %)", i == 0 ? "" : ",", range(*moved[i]),
+                          Percent(moved[i]->RelativeHalfSpread()));
+    }
   }
+  std::string spikes;
+  for (const FigureScatter& f : figures)
+    if (!f.resolved_in_time) spikes += (spikes.empty() ? "" : ", ") + range(f);
+  if (!spikes.empty()) text += "; not counted: " + spikes + " (a spike between output samples)";
   return text;
 }
 
 std::optional<CycleScatter> ScatterOverCycles(
-    const std::vector<std::vector<HeadlineFigure>>& per_cycle) {
+    const std::vector<std::vector<HeadlineFigure>>& per_cycle,
+    const std::vector<CrankTrainSample>& reported_samples, bool whole_cycle) {
   const int cycles = static_cast<int>(per_cycle.size());
   if (cycles < 2 || per_cycle.back().empty()) return std::nullopt;
   CycleScatter scatter;
   scatter.last_cycle = cycles;
   // The first cycle holds the start-up transient: left out when two others remain.
   scatter.first_cycle = std::max(cycles >= 3 ? 2 : 1, cycles - kScatterCycles + 1);
+  const std::vector<SampledPeak> peaks = SampledPeaks(reported_samples, whole_cycle);
   for (const HeadlineFigure& reported : per_cycle.back()) {
     FigureScatter f{.figure = reported, .min = reported.value, .max = reported.value};
     for (int c = scatter.first_cycle; c <= cycles; ++c) {
@@ -244,6 +254,8 @@ std::optional<CycleScatter> ScatterOverCycles(
         f.max = std::max(f.max, other.value);
       }
     }
+    for (const SampledPeak& peak : peaks)
+      if (peak.figure.key == reported.key && peak.Unresolved()) f.resolved_in_time = false;
     scatter.figures.push_back(f);
   }
   return scatter;

@@ -48,6 +48,11 @@ HeadlineFigure HeadlineFigureFor(const std::string& key, double value);
 /// interval) is reported at whatever height the samples happen to catch.
 inline constexpr double kUnresolvedPeakRatio = 1.5;
 
+/// A sample's value over the larger of the two samples beside it (NaN: none there): infinite
+/// when both are zero and the value is not, 1 without a neighbour. Above kUnresolvedPeakRatio
+/// the value is a spike the output samples do not resolve.
+double NeighbourRatio(double value, double before, double after);
+
 /// A peak headline figure (a joint's peak film pressure) with the output samples beside it and,
 /// for a mass-conserving film, the peak of its accepted integrator steps between the samples.
 struct SampledPeak {
@@ -60,9 +65,8 @@ struct SampledPeak {
   /// sample that took it (the steps since the sample before it).
   double step_peak = std::numeric_limits<double>::quiet_NaN();
   std::size_t step_index = 0;
-  /// value / the larger neighbour (infinite when both neighbours are zero and the value is not;
-  /// 1 without neighbours).
-  double Ratio() const;
+  /// NeighbourRatio of the value.
+  double Ratio() const { return NeighbourRatio(figure.value, before, after); }
   /// step_peak / value (1 without step peaks).
   double StepRatio() const;
   /// Either ratio above kUnresolvedPeakRatio: a spike the output samples do not resolve — they
@@ -138,6 +142,10 @@ DisplayUnit HeadlineDisplayUnit(const std::string& key);
 struct FigureScatter {
   HeadlineFigure figure;  ///< the reported (last) cycle's value
   double min = 0.0, max = 0.0;
+  /// false: a peak figure the reported cycle's output samples do not resolve in time
+  /// (SampledPeak::Unresolved): its values are whatever the samples caught of a spike, so its
+  /// scatter is not counted in the largest one (FigureError::resolved_in_time alike).
+  bool resolved_in_time = true;
   /// (max − min) / 2 over |the reported value| (0 when the value is 0 and nothing moved).
   double RelativeHalfSpread() const;
 };
@@ -148,7 +156,8 @@ struct CycleScatter {
   std::vector<FigureScatter> figures;
   /// One sentence: "over cycles 8–12 the headline figures moved by up to ±2.7 % of the reported
   /// values: min skirt MOFT 5.56–5.87 µm (±2.7 %), …" — the figures that moved by more than
-  /// ±0.1 %, largest first.
+  /// ±0.1 %, largest first; then the figures not resolved in time, "not counted: peak big-end
+  /// film pressure 1422–1835 MPa (a spike between output samples)".
   std::string Summary() const;
 };
 
@@ -158,8 +167,11 @@ inline constexpr int kScatterCycles = 5;
 
 /// The scatter of the headline figures over the last cycles, from each cycle's figures in
 /// cycle order (RunResult::cycle_headlines). Empty with fewer than two cycles.
+/// `reported_samples`: the last cycle's samples (`whole_cycle` as for SampledPeaks), which tell the
+/// peaks that are spikes between output samples.
 std::optional<CycleScatter> ScatterOverCycles(
-    const std::vector<std::vector<HeadlineFigure>>& per_cycle);
+    const std::vector<std::vector<HeadlineFigure>>& per_cycle,
+    const std::vector<CrankTrainSample>& reported_samples, bool whole_cycle);
 
 /// Richardson's estimate from the run's and the coarse run's reported cycles.
 ErrorEstimate EstimateErrors(const std::vector<CrankTrainSample>& samples,

@@ -227,4 +227,11 @@ std::string SafeFolderName(const std::string& name) {
   return safe;
 }
 
+std::string CsvCell(const std::string& text) {
+  if (text.find_first_of(",\"\n") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return quoted + "\"";
+}
+
 }  // namespace filmdyn::io

@@ -97,4 +97,8 @@ std::string ReadInputFile(const std::filesystem::path& path, const std::string& 
 /// "case".
 std::string SafeFolderName(const std::string& name);
 
+/// A text as one CSV cell: quoted (its quotes doubled) when it holds a comma, a quote or a line
+/// break; as it is otherwise.
+std::string CsvCell(const std::string& text);
+
 }  // namespace filmdyn::io

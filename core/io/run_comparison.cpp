@@ -5,6 +5,7 @@
 #include <iomanip>
 #include <sstream>
 
+#include "core/io/output_files.hpp"
 #include "core/io/run_summary.hpp"
 
 namespace filmdyn::io {
@@ -28,6 +29,10 @@ struct FigureRecipe {
   ComparisonFigure figure;
   const char* column;  ///< results.csv column in the summary's extremes
   Reduce reduce;
+  /// A peak film pressure: the joint ("skirt", "big_end") whose unresolved_peak warning leaves it
+  /// out (a spike between output samples, which the steps between them saw even where the
+  /// samples missed it). Any extreme the summary marks a spike is left out too.
+  const char* spike_joint = nullptr;
 };
 
 const std::vector<FigureRecipe>& Recipes() {
@@ -53,13 +58,15 @@ const std::vector<FigureRecipe>& Recipes() {
        Reduce::kMaxAbs},
       {{"max_skirt_peak_pressure[Pa]", "peak skirt film pressure [MPa]", 1e-6},
        "skirt_peak_pressure[Pa]",
-       Reduce::kMax},
+       Reduce::kMax,
+       "skirt"},
       {{"max_skirt_contact_pressure[Pa]", "peak skirt contact pressure [MPa]", 1e-6},
        "skirt_peak_contact_pressure[Pa]",
        Reduce::kMax},
       {{"max_bearing_peak_pressure[Pa]", "peak big-end film pressure [MPa]", 1e-6},
        "bearing_peak_pressure[Pa]",
-       Reduce::kMax},
+       Reduce::kMax,
+       "big_end"},
       {{"max_bearing_contact_pressure[Pa]", "peak big-end contact pressure [MPa]", 1e-6},
        "bearing_peak_contact_pressure[Pa]",
        Reduce::kMax},
@@ -73,6 +80,19 @@ const std::vector<FigureRecipe>& Recipes() {
        Reduce::kWorstError},
   };
   return recipes;
+}
+
+// "peak big-end film pressure [MPa]" → "peak big-end film pressure".
+std::string WithoutUnit(const std::string& display_name) {
+  const std::size_t unit = display_name.rfind(" [");
+  return unit == std::string::npos ? display_name : display_name.substr(0, unit);
+}
+
+bool SpikeWarned(const RunSummary& summary, const char* joint) {
+  return joint != nullptr && std::any_of(summary.warnings.begin(), summary.warnings.end(),
+                                         [joint](const RunWarning& w) {
+                                           return w.code == "unresolved_peak" && w.joint == joint;
+                                         });
 }
 
 std::string Cell(const std::optional<double>& value, double scale, int precision) {
@@ -104,6 +124,7 @@ ComparisonRow ReadComparisonRow(const std::filesystem::path& folder) {
   row.wall_time_s = summary.wall_time_s;
   for (const auto& recipe : Recipes()) {
     std::optional<double> value;
+    bool spike = false;  // the extreme is a spike between the output samples
     if (recipe.reduce == Reduce::kMeanFplSkirt) {
       value = summary.mean_fpl_skirt_w;
     } else if (recipe.reduce == Reduce::kMeanFplBearing) {
@@ -121,29 +142,45 @@ ComparisonRow ReadComparisonRow(const std::filesystem::path& folder) {
     } else if (recipe.reduce == Reduce::kWorstError) {
       if (summary.error_estimate.Estimated()) value = summary.error_estimate.worst_relative;
     } else if (const auto e = summary.extremes.find(recipe.column); e != summary.extremes.end()) {
+      const ColumnExtremes& x = e->second;
       switch (recipe.reduce) {
-        case Reduce::kMaxAbs:
-          value = std::max(std::abs(e->second.min), std::abs(e->second.max));
+        case Reduce::kMaxAbs: {
+          const bool low = std::abs(x.min) > std::abs(x.max);
+          value = low ? std::abs(x.min) : std::abs(x.max);
+          spike = low ? x.min_spike : x.max_spike;
           break;
+        }
         case Reduce::kMin:
-          value = e->second.min;
+          value = x.min, spike = x.min_spike;
           break;
         case Reduce::kMax:
-          value = e->second.max;
+          value = x.max, spike = x.max_spike;
           break;
         default:
           break;
       }
+    }
+    if (value && (spike || SpikeWarned(summary, recipe.spike_joint))) {
+      value.reset();
+      row.notes.push_back(WithoutUnit(recipe.figure.display_name) +
+                          " left out: a spike the output samples do not resolve (its sampled "
+                          "height depends on the output interval)");
     }
     row.figures.push_back(value);
   }
   return row;
 }
 
+std::string NotesText(const std::vector<std::string>& notes) {
+  std::string text;
+  for (const std::string& note : notes) text += (text.empty() ? "" : "; ") + note;
+  return text;
+}
+
 void WriteComparisonCsv(std::ostream& out, const std::vector<ComparisonRow>& rows) {
   out << "run,model,rpm[rpm],status,cycles[-],wall_time[s]";
   for (const auto& figure : ComparisonFigures()) out << "," << figure.key;
-  out << "\n" << std::setprecision(10);
+  out << ",notes\n" << std::setprecision(10);
   for (const auto& row : rows) {
     out << row.folder << "," << row.model << "," << row.rpm << "," << row.status << ","
         << row.cycles << "," << row.wall_time_s;
@@ -151,7 +188,7 @@ void WriteComparisonCsv(std::ostream& out, const std::vector<ComparisonRow>& row
       out << ",";
       if (value) out << *value;
     }
-    out << "\n";
+    out << "," << CsvCell(NotesText(row.notes)) << "\n";
   }
 }
 
@@ -169,6 +206,13 @@ std::string ComparisonMarkdown(const std::vector<ComparisonRow>& rows) {
       out << " | " << Cell(row.figures[i], ComparisonFigures()[i].display_scale, 4);
     }
     out << " |\n";
+  }
+  bool header = false;
+  for (const auto& row : rows) {
+    if (row.notes.empty()) continue;
+    if (!header) out << "\nNotes:\n\n";
+    header = true;
+    for (const std::string& note : row.notes) out << "- " << row.folder << ": " << note << "\n";
   }
   return out.str();
 }

@@ -28,15 +28,22 @@ struct ComparisonRow {
   int cycles = 0;
   double wall_time_s = 0.0;
   std::vector<std::optional<double>> figures;  ///< per ComparisonFigures(), SI; empty = n/a
+  /// Figures the run has but the comparison leaves out, one sentence each: a peak film pressure
+  /// that is a spike between output samples (the run's unresolved_peak warning).
+  std::vector<std::string> notes;
 };
+
+/// The notes as one text ("; " between them), for a table cell.
+std::string NotesText(const std::vector<std::string>& notes);
 
 /// Reads `<folder>/summary.json`. Throws std::runtime_error naming the file when it is missing
 /// or malformed.
 ComparisonRow ReadComparisonRow(const std::filesystem::path& folder);
 
-/// comparison.csv: header with units, one row per run, empty cells for missing figures.
+/// comparison.csv: header with units, one row per run, empty cells for missing figures, the
+/// notes last.
 void WriteComparisonCsv(std::ostream& out, const std::vector<ComparisonRow>& rows);
-/// A Markdown table in display units (also printed by `filmdyn sweep`).
+/// A Markdown table in display units (also printed by `filmdyn sweep`), the notes below it.
 std::string ComparisonMarkdown(const std::vector<ComparisonRow>& rows);
 
 }  // namespace filmdyn::io

@@ -2,13 +2,17 @@
 
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 
 #include "core/base/version.hpp"
+#include "core/engine/error_estimate.hpp"
 #include "core/engine/film_joints.hpp"
 #include "core/io/output_files.hpp"
+#include "core/io/run_kpis.hpp"
 #include "core/lubrication/oil_catalogue.hpp"
 
 namespace filmdyn::io {
@@ -32,17 +36,31 @@ RunSummary SummarizeRun(const std::string& case_name, const engine::RunConfig& c
   s.wall_time_s = result.wall_time;
   s.max_constraint_violation = result.max_constraint_violation;
   const auto& columns = ResultColumns();
+  const bool whole_cycle = ReportsWholeCycle(result);
+  const std::size_t n = rows.size();
   for (std::size_t c = 2; c < columns.size(); ++c) {  // crank angle and time have no extremes
-    double lo = INFINITY, hi = -INFINITY;
-    bool any = false;
-    for (const OutputRow& row : rows) {
-      if (const auto& v = row.*(columns[c].member)) {
-        lo = std::min(lo, *v);
-        hi = std::max(hi, *v);
-        any = true;
+    const auto value = [&](std::size_t k) { return rows[k].*(columns[c].member); };
+    std::optional<std::size_t> lo, hi;
+    for (std::size_t k = 0; k < n; ++k) {
+      if (const auto& v = value(k)) {
+        if (!lo || *v < *value(*lo)) lo = k;
+        if (!hi || *v > *value(*hi)) hi = k;
       }
     }
-    if (any) s.extremes[columns[c].header] = {lo, hi};
+    if (!lo) continue;
+    // The extreme's magnitude against the samples beside it (none past an end of samples that
+    // are not a whole cycle, nor where the column is empty).
+    const auto spike = [&](std::size_t at) {
+      const auto beside = [&](bool next) {
+        if (!(n >= 2 && (whole_cycle || (next ? at + 1 < n : at > 0))))
+          return std::numeric_limits<double>::quiet_NaN();
+        const auto& v = value(next ? (at + 1) % n : (at + n - 1) % n);
+        return v ? std::abs(*v) : std::numeric_limits<double>::quiet_NaN();
+      };
+      return engine::NeighbourRatio(std::abs(*value(at)), beside(false), beside(true)) >
+             engine::kUnresolvedPeakRatio;
+    };
+    s.extremes[columns[c].header] = {*value(*lo), *value(*hi), spike(*lo), spike(*hi)};
   }
   s.headline = engine::HeadlineFigures(result.samples);
   for (const engine::HeadlineFigure& f : s.headline) {
@@ -51,7 +69,8 @@ RunSummary SummarizeRun(const std::string& case_name, const engine::RunConfig& c
   }
   s.error_estimate = result.error_estimate;
   if (result.status == engine::RunStatus::kNotConverged)
-    s.cycle_scatter = engine::ScatterOverCycles(result.cycle_headlines);
+    s.cycle_scatter =
+        engine::ScatterOverCycles(result.cycle_headlines, result.samples, whole_cycle);
   s.warnings = RunWarnings(config, result);
   s.kpis = RunKpisOf(config, result);
   auto oil_used = [&](engine::JointOil oil, const std::string& joint,
@@ -250,7 +269,12 @@ json SummaryToJson(const RunSummary& s) {
   j["wall_time_s"] = s.wall_time_s;
   j["max_constraint_violation"] = s.max_constraint_violation;
   json extremes = json::object();
-  for (const auto& [column, e] : s.extremes) extremes[column] = {{"min", e.min}, {"max", e.max}};
+  for (const auto& [column, e] : s.extremes) {
+    json o = {{"min", e.min}, {"max", e.max}};
+    if (e.min_spike) o["min_spike"] = true;
+    if (e.max_spike) o["max_spike"] = true;
+    extremes[column] = o;
+  }
   j["extremes"] = extremes;
   j["mean_fpl_w"] = {{"skirt", Optional(s.mean_fpl_skirt_w)},
                      {"bearing", Optional(s.mean_fpl_bearing_w)}};
@@ -274,7 +298,8 @@ json SummaryToJson(const RunSummary& s) {
   if (s.cycle_scatter) {
     json figures = json::object();
     for (const engine::FigureScatter& f : s.cycle_scatter->figures)
-      figures[f.figure.key] = {{"min", f.min}, {"max", f.max}};
+      figures[f.figure.key] = {
+          {"min", f.min}, {"max", f.max}, {"resolved_in_time", f.resolved_in_time}};
     j["cycle_scatter"] = {{"first_cycle", s.cycle_scatter->first_cycle},
                           {"last_cycle", s.cycle_scatter->last_cycle},
                           {"figures", figures}};
@@ -380,8 +405,11 @@ RunSummary FromJson(const json& j) {
   Read(j, "extremes", "", &extremes);
   if (!extremes.is_object()) throw std::runtime_error("\"extremes\" is not an object");
   for (const auto& [column, e] : extremes.items()) {
-    s.extremes[column] = {Get<double>(e, "min", "extremes." + column),
-                          Get<double>(e, "max", "extremes." + column)};
+    ColumnExtremes& x = s.extremes[column];
+    x.min = Get<double>(e, "min", "extremes." + column);
+    x.max = Get<double>(e, "max", "extremes." + column);
+    Read(e, "min_spike", "extremes." + column, &x.min_spike);  // absent: resolved (and before)
+    Read(e, "max_spike", "extremes." + column, &x.max_spike);
   }
   json fpl = json::object();
   Read(j, "mean_fpl_w", "", &fpl);
@@ -423,9 +451,11 @@ RunSummary FromJson(const json& j) {
     for (const engine::HeadlineFigure& f : s.headline) {  // the reported values, in their order
       if (!figures.contains(f.key)) continue;
       const std::string where = "cycle_scatter.figures." + f.key;
-      scatter.figures.push_back({.figure = f,
-                                 .min = Get<double>(figures.at(f.key), "min", where),
-                                 .max = Get<double>(figures.at(f.key), "max", where)});
+      engine::FigureScatter& fs = scatter.figures.emplace_back(
+          engine::FigureScatter{.figure = f,
+                                .min = Get<double>(figures.at(f.key), "min", where),
+                                .max = Get<double>(figures.at(f.key), "max", where)});
+      Read(figures.at(f.key), "resolved_in_time", where, &fs.resolved_in_time);  // absent: true
     }
     s.cycle_scatter = scatter;
   }

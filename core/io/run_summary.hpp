@@ -19,6 +19,12 @@ namespace filmdyn::io {
 struct ColumnExtremes {
   double min = 0.0;
   double max = 0.0;
+  /// The extreme is a spike the output samples do not resolve: its magnitude is more than
+  /// engine::kUnresolvedPeakRatio times the larger magnitude of the samples beside it
+  /// (engine::NeighbourRatio; an impact lasting a fraction of the output interval), so its value
+  /// is whatever the samples caught. summary.json: "min_spike" / "max_spike", written when true.
+  bool min_spike = false;
+  bool max_spike = false;
 };
 
 /// Solver statistics of a run.

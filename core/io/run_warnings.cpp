@@ -318,7 +318,8 @@ std::vector<RunWarning> RunWarnings(const engine::RunConfig& config,
                   "{:g} %; the reported cycle is the last one computed",
                   result.cycles, 100.0 * result.cycle_change, result.worst_quantity,
                   100.0 * w.limit);
-    if (const auto scatter = engine::ScatterOverCycles(result.cycle_headlines))
+    if (const auto scatter =
+            engine::ScatterOverCycles(result.cycle_headlines, result.samples, whole_cycle))
       w.message += "; " + scatter->Summary();
     out.push_back(std::move(w));
   }

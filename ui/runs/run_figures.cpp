@@ -3,6 +3,8 @@
 #include <cmath>
 #include <limits>
 
+#include "core/engine/error_estimate.hpp"
+
 namespace filmdyn::ui {
 
 namespace {
@@ -47,12 +49,21 @@ RunFigures ComputeRunFigures(const std::vector<RunSample>& samples) {
   f.max_bearing_eps = Reduce(samples, of(Column::kBearingEps), true);
   f.mean_skirt_fpl = Mean(samples, Column::kSkirtFpl);
   f.mean_bearing_fpl = Mean(samples, Column::kBearingFpl);
-  f.max_big_end_force = Reduce(
-      samples,
-      [](const RunSample& s) {
-        return std::hypot(s[Column::kBigEndForceX], s[Column::kBigEndForceY]);
-      },
-      true);
+  auto force = [](const RunSample& s) {
+    return std::hypot(s[Column::kBigEndForceX], s[Column::kBigEndForceY]);
+  };
+  f.max_big_end_force = Reduce(samples, force, true);
+  // The samples beside the largest force (none past either end: a cycle being computed, or a
+  // stopped run's, is not known to be whole).
+  for (std::size_t k = 0; k < samples.size() && std::isfinite(f.max_big_end_force); ++k) {
+    if (force(samples[k]) != f.max_big_end_force) continue;
+    f.big_end_force_before = k > 0 ? force(samples[k - 1]) : kNaN;
+    f.big_end_force_after = k + 1 < samples.size() ? force(samples[k + 1]) : kNaN;
+    f.big_end_force_spike =
+        engine::NeighbourRatio(f.max_big_end_force, f.big_end_force_before, f.big_end_force_after) >
+        engine::kUnresolvedPeakRatio;
+    break;
+  }
   f.max_skirt_normal = Reduce(samples, abs_of(Column::kSkirtNormalForce), true);
   return f;
 }

@@ -17,6 +17,11 @@ struct RunFigures {
   double mean_bearing_fpl = 0;   ///< cycle mean [W]
   double max_big_end_force = 0;  ///< max |F| [N]
   double max_skirt_normal = 0;   ///< max |F_n| [N]
+  /// max_big_end_force is a spike the output samples do not resolve (engine::NeighbourRatio
+  /// above engine::kUnresolvedPeakRatio: an impact lasting a fraction of the output interval),
+  /// its height whatever the samples caught; the samples beside it [N] (NaN: none).
+  bool big_end_force_spike = false;
+  double big_end_force_before = 0, big_end_force_after = 0;
 };
 
 RunFigures ComputeRunFigures(const std::vector<RunSample>& samples);

@@ -23,6 +23,18 @@ QString Number(double v, double scale, int decimals = 2) {
 
 // "≤ 0.4 %", "2.8 %" in red with a warning sign above the threshold, "–" when not estimated;
 // the tooltip lists every headline figure with its estimate.
+QString BigEndForceSpikeTip(const RunFigures& f) {
+  QStringList beside;
+  for (double v : {f.big_end_force_before, f.big_end_force_after})
+    if (std::isfinite(v)) beside << QString::number(v * 1e-3, 'g', 3);
+  return QString(
+             "max big-end force %1 kN is a spike the output samples do not resolve (the "
+             "samples beside it show %2 kN): an impact lasting a fraction of the output "
+             "interval, whose sampled height depends on the output interval; a smaller "
+             "solver.output_interval resolves it")
+      .arg(QString::number(f.max_big_end_force * 1e-3, 'g', 4), beside.join(" and "));
+}
+
 void ShowErrorEstimate(const engine::ErrorEstimate& e, QTableWidgetItem* cell) {
   QString text = QStringLiteral("–");
   if (e.Estimated()) {
@@ -409,7 +421,11 @@ void RunTable::updateRun(const RunHandle& run) {
   };
   item(row, kSkirtFmep)->setText(Number(fmep(f.mean_skirt_fpl), 1e-3, 2));
   item(row, kBearingFmep)->setText(Number(fmep(f.mean_bearing_fpl), 1e-3, 2));
-  item(row, kBigEndForce)->setText(Number(f.max_big_end_force, 1e-3));
+  // A largest force that is an impact between the output samples is marked, and says so.
+  item(row, kBigEndForce)
+      ->setText((f.big_end_force_spike ? QStringLiteral("⚠ ") : QString()) +
+                Number(f.max_big_end_force, 1e-3));
+  item(row, kBigEndForce)->setToolTip(f.big_end_force_spike ? BigEndForceSpikeTip(f) : QString());
   ShowEngineeringWarnings(run->engineeringWarnings(), item(row, kWarnings));
   ShowErrorEstimate(run->errorEstimate(), item(row, kError));
   item(row, kReason)->setText(run->reason());

@@ -30,13 +30,19 @@ namespace {
 
 namespace fs = std::filesystem;
 
+std::string ReasonAndNotes(const batch::StudyRow& r) {
+  const std::string notes = io::NotesText(r.notes);
+  if (r.reason.empty() || notes.empty()) return r.reason + notes;
+  return r.reason + "; " + notes;
+}
+
 QString StateText(batch::PointState state) {
   return QString::fromStdString(batch::PointStateName(state));
 }
 
 // The points as a table: point, the factors, state, wall time, the figures some point has,
-// the reason of a point that failed or stopped. Qt::UserRole holds the value the column sorts
-// by (a number, or a text; none for an empty cell).
+// the reason of a point that failed or stopped and the notes of its figures. Qt::UserRole holds the
+// value the column sorts by (a number, or a text; none for an empty cell).
 class StudyTableModel : public QAbstractTableModel {
  public:
   StudyTableModel(const batch::Study* study, const std::vector<batch::StudyRow>* rows,
@@ -68,7 +74,7 @@ class StudyTableModel : public QAbstractTableModel {
       return QString::fromStdString(
           io::ComparisonFigures()[size_t((*figures_)[size_t(section - f - 3)])].display_name);
     }
-    return tr("reason");
+    return tr("reason, notes");
   }
 
   QVariant data(const QModelIndex& index, int role) const override {
@@ -83,8 +89,15 @@ class StudyTableModel : public QAbstractTableModel {
       return *v / scale;
     };
     if (role == Qt::ToolTipRole) {
-      if (r.reason.empty()) return {};
-      return QString::fromStdString(r.reason);
+      const QString notes = QString::fromStdString(io::NotesText(r.notes));
+      if (column > f + 2 && column < figure_end && !notes.isEmpty()) {
+        // A figure the run has but the comparison leaves out says why.
+        const int k = (*figures_)[size_t(column - f - 3)];
+        if (!r.figures[size_t(k)]) return notes;
+      }
+      const std::string text = ReasonAndNotes(r);
+      if (text.empty()) return {};
+      return QString::fromStdString(text);
     }
     if (role == Qt::ForegroundRole && column == f + 1) {
       switch (r.state) {
@@ -126,8 +139,11 @@ class StudyTableModel : public QAbstractTableModel {
       const io::ComparisonFigure& fig = io::ComparisonFigures()[size_t(k)];
       return number(r.figures[size_t(k)], 1.0 / fig.display_scale);
     }
-    if (r.reason.empty()) return role == Qt::DisplayRole ? QVariant("") : QVariant();
-    return QString::fromStdString(r.reason);
+    // The last column: why a point is not done (or its run's message), and the figures its run
+    // has that the comparison leaves out.
+    const std::string text = ReasonAndNotes(r);
+    if (text.empty()) return role == Qt::DisplayRole ? QVariant("") : QVariant();
+    return QString::fromStdString(text);
   }
 
  private:
@@ -262,6 +278,11 @@ StudyView::StudyView(QWidget* parent) : QWidget(parent) {
 StudyView::~StudyView() {
   refresh_timer_->stop();
   watcher_->waitForFinished();  // the worker reads files only; it ends soon
+  // The table model reads this view's members, which die before its child widgets: a shown
+  // table hidden while they are deleted would still ask it for its headers.
+  proxy_->setSourceModel(nullptr);
+  delete model_;
+  model_ = nullptr;
 }
 
 bool StudyView::openFolder(const QString& dir, QString* error) {
@@ -340,6 +361,7 @@ void StudyView::onLoaded() {
       figures_.push_back(int(k));
   }
   static_cast<StudyTableModel*>(model_)->reset();
+  fitLastColumn();
   // The figure box keeps its choice (by figure) across reads; by default the first figure.
   const int shown_figure =
       figure_box_->currentData().isValid() ? figure_box_->currentData().toInt() : -1;
@@ -425,6 +447,18 @@ void StudyView::rebuildScatter() {
     });
   }
   markSelection();
+}
+
+void StudyView::fitLastColumn() {
+  // The reasons and notes can be long sentences: their column is as wide as its text up to a
+  // limit, the rest elided (the cell's tooltip has it whole); the other columns fit their text.
+  QHeaderView* header = table_->horizontalHeader();
+  const int last = proxy_->columnCount() - 1;
+  if (last < 0) return;
+  header->setSectionResizeMode(QHeaderView::ResizeToContents);
+  header->setSectionResizeMode(last, QHeaderView::Interactive);
+  table_->resizeColumnToContents(last);
+  header->resizeSection(last, std::min(header->sectionSize(last), kLastColumnWidth));
 }
 
 void StudyView::markSelection() {

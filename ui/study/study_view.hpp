@@ -74,6 +74,8 @@ class StudyView : public QWidget {
   void onLoaded();
   void rebuildScatter();
   void markSelection();
+  void fitLastColumn();
+  static constexpr int kLastColumnWidth = 420;  ///< [px] the reasons' and notes' column at most
   void requestOpenRun();
 
   QString folder_;

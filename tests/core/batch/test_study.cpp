@@ -9,6 +9,7 @@
 #include <QTemporaryDir>
 #include <fstream>
 #include <set>
+#include <sstream>
 
 #include "core/base/input_error.hpp"
 #include "core/batch/study.hpp"
@@ -323,6 +324,38 @@ class TestStudy : public QObject {
     QCOMPARE(sampled.size(), std::size_t(1));
     QCOMPARE(sampled[0].factor, std::size_t(1));
     QCOMPARE(sampled[0].levels[1].points, 0);
+  }
+
+  // A figure a point's run has but the comparison leaves out (a peak film pressure that is a
+  // spike between output samples: io::ComparisonRow::notes) is an empty cell, and the note says
+  // why: study.csv's last column (quoted when it holds a comma), study.md below the table.
+  void notesOfLeftOutFiguresReachStudyCsvAndMd() {
+    const Study s = ParseStudy(R"({"design": "full-factorial", "factors": [
+        {"path": "operating.rpm", "levels": [2000, 6000]}]})",
+                               "s.json");
+    std::vector<batch::StudyRow> rows;
+    for (const batch::StudyPoint& p : batch::DesignPoints(s, engine::EngineCase{})) {
+      batch::StudyRow r;
+      r.point = p;
+      r.state = batch::PointState::kDone;
+      r.figures.assign(io::ComparisonFigures().size(), std::nullopt);
+      rows.push_back(r);
+    }
+    rows[1].notes = {"peak big-end film pressure left out: a spike, here"};
+    std::ostringstream csv;
+    batch::WriteStudyCsv(csv, s, rows);
+    const std::string text = csv.str();
+    QVERIFY2(Contains(text, ",reason,notes\n"), text.c_str());
+    QVERIFY2(Contains(text, ",,\"peak big-end film pressure left out: a spike, here\"\n"),
+             text.c_str());
+    QVERIFY2(Contains(text.substr(0, text.find("\n2,") + 1), ",,\n"),
+             text.c_str());  // point 1: none
+    const std::string md = batch::StudyMarkdown(s, rows, "");
+    QVERIFY2(
+        Contains(md, "Notes:\n\n- point 2: peak big-end film pressure left out: a spike, here\n"),
+        md.c_str());
+    rows[1].notes.clear();
+    QVERIFY(!Contains(batch::StudyMarkdown(s, rows, ""), "Notes:"));
   }
 
   void anUnknownFigureKeyListsTheKeys() {

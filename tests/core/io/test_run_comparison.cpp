@@ -69,6 +69,80 @@ class TestRunComparison : public QObject {
     for (const auto& line : lines) QCOMPARE(line.count('|'), lines.first().count('|'));
   }
 
+  // A peak film pressure the run warns is a spike between its output samples (unresolved_peak)
+  // is no figure to compare (its sampled height depends on the output interval): the comparison
+  // leaves it out and says why, in comparison.csv's last column and below comparison.md's table;
+  // the other joint's peak and every other figure stay.
+  void peakBetweenSamplesIsLeftOutWithANote() {
+    QTemporaryDir dir;
+    const std::filesystem::path folder = dir.filePath("jfo").toStdString();
+    WriteSummary(folder, R"({"model": "skirt-lbrbe", "rpm": 6000, "status": "completed",
+      "cycles": 3, "wall_time_s": 11.0,
+      "extremes": {"skirt_peak_pressure[Pa]": {"min": 0, "max": 5.7e6},
+                   "bearing_peak_pressure[Pa]": {"min": 0, "max": 1.848e9},
+                   "bearing_eps[-]": {"min": 0.1, "max": 0.97},
+                   "bigend_force_x[N]": {"min": -8.5e4, "max": 5.7e3, "min_spike": true},
+                   "bigend_force_y[N]": {"min": -1.1e4, "max": 9.0e3, "min_spike": true}},
+      "warnings": [{"code": "high_eccentricity", "joint": "big_end", "value": 0.97,
+                    "limit": 0.95},
+                   {"code": "unresolved_peak", "joint": "big_end", "value": 10.1,
+                    "limit": 1.5, "message": "peak big-end film pressure …"}]})");
+    const auto row = filmdyn::io::ReadComparisonRow(folder);
+    QVERIFY(!row.figures[FigureIndex("max_bearing_peak_pressure[Pa]")].has_value());
+    QCOMPARE(*row.figures[FigureIndex("max_skirt_peak_pressure[Pa]")], 5.7e6);
+    QCOMPARE(*row.figures[FigureIndex("max_bearing_eps[-]")], 0.97);
+    // An extreme the summary marks a spike (the impact's force) is left out too: the larger
+    // magnitude of F_x and of F_y is the marked min.
+    QVERIFY(!row.figures[FigureIndex("max_abs_bigend_force_x[N]")].has_value());
+    QVERIFY(!row.figures[FigureIndex("max_abs_bigend_force_y[N]")].has_value());
+    QCOMPARE(row.notes.size(), std::size_t(3));  // in the figures' order
+    QCOMPARE(row.notes[0], std::string("max abs big-end F_x left out: a spike the output samples "
+                                       "do not resolve (its sampled height depends on the "
+                                       "output interval)"));
+    QVERIFY(QString::fromStdString(row.notes[1]).startsWith("max abs big-end F_y left out"));
+    QVERIFY(QString::fromStdString(row.notes[2]).startsWith("peak big-end film pressure left out"));
+
+    std::ostringstream csv;
+    filmdyn::io::WriteComparisonCsv(csv, {row});
+    const QStringList lines = QString::fromStdString(csv.str()).trimmed().split('\n');
+    QCOMPARE(lines.size(), 2);
+    QVERIFY(lines[0].endsWith(",notes"));
+    QVERIFY(lines[1].endsWith(
+        "," + QString::fromStdString(filmdyn::io::NotesText(row.notes))));  // no comma: unquoted
+    QCOMPARE(filmdyn::io::NotesText(row.notes),
+             row.notes[0] + "; " + row.notes[1] + "; " + row.notes[2]);
+    // The cell itself is empty: the two commas around it.
+    const int column = int(lines[0].split(',').indexOf("max_bearing_peak_pressure[Pa]"));
+    QVERIFY(column > 0);
+    QCOMPARE(lines[1].split(',')[column], QString());
+    const QString markdown = QString::fromStdString(filmdyn::io::ComparisonMarkdown({row}));
+    QVERIFY(markdown.contains("Notes:\n\n- jfo: max abs big-end F_x left out"));
+    QVERIFY(markdown.contains("\n- jfo: peak big-end film pressure left out"));
+    QVERIFY(!markdown.contains("1848") && !markdown.contains("8.5e+04"));
+
+    // The skirt's spike leaves out the skirt's peak; a run without the warning keeps its peaks
+    // and has no notes.
+    const std::filesystem::path skirt = dir.filePath("starved").toStdString();
+    WriteSummary(skirt, R"({"model": "only-skirt", "rpm": 2000, "status": "completed",
+      "extremes": {"skirt_peak_pressure[Pa]": {"min": 0, "max": 9.2e7}},
+      "warnings": [{"code": "unresolved_peak", "joint": "skirt", "value": 3.0, "limit": 1.5}]})");
+    const auto starved = filmdyn::io::ReadComparisonRow(skirt);
+    QVERIFY(!starved.figures[FigureIndex("max_skirt_peak_pressure[Pa]")].has_value());
+    QVERIFY(QString::fromStdString(starved.notes.at(0)).startsWith("peak skirt film pressure"));
+    const std::filesystem::path plain = dir.filePath("reynolds").toStdString();
+    WriteSummary(plain, R"({"model": "only-skirt", "rpm": 2000, "status": "completed",
+      "extremes": {"skirt_peak_pressure[Pa]": {"min": 0, "max": 9.2e7},
+                   "skirt_normal_force[N]": {"min": -2.4e3, "max": 1.8e3, "max_spike": true}}})");
+    const auto reynolds = filmdyn::io::ReadComparisonRow(plain);
+    QCOMPARE(*reynolds.figures[FigureIndex("max_skirt_peak_pressure[Pa]")], 9.2e7);
+    // The larger magnitude (the min) is resolved: a spike at the smaller extreme does not matter.
+    QCOMPARE(*reynolds.figures[FigureIndex("max_abs_skirt_normal_force[N]")], 2.4e3);
+    QVERIFY(reynolds.notes.empty());
+    std::ostringstream both;
+    filmdyn::io::WriteComparisonCsv(both, {reynolds, row});
+    QVERIFY(QString::fromStdString(both.str()).split('\n')[1].endsWith(","));  // empty notes
+  }
+
   void missingOrBrokenSummaryNamesTheFile() {
     QTemporaryDir dir;
     const std::filesystem::path missing = dir.filePath("nothing").toStdString();

@@ -29,7 +29,10 @@ io::RunSummary Full() {
       .cycle_to_cycle_worst_quantity = "bearing_moft",
       .wall_time_s = 12.25,
       .max_constraint_violation = 3e-12,
-      .extremes = {{"bearing_moft[m]", {1.1e-6, 2.5e-5}}, {"gas_force[N]", {-300.0, 41000.0}}},
+      .extremes = {{"bearing_moft[m]", {1.1e-6, 2.5e-5}},
+                   {"gas_force[N]", {-300.0, 41000.0}},
+                   {"bigend_force_y[N]", {-1.1e4, 8.2e4, false, true}},
+                   {"bigend_force_x[N]", {-8.5e4, 5.7e3, true, false}}},
       .mean_fpl_skirt_w = 659.75,
       .mean_fpl_bearing_w = std::nullopt,
       .solver = {"integrator", 5276, 12, 9000, 220, 12000, 300, 60000, 20.0, 30.0, 1e-4},
@@ -239,6 +242,60 @@ class TestRunSummary : public QObject {
     } catch (const std::runtime_error& e) {
       QVERIFY2(QString(e.what()).contains("solver.steps"), e.what());
     }
+  }
+
+  // An extreme more than 1.5 times the larger magnitude of the samples beside it is a spike the
+  // output samples do not resolve (engine::NeighbourRatio): summary.json marks it, and only it.
+  // The samples of a whole cycle wrap around; those of a run that stopped early do not.
+  void extremesBetweenSamplesAreMarked() {
+    auto loaded = io::LoadCase({});
+    const engine::RunConfig config = engine::MakeRunConfig(
+        loaded.value, engine::Model::kIdeal, 3000.0, io::PressureCurveForSpeed(loaded, 3000.0));
+    engine::RunResult result;
+    result.status = engine::RunStatus::kCompleted;
+    const int n = 40;
+    std::vector<io::OutputRow> rows(n);
+    for (int k = 0; k < n; ++k) {
+      const double x = k - 20.0;
+      io::OutputRow& r = rows[size_t(k)];
+      // A Gaussian 4 samples wide at half height: 2^(-4/16) = 0.84 of its peak beside it.
+      r.gas_force = 4e4 * std::exp2(-4.0 * x * x / 16.0) - 300.0;
+      // One sample of an impact, 8.2 times the samples beside it; 0 elsewhere.
+      r.bigend_force_y = k == 20 ? 8.2e4 : (k == 19 || k == 21 ? 1e4 : 0.0);
+      // A negative spike, at the first sample: beside it the last one (a whole cycle).
+      r.bigend_force_x = k == 0 ? -8.5e4 : (k == n - 1 ? 2e4 : 5.7e3);
+    }
+    io::RunSummary s = io::SummarizeRun("default", config, result, rows);
+    const io::ColumnExtremes &gas = s.extremes.at("gas_force[N]"),
+                             &fy = s.extremes.at("bigend_force_y[N]"),
+                             &fx = s.extremes.at("bigend_force_x[N]");
+    QVERIFY(!gas.min_spike && !gas.max_spike);
+    QCOMPARE(fy.max, 8.2e4);
+    QVERIFY(fy.max_spike && !fy.min_spike);
+    QCOMPARE(fx.min, -8.5e4);
+    QVERIFY(fx.min_spike && !fx.max_spike);  // 8.5e4 against 2e4 and 5.7e3
+    // In the file only where true; read back.
+    const nlohmann::json j = io::SummaryToJson(s);
+    QVERIFY(j.at("extremes").at("bigend_force_y[N]").at("max_spike").get<bool>());
+    QVERIFY(!j.at("extremes").at("bigend_force_y[N]").contains("min_spike"));
+    QVERIFY(!j.at("extremes").at("gas_force[N]").contains("max_spike"));
+    QVERIFY(io::SummaryFromJson(j).extremes.at("bigend_force_x[N]").min_spike);
+    // A wider impact (the samples beside it at 2/3 of it and more) is resolved.
+    rows[19].bigend_force_y = rows[21].bigend_force_y = 8.2e4 / 1.5;
+    QVERIFY(!io::SummarizeRun("default", config, result, rows)
+                 .extremes.at("bigend_force_y[N]")
+                 .max_spike);
+    // A run that stopped early: the first sample has only the one after it (5.7e3): still a
+    // spike; the last sample's extreme has only the one before it.
+    result.status = engine::RunStatus::kFailed;
+    rows[size_t(n - 1)].bigend_force_x = -9e4;  // beside it 5.7e3 before, nothing after
+    s = io::SummarizeRun("default", config, result, rows);
+    QCOMPARE(s.extremes.at("bigend_force_x[N]").min, -9e4);
+    QVERIFY(s.extremes.at("bigend_force_x[N]").min_spike);
+    rows[size_t(n - 2)].bigend_force_x = -8e4;  // now a neighbour of similar size
+    QVERIFY(!io::SummarizeRun("default", config, result, rows)
+                 .extremes.at("bigend_force_x[N]")
+                 .min_spike);
   }
 
   void writtenByARun() {

@@ -323,7 +323,7 @@ class TestRunWarnings : public QObject {
     QCOMPARE(result.cycle_headlines.back().size(), reported.size());
     for (std::size_t i = 0; i < reported.size(); ++i)
       QCOMPARE(result.cycle_headlines.back()[i].value, reported[i].value);
-    const auto scatter = engine::ScatterOverCycles(result.cycle_headlines);
+    const auto scatter = engine::ScatterOverCycles(result.cycle_headlines, result.samples, true);
     QVERIFY(scatter);
     QCOMPARE(scatter->first_cycle, 1);
     QCOMPARE(scatter->last_cycle, 2);
