@@ -42,7 +42,7 @@ RunSummary SummarizeRun(const std::string& case_name, const engine::RunConfig& c
     const auto value = [&](std::size_t k) { return rows[k].*(columns[c].member); };
     std::optional<std::size_t> lo, hi;
     for (std::size_t k = 0; k < n; ++k) {
-      if (const auto& v = value(k)) {
+      if (const auto& v = value(k); v && std::isfinite(*v)) {  // a failed step's NaN: no extreme
         if (!lo || *v < *value(*lo)) lo = k;
         if (!hi || *v > *value(*hi)) hi = k;
       }

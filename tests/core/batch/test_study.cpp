@@ -38,6 +38,19 @@ bool Contains(const std::string& text, const std::string& part) {
   return text.find(part) != std::string::npos;
 }
 
+// One row per design point of `s`, done, without figures.
+std::vector<batch::StudyRow> DoneRows(const Study& s) {
+  std::vector<batch::StudyRow> rows;
+  for (const batch::StudyPoint& p : batch::DesignPoints(s, engine::EngineCase{})) {
+    batch::StudyRow r;
+    r.point = p;
+    r.state = batch::PointState::kDone;
+    r.figures.assign(io::ComparisonFigures().size(), std::nullopt);
+    rows.push_back(r);
+  }
+  return rows;
+}
+
 }  // namespace
 
 class TestStudy : public QObject {
@@ -259,14 +272,7 @@ class TestStudy : public QObject {
     const std::size_t fpl = batch::StudyFigureIndex("mean_bearing_fpl[W]");
     const std::size_t moft = batch::StudyFigureIndex("min_bearing_moft[m]");
     QCOMPARE(io::ComparisonFigures()[fpl].key, std::string("mean_bearing_fpl[W]"));
-    std::vector<batch::StudyRow> rows;
-    for (const batch::StudyPoint& p : batch::DesignPoints(s, engine::EngineCase{})) {
-      batch::StudyRow r;
-      r.point = p;
-      r.state = batch::PointState::kDone;
-      r.figures.assign(io::ComparisonFigures().size(), std::nullopt);
-      rows.push_back(r);
-    }
+    std::vector<batch::StudyRow> rows = DoneRows(s);
     QCOMPARE(rows.size(), std::size_t(6));
     QCOMPARE(rows[4].point.values, (std::vector<std::string>{"only-lbrbe", "2000"}));
     rows[2].state = batch::PointState::kFailed;                    // ideal, 6000
@@ -333,14 +339,7 @@ class TestStudy : public QObject {
     const Study s = ParseStudy(R"({"design": "full-factorial", "factors": [
         {"path": "operating.rpm", "levels": [2000, 6000]}]})",
                                "s.json");
-    std::vector<batch::StudyRow> rows;
-    for (const batch::StudyPoint& p : batch::DesignPoints(s, engine::EngineCase{})) {
-      batch::StudyRow r;
-      r.point = p;
-      r.state = batch::PointState::kDone;
-      r.figures.assign(io::ComparisonFigures().size(), std::nullopt);
-      rows.push_back(r);
-    }
+    std::vector<batch::StudyRow> rows = DoneRows(s);
     rows[1].notes = {"peak big-end film pressure left out: a spike, here"};
     std::ostringstream csv;
     batch::WriteStudyCsv(csv, s, rows);

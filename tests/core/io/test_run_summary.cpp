@@ -3,6 +3,7 @@
 // (ideal, short) run carries the run's figures.
 #include <QTemporaryDir>
 #include <QtTest>
+#include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
@@ -264,6 +265,8 @@ class TestRunSummary : public QObject {
       r.bigend_force_y = k == 20 ? 8.2e4 : (k == 19 || k == 21 ? 1e4 : 0.0);
       // A negative spike, at the first sample: beside it the last one (a whole cycle).
       r.bigend_force_x = k == 0 ? -8.5e4 : (k == n - 1 ? 2e4 : 5.7e3);
+      // A value that is not a number (a failed step) is no extreme, and no neighbour.
+      r.piston_lateral = k == 0 ? NAN : 1e-6 * k;
     }
     io::RunSummary s = io::SummarizeRun("default", config, result, rows);
     const io::ColumnExtremes &gas = s.extremes.at("gas_force[N]"),
@@ -274,6 +277,9 @@ class TestRunSummary : public QObject {
     QVERIFY(fy.max_spike && !fy.min_spike);
     QCOMPARE(fx.min, -8.5e4);
     QVERIFY(fx.min_spike && !fx.max_spike);  // 8.5e4 against 2e4 and 5.7e3
+    QCOMPARE(s.extremes.at("piston_lateral[m]").min, 1e-6);
+    QCOMPARE(s.extremes.at("piston_lateral[m]").max, 39e-6);
+    QVERIFY(!s.extremes.at("piston_lateral[m]").min_spike);  // beside it: only 2e-6
     // In the file only where true; read back.
     const nlohmann::json j = io::SummaryToJson(s);
     QVERIFY(j.at("extremes").at("bigend_force_y[N]").at("max_spike").get<bool>());
