@@ -235,6 +235,32 @@ std::string CycleScatter::Summary() const {
   return text;
 }
 
+std::string CycleChangeTrend(const std::vector<double>& changes, double tolerance) {
+  if (changes.size() < 2) return {};
+  std::string list;
+  for (double c : changes) list += (list.empty() ? "" : ", ") + Percent(c);
+  std::string text = "the change after each cycle from cycle 2 on: " + list + " %";
+  const double last = changes.back(), before = changes[changes.size() - 2];
+  if (!(std::isfinite(last) && std::isfinite(before) && last > 0.0 && before > 0.0 &&
+        tolerance > 0.0))
+    return text;
+  const double ratio = last / before;
+  if (ratio < kFallingRatio) {
+    const int more =
+        std::max(1, static_cast<int>(std::ceil(std::log(tolerance / last) / std::log(ratio))));
+    return text + fmt::format(
+                      ", falling by about ×{:.2g} per cycle: about {} more cycle{} would reach "
+                      "the tolerance if it keeps falling so (solver.max_cycles)",
+                      1.0 / ratio, more, more == 1 ? "" : "s");
+  }
+  return text + fmt::format(
+                    ", not falling (×{:.2g} of the cycle before): more cycles may not reach the "
+                    "tolerance — the change may be a floor of the time integration's error "
+                    "(tighter solver.relative_tolerance and solver.position_tolerance lower it) "
+                    "or a motion that does not repeat",
+                    ratio);
+}
+
 std::optional<CycleScatter> ScatterOverCycles(
     const std::vector<std::vector<HeadlineFigure>>& per_cycle,
     const std::vector<CrankTrainSample>& reported_samples, bool whole_cycle) {

@@ -173,6 +173,16 @@ std::optional<CycleScatter> ScatterOverCycles(
     const std::vector<std::vector<HeadlineFigure>>& per_cycle,
     const std::vector<CrankTrainSample>& reported_samples, bool whole_cycle);
 
+/// How a run stopped at solver.max_cycles approached its periodic state, from its cycle-to-cycle
+/// changes (RunResult::cycle_changes, relative to the range) and the tolerance: "the change after
+/// each cycle from cycle 2 on: 22, 4.3, 1.2 %", then from the last two changes either "falling by
+/// about ×3.6 per cycle: about 1 more cycle would reach the tolerance if it keeps falling so" (a
+/// last ratio below kFallingRatio; the count assumes a geometric fall) or "not falling (×0.93 …)"
+/// with what may lower such a floor. Empty with fewer than two changes.
+std::string CycleChangeTrend(const std::vector<double>& changes, double tolerance);
+/// The ratio of two successive cycle-to-cycle changes below which the change counts as falling.
+inline constexpr double kFallingRatio = 0.8;
+
 /// Richardson's estimate from the run's and the coarse run's reported cycles.
 ErrorEstimate EstimateErrors(const std::vector<CrankTrainSample>& samples,
                              const std::vector<CrankTrainSample>& coarse_samples,

@@ -482,6 +482,7 @@ RunResult RunSingle(const RunConfig& config, const RunMonitor& monitor,
       result.cycle_headlines.push_back(HeadlineFigures(current.samples));
       if (verdict.compared) {
         result.cycle_change = verdict.worst_relative_change;
+        result.cycle_changes.push_back(verdict.worst_relative_change);
         result.worst_quantity = verdict.worst_quantity;
       }
       if (verdict.converged) {

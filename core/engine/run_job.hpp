@@ -135,6 +135,9 @@ struct RunResult {
   int cycles = 0;                         ///< cycles computed
   int cycles_to_steady_state = 0;         ///< 0 when not reached
   double cycle_change = 0.0;              ///< last cycle-to-cycle change / range (largest quantity)
+  /// cycle_change after every compared cycle, in cycle order (cycles 2, 3, …): how the run
+  /// approaches its periodic state.
+  std::vector<double> cycle_changes;
   std::string worst_quantity;             ///< the quantity furthest from periodicity (last cycle)
   /// The headline figures of every completed cycle, in cycle order (HeadlineFigures; the last is
   /// the reported cycle's): with no periodic steady state, ScatterOverCycles says how far they

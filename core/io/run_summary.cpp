@@ -33,6 +33,7 @@ RunSummary SummarizeRun(const std::string& case_name, const engine::RunConfig& c
   s.cycles_to_steady_state = result.cycles_to_steady_state;
   s.cycle_to_cycle_change = result.cycle_change;
   s.cycle_to_cycle_worst_quantity = result.worst_quantity;
+  s.cycle_to_cycle_changes = result.cycle_changes;
   s.wall_time_s = result.wall_time;
   s.max_constraint_violation = result.max_constraint_violation;
   const auto& columns = ResultColumns();
@@ -266,6 +267,10 @@ json SummaryToJson(const RunSummary& s) {
   j["cycles_to_steady_state"] = s.cycles_to_steady_state;
   j["cycle_to_cycle_change"] = s.cycle_to_cycle_change;
   j["cycle_to_cycle_worst_quantity"] = s.cycle_to_cycle_worst_quantity;
+  json changes = json::array();  // a diverging (non-finite) change as the largest double
+  for (double c : s.cycle_to_cycle_changes)
+    changes.push_back(std::isfinite(c) ? c : std::numeric_limits<double>::max());
+  j["cycle_to_cycle_changes"] = changes;
   j["wall_time_s"] = s.wall_time_s;
   j["max_constraint_violation"] = s.max_constraint_violation;
   json extremes = json::object();
@@ -399,6 +404,7 @@ RunSummary FromJson(const json& j) {
   Read(j, "cycles_to_steady_state", "", &s.cycles_to_steady_state);
   Read(j, "cycle_to_cycle_change", "", &s.cycle_to_cycle_change);
   Read(j, "cycle_to_cycle_worst_quantity", "", &s.cycle_to_cycle_worst_quantity);
+  Read(j, "cycle_to_cycle_changes", "", &s.cycle_to_cycle_changes);  // absent before: empty
   Read(j, "wall_time_s", "", &s.wall_time_s);
   Read(j, "max_constraint_violation", "", &s.max_constraint_violation);
   json extremes = json::object();

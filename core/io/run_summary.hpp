@@ -82,6 +82,7 @@ struct RunSummary {
   int cycles_to_steady_state = 0;
   double cycle_to_cycle_change = 0.0;
   std::string cycle_to_cycle_worst_quantity;
+  std::vector<double> cycle_to_cycle_changes;  ///< engine::RunResult::cycle_changes
   double wall_time_s = 0.0;
   double max_constraint_violation = 0.0;
   /// Per results.csv column header (all but crank angle and time) that has any value.

@@ -318,6 +318,10 @@ std::vector<RunWarning> RunWarnings(const engine::RunConfig& config,
                   "{:g} %; the reported cycle is the last one computed",
                   result.cycles, 100.0 * result.cycle_change, result.worst_quantity,
                   100.0 * w.limit);
+    if (const std::string trend =
+            engine::CycleChangeTrend(result.cycle_changes, c.solver.steady_state_tolerance);
+        !trend.empty())
+      w.message += "; " + trend;
     if (const auto scatter =
             engine::ScatterOverCycles(result.cycle_headlines, result.samples, whole_cycle))
       w.message += "; " + scatter->Summary();

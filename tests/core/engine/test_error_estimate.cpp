@@ -273,6 +273,23 @@ class TestErrorEstimate : public QObject {
     for (int k = 17; k <= 23; ++k) reported[size_t(k)].bearing.max_pressure = 1.835e9 * 0.9;
     reported[20].bearing.max_pressure = 1.835e9;
     QVERIFY(engine::ScatterOverCycles(spiky, reported, true)->figures[1].resolved_in_time);
+    // How the change per cycle fell: geometrically (×3.6 per cycle, 1.2 % → under 1 % in one
+    // more cycle: 1.2 × 0.28 = 0.33), or not.
+    QCOMPARE(engine::CycleChangeTrend({0.22}, 0.01), std::string());
+    QCOMPARE(engine::CycleChangeTrend({0.22, 0.043, 0.012}, 0.01),
+             std::string("the change after each cycle from cycle 2 on: 22, 4.3, 1.2 %, falling by "
+                         "about ×3.6 per cycle: about 1 more cycle would reach the tolerance if "
+                         "it keeps falling so (solver.max_cycles)"));
+    // 5 % falling by ×2 per cycle: 2.5, 1.25, 0.625 — three more.
+    QVERIFY(engine::CycleChangeTrend({0.1, 0.05}, 0.01).find("about 3 more cycles") !=
+            std::string::npos);
+    const std::string floor = engine::CycleChangeTrend({0.05, 0.03, 0.028}, 0.01);
+    QVERIFY2(floor.find(", not falling (×0.93 of the cycle before)") != std::string::npos,
+             floor.c_str());
+    QVERIFY(floor.find("solver.relative_tolerance") != std::string::npos);
+    // A diverging change: the list, no trend.
+    QCOMPARE(engine::CycleChangeTrend({0.05, HUGE_VAL}, 0.01),
+             std::string("the change after each cycle from cycle 2 on: 5, inf %"));
     const engine::DisplayUnit pa = engine::HeadlineDisplayUnit("skirt_peak_pressure[Pa]");
     QCOMPARE(pa.unit, std::string("MPa"));
     QCOMPARE(pa.scale, 1e-6);

@@ -28,6 +28,7 @@ io::RunSummary Full() {
       .cycles_to_steady_state = 0,
       .cycle_to_cycle_change = 0.02,
       .cycle_to_cycle_worst_quantity = "bearing_moft",
+      .cycle_to_cycle_changes = {0.22, 0.043, 0.02},
       .wall_time_s = 12.25,
       .max_constraint_violation = 3e-12,
       .extremes = {{"bearing_moft[m]", {1.1e-6, 2.5e-5}},
@@ -172,6 +173,7 @@ class TestRunSummary : public QObject {
                             "cycles_to_steady_state",
                             "cycle_to_cycle_change",
                             "cycle_to_cycle_worst_quantity",
+                            "cycle_to_cycle_changes",
                             "wall_time_s",
                             "max_constraint_violation",
                             "extremes",
@@ -187,7 +189,11 @@ class TestRunSummary : public QObject {
                             "clearance"}) {
       QVERIFY2(j.contains(key), key);
     }
-    QCOMPARE(j.size(), std::size_t(24));
+    QCOMPARE(j.size(), std::size_t(25));
+    QCOMPARE(io::SummaryFromJson(j).cycle_to_cycle_changes, s.cycle_to_cycle_changes);
+    nlohmann::json old = j;  // written before the changes per cycle were: none
+    old.erase("cycle_to_cycle_changes");
+    QVERIFY(io::SummaryFromJson(old).cycle_to_cycle_changes.empty());
     QCOMPARE(j["clearance"]["skirt"]["hot[m]"].get<double>(), 18.5e-6);
     QCOMPARE(j["oil"]["skirt"]["viscosity[Pa*s]"].get<double>(), 0.0061);
     QCOMPARE(j["discretisation_error"]["figures"]["bearing_moft_min[m]"]["relative"].get<double>(),

@@ -316,6 +316,9 @@ class TestRunWarnings : public QObject {
     QVERIFY(w->value > c.solver.steady_state_tolerance);
     QCOMPARE(w->limit, c.solver.steady_state_tolerance);
     QVERIFY(QString::fromStdString(w->message).contains("2 cycles"));
+    // One compared cycle: its change, no trend to tell (engine::CycleChangeTrend needs two).
+    QCOMPARE(result.cycle_changes, std::vector<double>{result.cycle_change});
+    QVERIFY(!QString::fromStdString(w->message).contains("the change after each cycle"));
     // One set of headline figures per cycle, the last the reported cycle's; the warning says how
     // far they moved (cycle 2 still holds the start-up transient: more than ±0.1 %).
     QCOMPARE(result.cycle_headlines.size(), std::size_t(2));
