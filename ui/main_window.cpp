@@ -363,11 +363,16 @@ void MainWindow::onRunUpdated(const RunHandle& run) {
     progress_bar_->setFormat(
         tr("run-in · %1 °CA before cycle 1%2").arg(-720.0 * p.cycle_fraction, 0, 'f', 0).arg(eta));
   } else {
-    progress_bar_->setFormat(tr("cycle %1 of ≤ %2 · %3 °CA%4")
+    // How far from periodic the last cycle was, once two cycles can be compared.
+    const QString change =
+        p.cycle_change >= 0
+            ? tr(" · last change %1 %").arg(QString::number(100.0 * p.cycle_change, 'g', 2))
+            : QString();
+    progress_bar_->setFormat(tr("cycle %1 of ≤ %2 · %3 °CA%4%5")
                                  .arg(p.cycle)
                                  .arg(p.max_cycles)
                                  .arg(720.0 * p.cycle_fraction, 0, 'f', 0)
-                                 .arg(eta));
+                                 .arg(change, eta));
   }
   updateRunActions();
 }

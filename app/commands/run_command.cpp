@@ -86,9 +86,11 @@ Command MakeRunCommand() {
       const auto now = std::chrono::steady_clock::now();
       if (!quiet && now - last_print > std::chrono::milliseconds(200)) {
         last_print = now;
-        const std::string where = p.run_in ? fmt::format("run-in {:5.1f} °CA", p.crank_angle_deg)
-                                           : fmt::format("cycle {}/{}  {:5.1f} °CA", p.cycle,
-                                                         p.max_cycles, p.crank_angle_deg);
+        std::string where = p.run_in ? fmt::format("run-in {:5.1f} °CA", p.crank_angle_deg)
+                                     : fmt::format("cycle {}/{}  {:5.1f} °CA", p.cycle,
+                                                   p.max_cycles, p.crank_angle_deg);
+        if (p.cycle_change >= 0.0)  // how far from periodic the last cycle was
+          where += fmt::format("  last change {:.2g} %", 100.0 * p.cycle_change);
         streams.err << fmt::format("\r{}  {:3.0f} %  elapsed {:.1f} s  ETA {:.1f} s ", where,
                                    100.0 * std::min(p.fraction, 1.0), p.elapsed, p.remaining)
                     << std::flush;

@@ -467,6 +467,7 @@ RunResult RunSingle(const RunConfig& config, const RunMonitor& monitor,
         RunProgress progress;
         progress.cycle = cycle;
         progress.crank_angle_deg = crank_deg;
+        if (!result.cycle_changes.empty()) progress.cycle_change = result.cycle_changes.back();
         progress.cycle_start_time = t_start + (cycle - 1) * cycle_time;
         progress.sample = &current.samples.back();
         const double work = run_in_cycles + (cycle - 1) + (k + 1.0) / steps_per_cycle;

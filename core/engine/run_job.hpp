@@ -105,6 +105,9 @@ struct RunProgress {
   /// at most kRemainingMaxStep × (elapsed + that count-down), so it counts down steadily instead
   /// of jumping when a cycle starts.
   double remaining = 0.0;
+  /// The change of the last compared cycle (RunResult::cycle_changes' last); < 0 until the
+  /// second cycle has ended.
+  double cycle_change = -1.0;
   long steps = 0;                 ///< integrator steps so far
   long reynolds_solves = 0;       ///< film solves so far (both joints)
   const CrankTrainSample* sample = nullptr;  ///< the step just computed

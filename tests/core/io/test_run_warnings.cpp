@@ -51,7 +51,7 @@ engine::RunConfig Config(const engine::EngineCase& c, engine::Model model, doubl
 
 // What the monitor saw.
 struct ProgressTrace {
-  std::vector<double> fraction, remaining, elapsed;
+  std::vector<double> fraction, remaining, elapsed, cycle_change;
   std::vector<int> cycle;
   engine::RunMonitor Monitor() {
     return [this](const engine::RunProgress& p) {
@@ -59,6 +59,7 @@ struct ProgressTrace {
       remaining.push_back(p.remaining);
       elapsed.push_back(p.elapsed);
       cycle.push_back(p.cycle);
+      cycle_change.push_back(p.cycle_change);
       return true;
     };
   }
@@ -67,8 +68,17 @@ struct ProgressTrace {
 // Progress never decreases and ends at 1 with nothing left; after the first 10 % the time left
 // differs from the previous estimate counted down by the wall time in between by at most
 // kRemainingMaxStep of the estimated whole run time.
-void CheckProgress(const ProgressTrace& t) {
+void CheckProgress(const ProgressTrace& t, const engine::RunResult& result) {
   QVERIFY(t.fraction.size() > 10);
+  // The last compared cycle's change: none in the run-in and cycles 1–2, from cycle 3 on the
+  // change cycle c − 1 ended with.
+  for (std::size_t k = 0; k < t.cycle.size(); ++k) {
+    const int c = t.cycle[k];
+    if (c < 3)
+      QCOMPARE(t.cycle_change[k], -1.0);
+    else
+      QCOMPARE(t.cycle_change[k], result.cycle_changes.at(std::size_t(c - 3)));
+  }
   for (std::size_t k = 1; k < t.fraction.size(); ++k) {
     QVERIFY2(t.fraction[k] >= t.fraction[k - 1],
              qPrintable(QString("fraction fell from %1 to %2 at update %3 (cycle %4)")
@@ -141,7 +151,7 @@ class TestRunWarnings : public QObject {
     const engine::RunResult result = engine::RunJob(config, trace.Monitor());
     QCOMPARE(engine::StatusName(result.status), std::string("completed"));
     QVERIFY(result.cycles >= 2);  // run-in → cycle 1 → cycle 2: where the fraction used to fall
-    CheckProgress(trace);
+    CheckProgress(trace, result);
 
     const engine::EngineCase& c = config.engine_case;
     const double omega = 6000.0 * 2.0 * M_PI / 60.0;
@@ -266,7 +276,7 @@ class TestRunWarnings : public QObject {
     ProgressTrace trace;
     const engine::RunResult result = engine::RunJob(config, trace.Monitor());
     QCOMPARE(engine::StatusName(result.status), std::string("completed"));
-    CheckProgress(trace);
+    CheckProgress(trace, result);
     const double sigma = std::hypot(c.big_end.roughness_journal, c.big_end.roughness_bearing);
     double min_ratio = INFINITY;
     for (const engine::CrankTrainSample& s : result.samples) {
@@ -280,12 +290,38 @@ class TestRunWarnings : public QObject {
     }
   }
 
+  // Three cycles against a tolerance no run meets: from cycle 3 on the progress carries the
+  // last compared cycle's change (CheckProgress), and the warning tells how the two changes fell.
+  void progressAndWarningTellHowTheChangeFell() {
+    engine::EngineCase c = CoarseCase();
+    c.solver.max_cycles = 3;
+    c.solver.steady_state_tolerance = 1e-12;
+    const engine::RunConfig config = Config(c, engine::Model::kOnlyLbrbe, 6000.0);
+    ProgressTrace trace;
+    const engine::RunResult result = engine::RunJob(config, trace.Monitor());
+    QCOMPARE(engine::StatusName(result.status), std::string("not-converged"));
+    QCOMPARE(result.cycle_changes.size(), std::size_t(2));
+    QVERIFY(std::count(trace.cycle.begin(), trace.cycle.end(), 3) > 10);
+    CheckProgress(trace, result);
+    const std::vector<io::RunWarning> warnings = io::RunWarnings(config, result);
+    const auto w = std::find_if(warnings.begin(), warnings.end(),
+                                [](const io::RunWarning& x) { return x.code == "not_periodic"; });
+    QVERIFY(w != warnings.end());
+    QVERIFY2(QString::fromStdString(w->message)
+                 .contains(QString::fromStdString(engine::CycleChangeTrend(
+                     result.cycle_changes, c.solver.steady_state_tolerance))),
+             w->message.c_str());
+    QVERIFY2(QString::fromStdString(w->message)
+                 .contains("the change after each cycle from cycle 2 on: "),
+             w->message.c_str());
+  }
+
   void idealJointsGiveNoFilmWarnings() {
     const engine::RunConfig config = Config(CoarseCase(), engine::Model::kIdeal, 6000.0);
     ProgressTrace trace;
     const engine::RunResult result = engine::RunJob(config, trace.Monitor());
     QCOMPARE(engine::StatusName(result.status), std::string("completed"));
-    CheckProgress(trace);
+    CheckProgress(trace, result);
     for (const io::RunWarning& w : io::RunWarnings(config, result)) {
       QVERIFY2(w.code != "asperity_contact" && w.code != "mixed_lubrication" &&
                    w.code != "high_eccentricity" && w.code != "not_periodic",
@@ -307,7 +343,7 @@ class TestRunWarnings : public QObject {
     ProgressTrace trace;
     const engine::RunResult result = engine::RunJob(config, trace.Monitor());
     QCOMPARE(engine::StatusName(result.status), std::string("not-converged"));
-    CheckProgress(trace);
+    CheckProgress(trace, result);
     const std::vector<io::RunWarning> warnings = io::RunWarnings(config, result);
     const auto w = std::find_if(warnings.begin(), warnings.end(),
                                 [](const io::RunWarning& x) { return x.code == "not_periodic"; });
