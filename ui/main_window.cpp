@@ -25,6 +25,7 @@
 #include <QUndoStack>
 #include <QVBoxLayout>
 
+#include "core/engine/error_estimate.hpp"
 #include "core/io/results_writer.hpp"
 #include "ui/about_info.hpp"
 #include "ui/case_editor/case_document.hpp"
@@ -365,9 +366,9 @@ void MainWindow::onRunUpdated(const RunHandle& run) {
   } else {
     // How far from periodic the last cycle was, once two cycles can be compared.
     const QString change =
-        p.cycle_change >= 0
-            ? tr(" · last change %1 %").arg(QString::number(100.0 * p.cycle_change, 'g', 2))
-            : QString();
+        p.cycle_change >= 0 ? tr(" · last change %1 %")
+                                  .arg(QString::fromStdString(engine::PercentText(p.cycle_change)))
+                            : QString();
     progress_bar_->setFormat(tr("cycle %1 of ≤ %2 · %3 °CA%4%5")
                                  .arg(p.cycle)
                                  .arg(p.max_cycles)

@@ -9,6 +9,7 @@
 #include "app/commands/commands.hpp"
 #include "app/commands/run_common.hpp"
 #include "core/base/input_error.hpp"
+#include "core/engine/error_estimate.hpp"
 #include "core/engine/run_job.hpp"
 #include "core/io/case_file.hpp"
 #include "core/io/field_output.hpp"
@@ -90,7 +91,7 @@ Command MakeRunCommand() {
                                      : fmt::format("cycle {}/{}  {:5.1f} °CA", p.cycle,
                                                    p.max_cycles, p.crank_angle_deg);
         if (p.cycle_change >= 0.0)  // how far from periodic the last cycle was
-          where += fmt::format("  last change {:.2g} %", 100.0 * p.cycle_change);
+          where += "  last change " + engine::PercentText(p.cycle_change) + " %";
         streams.err << fmt::format("\r{}  {:3.0f} %  elapsed {:.1f} s  ETA {:.1f} s ", where,
                                    100.0 * std::min(p.fraction, 1.0), p.elapsed, p.remaining)
                     << std::flush;

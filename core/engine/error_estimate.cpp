@@ -195,13 +195,10 @@ DisplayUnit HeadlineDisplayUnit(const std::string& key) {
   return {si, 1.0};
 }
 
-namespace {
-// "0.93", "4.4", "790": two significant digits, whole numbers from 10 on (no exponent).
-std::string Percent(double fraction) {
+std::string PercentText(double fraction) {
   const double percent = 100.0 * fraction;
   return percent < 10.0 ? fmt::format("{:.2g}", percent) : fmt::format("{:.0f}", percent);
 }
-}  // namespace
 
 std::string CycleScatter::Summary() const {
   constexpr double kNoted = 1e-3;  // figures that moved less are not listed
@@ -222,10 +219,10 @@ std::string CycleScatter::Summary() const {
     text = span + " the headline figures moved by less than ±0.1 % of the reported values";
   } else {
     text = fmt::format("{} the headline figures moved by up to ±{} % of the reported values:", span,
-                       Percent(moved.front()->RelativeHalfSpread()));
+                       PercentText(moved.front()->RelativeHalfSpread()));
     for (std::size_t i = 0; i < moved.size(); ++i) {
       text += fmt::format("{} {} (±{} %)", i == 0 ? "" : ",", range(*moved[i]),
-                          Percent(moved[i]->RelativeHalfSpread()));
+                          PercentText(moved[i]->RelativeHalfSpread()));
     }
   }
   std::string spikes;
@@ -238,7 +235,7 @@ std::string CycleScatter::Summary() const {
 std::string CycleChangeTrend(const std::vector<double>& changes, double tolerance) {
   if (changes.size() < 2) return {};
   std::string list;
-  for (double c : changes) list += (list.empty() ? "" : ", ") + Percent(c);
+  for (double c : changes) list += (list.empty() ? "" : ", ") + PercentText(c);
   std::string text = "the change after each cycle from cycle 2 on: " + list + " %";
   const double last = changes.back(), before = changes[changes.size() - 2];
   if (!(std::isfinite(last) && std::isfinite(before) && last > 0.0 && before > 0.0 &&

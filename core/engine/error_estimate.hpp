@@ -173,6 +173,10 @@ std::optional<CycleScatter> ScatterOverCycles(
     const std::vector<std::vector<HeadlineFigure>>& per_cycle,
     const std::vector<CrankTrainSample>& reported_samples, bool whole_cycle);
 
+/// A relative figure in percent as the messages write it: "0.93", "4.4", "790" (two significant
+/// digits, whole numbers from 10 on, never an exponent).
+std::string PercentText(double fraction);
+
 /// How a run stopped at solver.max_cycles approached its periodic state, from its cycle-to-cycle
 /// changes (RunResult::cycle_changes, relative to the range) and the tolerance: "the change after
 /// each cycle from cycle 2 on: 22, 4.3, 1.2 %", then from the last two changes either "falling by

@@ -28,8 +28,9 @@ struct ComparisonRow {
   int cycles = 0;
   double wall_time_s = 0.0;
   std::vector<std::optional<double>> figures;  ///< per ComparisonFigures(), SI; empty = n/a
-  /// Figures the run has but the comparison leaves out, one sentence each: a peak film pressure
-  /// that is a spike between output samples (the run's unresolved_peak warning).
+  /// Figures the run has but the comparison leaves out, one sentence each: a spike between the
+  /// output samples (an extreme summary.json marks min_spike / max_spike, or a peak film
+  /// pressure with the run's unresolved_peak warning).
   std::vector<std::string> notes;
 };
 

@@ -21,8 +21,7 @@ QString Number(double v, double scale, int decimals = 2) {
   return std::isfinite(v) ? QString::number(v * scale, 'f', decimals) : QStringLiteral("–");
 }
 
-// "≤ 0.4 %", "2.8 %" in red with a warning sign above the threshold, "–" when not estimated;
-// the tooltip lists every headline figure with its estimate.
+// Why a largest big-end force is marked: a spike between the output samples.
 QString BigEndForceSpikeTip(const RunFigures& f) {
   QStringList beside;
   for (double v : {f.big_end_force_before, f.big_end_force_after})
@@ -35,6 +34,8 @@ QString BigEndForceSpikeTip(const RunFigures& f) {
       .arg(QString::number(f.max_big_end_force * 1e-3, 'g', 4), beside.join(" and "));
 }
 
+// "≤ 0.4 %", "2.8 %" in red with a warning sign above the threshold, "–" when not estimated;
+// the tooltip lists every headline figure with its estimate.
 void ShowErrorEstimate(const engine::ErrorEstimate& e, QTableWidgetItem* cell) {
   QString text = QStringLiteral("–");
   if (e.Estimated()) {
