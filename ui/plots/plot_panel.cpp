@@ -20,6 +20,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/engine/error_estimate.hpp"
 #include "ui/charts/chart_export.hpp"
 #include "ui/charts/palette.hpp"
 #include "ui/charts/round_ticks.hpp"
@@ -72,6 +73,50 @@ std::optional<QPointF> PointAtAngle(const CurvePoints& curve, double angle) {
     }
   }
   return std::nullopt;
+}
+
+// A run's spikes between output samples (an impact lasting a fraction of the output interval)
+// would otherwise set a plot's range and flatten the rest of the curve. A point is a spike along
+// a coordinate by the rule the run summary marks its extremes with: its magnitude over the
+// larger magnitude beside it above engine::kUnresolvedPeakRatio. A side of the range that the
+// spikes would widen by more than kSpikeClipShare of the other points' span is fitted to the
+// other points: the spikes are drawn clipped and their values marked at the edge. A curve with
+// fewer than kSpikeMinPoints points in view (zoomed onto the spike) is fitted whole.
+constexpr double kSpikeClipShare = 0.5;
+constexpr int kSpikeMinPoints = 40;
+
+struct Extent {
+  double lo = INFINITY, hi = -INFINITY;
+  void Add(double v) {
+    lo = std::min(lo, v);
+    hi = std::max(hi, v);
+  }
+  bool Valid() const { return hi >= lo; }
+};
+
+// Per point of the curve (the points [begin, end)): whether its y (or x) is a spike.
+std::vector<bool> SpikePoints(const QList<QPointF>& xy, qsizetype begin, qsizetype end,
+                              bool along_y) {
+  std::vector<bool> spike(size_t(end - begin), false);
+  if (end - begin < kSpikeMinPoints) return spike;
+  const auto magnitude = [&](qsizetype k) { return std::abs(along_y ? xy[k].y() : xy[k].x()); };
+  // Interior points only: the end of a curve still being computed is not judged by one side.
+  for (qsizetype k = begin + 1; k + 1 < end; ++k)
+    spike[size_t(k - begin)] =
+        engine::NeighbourRatio(magnitude(k), magnitude(k - 1), magnitude(k + 1)) >
+        engine::kUnresolvedPeakRatio;
+  return spike;
+}
+
+// The range to fit: `all` points', each side cut back to `smooth` (the points that are no
+// spikes) where the spikes reach beyond it by more than kSpikeClipShare of its span.
+Extent FitRange(const Extent& all, const Extent& smooth) {
+  if (!smooth.Valid()) return all;
+  const double reach = kSpikeClipShare * (smooth.hi - smooth.lo);
+  Extent fit = all;
+  if (all.hi - smooth.hi > reach) fit.hi = smooth.hi;
+  if (smooth.lo - all.lo > reach) fit.lo = smooth.lo;
+  return fit;
 }
 
 }  // namespace
@@ -551,23 +596,51 @@ void PlotPanel::relayoutLegend(ChartEntry& entry) {
 }
 
 void PlotPanel::rescale(ChartEntry& entry) {
-  double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
   double clearance = 0;
   int points = 0;
   const std::vector<int> runs = visibleRunsWithData(entry);
   for (int id : order_) {
     if (!runs_.value(id).visible) continue;
     clearance = std::max(clearance, runs_.value(id).clearance_um);
-    for (const CurvePoints& c : entry.run_points.value(id)) {
-      points += int(c.xy.size());
-      for (const QPointF& p : c.xy) {
-        x0 = std::min(x0, p.x());
-        x1 = std::max(x1, p.x());
-        y0 = std::min(y0, p.y());
-        y1 = std::max(y1, p.y());
+    for (const CurvePoints& c : entry.run_points.value(id)) points += int(c.xy.size());
+  }
+  // Every shown point with crank angles in [from, to] (all of an x–y plot's), told whether it is
+  // a spike between output samples (never on the journal orbit, whose clearance bounds it).
+  const bool clip_spikes = !entry.spec->clearance_circle;
+  const auto each_point = [&](double from, double to, const auto& visit) {
+    for (int id : runs) {
+      const auto& curves = entry.run_points.value(id);
+      for (size_t k = 0; k < curves.size(); ++k) {
+        const CurvePoints& c = curves[k];
+        qsizetype begin = 0, end = c.xy.size();
+        if (entry.spec->crank_angle_axis) {
+          while (begin < end && c.xy[begin].x() < from) ++begin;
+          while (end > begin && c.xy[end - 1].x() > to) --end;
+        }
+        const std::vector<bool> none(size_t(end - begin), false);
+        const std::vector<bool> spike_y = clip_spikes ? SpikePoints(c.xy, begin, end, true) : none;
+        const std::vector<bool> spike_x = clip_spikes && !entry.spec->crank_angle_axis
+                                              ? SpikePoints(c.xy, begin, end, false)
+                                              : none;
+        for (qsizetype i = begin; i < end; ++i)
+          visit(id, k, i, c.xy[i], spike_x[size_t(i - begin)] || spike_y[size_t(i - begin)]);
       }
     }
-  }
+  };
+  // The ranges to fit the points in [from, to] (spikes cut back: FitRange).
+  const auto fit = [&](double from, double to, Extent* x, Extent* y) {
+    Extent all_x, all_y, smooth_x, smooth_y;
+    each_point(from, to, [&](int, size_t, qsizetype, QPointF p, bool spike) {
+      all_x.Add(p.x());
+      all_y.Add(p.y());
+      if (!spike) smooth_x.Add(p.x()), smooth_y.Add(p.y());
+    });
+    *x = FitRange(all_x, smooth_x);
+    *y = FitRange(all_y, smooth_y);
+  };
+  Extent fit_x, fit_y;
+  fit(-INFINITY, INFINITY, &fit_x, &fit_y);
+  double x0 = fit_x.lo, x1 = fit_x.hi, y0 = fit_y.lo, y1 = fit_y.hi;
   // Say so when the shown runs' model has no such quantity (e.g. MOFT of the Ideal model).
   const bool any_run =
       std::any_of(order_.begin(), order_.end(), [this](int id) { return runs_.value(id).visible; });
@@ -635,16 +708,9 @@ void PlotPanel::rescale(ChartEntry& entry) {
       const QRectF z = *entry.zoom;
       // Crank-angle plots zoom along x; y re-fits the data inside the shown crank angles.
       if (entry.spec->crank_angle_axis) {
-        double zy0 = INFINITY, zy1 = -INFINITY;
-        for (int id : runs) {
-          for (const CurvePoints& c : entry.run_points.value(id)) {
-            for (const QPointF& p : c.xy) {
-              if (p.x() < z.left() || p.x() > z.right()) continue;
-              zy0 = std::min(zy0, p.y());
-              zy1 = std::max(zy1, p.y());
-            }
-          }
-        }
+        Extent zx, zy;
+        fit(z.left(), z.right(), &zx, &zy);
+        double zy0 = zy.lo, zy1 = zy.hi;
         if (!(zy1 >= zy0)) zy0 = ry.min, zy1 = ry.max;
         if (entry.spec->non_negative && zy0 >= 0) zy0 = 0;
         const RoundRange zr = RoundRangeCovering(zy0, zy1, 5);
@@ -659,6 +725,13 @@ void PlotPanel::rescale(ChartEntry& entry) {
       SetRoundAxis(ay, ry.min, ry.max, ry.step);
     }
   }
+  // The spikes left outside the shown range, marked at its edge by the overlay.
+  entry.clipped.clear();
+  const QRectF shown(QPointF(ax->min(), ay->min()), QPointF(ax->max(), ay->max()));
+  each_point(ax->min(), ax->max(), [&](int id, size_t k, qsizetype i, QPointF p, bool spike) {
+    if (spike && !shown.contains(p))
+      entry.clipped.push_back({id, k, p, entry.run_points.value(id)[k].crank_angle[size_t(i)]});
+  });
   entry.overlay->refresh();
 }
 
@@ -843,6 +916,62 @@ void PlotPanel::paintOverlay(const ChartEntry& entry, QPainter* painter) const {
       }
     }
     painter->setClipping(false);
+  }
+
+  // Spikes left outside the range (ClippedSpike): a triangle at the edge the curve leaves by,
+  // pointing out, and the spike's value beside it inside the plot.
+  if (!entry.clipped.empty()) {
+    std::vector<QRectF> taken;
+    for (const ClippedSpike& spike : entry.clipped) {
+      const QColor colour =
+          single ? kPalette[spike.curve % kPaletteSize] : runs_.value(spike.run_id).colour;
+      const QPointF raw = to_pos(spike.value);
+      const QPointF at(std::clamp(raw.x(), area.left(), area.right()),
+                       std::clamp(raw.y(), area.top(), area.bottom()));
+      QPointF out = raw - at;
+      const double length = std::hypot(out.x(), out.y());
+      if (!(length > 1e-9)) continue;
+      out /= length;
+      const QPointF side(-out.y(), out.x());
+      QPainterPath head;
+      head.moveTo(at);
+      head.lineTo(at - out * 9.0 + side * 5.0);
+      head.lineTo(at - out * 9.0 - side * 5.0);
+      head.closeSubpath();
+      painter->setPen(QPen(Qt::white, 1));
+      painter->setBrush(colour);
+      painter->drawPath(head);
+      const QString value =
+          entry.spec->crank_angle_axis
+              ? FormatReadout(spike.value.y(), entry.spec->y_unit)
+              : QString("%1, %2").arg(FormatReadout(spike.value.x()),
+                                      FormatReadout(spike.value.y(), entry.spec->y_unit));
+      const QString text =
+          tr("%1 at %2 °CA").arg(value, QString::number(spike.crank_angle, 'f', 1));
+      const QSizeF size = metrics.size(0, text) + QSizeF(6, 2);
+      // Beside the triangle, inside the plot; stacked inward past labels already drawn.
+      QPointF corner(at.x() + 8, out.y() > 0.5 ? at.y() - size.height() - 2 : at.y() + 2);
+      if (std::abs(out.x()) > 0.5) {
+        corner = QPointF(out.x() > 0 ? at.x() - size.width() - 12 : at.x() + 12,
+                         at.y() - size.height() / 2);
+      }
+      corner.setX(std::clamp(corner.x(), area.left() + 1, area.right() - size.width() - 1));
+      corner.setY(std::clamp(corner.y(), area.top() + 1, area.bottom() - size.height() - 1));
+      QRectF box(corner, size);
+      const double step = (out.y() > 0.5 ? -1.0 : 1.0) * (size.height() + 1);
+      for (int tries = 0; tries < 8; ++tries) {
+        if (std::none_of(taken.begin(), taken.end(),
+                         [&box](const QRectF& r) { return r.intersects(box); }))
+          break;
+        box.translate(0, step);
+      }
+      taken.push_back(box);
+      painter->setPen(QPen(colour.darker(130), 0.8));
+      painter->setBrush(QColor(255, 255, 255, 225));
+      painter->drawRect(box);
+      painter->setPen(Qt::black);
+      painter->drawText(box, Qt::AlignCenter, text);
+    }
   }
 
   // The crank-angle cursor: a line on crank-angle plots, a marker on the others.

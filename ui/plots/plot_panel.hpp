@@ -91,6 +91,18 @@ class PlotPanel : public QWidget {
   QColor runColour(int run_id) const { return runs_.value(run_id).colour; }
   /// Zoom: scales the visible range of a plot by `factor` (< 1 zooms in) about a value point.
   void zoomChart(int index, double factor, QPointF about);
+  /// A spike between output samples that a plot's range leaves out (an impact lasting a
+  /// fraction of the output interval that would flatten the rest of the curve): drawn clipped,
+  /// its value marked at the plot's edge. Zoomed onto it, the plot shows it whole.
+  struct ClippedSpike {
+    int run_id = 0;
+    size_t curve = 0;
+    QPointF value;           ///< the point (display units)
+    double crank_angle = 0;  ///< [°CA]
+  };
+  const std::vector<ClippedSpike>& clippedSpikes(int index) const {
+    return charts_[size_t(index)].clipped;
+  }
   void panChart(int index, QPointF delta_value);
   void resetZoom(int index);
   bool isZoomed(int index) const;
@@ -123,6 +135,7 @@ class PlotPanel : public QWidget {
     QRectF full;                 ///< the automatic (unzoomed) value range
     QMap<int, std::vector<QLineSeries*>> run_series;
     QMap<int, std::vector<CurvePoints>> run_points;
+    std::vector<ClippedSpike> clipped;  ///< spikes outside the shown range (rescale)
   };
   struct RunEntry {
     QString label;

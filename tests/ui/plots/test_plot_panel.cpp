@@ -8,6 +8,7 @@
 #include <QChartView>
 #include <QLineSeries>
 #include <QMouseEvent>
+#include <QTemporaryDir>
 #include <QValueAxis>
 #include <QWheelEvent>
 #include <QtTest>
@@ -383,6 +384,98 @@ class TestPlotPanel : public QObject {
     QVERIFY(!panel.isZoomed(fpl));
     QCOMPARE(x->min(), 0.0);
     QCOMPARE(x->max(), 720.0);
+  }
+
+  // An impact lasting a fraction of the output interval (a mass-conserving big end's void
+  // collapse) is one sample far above its neighbours: the plots fit the rest of the curve, draw
+  // the spike clipped and mark its value at the edge; zoomed onto it, they show it whole. A
+  // peak that the samples resolve (wider than an interval) sets the range as before.
+  void spikesBetweenSamplesAreClippedAndMarked() {
+    PlotRun spiking = coupled_;
+    spiking.id = 7;
+    std::size_t at = 0;
+    for (std::size_t k = 0; k < spiking.samples.size(); ++k)
+      if (std::abs(spiking.samples[k][Column::kCrankAngle] - 361.0) <
+          std::abs(spiking.samples[at][Column::kCrankAngle] - 361.0))
+        at = k;
+    double smooth_lo = INFINITY, smooth_hi = -INFINITY;
+    for (const auto& s : spiking.samples) {
+      smooth_lo = std::min(smooth_lo, s[Column::kBigEndForceX] * 1e-3);
+      smooth_hi = std::max(smooth_hi, s[Column::kBigEndForceX] * 1e-3);
+    }
+    const double spike_kn = smooth_lo - 10.0 * (smooth_hi - smooth_lo);
+    spiking.samples[at][Column::kBigEndForceX] = spike_kn * 1e3;
+    const double angle = spiking.samples[at][Column::kCrankAngle];
+
+    PlotPanel panel;
+    panel.resize(1400, 1200);
+    panel.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&panel));
+    panel.updateRun(spiking);
+    const int forces = panel.chartIndex("bigend_forces");
+    QValueAxis* y = Axis(panel.chart(forces), Qt::Vertical);
+    // The axis covers the curve without the spike (and the gas force), not the spike.
+    QVERIFY2(
+        y->min() <= smooth_lo && y->min() > spike_kn,
+        qPrintable(
+            QString("y from %1 (curve %2, spike %3)").arg(y->min()).arg(smooth_lo).arg(spike_kn)));
+    QCOMPARE(panel.clippedSpikes(forces).size(), std::size_t(1));
+    const auto& clipped = panel.clippedSpikes(forces).front();
+    QCOMPARE(clipped.run_id, 7);
+    QCOMPARE(clipped.curve, std::size_t(0));  // F_x
+    QCOMPARE(clipped.value.y(), spike_kn);
+    QCOMPARE(clipped.crank_angle, angle);
+    // The load diagram leaves it out too (its x is the rod-frame force, spiking with it only
+    // when the spike is set there: unchanged here).
+    QVERIFY(panel.clippedSpikes(panel.chartIndex("bigend_load_polar")).empty());
+    // The other plots have no spike.
+    QVERIFY(panel.clippedSpikes(panel.chartIndex("fpl")).empty());
+    // A plain run marks nothing; its force axis is where it was.
+    PlotPanel plain;
+    plain.resize(1400, 1200);
+    plain.updateRun(coupled_);
+    QVERIFY(plain.clippedSpikes(forces).empty());
+    QCOMPARE(Axis(plain.chart(forces), Qt::Vertical)->min(), y->min());
+
+    // Zoomed onto the spike (fewer than 40 samples in view): shown whole, nothing marked.
+    panel.zoomChart(forces, 30.0 / 720.0, QPointF(angle, 0));
+    QVERIFY(panel.isZoomed(forces));
+    QVERIFY(y->min() <= spike_kn);
+    QVERIFY(panel.clippedSpikes(forces).empty());
+    // Zoomed out to 90 °CA around it: clipped again.
+    panel.resetZoom(forces);
+    panel.zoomChart(forces, 90.0 / 720.0, QPointF(angle, 0));
+    QVERIFY(y->min() > spike_kn);
+    QCOMPARE(panel.clippedSpikes(forces).size(), std::size_t(1));
+    panel.resetZoom(forces);
+
+    // Resolved: the same height over three samples sets the range.
+    PlotRun broad = spiking;
+    broad.id = 8;
+    broad.samples[at - 1][Column::kBigEndForceX] = spike_kn * 1e3 * 0.8;
+    broad.samples[at + 1][Column::kBigEndForceX] = spike_kn * 1e3 * 0.8;
+    PlotPanel resolved;
+    resolved.resize(1400, 1200);
+    resolved.updateRun(broad);
+    QVERIFY(resolved.clippedSpikes(forces).empty());
+    QVERIFY(Axis(resolved.chart(forces), Qt::Vertical)->min() <= spike_kn);
+
+    // A spike of little height is drawn whole (it widens the range by less than half).
+    PlotRun small = coupled_;
+    small.id = 9;
+    small.samples[at][Column::kBigEndForceX] = (smooth_lo - 0.3 * (smooth_hi - smooth_lo)) * 1e3;
+    PlotPanel low;
+    low.resize(1400, 1200);
+    low.updateRun(small);
+    QVERIFY(low.clippedSpikes(forces).empty());
+    QVERIFY(Axis(low.chart(forces), Qt::Vertical)->min() <=
+            small.samples[at][Column::kBigEndForceX] * 1e-3);
+
+    // Exported alone (a report's plot), the spike is clipped the same way.
+    QTemporaryDir dir;
+    QVERIFY(panel.exportChart(forces, dir.filePath("forces.png"), filmdyn::ui::ImageFormat::kPng,
+                              QSize(960, 600)));
+    QVERIFY(y->min() > spike_kn);
   }
 };
 
