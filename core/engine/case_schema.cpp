@@ -152,7 +152,8 @@ void AddOilFields(std::vector<CaseField>& f, const std::string& prefix, FieldGro
       {"cross_ratio", "Cross r"},
       {"cross_exponent", "Cross m"},
       {"cross_rate", "γ̇c"},
-      {"hths", "HTHS"}};
+      {"hths", "HTHS"},
+      {"bulk_modulus", "β"}};
   auto number = [&](const char* name, double OilSpec::*member, const Info& info,
                     std::string description) {
     CaseField field = Base(prefix + name, FieldKind::kNumber, info);
@@ -311,6 +312,16 @@ void AddOilFields(std::vector<CaseField>& f, const std::string& prefix, FieldGro
           "0 with a catalogue oil: its own"},
          "The oil's high-temperature high-shear viscosity, which sets Cross' critical shear rate "
          "(μ(150 °C, 10⁶ 1/s) = HTHS) " +
+             whose);
+  number("bulk_modulus", &OilSpec::bulk_modulus,
+         {group, "Bulk modulus β (mass-conserving films)", "Pa", "GPa", 1e9,
+          Between(0.0, OilSpec::kMaxBulkModulus),
+          "0 = incompressible, else at least 0.01 GPa; mineral oils about 1.7 GPa "
+          "(Dowson–Higginson's density law at low pressure); a JFO film's full zone then stores "
+          "oil as its pressure rises; not with a pressure–viscosity law"},
+         "Bulk modulus of the oil in the full zone of a mass-conserving (JFO) film: density "
+         "ρ₀ (1 + p/β), so that the film stores oil as its pressure rises and a collapsing void "
+         "is cushioned; 0 keeps the oil incompressible (Reynolds films always are) " +
              whose);
 }
 
@@ -1458,6 +1469,20 @@ std::string UnusedReason(const EngineCase& c, const std::string& path) {
           ToString(sk.supply));
     if (path == "skirt.oil_film" && !sk.oil_film_positions.empty())
       return "the liner's oil film is the table over the liner position";
+  }
+  // The bulk modulus: only a mass-conserving film uses it.
+  {
+    using lubrication::CavitationModel;
+    const bool skirt_jfo = c.skirt.cavitation == CavitationModel::kJfo;
+    const bool big_end_jfo = c.big_end.cavitation == CavitationModel::kJfo;
+    const bool skirt_lubricant = c.skirt.oil.source == OilSource::kLubricant;
+    const bool big_end_lubricant = c.big_end.oil.source == OilSource::kLubricant;
+    const char* reynolds = "only a mass-conserving (JFO) film uses the bulk modulus";
+    if (path == "lubricant.bulk_modulus" && !(skirt_jfo && skirt_lubricant) &&
+        !(big_end_jfo && big_end_lubricant))
+      return reynolds;
+    if (path == "skirt.oil.bulk_modulus" && !skirt_jfo && !skirt_lubricant) return reynolds;
+    if (path == "big_end.oil.bulk_modulus" && !big_end_jfo && !big_end_lubricant) return reynolds;
   }
   if (path.rfind("lubricant.", 0) == 0) return oil_reason(c.lubricant, path.substr(10));
   for (const auto& [joint, oil] : {std::pair{std::string("skirt"), &c.skirt.oil},

@@ -79,19 +79,23 @@ RunSummary SummarizeRun(const std::string& case_name, const engine::RunConfig& c
     if (balanced) oil.temperature = *balanced;  // from the joint's heat balance
     const auto at = engine::JointOilAt(config.engine_case, oil, joint);
     const lubrication::OilSpec& spec = engine::JointOilSpec(config.engine_case, oil);
-    return JointOilUsed{oil.temperature,
-                        at.viscosity,
-                        oil.source == engine::OilSource::kOwn ? "own" : "lubricant",
-                        lubrication::ToString(spec.model),
-                        lubrication::ToString(spec.pressure_law),
-                        at.pressure.InitialCoefficient(),
-                        spec.model == lubrication::ViscosityModel::kGrade
-                            ? std::string(lubrication::OilCatalogue()[spec.grade].key)
-                            : std::string(),
-                        lubrication::ToString(spec.shear_thinning),
-                        at.shear.ratio,
-                        at.shear.exponent,
-                        at.shear.critical_rate};
+    return JointOilUsed{
+        oil.temperature,
+        at.viscosity,
+        oil.source == engine::OilSource::kOwn ? "own" : "lubricant",
+        lubrication::ToString(spec.model),
+        lubrication::ToString(spec.pressure_law),
+        at.pressure.InitialCoefficient(),
+        spec.model == lubrication::ViscosityModel::kGrade
+            ? std::string(lubrication::OilCatalogue()[spec.grade].key)
+            : std::string(),
+        lubrication::ToString(spec.shear_thinning),
+        at.shear.ratio,
+        at.shear.exponent,
+        at.shear.critical_rate,
+        engine::JointBulkModulus(at, oil, joint,
+                                 joint == "skirt" ? config.engine_case.skirt.cavitation
+                                                  : config.engine_case.big_end.cavitation)};
   };
   if (s.kpis.skirt) {
     const engine::JointFit fit = engine::SkirtFit(config.engine_case);
@@ -365,7 +369,8 @@ json SummaryToJson(const RunSummary& s) {
                  {"viscosity_model", u.viscosity_model},
                  {"pressure_viscosity", u.pressure_viscosity},
                  {"pressure_viscosity_coefficient[1/Pa]", u.pressure_viscosity_coefficient},
-                 {"shear_thinning", u.shear_thinning}};
+                 {"shear_thinning", u.shear_thinning},
+                 {"bulk_modulus[Pa]", u.bulk_modulus}};
     if (!u.grade.empty()) oil[name]["grade"] = u.grade;
     if (u.shear_thinning != "none") {
       oil[name]["cross_ratio[-]"] = u.cross_ratio;
@@ -549,6 +554,7 @@ RunSummary FromJson(const json& j) {
     Read(o, "pressure_viscosity_coefficient[1/Pa]", at, &u.pressure_viscosity_coefficient);
     if (o.contains("grade")) Read(o, "grade", at, &u.grade);
     if (o.contains("shear_thinning")) Read(o, "shear_thinning", at, &u.shear_thinning);
+    if (o.contains("bulk_modulus[Pa]")) Read(o, "bulk_modulus[Pa]", at, &u.bulk_modulus);
     if (u.shear_thinning != "none") {
       Read(o, "cross_ratio[-]", at, &u.cross_ratio);
       Read(o, "cross_exponent[-]", at, &u.cross_exponent);

@@ -59,6 +59,9 @@ struct JointOilUsed {
   std::string shear_thinning = "none";          ///< "none", "cross" or "hths"
   /// Cross' law at the film temperature (with shear thinning): r, m, critical rate [1/s].
   double cross_ratio = 1.0, cross_exponent = 1.0, cross_critical_rate = 0.0;
+  /// The bulk modulus the film ran with [Pa]: 0 = incompressible (every Reynolds film; a
+  /// mass-conserving film with an incompressible oil).
+  double bulk_modulus = 0.0;
 };
 
 /// The film-temperature iteration of joints in heat-balance mode ("heat_balance" in the file,

@@ -93,6 +93,9 @@ struct BearingConfig {
   double viscosity = 0.0;                ///< at zero gauge pressure [Pa s]
   PressureViscosity pressure_viscosity;  ///< how it rises with the film pressure (oil.hpp)
   CrossLaw shear_thinning;               ///< how it falls with the film's shear rate (oil.hpp)
+  /// Bulk modulus [Pa] of a compressible oil in a transient mass-conserving film
+  /// (ReynoldsParams::bulk_modulus); 0 = incompressible.
+  double bulk_modulus = 0.0;
   BearingMeshSpec mesh;
   OilFeed feed;
   ReynoldsOptions solver;

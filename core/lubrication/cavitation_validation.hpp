@@ -50,6 +50,7 @@ struct SqueezeRunOptions {
   double time_step = 6.6e-4;
   double end_time = 0.8;
   CavitationModel model = CavitationModel::kJfo;
+  double bulk_modulus = 0.0;  ///< ReynoldsParams::bulk_modulus (0: incompressible)
 };
 struct SqueezeRun {
   std::vector<double> t;         ///< step end times
@@ -59,15 +60,35 @@ struct SqueezeRun {
   double close_time = -1.0;      ///< first step without one after rupture
   double fraction_min = 1.0;     ///< smallest fluid fraction met
   double fraction_excess = 0.0;  ///< worst excursion of theta outside [0, 1]
-  /// Oil balance over the run, relative to the oil that flowed in through the ends: inflow −
-  /// outflow − change of the stored oil, the stored oil's full-film part integrated with the
-  /// solver's own rates (see docs/validation/cavitation.md). Exact (round-off) for JFO.
+  /// Oil balance over the run, relative to the larger of the oil that flowed in and out through
+  /// the ends: inflow − outflow − change of the stored oil, the stored oil's full-film part
+  /// integrated with the solver's own rates (see docs/validation/cavitation.md). Exact
+  /// (round-off) for JFO.
   double mass_balance = 0.0;
   double inflow = 0.0;  ///< oil in through the ends over the run [m^3]
   ReynoldsStats stats;  ///< merged over the steps
 };
 SqueezeRun SolveOscillatorySqueeze(const OscillatorySqueeze& problem,
                                    const SqueezeRunOptions& options);
+
+/// A compressible full film building up its squeeze pressure: the same strip, ends at p = 0, the
+/// gap h0 uniform and the film given a closing rate dh/dt = -w from rest (p = 0) at t = 0 (the
+/// gap itself held at h0: a closing much slower than the pressure's build-up). The film stores
+/// h0 p / beta more oil than the gap holds, so (h0 / beta) dp/dt = (h0^3 / 2) p'' + w, whose
+/// solution is the steady squeeze parabola less its decaying sine modes:
+///   p(x, t) = (w / h0^3) [x (1 - x) - sum over odd n of 8 / (n pi)^3 sin(n pi x) exp(-n^2 t /
+///   tau)],
+/// tau = 2 / (pi^2 h0^2 beta).
+struct CompressibleSqueeze {
+  double h0 = 0.5;
+  double w = 0.125;   ///< closing rate: the steady pressure at x = 1/2 is w / (4 h0^3) = 1/4
+  double beta = 8.0;  ///< bulk modulus (dimensionless): tau = 0.101
+  double TimeConstant() const;                ///< tau of the slowest mode
+  double Pressure(double x, double t) const;  ///< the series to a term below 1e-16 of the first
+};
+/// SqueezeRun of the compressible squeeze (p_mid at x = 1/2; options.bulk_modulus is the
+/// problem's).
+SqueezeRun SolveCompressibleSqueeze(const CompressibleSqueeze& problem, SqueezeRunOptions options);
 
 /// The rows of `filmdyn validate --suite cavitation`.
 std::vector<verification::ValidationRow> CavitationValidationRows();

@@ -21,7 +21,9 @@ class FilmHistory {
  public:
   struct Entry {
     double time = 0.0;
-    std::vector<Eigen::VectorXd> void_content;  ///< per Reynolds solver of the joint [m]
+    /// per Reynolds solver of the joint [m] (ReynoldsSolution::void_content: the void, less
+    /// a compressible full film's compressed oil)
+    std::vector<Eigen::VectorXd> void_content;
   };
   bool empty() const { return entries_.empty(); }
   void Clear() { entries_.clear(); }
@@ -41,8 +43,9 @@ class FilmHistory {
   /// The next step that keeps the void content's local error (backward Euler: about
   /// Δt²/2 · |d²V/dt²|, from the last three entries) at `tolerance` [m] in the root mean square
   /// over the nodes; nodes whose void opened or closed within those entries are left out (their
-  /// rate jumps by the complementarity, not by a lack of smoothness). 0: no limit (fewer than
-  /// three entries, or no error).
+  /// rate jumps by the complementarity, not by a lack of smoothness). The content of a
+  /// compressible full film (its compressed oil, negative) is stepped alike and counted alike.
+  /// 0: no limit (fewer than three entries, or no error).
   double NextStepLimit(double tolerance) const {
     if (entries_.size() < 3 || !(tolerance > 0.0)) return 0.0;
     const Entry& a = entries_[entries_.size() - 3];
@@ -60,7 +63,11 @@ class FilmHistory {
       if (va.size() != vc.size() || vb.size() != vc.size()) continue;
       for (Eigen::Index i = 0; i < vc.size(); ++i) {
         ++count;
-        if (!(va[i] > 0.0 && vb[i] > 0.0 && vc[i] > 0.0)) continue;
+        // A void (content > 0), or a compressible full film's compressed oil (< 0), in all
+        // three entries.
+        if (!((va[i] > 0.0 && vb[i] > 0.0 && vc[i] > 0.0) ||
+              (va[i] < 0.0 && vb[i] < 0.0 && vc[i] < 0.0)))
+          continue;
         const double second = 2.0 * ((vc[i] - vb[i]) / h2 - (vb[i] - va[i]) / h1) / (h1 + h2);
         const double error = 0.5 * h2 * h2 * second;
         sum += (error / tolerance) * (error / tolerance);

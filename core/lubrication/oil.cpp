@@ -270,6 +270,12 @@ OilSpec::AtTemperature OilSpec::At(double temperature, const std::string& prefix
     out.shear.exponent = cross_exponent;
     out.shear.critical_rate = rate_hths * mu1_hths / out.viscosity;
   }
+  if (!(bulk_modulus == 0.0 ||
+        (bulk_modulus >= kMinBulkModulus && bulk_modulus <= kMaxBulkModulus))) {
+    throw InputError(prefix + "bulk_modulus", FormatValue(bulk_modulus) + " Pa",
+                     "0 (incompressible) or 1e7–1e11 Pa (mineral oils: about 1.7 GPa)");
+  }
+  out.bulk_modulus = bulk_modulus;
   switch (pressure_law) {
     case PressureLaw::kNone:
       break;

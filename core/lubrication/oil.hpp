@@ -142,6 +142,11 @@ struct OilSpec {
   double cross_rate = 1.0e6;    ///< kCross: gamma_c at the HTHS temperature [1/s]
   /// kHths: viscosity at 150 °C and 10^6 1/s [Pa s]; 0 with a grade: the grade's
   double hths = 0.0;
+  /// Bulk modulus beta [Pa] of the oil in a mass-conserving film's full zone, density
+  /// rho0 (1 + p / beta); 0 = incompressible. 0 or within [kMinBulkModulus, kMaxBulkModulus].
+  double bulk_modulus = 0.0;
+  static constexpr double kMinBulkModulus = 1e7;
+  static constexpr double kMaxBulkModulus = 1e11;
 
   /// The oil at one film temperature.
   struct AtTemperature {
@@ -152,6 +157,7 @@ struct OilSpec {
     CrossLaw shear;
     /// kGrade: the film temperature is outside the catalogue fit's 40–150 °C.
     bool extrapolated = false;
+    double bulk_modulus = 0.0;  ///< [Pa]; 0 = incompressible
   };
   /// Resolves the oil at `temperature` [K] (ignored by a constant viscosity). Throws
   /// filmdyn::InputError naming `prefix` + the field (e.g. "lubricant.vogel_a") or

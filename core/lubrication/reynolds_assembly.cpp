@@ -263,6 +263,8 @@ void ReynoldsFem::Assemble(const ReynoldsParams& params) {
   }
   u_sum_ = params.u_sum;
   time_step_ = jfo ? params.time_step : 0.0;
+  compressibility_ =
+      time_step_ > 0.0 && params.bulk_modulus > 0.0 ? 1.0 / params.bulk_modulus : 0.0;
   // Flow scale for relative tolerances: the Couette and squeeze flows through one cell.
   double scale = f_.cwiseAbs().maxCoeff();
   for (int k = 0; k < n; ++k) {

@@ -62,6 +62,8 @@ const ReynoldsSolution& ReynoldsFem::Solve(const ReynoldsParams& params) {
   const int n = NodeCount();
   if (!(params.time_step >= 0.0) || !std::isfinite(params.time_step))
     throw std::logic_error("ReynoldsFem::Solve: time_step must be finite and >= 0");
+  if (!(params.bulk_modulus >= 0.0) || !std::isfinite(params.bulk_modulus))
+    throw std::logic_error("ReynoldsFem::Solve: bulk_modulus must be finite and >= 0");
   sol_.stats = ReynoldsStats{};
   auto t0 = Clock::now();
   for (int k = 0; k < n; ++k) fixed_[k] = mesh_.fixed[k] || extra_fixed_[k];
@@ -73,6 +75,8 @@ const ReynoldsSolution& ReynoldsFem::Solve(const ReynoldsParams& params) {
   // previous solution, the warm start, in q too), then recover p node by node.
   const PressureViscosity* pv = params.pressure_viscosity;
   if (pv != nullptr && !pv->active()) pv = nullptr;
+  if (pv != nullptr && compressibility_ > 0.0)
+    throw std::logic_error("ReynoldsFem::Solve: a compressible film with a pressure-viscosity law");
   if (pv != nullptr) {
     boundary_saved_ = p_fixed_;
     for (int k = 0; k < n; ++k) p_fixed_[k] = pv->Reduced(p_fixed_[k]);

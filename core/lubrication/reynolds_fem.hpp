@@ -89,6 +89,11 @@ struct ReynoldsParams {
   /// JFO only: 0 = quasi-static; > 0 = transient, the time [s] since the state whose void
   /// content is in ReynoldsFem::void_history().
   double time_step = 0.0;
+  /// JFO transient only: the oil's bulk modulus beta [Pa] (0 = incompressible). The full film
+  /// then stores phi_c h p / beta more oil than its gap holds at the cavitation pressure
+  /// (density rho0 (1 + p / beta)); the fluxes keep the density rho0. Not with a
+  /// pressure-dependent viscosity (the solve is in the reduced pressure there).
+  double bulk_modulus = 0.0;
   /// Pressure-dependent viscosity (nullptr or law kNone: mu = viscosity everywhere): the film is
   /// solved for the reduced pressure and the pressure recovered (oil.hpp); `viscosity` is mu at
   /// zero gauge pressure.
@@ -130,8 +135,10 @@ struct ReynoldsSolution {
   Eigen::VectorXd pressure;             ///< p [Pa] (gauge, relative to the cavitation pressure)
   Eigen::VectorXd contact_pressure;     ///< asperity pressure p_c [Pa]
   Eigen::VectorXd fluid_fraction;       ///< JFO theta = 1 - r (1 in the full film) [-]
-  /// JFO: void content phi_c (1 - theta) h [m] per node (0 on fixed nodes): the next transient
-  /// step's void_history().
+  /// JFO: the oil the node's film lacks against a full film at the cavitation pressure, per
+  /// unit area [m]: the void content phi_c (1 - theta) h, less the compressed oil phi_c h p /
+  /// beta of a compressible full film (ReynoldsParams::bulk_modulus; negative there); 0 on fixed
+  /// nodes. The next transient step's void_history().
   Eigen::VectorXd void_content;
   Eigen::VectorXd residual;             ///< w = K p - f (+B r): nodal net outflow [m^3/s]; at
                                         ///< fixed nodes minus the boundary outflow
@@ -238,6 +245,7 @@ class ReynoldsFem {
   Eigen::VectorXd h_, dhdt_, p_fixed_, f_, rhs_, x_, work_, theta_fixed_, void_old_;
   Eigen::VectorXd reduced_, boundary_saved_;  // pressure-dependent viscosity: q, and p_fixed_
   double time_step_ = 0.0;
+  double compressibility_ = 0.0;  // JFO transient: 1 / bulk modulus [1/Pa] (0: incompressible)
   std::vector<std::uint8_t> extra_fixed_, fixed_, active_, prev_active_, next_active_;
   bool have_prev_ = false;
   bool jfo_warm_ = false;  // prev_active_ holds the cavitated set of a converged JFO solve

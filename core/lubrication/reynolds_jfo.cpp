@@ -60,6 +60,13 @@ bool ReynoldsFem::SolveJfo() {
     boff[k] = a;
     r_fixed[k] = fixed_[k] ? 1.0 - theta_fixed_[k] : 0.0;
   }
+  // A compressible full film (transient) stores phi_c h p / beta more oil at node k: the
+  // backward difference of that content adds A_k phi_c h_k / (beta dt) to its pressure column's
+  // diagonal (its old part is in the node's old content, V_old, below).
+  Eigen::VectorXd compress = Eigen::VectorXd::Zero(n);
+  if (compressibility_ > 0.0)
+    for (int k = 0; k < n; ++k)
+      if (!fixed_[k]) compress[k] = lumped_area_[k] * phi_c_[k] * h_[k] * compressibility_ * inv_dt;
   // Known void terms: the old void content of every free node (transient), and the void a
   // starved fixed node sends downstream with its Couette flow.
   for (int k = 0; k < n; ++k) {
@@ -98,7 +105,7 @@ bool ReynoldsFem::SolveJfo() {
           v = void_scale[c] *
               ((q == diag_pos_full_[c]) ? bdiag[c] : (q == bpos[c] ? boff[c] : 0.0));
         else
-          v = kf[q];
+          v = q == diag_pos_full_[c] ? kf[q] + compress[c] : kf[q];
         mv[q] = v;
       }
     }
@@ -154,6 +161,7 @@ bool ReynoldsFem::SolveJfo() {
     // The old void of every node is filled or carried on: on a node fixed now (a supply hole
     // that has moved onto it) the supply fills it, which its residual (the supply flow) counts.
     if (transient) work_[k] += lumped_area_[k] * void_old_[k] * inv_dt;
+    work_[k] += compress[k] * p[k];
     if (!fixed_[k]) excess = std::max({excess, r[k] - 1.0, -r[k]});
     if (r[k] == 0.0) continue;
     const double a = boff[k];
@@ -176,7 +184,8 @@ bool ReynoldsFem::SolveJfo() {
   st.max_mass_residual = mass / scale;
   st.fraction_excess = excess;
   sol_.fluid_fraction = Eigen::VectorXd::Ones(n) - r;
-  for (int k = 0; k < n; ++k) sol_.void_content[k] = fixed_[k] ? 0.0 : phi_c_[k] * r[k] * h_[k];
+  for (int k = 0; k < n; ++k)
+    sol_.void_content[k] = fixed_[k] ? 0.0 : phi_c_[k] * h_[k] * (r[k] - compressibility_ * p[k]);
   prev_active_ = cav;
   jfo_warm_ = converged;
   return converged;

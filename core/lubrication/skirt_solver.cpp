@@ -246,6 +246,7 @@ void SkirtSolver::SolvePanel(Panel& pa, const SkirtState& s, double time_step) {
   params.u_diff = s.piston_velocity;  // U1 - U2, surface 1 = skirt (at rest)
   params.film = config_.film.get();
   params.time_step = time_step;
+  params.bulk_modulus = config_.bulk_modulus;
   // The film's inputs for the deformation's predictor (ElasticFilm): the piston's secondary
   // motion and speed, and where a starved skirt's leading edge meets the liner's oil.
   Eigen::VectorXd inputs(config_.supply == SkirtSupply::kStarved ? 6 : 5);

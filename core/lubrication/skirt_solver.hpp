@@ -45,6 +45,9 @@ struct SkirtConfig {
   double viscosity = 0.0;                ///< at zero gauge pressure [Pa s]
   PressureViscosity pressure_viscosity;  ///< how it rises with the film pressure (oil.hpp)
   CrossLaw shear_thinning;               ///< how it falls with the film's shear rate (oil.hpp)
+  /// Bulk modulus [Pa] of a compressible oil in a transient mass-conserving film
+  /// (ReynoldsParams::bulk_modulus); 0 = incompressible.
+  double bulk_modulus = 0.0;
   SkirtMeshSpec mesh;
   ReynoldsOptions solver{.cold_start = ReynoldsOptions::ColdStart::kUnconstrained};
   /// Roughness factors; nullptr = smooth. Surface 1 = skirt, surface 2 = liner.

@@ -405,6 +405,48 @@ class TestCaseFile : public QObject {
     QVERIFY(!io::ReadResource("pressure/none.csv").has_value());
   }
 
+  // The oil's bulk modulus reaches a mass-conserving film only (Reynolds films are
+  // incompressible), is refused beside a pressure-viscosity law and outside its range, naming the
+  // field, and is marked unused where no film uses it.
+  void bulkModulusReachesMassConservingFilmsOnly() {
+    json j = DefaultJson();
+    io::ApplyOverride(&j, "lubricant.bulk_modulus=1.7e9");
+    engine::EngineCase c = io::CaseFromJson(j);
+    QCOMPARE(engine::BearingConfigFromCase(c).bulk_modulus, 0.0);  // Reynolds
+    QCOMPARE(engine::SkirtConfigFromCase(c).bulk_modulus, 0.0);
+    QVERIFY(!engine::UnusedReason(c, "lubricant.bulk_modulus").empty());
+    io::ApplyOverride(&j, "big_end.cavitation=jfo");
+    c = io::CaseFromJson(j);
+    QCOMPARE(engine::BearingConfigFromCase(c).bulk_modulus, 1.7e9);
+    QCOMPARE(engine::SkirtConfigFromCase(c).bulk_modulus, 0.0);
+    QVERIFY(engine::UnusedReason(c, "lubricant.bulk_modulus").empty());
+    // The skirt's own incompressible oil in a JFO skirt; its field is used there.
+    io::ApplyOverride(&j, "skirt.cavitation=jfo");
+    io::ApplyOverride(&j, "skirt.oil.source=own");
+    c = io::CaseFromJson(j);
+    QCOMPARE(engine::SkirtConfigFromCase(c).bulk_modulus, 0.0);
+    QVERIFY(engine::UnusedReason(c, "skirt.oil.bulk_modulus").empty());
+    QCOMPARE(io::CaseToJson(io::CaseFromJson(io::CaseToJson(c))), io::CaseToJson(c));
+    auto refused = [](const engine::EngineCase& bad, const std::string& field,
+                      const std::string& words) {
+      try {
+        engine::BearingConfigFromCase(bad);
+      } catch (const filmdyn::InputError& e) {
+        const std::string what = e.what();
+        return what.find(field) != std::string::npos && what.find(words) != std::string::npos;
+      }
+      return false;
+    };
+    engine::EngineCase bad = c;
+    bad.lubricant.pressure_law = lubrication::PressureLaw::kBarus;
+    QVERIFY(refused(bad, "lubricant.bulk_modulus", "pressure-viscosity law"));
+    bad = c;
+    bad.lubricant.bulk_modulus = 5e6;
+    QVERIFY(refused(bad, "lubricant.bulk_modulus", "1e7–1e11 Pa"));
+    bad.lubricant.bulk_modulus = std::nan("");
+    QVERIFY(refused(bad, "lubricant.bulk_modulus", "1e7–1e11 Pa"));
+  }
+
   // Each joint's oil at its own film temperature: the case's lubricant (constant, or Vogel with
   // a pressure law) or the joint's own, set with --set paths and read back from the file.
   void jointOilsResolveAtTheirTemperatures() {

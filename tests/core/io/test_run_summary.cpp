@@ -132,6 +132,7 @@ void CompareSummaries(const io::RunSummary& a, const io::RunSummary& b) {
     QCOMPARE((*x)->cross_ratio, (*y)->cross_ratio);
     QCOMPARE((*x)->cross_exponent, (*y)->cross_exponent);
     QCOMPARE((*x)->cross_critical_rate, (*y)->cross_critical_rate);
+    QCOMPARE((*x)->bulk_modulus, (*y)->bulk_modulus);
   }
   QCOMPARE(a.clearance_skirt.has_value(), b.clearance_skirt.has_value());
   if (a.clearance_skirt && b.clearance_skirt) {

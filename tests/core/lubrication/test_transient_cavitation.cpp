@@ -85,6 +85,90 @@ class TestTransientCavitation : public QObject {
     QVERIFY(std::abs(a.mass_balance) < 1e-10 && std::abs(b.mass_balance) < 1e-10);
   }
 
+  // A compressible oil (bulk modulus beta): the squeeze pressure builds up over the time
+  // constant tau = 2 / (pi^2 h0^2 beta) of its series solution (CompressibleSqueeze), the
+  // backward difference of the stored oil converging at first order in the time step; the
+  // compressed oil is booked, so the balance stays exact; and as beta grows the cavitating
+  // squeeze tends to the incompressible one.
+  void compressibleFilmStoresOilAsItsPressureRises() {
+    const CompressibleSqueeze problem;
+    const double tau = problem.TimeConstant();
+    QVERIFY(std::abs(tau - 0.1013211836) < 1e-9);
+    // The series: zero at rest, the parabola once settled, 1 - e^-1 of the way at tau in its
+    // first mode.
+    QVERIFY(std::abs(problem.Pressure(0.5, 0.0)) < 1e-12);
+    QVERIFY(std::abs(problem.Pressure(0.5, 50.0 * tau) - 0.25) < 1e-12);
+    QVERIFY(std::abs(problem.Pressure(0.3, 50.0 * tau) - 0.21) < 1e-12);
+    double errors[3];
+    for (int i = 0; i < 3; ++i) {
+      SqueezeRunOptions options;
+      options.cells = 200;
+      options.time_step = tau / (25.0 * (1 << i));
+      options.end_time = 3.0 * tau;
+      const SqueezeRun run = SolveCompressibleSqueeze(problem, options);
+      double worst = 0.0;
+      for (size_t k = 0; k < run.t.size(); ++k)
+        worst = std::max(worst, std::abs(run.p_mid[k] - problem.Pressure(0.5, run.t[k])));
+      errors[i] = worst / 0.25;
+      QVERIFY2(std::abs(run.mass_balance) < 1e-10, qPrintable(QString::number(run.mass_balance)));
+      QCOMPARE(run.rupture_time, -1.0);        // a squeeze: the film never ruptures
+      QVERIFY(run.p_mid.back() > 0.9 * 0.25);  // 1 - 1.03 e^-3 of it at 3 tau
+    }
+    qInfo(
+        "compressible squeeze, max error / steady pressure at dt = tau/25, /50, /100: %.3g %.3g "
+        "%.3g",
+        errors[0], errors[1], errors[2]);
+    for (int i = 0; i < 2; ++i) {
+      const double ratio = errors[i] / errors[i + 1];
+      QVERIFY2(ratio > 1.7 && ratio < 2.3, qPrintable(QString("ratio %1").arg(ratio)));
+    }
+    QVERIFY(errors[2] < 0.005);
+    // An incompressible film has its steady pressure at once.
+    SqueezeRunOptions one_step;
+    one_step.cells = 200;
+    one_step.time_step = tau / 100.0;
+    one_step.end_time = tau / 100.0;
+    CompressibleSqueeze rigid = problem;
+    rigid.beta = 1e12;
+    QVERIFY(std::abs(SolveCompressibleSqueeze(rigid, one_step).p_mid[0] - 0.25) < 1e-4);
+
+    // The cavitating squeeze: stiff oils tend to the incompressible film (the largest difference
+    // of p(3/4) over the run, relative to its largest value, falls with 1 / beta: 0.60, 0.57,
+    // 0.084, 0.0084 at beta = 10 ... 1e4), and the cavity's history is the same. Soft oils
+    // cushion the collapse and let the cavity close earlier (0.638 at beta = 10, 0.732 rigid).
+    const OscillatorySqueeze cavitating;
+    SqueezeRunOptions options;
+    options.cells = 200;
+    options.time_step = 1e-3;
+    const SqueezeRun incompressible = SolveOscillatorySqueeze(cavitating, options);
+    double p_max = 0.0;
+    for (double p : incompressible.p_mid) p_max = std::max(p_max, std::abs(p));
+    double previous = INFINITY;
+    for (double beta : {10.0, 100.0, 1000.0, 10000.0}) {
+      options.bulk_modulus = beta;
+      const SqueezeRun run = SolveOscillatorySqueeze(cavitating, options);
+      // Away from the collapse of the cavity, where the incompressible pressure jumps.
+      double diff = 0.0;
+      for (size_t k = 0; k < run.t.size(); ++k)
+        if (std::abs(run.t[k] - incompressible.close_time) > 0.02)
+          diff = std::max(diff, std::abs(run.p_mid[k] - incompressible.p_mid[k]));
+      qInfo("beta %g: p(3/4) differs by %.3g of its largest value; closes at %.4f (%.4f)", beta,
+            diff / p_max, run.close_time, incompressible.close_time);
+      QVERIFY(diff < previous);
+      // Stiff enough that the film's time constant is a fraction of the cycle: first order in
+      // 1 / beta, and the cavity closes when the incompressible one does.
+      if (beta >= 1e4) {
+        QVERIFY2(previous / diff > 5.0 && previous / diff < 20.0,
+                 qPrintable(QString("x%1 per decade of beta").arg(previous / diff)));
+      }
+      if (beta >= 1e3) QVERIFY(std::abs(run.close_time - incompressible.close_time) <= 2e-3);
+      previous = diff;
+      QVERIFY(std::abs(run.mass_balance) < 1e-10);
+      QVERIFY(run.fraction_excess < 1e-9);
+    }
+    QVERIFY(previous < 0.02 * p_max);
+  }
+
   void reynoldsConditionLosesTheHistory() {
     // Same problem with the Reynolds (Swift-Stieber) condition: identical while the film is
     // whole, but the cavity vanishes as soon as the gap closes again (t = 1/2) and oil is
