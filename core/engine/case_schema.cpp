@@ -8,6 +8,7 @@
 #include <type_traits>
 
 #include "core/base/input_error.hpp"
+#include "core/engine/film_joints.hpp"
 #include "core/engine/pressure_curve.hpp"
 #include "core/engine/run_memory.hpp"
 #include "core/lubrication/bearing_solver.hpp"
@@ -1502,6 +1503,10 @@ std::string UnusedReason(const EngineCase& c, const std::string& path) {
 }
 
 void CheckCaseConsistency(const EngineCase& c) {
+  // The oils' bulk moduli: in range, and not beside a pressure law in a mass-conserving film.
+  c.lubricant.CheckBulkModulus("lubricant.");
+  JointBulkModulus(c, c.skirt.oil, "skirt", c.skirt.cavitation);
+  JointBulkModulus(c, c.big_end.oil, "big_end", c.big_end.cavitation);
   const auto& g = c.geometry;
   if (g.rod_length <= g.crank_radius + std::abs(g.pin_offset)) {
     throw InputError("geometry.rod_length", FormatValue(g.rod_length),

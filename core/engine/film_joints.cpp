@@ -28,17 +28,19 @@ lubrication::OilSpec::AtTemperature JointOilAt(const EngineCase& c, const JointO
                                  joint + ".oil.temperature");
 }
 
-double JointBulkModulus(const lubrication::OilSpec::AtTemperature& oil, const JointOil& joint_oil,
-                        const std::string& joint, lubrication::CavitationModel cavitation) {
-  if (cavitation != lubrication::CavitationModel::kJfo || oil.bulk_modulus == 0.0) return 0.0;
-  if (oil.pressure.active()) {
-    throw InputError(JointOilPrefix(joint_oil, joint) + "bulk_modulus",
-                     FormatValue(oil.bulk_modulus) + " Pa",
+double JointBulkModulus(const EngineCase& c, const JointOil& oil, const std::string& joint,
+                        lubrication::CavitationModel cavitation) {
+  const lubrication::OilSpec& spec = JointOilSpec(c, oil);
+  const std::string prefix = JointOilPrefix(oil, joint);
+  spec.CheckBulkModulus(prefix);
+  if (cavitation != lubrication::CavitationModel::kJfo || spec.bulk_modulus == 0.0) return 0.0;
+  if (spec.pressure_law != lubrication::PressureLaw::kNone) {
+    throw InputError(prefix + "bulk_modulus", FormatValue(spec.bulk_modulus) + " Pa",
                      "0 (incompressible) while the oil has a pressure-viscosity law: a "
                      "compressible " +
                          joint + " film needs pressure_viscosity \"none\"");
   }
-  return oil.bulk_modulus;
+  return spec.bulk_modulus;
 }
 
 namespace {
@@ -90,7 +92,7 @@ lubrication::SkirtConfig SkirtConfigFromCase(const EngineCase& c,
   config.viscosity = oil.viscosity;
   config.pressure_viscosity = oil.pressure;
   config.shear_thinning = oil.shear;
-  config.bulk_modulus = JointBulkModulus(oil, sk.oil, "skirt", sk.cavitation);
+  config.bulk_modulus = JointBulkModulus(c, sk.oil, "skirt", sk.cavitation);
   config.mesh.n_thrust = sk.mesh_thrust;
   config.mesh.n_relief = sk.mesh_relief;
   config.mesh.n_anti = sk.mesh_anti;
@@ -173,7 +175,7 @@ lubrication::BearingConfig BearingConfigFromCase(const EngineCase& c,
   config.viscosity = oil.viscosity;
   config.pressure_viscosity = oil.pressure;
   config.shear_thinning = oil.shear;
-  config.bulk_modulus = JointBulkModulus(oil, be.oil, "big_end", be.cavitation);
+  config.bulk_modulus = JointBulkModulus(c, be.oil, "big_end", be.cavitation);
   config.mesh.n_theta = be.mesh_theta;
   // The half has the same nodes and half the unknowns; the outputs show the whole width.
   config.mesh.symmetric_half = BigEndSolvesSymmetricHalf(be);

@@ -21,11 +21,12 @@ std::string JointOilPrefix(const JointOil& oil, const std::string& joint);
 /// field ("lubricant.vogel_a", "skirt.oil.temperature").
 lubrication::OilSpec::AtTemperature JointOilAt(const EngineCase& c, const JointOil& oil,
                                                const std::string& joint);
-/// The bulk modulus a joint's film runs with [Pa]: its oil's (`oil`, JointOilAt) with
+/// The bulk modulus a joint's film runs with [Pa]: its oil's (JointOilSpec) with
 /// mass-conserving cavitation, 0 (incompressible) with the Reynolds condition. Throws InputError
-/// naming the oil's bulk_modulus field when it is set together with a pressure-viscosity law.
-double JointBulkModulus(const lubrication::OilSpec::AtTemperature& oil, const JointOil& joint_oil,
-                        const std::string& joint, lubrication::CavitationModel cavitation);
+/// naming the oil's bulk_modulus field when it is out of range, or set together with a
+/// pressure-viscosity law in a mass-conserving film.
+double JointBulkModulus(const EngineCase& c, const JointOil& oil, const std::string& joint,
+                        lubrication::CavitationModel cavitation);
 
 /// The skirt solver configuration of a case (mesh: the case's counts). Throws InputError naming
 /// the field when the case has no skirt clearance or its surfaces are invalid. An imported

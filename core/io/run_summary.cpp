@@ -93,7 +93,7 @@ RunSummary SummarizeRun(const std::string& case_name, const engine::RunConfig& c
         at.shear.ratio,
         at.shear.exponent,
         at.shear.critical_rate,
-        engine::JointBulkModulus(at, oil, joint,
+        engine::JointBulkModulus(config.engine_case, oil, joint,
                                  joint == "skirt" ? config.engine_case.skirt.cavitation
                                                   : config.engine_case.big_end.cavitation)};
   };

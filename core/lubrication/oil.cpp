@@ -221,6 +221,14 @@ const char* ToString(ViscosityModel model) {
   return "?";
 }
 
+void OilSpec::CheckBulkModulus(const std::string& prefix) const {
+  if (!(bulk_modulus == 0.0 ||
+        (bulk_modulus >= kMinBulkModulus && bulk_modulus <= kMaxBulkModulus))) {
+    throw InputError(prefix + "bulk_modulus", FormatValue(bulk_modulus) + " Pa",
+                     "0 (incompressible) or 1e7–1e11 Pa (mineral oils: about 1.7 GPa)");
+  }
+}
+
 OilSpec::AtTemperature OilSpec::At(double temperature, const std::string& prefix,
                                    const std::string& temperature_field) const {
   AtTemperature out;
@@ -270,11 +278,7 @@ OilSpec::AtTemperature OilSpec::At(double temperature, const std::string& prefix
     out.shear.exponent = cross_exponent;
     out.shear.critical_rate = rate_hths * mu1_hths / out.viscosity;
   }
-  if (!(bulk_modulus == 0.0 ||
-        (bulk_modulus >= kMinBulkModulus && bulk_modulus <= kMaxBulkModulus))) {
-    throw InputError(prefix + "bulk_modulus", FormatValue(bulk_modulus) + " Pa",
-                     "0 (incompressible) or 1e7–1e11 Pa (mineral oils: about 1.7 GPa)");
-  }
+  CheckBulkModulus(prefix);
   out.bulk_modulus = bulk_modulus;
   switch (pressure_law) {
     case PressureLaw::kNone:

@@ -147,6 +147,9 @@ struct OilSpec {
   double bulk_modulus = 0.0;
   static constexpr double kMinBulkModulus = 1e7;
   static constexpr double kMaxBulkModulus = 1e11;
+  /// Throws filmdyn::InputError naming `prefix`bulk_modulus unless it is 0 or within
+  /// [kMinBulkModulus, kMaxBulkModulus].
+  void CheckBulkModulus(const std::string& prefix) const;
 
   /// The oil at one film temperature.
   struct AtTemperature {

@@ -445,6 +445,17 @@ class TestCaseFile : public QObject {
     QVERIFY(refused(bad, "lubricant.bulk_modulus", "1e7–1e11 Pa"));
     bad.lubricant.bulk_modulus = std::nan("");
     QVERIFY(refused(bad, "lubricant.bulk_modulus", "1e7–1e11 Pa"));
+    // A case file (and the GUI's validation, which reads the case as a file) is refused alike.
+    for (const char* set : {"lubricant.bulk_modulus=5e6", "lubricant.pressure_viscosity=barus"}) {
+      json b = j;
+      io::ApplyOverride(&b, set);
+      try {
+        io::CaseFromJson(b);
+        QFAIL(set);
+      } catch (const filmdyn::InputError& e) {
+        QCOMPARE(e.field(), std::string("lubricant.bulk_modulus"));
+      }
+    }
   }
 
   // Each joint's oil at its own film temperature: the case's lubricant (constant, or Vogel with

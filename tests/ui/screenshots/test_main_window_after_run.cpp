@@ -166,6 +166,14 @@ class TestMainWindowAfterRun : public QObject {
       QTest::keyClick(combo, Qt::Key_Down);  // "reynolds" → "jfo"
       QCOMPARE(window.document()->engineCase().big_end.cavitation,
                filmdyn::lubrication::CavitationModel::kJfo);
+      // The lubricant's bulk modulus is in use once a film conserves mass (greyed before).
+      QVERIFY(
+          filmdyn::engine::UnusedReason(window.document()->engineCase(), "lubricant.bulk_modulus")
+              .empty());
+      tabs->setCurrentIndex(5);
+      QTest::qWait(100);
+      Save(&window, "case_lubricant.png");
+      tabs->setCurrentIndex(4);
       // For the picture, the supply tables below the rows filled: two shell holes and a
       // supply-pressure curve over the cycle (undone: the run keeps the paper's film start).
       {
