@@ -533,6 +533,7 @@ void SetSymbols(std::vector<CaseField>& fields) {
       {"solver.steady_state_tolerance", "steady-state tolerance"},
       {"solver.max_cycles", "max cycles"},
       {"solver.run_in_angle", "run-in"},
+      {"solver.jfo_run_in_angle", "run-in (JFO)"},
       {"solver.error_estimate", "error estimate"},
   };
   for (CaseField& field : fields) {
@@ -777,6 +778,9 @@ void SetDescriptions(std::vector<CaseField>& fields) {
       {"solver.run_in_angle",
        "Crank angle computed before the first monitored cycle, so that the start from rest has "
        "died out."},
+      {"solver.jfo_run_in_angle",
+       "The run-in when a film conserves mass (JFO): its film starts full of oil and drains over "
+       "about two cycles, which the run-in computes more cheaply than monitored cycles."},
       {"solver.error_estimate",
        "1: a second run on meshes with half the elements estimates how accurate the main "
        "figures are; 0: off."},
@@ -1201,6 +1205,11 @@ std::vector<CaseField> MakeSchema() {
       "solver.run_in_angle", sol, &SolverCase::run_in_angle,
       {G::kSolver, "Run-in before the first cycle", "rad", "°CA", kDeg, Between(0.0, 8 * kPi),
        "integrated at 10× looser tolerances before the first monitored cycle"}));
+  f.push_back(Scalar(
+      "solver.jfo_run_in_angle", sol, &SolverCase::jfo_run_in_angle,
+      {G::kSolver, "Run-in with a mass-conserving film", "rad", "°CA", kDeg, Between(0.0, 8 * kPi),
+       "instead of the run-in above when a lubricated film is JFO: its oil "
+       "content drains from the flooded start over about two cycles"}));
   f.push_back(
       Scalar("solver.error_estimate", sol, &SolverCase::error_estimate,
              {G::kSolver, "Discretisation-error estimate (1 = on)", "-", "–", 1.0, Between(0, 1),
@@ -1471,6 +1480,11 @@ std::string UnusedReason(const EngineCase& c, const std::string& path) {
     if (path == "skirt.oil_film" && !sk.oil_film_positions.empty())
       return "the liner's oil film is the table over the liner position";
   }
+  // The run-in: one of the two, by whether a lubricated film conserves mass.
+  if (path == "solver.run_in_angle" && HasMassConservingFilm(c))
+    return "a mass-conserving (JFO) film runs in for solver.jfo_run_in_angle";
+  if (path == "solver.jfo_run_in_angle" && !HasMassConservingFilm(c))
+    return "no lubricated film is mass-conserving (JFO)";
   // The bulk modulus: only a mass-conserving film uses it.
   {
     using lubrication::CavitationModel;

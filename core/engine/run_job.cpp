@@ -242,11 +242,12 @@ RunResult RunSingle(const RunConfig& config, const RunMonitor& monitor,
   const EngineCase& c = config.engine_case;
   // Run-in: the integration starts run_in_angle before the first monitored cycle, so that the
   // start-up transient of the films (from the centred, resting journal and piston) has died
-  // out by then and two cycles can already agree (docs/performance.md). Ideal joints have no
+  // out by then and two cycles can already agree (docs/performance.md); jfo_run_in_angle when a
+  // film conserves mass (its flooded start drains over about two cycles). Ideal joints have no
   // start-up transient (the kinematics are exact from the start): no run-in.
   const bool has_films =
       c.skirt.model == JointModel::kLubricated || c.big_end.model == JointModel::kLubricated;
-  const double run_in = has_films ? c.solver.run_in_angle : 0.0;
+  const double run_in = RunInAngle(c);
   EngineCase start_case = c;
   start_case.operating.start_crank_angle -= run_in;
   // A cancel or the time limit is honoured from the start: between the film joints' set-up

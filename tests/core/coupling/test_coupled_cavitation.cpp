@@ -205,6 +205,40 @@ class TestCoupledCavitation : public QObject {
   // starts at firing TDC, where it slides at no speed, has oil to carry the gas load's side force.
   // (From the quasi-static film there, whose void the missing sliding leaves undetermined, the
   // skirt hit the liner within 1 °CA.)
+  // A mass-conserving film runs in for solver.jfo_run_in_angle (its flooded start drains over
+  // about two cycles), a Reynolds film for solver.run_in_angle; the field the run does not use
+  // says so.
+  void massConservingFilmsRunInForTheirOwnAngle() {
+    engine::EngineCase c = CoarseCase();
+    c.solver.max_cycles = 1;
+    c.solver.run_in_angle = std::numbers::pi;            // 180 °CA
+    c.solver.jfo_run_in_angle = std::numbers::pi / 3.0;  // 60 °CA
+    // The run's first progress report, in the run-in: one output interval after its start
+    // (then the run is stopped: the monitor returns false).
+    auto earliest = [&](lubrication::CavitationModel big_end) {
+      c.big_end.cavitation = big_end;
+      double first = 0.0;
+      const engine::RunResult r =
+          engine::RunJob(Config(c, engine::Model::kOnlyLbrbe), [&](const engine::RunProgress& p) {
+            if (p.run_in) first = p.crank_angle_deg;
+            return false;
+          });
+      if (r.status != engine::RunStatus::kCancelled) qFatal("%s", r.message.c_str());
+      return first;
+    };
+    QCOMPARE(earliest(lubrication::CavitationModel::kJfo), -58.0);  // 2 °CA samples
+    QCOMPARE(earliest(lubrication::CavitationModel::kReynolds), -178.0);
+    c.big_end.model = engine::JointModel::kLubricated;
+    c.big_end.cavitation = lubrication::CavitationModel::kJfo;
+    QVERIFY(engine::HasMassConservingFilm(c));
+    QVERIFY(!engine::UnusedReason(c, "solver.run_in_angle").empty());
+    QVERIFY(engine::UnusedReason(c, "solver.jfo_run_in_angle").empty());
+    c.big_end.cavitation = lubrication::CavitationModel::kReynolds;
+    QVERIFY(!engine::HasMassConservingFilm(c));
+    QVERIFY(engine::UnusedReason(c, "solver.run_in_angle").empty());
+    QVERIFY(!engine::UnusedReason(c, "solver.jfo_run_in_angle").empty());
+  }
+
   void skirtStartsFromAFloodedFilm() {
     engine::EngineCase c = CoarseCase();
     c.big_end.cavitation = lubrication::CavitationModel::kReynolds;
