@@ -1488,8 +1488,10 @@ std::string UnusedReason(const EngineCase& c, const std::string& path) {
   // The bulk modulus: only a mass-conserving film uses it.
   {
     using lubrication::CavitationModel;
-    const bool skirt_jfo = c.skirt.cavitation == CavitationModel::kJfo;
-    const bool big_end_jfo = c.big_end.cavitation == CavitationModel::kJfo;
+    const bool skirt_jfo =
+        c.skirt.model == JointModel::kLubricated && c.skirt.cavitation == CavitationModel::kJfo;
+    const bool big_end_jfo =
+        c.big_end.model == JointModel::kLubricated && c.big_end.cavitation == CavitationModel::kJfo;
     const bool skirt_lubricant = c.skirt.oil.source == OilSource::kLubricant;
     const bool big_end_lubricant = c.big_end.oil.source == OilSource::kLubricant;
     const char* reynolds = "only a mass-conserving (JFO) film uses the bulk modulus";
