@@ -1487,11 +1487,8 @@ std::string UnusedReason(const EngineCase& c, const std::string& path) {
     return "no lubricated film is mass-conserving (JFO)";
   // The bulk modulus: only a mass-conserving film uses it.
   {
-    using lubrication::CavitationModel;
-    const bool skirt_jfo =
-        c.skirt.model == JointModel::kLubricated && c.skirt.cavitation == CavitationModel::kJfo;
-    const bool big_end_jfo =
-        c.big_end.model == JointModel::kLubricated && c.big_end.cavitation == CavitationModel::kJfo;
+    const bool skirt_jfo = IsMassConservingFilm(c.skirt);
+    const bool big_end_jfo = IsMassConservingFilm(c.big_end);
     const bool skirt_lubricant = c.skirt.oil.source == OilSource::kLubricant;
     const bool big_end_lubricant = c.big_end.oil.source == OilSource::kLubricant;
     const char* reynolds = "only a mass-conserving (JFO) film uses the bulk modulus";

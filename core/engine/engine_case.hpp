@@ -285,14 +285,16 @@ inline JointFit BigEndFit(const EngineCase& c) {
   return f;
 }
 
+/// Whether a joint (SkirtCase or BigEndCase) is lubricated by a mass-conserving (JFO) film.
+template <typename Joint>
+bool IsMassConservingFilm(const Joint& joint) {
+  return joint.model == JointModel::kLubricated &&
+         joint.cavitation == lubrication::CavitationModel::kJfo;
+}
 /// Whether a lubricated joint's film is mass-conserving (JFO): the run-in is then
 /// SolverCase::jfo_run_in_angle.
 inline bool HasMassConservingFilm(const EngineCase& c) {
-  using lubrication::CavitationModel;
-  return (c.skirt.model == JointModel::kLubricated &&
-          c.skirt.cavitation == CavitationModel::kJfo) ||
-         (c.big_end.model == JointModel::kLubricated &&
-          c.big_end.cavitation == CavitationModel::kJfo);
+  return IsMassConservingFilm(c.skirt) || IsMassConservingFilm(c.big_end);
 }
 /// The run-in a run integrates before its first monitored cycle [rad of crank]: none without a
 /// film (ideal joints have no start-up transient), jfo_run_in_angle with a mass-conserving one,

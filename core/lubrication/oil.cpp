@@ -278,8 +278,6 @@ OilSpec::AtTemperature OilSpec::At(double temperature, const std::string& prefix
     out.shear.exponent = cross_exponent;
     out.shear.critical_rate = rate_hths * mu1_hths / out.viscosity;
   }
-  CheckBulkModulus(prefix);
-  out.bulk_modulus = bulk_modulus;
   switch (pressure_law) {
     case PressureLaw::kNone:
       break;

@@ -160,7 +160,6 @@ struct OilSpec {
     CrossLaw shear;
     /// kGrade: the film temperature is outside the catalogue fit's 40–150 °C.
     bool extrapolated = false;
-    double bulk_modulus = 0.0;  ///< [Pa]; 0 = incompressible
   };
   /// Resolves the oil at `temperature` [K] (ignored by a constant viscosity). Throws
   /// filmdyn::InputError naming `prefix` + the field (e.g. "lubricant.vogel_a") or

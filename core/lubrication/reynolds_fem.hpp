@@ -246,6 +246,7 @@ class ReynoldsFem {
   Eigen::VectorXd reduced_, boundary_saved_;  // pressure-dependent viscosity: q, and p_fixed_
   double time_step_ = 0.0;
   double compressibility_ = 0.0;  // JFO transient: 1 / bulk modulus [1/Pa] (0: incompressible)
+  Eigen::VectorXd compress_;      // JFO: each free node's compressed-oil storage A phi h/(beta dt)
   std::vector<std::uint8_t> extra_fixed_, fixed_, active_, prev_active_, next_active_;
   bool have_prev_ = false;
   bool jfo_warm_ = false;  // prev_active_ holds the cavitated set of a converged JFO solve

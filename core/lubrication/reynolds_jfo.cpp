@@ -63,7 +63,8 @@ bool ReynoldsFem::SolveJfo() {
   // A compressible full film (transient) stores phi_c h p / beta more oil at node k: the
   // backward difference of that content adds A_k phi_c h_k / (beta dt) to its pressure column's
   // diagonal (its old part is in the node's old content, V_old, below).
-  Eigen::VectorXd compress = Eigen::VectorXd::Zero(n);
+  Eigen::VectorXd& compress = compress_;
+  compress.setZero(n);  // allocated once per solver
   if (compressibility_ > 0.0)
     for (int k = 0; k < n; ++k)
       if (!fixed_[k]) compress[k] = lumped_area_[k] * phi_c_[k] * h_[k] * compressibility_ * inv_dt;

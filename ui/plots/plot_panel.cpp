@@ -609,7 +609,9 @@ void PlotPanel::rescale(ChartEntry& entry) {
   const bool clip_spikes = !entry.spec->clearance_circle;
   const auto each_point = [&](double from, double to, const auto& visit) {
     for (int id : runs) {
-      const auto& curves = entry.run_points.value(id);
+      const auto found = entry.run_points.constFind(id);
+      if (found == entry.run_points.cend()) continue;
+      const std::vector<CurvePoints>& curves = found.value();
       for (size_t k = 0; k < curves.size(); ++k) {
         const CurvePoints& c = curves[k];
         qsizetype begin = 0, end = c.xy.size();
@@ -623,14 +625,15 @@ void PlotPanel::rescale(ChartEntry& entry) {
                                               ? SpikePoints(c.xy, begin, end, false)
                                               : none;
         for (qsizetype i = begin; i < end; ++i)
-          visit(id, k, i, c.xy[i], spike_x[size_t(i - begin)] || spike_y[size_t(i - begin)]);
+          visit(id, k, c.xy[i], c.crank_angle[size_t(i)],
+                spike_x[size_t(i - begin)] || spike_y[size_t(i - begin)]);
       }
     }
   };
   // The ranges to fit the points in [from, to] (spikes cut back: FitRange).
   const auto fit = [&](double from, double to, Extent* x, Extent* y) {
     Extent all_x, all_y, smooth_x, smooth_y;
-    each_point(from, to, [&](int, size_t, qsizetype, QPointF p, bool spike) {
+    each_point(from, to, [&](int, size_t, QPointF p, double, bool spike) {
       all_x.Add(p.x());
       all_y.Add(p.y());
       if (!spike) smooth_x.Add(p.x()), smooth_y.Add(p.y());
@@ -728,9 +731,8 @@ void PlotPanel::rescale(ChartEntry& entry) {
   // The spikes left outside the shown range, marked at its edge by the overlay.
   entry.clipped.clear();
   const QRectF shown(QPointF(ax->min(), ay->min()), QPointF(ax->max(), ay->max()));
-  each_point(ax->min(), ax->max(), [&](int id, size_t k, qsizetype i, QPointF p, bool spike) {
-    if (spike && !shown.contains(p))
-      entry.clipped.push_back({id, k, p, entry.run_points.value(id)[k].crank_angle[size_t(i)]});
+  each_point(ax->min(), ax->max(), [&](int id, size_t k, QPointF p, double angle, bool spike) {
+    if (spike && !shown.contains(p)) entry.clipped.push_back({id, k, p, angle});
   });
   entry.overlay->refresh();
 }
@@ -923,8 +925,7 @@ void PlotPanel::paintOverlay(const ChartEntry& entry, QPainter* painter) const {
   if (!entry.clipped.empty()) {
     std::vector<QRectF> taken;
     for (const ClippedSpike& spike : entry.clipped) {
-      const QColor colour =
-          single ? kPalette[spike.curve % kPaletteSize] : runs_.value(spike.run_id).colour;
+      const QColor colour = seriesPen(spike.run_id, spike.curve).color();
       const QPointF raw = to_pos(spike.value);
       const QPointF at(std::clamp(raw.x(), area.left(), area.right()),
                        std::clamp(raw.y(), area.top(), area.bottom()));
@@ -955,8 +956,10 @@ void PlotPanel::paintOverlay(const ChartEntry& entry, QPainter* painter) const {
         corner = QPointF(out.x() > 0 ? at.x() - size.width() - 12 : at.x() + 12,
                          at.y() - size.height() / 2);
       }
-      corner.setX(std::clamp(corner.x(), area.left() + 1, area.right() - size.width() - 1));
-      corner.setY(std::clamp(corner.y(), area.top() + 1, area.bottom() - size.height() - 1));
+      // Inside the plot where it fits (a label wider than the plot starts at its left edge).
+      corner.setX(std::max(area.left() + 1, std::min(corner.x(), area.right() - size.width() - 1)));
+      corner.setY(
+          std::max(area.top() + 1, std::min(corner.y(), area.bottom() - size.height() - 1)));
       QRectF box(corner, size);
       const double step = (out.y() > 0.5 ? -1.0 : 1.0) * (size.height() + 1);
       for (int tries = 0; tries < 8; ++tries) {
