@@ -1520,6 +1520,7 @@ void CheckCaseConsistency(const EngineCase& c) {
   c.lubricant.CheckBulkModulus("lubricant.");
   JointBulkModulus(c, c.skirt.oil, "skirt", c.skirt.cavitation);
   JointBulkModulus(c, c.big_end.oil, "big_end", c.big_end.cavitation);
+  CheckJointOils(c);
   const auto& g = c.geometry;
   if (g.rod_length <= g.crank_radius + std::abs(g.pin_offset)) {
     throw InputError("geometry.rod_length", FormatValue(g.rod_length),

@@ -2,7 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <numbers>
+#include <tuple>
 
 #include "core/base/input_error.hpp"
 #include "core/coupling/lubricated_big_end_element.hpp"
@@ -26,6 +28,22 @@ lubrication::OilSpec::AtTemperature JointOilAt(const EngineCase& c, const JointO
                                                const std::string& joint) {
   return JointOilSpec(c, oil).At(oil.temperature, JointOilPrefix(oil, joint),
                                  joint + ".oil.temperature");
+}
+
+double StartFilmTemperature(const EngineCase& c, const JointOil& oil) {
+  if (oil.temperature_mode == FilmTemperature::kHeatBalance)
+    return std::max(oil.temperature, c.lubricant.supply_temperature);
+  return oil.temperature;
+}
+
+void CheckJointOils(const EngineCase& c) {
+  for (const auto& [model, oil, joint] : {std::tuple{c.skirt.model, &c.skirt.oil, "skirt"},
+                                          std::tuple{c.big_end.model, &c.big_end.oil, "big_end"}}) {
+    if (model != JointModel::kLubricated) continue;
+    JointOil start = *oil;
+    start.temperature = StartFilmTemperature(c, *oil);
+    JointOilAt(c, start, joint);
+  }
 }
 
 double JointBulkModulus(const EngineCase& c, const JointOil& oil, const std::string& joint,

@@ -21,6 +21,15 @@ std::string JointOilPrefix(const JointOil& oil, const std::string& joint);
 /// field ("lubricant.vogel_a", "skirt.oil.temperature").
 lubrication::OilSpec::AtTemperature JointOilAt(const EngineCase& c, const JointOil& oil,
                                                const std::string& joint);
+/// The film temperature a run starts a joint at [K]: the given one, or with a heat balance the
+/// larger of it and the supply temperature (the balance only heats the film from there).
+double StartFilmTemperature(const EngineCase& c, const JointOil& oil);
+/// Throws InputError naming the field when a lubricated joint's oil cannot be evaluated at the
+/// temperature its run starts at (JointOilAt: a Vogel pole at or above it, a catalogue oil
+/// outside its range, a law's constants out of range): the check the run makes first, made with
+/// the case so that the case editor and the case file find it too. Joints not lubricated are
+/// not checked (their oil is not used).
+void CheckJointOils(const EngineCase& c);
 /// The bulk modulus a joint's film runs with [Pa]: its oil's (JointOilSpec) with
 /// mass-conserving cavitation, 0 (incompressible) with the Reynolds condition. Throws InputError
 /// naming the oil's bulk_modulus field when it is out of range, or set together with a

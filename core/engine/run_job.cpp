@@ -636,7 +636,7 @@ RunResult RunJob(const RunConfig& config, const RunMonitor& monitor,
   constexpr double kTolerance = 0.25;  // [K]
   constexpr int kMaxRuns = 10;
   for (BalancedJoint& j : joints) {
-    j.t = std::max(j.oil->temperature, t_supply);
+    j.t = StartFilmTemperature(c0, *j.oil);
     j.lo = t_supply;
   }
   RunResult::HeatBalance hb;

@@ -503,6 +503,26 @@ class TestCaseFile : public QObject {
     } catch (const InputError& e) {
       QCOMPARE(e.field(), std::string("lubricant.vogel_a"));
     }
+    // The same oils checked with the case (file, --set, case editor), not first by the run: a
+    // lubricated joint's film temperature below the pole is refused naming it ...
+    json cold = j;
+    io::ApplyOverride(&cold, "big_end.oil.temperature=160");
+    QCOMPARE(ErrorField(cold), std::string("big_end.oil.temperature"));
+    QCOMPARE(ErrorField(j), std::string());
+    // ... and with a heat balance, the temperature it starts from: the supply temperature when
+    // that is higher (a pole between the two is refused).
+    json balanced = j;
+    for (const char* set : {"big_end.oil.temperature=300",
+                            "big_end.oil.temperature_mode=heat_balance", "lubricant.vogel_c=320"})
+      io::ApplyOverride(&balanced, set);
+    const engine::EngineCase heated = io::CaseFromJson(balanced);
+    QCOMPARE(engine::StartFilmTemperature(heated, heated.big_end.oil),
+             heated.lubricant.supply_temperature);
+    io::ApplyOverride(&balanced, "big_end.oil.temperature_mode=given");
+    QCOMPARE(ErrorField(balanced), std::string("big_end.oil.temperature"));
+    // A joint that is not lubricated does not use its oil: not checked.
+    io::ApplyOverride(&cold, "big_end.model=ideal");
+    QCOMPARE(ErrorField(cold), std::string());
   }
 
   // Thermal clearances by hand: hot radii R (1 + α (T − 293.15 K)); at 20 °C the cold ones bit

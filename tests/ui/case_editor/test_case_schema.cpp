@@ -311,6 +311,17 @@ class TestCaseSchema : public QObject {
     QCOMPARE(issues.begin()->first, std::string("skirt.oil_film_positions"));
     QVERIFY2(issues.begin()->second.find("skirt.oil_film_values.0") != std::string::npos,
              issues.begin()->second.c_str());
+    // An oil the film cannot use at its temperature is found while editing, not by the run.
+    c = DefaultCase();
+    c.lubricant.model = lubrication::ViscosityModel::kVogel;
+    c.lubricant.vogel_a = 6.9e-5;
+    c.lubricant.vogel_b = 1050.0;
+    c.lubricant.vogel_c = 380.0;  // the pole above the films' 373.15 K
+    issues = ui::ValidateCase(c);
+    QCOMPARE(issues.size(), size_t(1));
+    QCOMPARE(issues.begin()->first, std::string("skirt.oil.temperature"));
+    QVERIFY2(issues.begin()->second.find("pole") != std::string::npos,
+             issues.begin()->second.c_str());
   }
 
   void guiAndCoreAgreeAtEveryBoundary() {
