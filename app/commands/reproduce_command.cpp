@@ -119,7 +119,7 @@ Command MakeReproduceCommand() {
   command.options = {
       {"out", "DIR", "output folder (default: ./results/reproduce-<case>)"},
       {"jobs", "N", "runs computed at the same time (default: number of cores)"},
-      {"set", "KEY=VALUE", "override a case field by its dotted JSON path", true},
+      CaseSetOption(),
       {"time-limit", "S", "wall-time limit of each run [s], keeping what was computed"},
       {"no-fields", "", "do not write the runs' fields/ (Fig. 10 then has no data)"},
       {"paper-meshes", "", "the paper's film meshes (Table II) instead of the case's"},

@@ -29,7 +29,7 @@ Command MakeRunCommand() {
       {"model", "MODEL", "skirt-lbrbe | only-skirt | only-lbrbe | ideal (default: the case's)"},
       {"rpm", "N", "crank speed [rpm] (default: operating.rpm of the case)"},
       {"out", "DIR", "output folder (default: ./results/<case>-<model>-<rpm>)"},
-      {"set", "KEY=VALUE", "override a case field by its dotted JSON path", true},
+      CaseSetOption(),
       {"pressure-curve", "FILE.csv", "cylinder pressure: crank_angle[deg],pressure[Pa] (absolute)"},
       {"time-limit", "S", "stop after S seconds of wall time, keeping what was computed"},
       {"threads", "N", "1 or 2: the two film joints side by side (default: 2 on >= 2 cores)"},

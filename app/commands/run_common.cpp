@@ -54,6 +54,11 @@ void PrintRunWarnings(const engine::RunConfig& config, const engine::RunResult& 
   }
 }
 
+OptionSpec CaseSetOption() {
+  return {"set", "KEY=VALUE", "override a case field by its dotted JSON path (a list: KEY=[a,b])",
+          true};
+}
+
 io::LoadedCase LoadCaseArgument(const Args& args, std::ostream* notes) {
   const std::string case_path = args.positional().empty() ? "" : args.positional()[0];
   io::LoadedCase loaded = io::LoadCase(case_path, args.Values("set"));

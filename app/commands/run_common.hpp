@@ -36,6 +36,9 @@ std::string WriteRunPlots(const std::filesystem::path& folder, const engine::Run
 void PrintRunWarnings(const engine::RunConfig& config, const engine::RunResult& result,
                       const std::string& prefix, std::ostream& out);
 
+/// The --set option of every command that reads a case (LoadCaseArgument applies it).
+OptionSpec CaseSetOption();
+
 /// The case named by the command's optional CASE.json positional (the embedded default case
 /// without one), with the --set overrides applied; the reader's notes (an older key read as its
 /// replacement) go to *notes, one line each. Throws InputError naming the file or field.

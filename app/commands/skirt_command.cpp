@@ -101,7 +101,7 @@ Command MakeSkirtCommand() {
        "elements: thrust + relief + anti-thrust around x along the skirt "
        "(default: the case's)"},
       {"fields", "DIR", "write the film fields of the state to DIR/skirt.h5 + skirt.xdmf"},
-      {"set", "KEY=VALUE", "override a case field by its dotted JSON path", true},
+      CaseSetOption(),
       {"json", "", "print one JSON object"}};
   command.details =
       "Uses the case's skirt geometry, profile, ovality, surfaces and lubricant (the built-in\n"

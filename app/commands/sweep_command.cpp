@@ -35,7 +35,7 @@ Command MakeSweepCommand() {
       {"models", "M1,M2,...", "skirt-lbrbe, only-skirt, only-lbrbe, ideal (default: the case's)"},
       {"jobs", "N", "runs computed at the same time (default: number of cores)"},
       {"out", "DIR", "folder of the sweep (default: ./results/sweep-<case>)"},
-      {"set", "KEY=VALUE", "override a case field by its dotted JSON path", true},
+      CaseSetOption(),
       {"time-limit", "S", "wall-time limit of each run [s], keeping what was computed"},
       {"no-fields", "", "do not write the runs' fields/ (HDF5 + XDMF per joint)"},
       {"overwrite", "", "--out may hold an earlier sweep: FilmDyn's files in it are replaced"},

@@ -314,6 +314,57 @@ json CaseToJson(const EngineCase& engine_case) {
   return writer.root;
 }
 
+namespace {
+
+// A number as --set takes it: parsed strictly; "nan", "inf" and "-inf" are kept as the file's
+// text for them, so that the field's range check refuses them naming the field.
+json OverrideNumber(const std::string& path, std::string_view text) {
+  double value = 0.0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (text.empty() || error != std::errc() || end != text.data() + text.size()) {
+    if (text == "nan" || text == "inf" || text == "-inf") return std::string(text);
+    throw InputError("--set " + path, std::string(text), "must be a number");
+  }
+  return value;
+}
+
+// A list of numbers as --set takes it: comma-separated, optionally in brackets ("[0,0.5]",
+// "0,0.5"); "[]" or nothing is the empty list. Blanks around the numbers are ignored.
+json OverrideList(const std::string& path, std::string_view text) {
+  auto trim = [](std::string_view t) {
+    while (!t.empty() && (t.front() == ' ' || t.front() == '\t')) t.remove_prefix(1);
+    while (!t.empty() && (t.back() == ' ' || t.back() == '\t')) t.remove_suffix(1);
+    return t;
+  };
+  std::string_view body = trim(text);
+  if (!body.empty() && body.front() == '[') {
+    if (body.back() != ']') {
+      throw InputError("--set " + path, std::string(text),
+                       "a list of numbers: comma-separated, in brackets or not (e.g. [0,0.5])");
+    }
+    body = trim(body.substr(1, body.size() - 2));
+  }
+  json list = json::array();
+  if (body.empty()) return list;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t comma = body.find(',', start);
+    const std::string_view item = trim(body.substr(start, comma - start));
+    if (item.empty()) {
+      throw InputError("--set " + path, std::string(text),
+                       "a list of numbers: comma-separated, in brackets or not (e.g. [0,0.5]); "
+                       "item " +
+                           std::to_string(list.size()) + " is empty");
+    }
+    list.push_back(OverrideNumber(path + "." + std::to_string(list.size()), item));
+    if (comma == std::string_view::npos) break;
+    start = comma + 1;
+  }
+  return list;
+}
+
+}  // namespace
+
 void ApplyOverride(json* root, const std::string& assignment) {
   const auto eq = assignment.find('=');
   if (eq == std::string::npos || eq == 0) {
@@ -335,8 +386,7 @@ void ApplyOverride(json* root, const std::string& assignment) {
       node = &(*node)[index];
     } else if (node->is_object() && node->contains(key)) {
       node = &(*node)[key];
-    } else if (node->is_object() && field != nullptr &&
-               field->kind != engine::FieldKind::kNumberList) {
+    } else if (node->is_object() && field != nullptr) {
       // A field the file leaves at its default (e.g. a file older than the field): added.
       node = &(*node)[key];
       if (dot != std::string::npos) *node = json::object();
@@ -353,19 +403,15 @@ void ApplyOverride(json* root, const std::string& assignment) {
   if (node->is_null() && field != nullptr) {  // added above: the field's kind says the type
     const bool number =
         field->kind == engine::FieldKind::kNumber || field->kind == engine::FieldKind::kInteger;
-    *node = number ? json(0.0) : json(std::string());
+    *node = field->kind == engine::FieldKind::kNumberList ? json::array()
+            : number                                      ? json(0.0)
+                                                          : json(std::string());
   }
   if (node->is_number()) {
-    double value = 0.0;
-    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-    if (text.empty() || error != std::errc() || end != text.data() + text.size()) {
-      if (text == "nan" || text == "inf" || text == "-inf") {
-        *node = text;  // rejected with the field's range by CaseFromJson
-        return;
-      }
-      throw InputError("--set " + path, text, "must be a number");
-    }
-    *node = value;
+    *node = OverrideNumber(path, text);
+  } else if (node->is_array() && field != nullptr &&
+             field->kind == engine::FieldKind::kNumberList) {
+    *node = OverrideList(path, text);  // the whole list; one element is set by its index
   } else if (node->is_string()) {
     RequireUtf8("--set " + path, text);
     *node = text;

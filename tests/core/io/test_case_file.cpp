@@ -368,6 +368,39 @@ class TestCaseFile : public QObject {
     QCOMPARE(field("geometry=1"), std::string("--set geometry"));
     QCOMPARE(field("geometry.rod_mass=nan"), std::string("geometry.rod_mass"));
     QCOMPARE(field("novalue"), std::string("--set"));
+
+    // A list field is set whole: comma-separated, in brackets or not, blanks ignored; "[]" empties
+    // it; one element by its index. The pair rules apply after all overrides.
+    json lists = DefaultJson();
+    for (const char* set :
+         {"big_end.supply=pin_holes", "big_end.supply_hole_angles=[0, 3.14]",
+          "skirt.oil_film_positions=0,0.02,0.05", "skirt.oil_film_values=[2e-6,4e-6,1e-5]",
+          "skirt.oil_film_positions.1=0.03"})
+      io::ApplyOverride(&lists, set);
+    engine::EngineCase listed = io::CaseFromJson(lists);
+    QCOMPARE(listed.big_end.supply_hole_angles, (std::vector<double>{0.0, 3.14}));
+    QCOMPARE(listed.skirt.oil_film_positions, (std::vector<double>{0.0, 0.03, 0.05}));
+    QCOMPARE(listed.skirt.oil_film_values, (std::vector<double>{2e-6, 4e-6, 1e-5}));
+    io::ApplyOverride(&lists, "skirt.oil_film_positions=[]");
+    io::ApplyOverride(&lists, "skirt.oil_film_values=");
+    listed = io::CaseFromJson(lists);
+    QVERIFY(listed.skirt.oil_film_positions.empty() && listed.skirt.oil_film_values.empty());
+    // A list absent from the file is added like a scalar.
+    json older = DefaultJson();
+    older["big_end"].erase("supply_hole_angles");
+    io::ApplyOverride(&older, "big_end.supply_hole_angles=[1]");
+    QCOMPARE(io::CaseFromJson(older).big_end.supply_hole_angles, std::vector<double>{1.0});
+    // Bad lists name the field (or the element); a pair of unequal lengths names the pair.
+    QCOMPARE(field("big_end.supply_hole_angles=[0,x]"),
+             std::string("--set big_end.supply_hole_angles.1"));
+    QCOMPARE(field("big_end.supply_hole_angles=[0,,1]"),
+             std::string("--set big_end.supply_hole_angles"));
+    QCOMPARE(field("big_end.supply_hole_angles=[0,1"),
+             std::string("--set big_end.supply_hole_angles"));
+    QCOMPARE(field("big_end.supply_hole_angles=0,nan"),
+             std::string("big_end.supply_hole_angles.1"));
+    QCOMPARE(field("big_end.supply_hole_angles=0,99"), std::string("big_end.supply_hole_angles.1"));
+    QCOMPARE(field("skirt.oil_film_values=[1e-6]"), std::string("skirt.oil_film_values"));
   }
   void pressureCurvesResolve() {
     const io::LoadedCase embedded = io::LoadCase({});  // the compiled-in default
