@@ -731,7 +731,8 @@ void SetDescriptions(std::vector<CaseField>& fields) {
        "simply starts where the gap is widest (as the paper and the classic bearing tables do). "
        "\"shell_holes\": holes through the bearing shell, fixed in the rod. \"pin_holes\": "
        "drillings in the crank pin that turn with the crank. \"groove\": a groove in the shell, "
-       "part of the way round or all the way."},
+       "part of the way round or all the way. \"pin_holes_and_groove\": both, the pin's "
+       "drillings passing under the shell's groove as the crank turns, fed at one pressure."},
       {"big_end.oil_feed_pressure",
        "Gauge pressure of the oil at the supply holes or groove (constant over the cycle unless a "
        "supply-pressure curve is given)."},
@@ -1067,7 +1068,8 @@ std::vector<CaseField> MakeSchema() {
     using lubrication::OilFeedKind;
     f.push_back(Choice("big_end.supply", be, &B::supply,
                        {ToString(OilFeedKind::kLineOfCentres), ToString(OilFeedKind::kShellHoles),
-                        ToString(OilFeedKind::kPinHoles), ToString(OilFeedKind::kGroove)},
+                        ToString(OilFeedKind::kPinHoles), ToString(OilFeedKind::kGroove),
+                        ToString(OilFeedKind::kPinHolesAndGroove)},
                        {G::kBigEnd,
                         "Oil supply",
                         "",
@@ -1075,7 +1077,8 @@ std::vector<CaseField> MakeSchema() {
                         1.0,
                         {},
                         "\"line_of_centres\" (the film starts at the line of centres, the "
-                        "paper's), \"shell_holes\", \"pin_holes\" or \"groove\""}));
+                        "paper's), \"shell_holes\", \"pin_holes\", \"groove\" or "
+                        "\"pin_holes_and_groove\" (both, at the one supply pressure)"}));
   }
   {
     using lubrication::ComplianceModel;
@@ -1340,8 +1343,8 @@ void CheckBigEndSupply(const BigEndCase& b) {
   if (b.supply == OilFeedKind::kLineOfCentres && (b.oil_feed_pressure > 0.0 || curve)) {
     throw InputError("big_end.supply", "\"line_of_centres\"",
                      "has no supply for the given pressure (big_end.oil_feed_pressure or the "
-                     "supply-pressure curve): choose \"shell_holes\", \"pin_holes\" or "
-                     "\"groove\"");
+                     "supply-pressure curve): choose \"shell_holes\", \"pin_holes\", "
+                     "\"groove\" or \"pin_holes_and_groove\"");
   }
   if (curve) {
     if (b.supply_pressure_angles.size() != b.supply_pressure_values.size()) {
@@ -1455,11 +1458,13 @@ std::string UnusedReason(const EngineCase& c, const std::string& path) {
     using lubrication::OilFeedKind;
     const BigEndCase& b = c.big_end;
     const std::string feed = fmt::format("the oil supply is \"{}\"", ToString(b.supply));
-    const bool holes = b.supply == OilFeedKind::kShellHoles || b.supply == OilFeedKind::kPinHoles;
-    if ((path == "big_end.supply_hole_angles" || path == "big_end.supply_hole_diameter") && !holes)
-      return feed + "; holes feed the film only with \"shell_holes\" or \"pin_holes\"";
-    if (path.rfind("big_end.groove_", 0) == 0 && b.supply != OilFeedKind::kGroove)
-      return feed + "; the groove feeds the film only with \"groove\"";
+    if ((path == "big_end.supply_hole_angles" || path == "big_end.supply_hole_diameter") &&
+        !lubrication::HasHoles(b.supply))
+      return feed +
+             "; holes feed the film only with \"shell_holes\", \"pin_holes\" or "
+             "\"pin_holes_and_groove\"";
+    if (path.rfind("big_end.groove_", 0) == 0 && !lubrication::HasGroove(b.supply))
+      return feed + "; the groove feeds the film only with \"groove\" or \"pin_holes_and_groove\"";
     const bool curve = !b.supply_pressure_angles.empty() || !b.supply_pressure_values.empty();
     if (b.supply != OilFeedKind::kLineOfCentres && curve && path == "big_end.oil_feed_pressure")
       return "the supply pressure follows the curve over the crank angle";

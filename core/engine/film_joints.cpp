@@ -250,7 +250,7 @@ std::unique_ptr<multibody::JointForceElement> MakeLubricatedBigEnd(
   // An imported compliance's nodes are placed from the rod axis too.
   config.compliance.imported_reference_angle = rod_axis;
   const double web_axis = axis_angle(layout.crank_main_journal, layout.crank_pin);
-  const bool pin = config.feed.kind == lubrication::OilFeedKind::kPinHoles;
+  const bool pin = lubrication::HasPinHoles(config.feed.kind);
   for (double& a : config.feed.hole_angles) a += pin ? web_axis : rod_axis;
   config.feed.groove_start += rod_axis;
   config.feed.groove_end += rod_axis;

@@ -56,7 +56,7 @@ void BearingConfig::Validate(const std::string& prefix) const {
 }
 
 void ValidateOilFeed(const OilFeed& feed, double radius, double width, const OilFeedFields& names) {
-  if (feed.kind == OilFeed::Kind::kShellHoles || feed.kind == OilFeed::Kind::kPinHoles) {
+  if (HasHoles(feed.kind)) {
     if (feed.hole_angles.empty())
       throw InputError(names.hole_angles, "[]", "needs at least one hole angle");
     for (std::size_t k = 0; k < feed.hole_angles.size(); ++k)
@@ -81,7 +81,7 @@ void ValidateOilFeed(const OilFeed& feed, double radius, double width, const Oil
       }
     }
   }
-  if (feed.kind == OilFeed::Kind::kGroove) {
+  if (HasGroove(feed.kind)) {
     RequireFinite(names.groove_start, feed.groove_start, "rad");
     RequireFinite(names.groove_end, feed.groove_end, "rad");
     if (!(feed.groove_end > feed.groove_start) ||
@@ -120,6 +120,8 @@ const char* ToString(OilFeedKind kind) {
       return "pin_holes";
     case OilFeed::Kind::kGroove:
       return "groove";
+    case OilFeed::Kind::kPinHolesAndGroove:
+      return "pin_holes_and_groove";
   }
   return "?";
 }
@@ -247,7 +249,7 @@ void BearingSolver::MarkSupplyNodes(const BearingState& s) {
     extra[k] = 1;
     pb[k] = pressure;
   };
-  if (feed.kind == OilFeed::Kind::kGroove) {
+  if (HasGroove(feed.kind)) {
     const double span = feed.groove_end - feed.groove_start;
     for (int j = 0; j < m.ny_nodes(); ++j) {
       if (j != j_mid && std::abs(m.y_lines[j] - z_mid) > 0.5 * feed.groove_width) continue;
@@ -259,9 +261,9 @@ void BearingSolver::MarkSupplyNodes(const BearingState& s) {
         if (span >= 2.0 * kPi - 1e-12 || body <= span) mark(k);
       }
     }
-    return;
   }
-  const bool pin = feed.kind == OilFeed::Kind::kPinHoles;
+  if (!HasHoles(feed.kind)) return;
+  const bool pin = HasPinHoles(feed.kind);
   const double orientation = pin ? s.journal_angle : s.bearing_angle;
   const double r_hole = 0.5 * feed.hole_diameter;
   for (double hole : feed.hole_angles) {
@@ -310,11 +312,11 @@ Eigen::VectorXd BearingSolver::PredictorInputs(const BearingState& s) const {
                            s.omega_journal - s.omega_bearing};
   const OilFeed::Kind feed = config_.feed.kind;
   if (config_.compliance.model == ComplianceModel::kImported ||
-      feed == OilFeed::Kind::kShellHoles || feed == OilFeed::Kind::kGroove) {
+      feed == OilFeed::Kind::kShellHoles || HasGroove(feed)) {
     z.push_back(std::cos(s.line_of_centres_angle - s.bearing_angle));
     z.push_back(std::sin(s.line_of_centres_angle - s.bearing_angle));
   }
-  if (feed == OilFeed::Kind::kPinHoles) {
+  if (HasPinHoles(feed)) {
     z.push_back(std::cos(s.line_of_centres_angle - s.journal_angle));
     z.push_back(std::sin(s.line_of_centres_angle - s.journal_angle));
   }

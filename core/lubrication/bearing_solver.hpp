@@ -64,6 +64,8 @@ std::vector<double> GradedWidth(int n, double length, double ratio, bool half);
 ///  - kGroove: a groove in the shell of axial width groove_width centred on the mid-width, from
 ///    groove_start to groove_end (bearing-body angles, counter-clockwise; a whole-circle groove
 ///    when the span is 2 pi).
+///  - kPinHolesAndGroove: both the pin holes and the shell groove, at the one supply pressure
+///    (a pin drilling that passes under a partial groove as the crank turns).
 /// A hole holds the nodes inside its circle (diameter hole_diameter, centred on the mid-width),
 /// at least the node nearest its centre; a groove at least the mid-width row.
 struct OilFeed {

@@ -13,9 +13,21 @@ enum class CavitationModel { kReynolds, kJfo, kNone };
 const char* ToString(CavitationModel model);
 
 /// Where a bearing's film is fed (OilFeed in bearing_solver.hpp says what each means).
-enum class OilFeedKind { kLineOfCentres, kShellHoles, kPinHoles, kGroove };
-/// "line_of_centres", "shell_holes", "pin_holes", "groove" (case-file names).
+enum class OilFeedKind { kLineOfCentres, kShellHoles, kPinHoles, kGroove, kPinHolesAndGroove };
+/// "line_of_centres", "shell_holes", "pin_holes", "groove", "pin_holes_and_groove" (case-file
+/// names).
 const char* ToString(OilFeedKind kind);
+/// Whether the supply has holes (in the shell or the pin), holes in the pin, a shell groove.
+constexpr bool HasHoles(OilFeedKind kind) {
+  return kind == OilFeedKind::kShellHoles || kind == OilFeedKind::kPinHoles ||
+         kind == OilFeedKind::kPinHolesAndGroove;
+}
+constexpr bool HasPinHoles(OilFeedKind kind) {
+  return kind == OilFeedKind::kPinHoles || kind == OilFeedKind::kPinHolesAndGroove;
+}
+constexpr bool HasGroove(OilFeedKind kind) {
+  return kind == OilFeedKind::kGroove || kind == OilFeedKind::kPinHolesAndGroove;
+}
 
 /// How a piston skirt is fed: fully flooded (a full film enters at its leading edge), or
 /// starved, from the oil film the ring pack leaves on the liner (SkirtConfig).

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <set>
 
 #include "core/lubrication/bearing_calculator.hpp"
 #include "core/lubrication/bearing_solver.hpp"
@@ -339,6 +340,44 @@ class TestBearing : public QObject {
     const auto& m = solver.mesh();
     QCOMPARE(solver.fields().pressure[m.Node(0, 6)], 3e5);
     QVERIFY(r.feed_flow > 0.0);
+  }
+
+  // Pin holes and a partial shell groove together hold the union of the nodes each holds alone
+  // at the supply pressure: the groove where it is, the holes where the journal has turned them.
+  void pinHolesAndGrooveFeedTogether() {
+    bool solved = true;
+    auto supplied = [&solved](OilFeed::Kind kind) {
+      BearingConfig cfg = Bearing({72, 12, false});
+      cfg.feed.kind = kind;
+      cfg.feed.hole_angles = {0.0, std::numbers::pi};
+      cfg.feed.hole_diameter = 0.004;
+      cfg.feed.groove_start = 5.0;  // before the widest gap (theta = 0 here)
+      cfg.feed.groove_end = 6.0;
+      cfg.feed.groove_width = 0.003;
+      cfg.feed.pressure = 3e5;
+      cfg.Validate();
+      BearingSolver solver(cfg);
+      BearingState s;
+      s.eps = 0.5;
+      s.omega_journal = 300.0;
+      s.line_of_centres_angle = std::numbers::pi;
+      s.journal_angle = 1.0;  // the holes at 1.0 and 1.0 + pi rad in the bearing: off the groove
+      const BearingResult& r = solver.Solve(s);
+      solved = solved && r.stats.status == SolveStatus::kConverged && r.feed_flow != 0.0;
+      std::set<int> nodes;
+      for (int k = 0; k < static_cast<int>(solver.fields().pressure.size()); ++k)
+        if (solver.fields().pressure[k] == 3e5) nodes.insert(k);
+      return nodes;
+    };
+    const std::set<int> groove = supplied(OilFeed::Kind::kGroove);
+    const std::set<int> holes = supplied(OilFeed::Kind::kPinHoles);
+    const std::set<int> both = supplied(OilFeed::Kind::kPinHolesAndGroove);
+    std::set<int> either = groove;
+    either.insert(holes.begin(), holes.end());
+    QVERIFY(solved);
+    QVERIFY(!groove.empty() && !holes.empty());
+    QCOMPARE(either.size(), groove.size() + holes.size());  // apart at this journal angle
+    QVERIFY(both == either);
   }
 };
 

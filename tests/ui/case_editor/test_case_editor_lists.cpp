@@ -333,6 +333,14 @@ class TestCaseEditorLists : public QObject {
     QVERIFY(Greyed(window, big_end, "big_end.supply_hole_diameter"));
     QVERIFY(!Greyed(window, big_end, "big_end.groove_width"));
     QVERIFY(!Greyed(window, big_end, "big_end.oil_feed_pressure"));
+    // Pin holes and a groove: both.
+    QVERIFY(document->setChoice("big_end.supply", "pin_holes_and_groove"));
+    QVERIFY(editor->listEnabled(kHoles));
+    QVERIFY(!Greyed(window, big_end, "big_end.supply_hole_diameter"));
+    QVERIFY(!Greyed(window, big_end, "big_end.groove_width"));
+    QVERIFY(!Greyed(window, big_end, "big_end.groove_start_angle"));
+    document->undoStack()->undo();
+    QVERIFY(!editor->listEnabled(kHoles));
     // Undo: the crank-pin holes again.
     document->undoStack()->undo();
     QVERIFY(editor->listEnabled(kHoles));
