@@ -68,8 +68,10 @@ struct JointKpis {
   std::optional<double> max_eps_crank_angle_deg;
   std::optional<PistonSlap> slap;  ///< skirt only
   /// Oil into the film (big end: through the supply; skirt: at its inflow nodes) and out of it
-  /// (big end: side leakage; skirt: outflow nodes) over the cycle: the mean of the equally spaced
-  /// output samples times the cycle's duration [m^3].
+  /// (big end: side leakage; skirt: outflow nodes) over the cycle [m^3]: mass-conserving films
+  /// from their oil account (every integrator step booked) between the cycle's first and last
+  /// output steps, scaled to the cycle's duration; other films the mean of the equally spaced
+  /// output samples times the cycle's duration.
   std::optional<double> oil_in_per_cycle, oil_out_per_cycle;
   /// Mass-conserving (JFO) films: the oil balance between the cycle's first and last output
   /// steps relative to the oil supplied (coupling::OilAccount::BalanceSince); none otherwise.

@@ -70,13 +70,20 @@ class TestCoupledCavitation : public QObject {
  private slots:
   void bigEndKeepsItsOilAccount() {
     engine::RunConfig config = Config(CoarseCase(), engine::Model::kOnlyLbrbe);
+    // The account at the first output step of every cycle: the oil of each whole cycle.
+    std::vector<coupling::OilAccount> at_cycle_start;
+    const engine::RunMonitor monitor = [&](const engine::RunProgress& p) {
+      if (!p.run_in && p.sample && p.crank_angle_deg == 0.0)
+        at_cycle_start.push_back(p.sample->bearing.oil);
+      return true;
+    };
     double theta_min = 1.0, theta_max = 0.0;
     config.field_callback = [&](const engine::FieldFrame& f) {
       const Eigen::VectorXd& theta = f.bearing->fields().fluid_fraction;
       theta_min = std::min(theta_min, theta.minCoeff());
       theta_max = std::max(theta_max, theta.maxCoeff());
     };
-    const engine::RunResult r = engine::RunJob(config);
+    const engine::RunResult r = engine::RunJob(config, monitor);
     qInfo("%s: %s", engine::StatusName(r.status).c_str(), r.message.c_str());
     // The free flight through the partial film makes the periodic state sensitive: built with
     // another compiler (the sanitizer build) the same run can end its 6 cycles 3 % short of it.
@@ -90,15 +97,31 @@ class TestCoupledCavitation : public QObject {
           *k.big_end->oil_balance);
     QVERIFY(std::abs(*k.big_end->oil_balance) < 1e-9);
     // Periodic steady state: what enters over the cycle (the account at every integrator step)
-    // leaves it, within the cycle-to-cycle change; the per-cycle figures from the 2 °CA output
-    // samples of the spiky flows agree with the account's to 10 %.
+    // leaves it, within the cycle-to-cycle change.
     const coupling::OilAccount& a = r.samples.front().bearing.oil;
     const coupling::OilAccount& b = r.samples.back().bearing.oil;
     const double in = b.supplied - a.supplied, out = b.lost - a.lost;
     qInfo("account over the cycle: in %.4g mm^3, out %.4g mm^3 (cycle-to-cycle change %.3g)",
           in * 1e9, out * 1e9, r.cycle_change);
     QVERIFY(in > 0.0 && std::abs(in - out) < std::max(0.02, 2.0 * r.cycle_change) * in);
-    QVERIFY(std::abs(*k.big_end->oil_in_per_cycle - in) < 0.1 * in);
+    // The per-cycle figures against the account over the whole cycle before the reported one
+    // (from its first output step to the reported cycle's, scaled by the cycle's duration over
+    // the accounts' times): the same within the cycle-to-cycle change (0.2 %). The mean of the
+    // spiky flows at the 2 °CA samples misses it by 2.9 %.
+    QVERIFY(at_cycle_start.size() >= 2);
+    const coupling::OilAccount& c0 = at_cycle_start[at_cycle_start.size() - 2];
+    const coupling::OilAccount& c1 = at_cycle_start.back();
+    const double cycle_time = 4.0 * std::numbers::pi / (6000.0 * std::numbers::pi / 30.0);
+    const double whole_in = (c1.supplied - c0.supplied) * cycle_time / (c1.time - c0.time);
+    const double whole_out = (c1.lost - c0.lost) * cycle_time / (c1.time - c0.time);
+    double sampled = 0.0;
+    for (const auto& sample : r.samples) sampled += sample.bearing.supply_flow;
+    sampled *= cycle_time / static_cast<double>(r.samples.size());
+    qInfo("whole cycle before: in %.5g mm^3, out %.5g mm^3; reported in %.5g, sampled mean %.5g",
+          whole_in * 1e9, whole_out * 1e9, *k.big_end->oil_in_per_cycle * 1e9, sampled * 1e9);
+    const double within = std::max(0.01, 2.0 * r.cycle_change);
+    QVERIFY(std::abs(*k.big_end->oil_in_per_cycle / whole_in - 1.0) < within);
+    QVERIFY(std::abs(*k.big_end->oil_out_per_cycle / whole_out - 1.0) < within);
     // The film ruptures somewhere in the cycle and the fraction stays within [0, 1].
     QVERIFY(theta_min < 0.9);
     QVERIFY(theta_min >= -1e-9 && theta_max <= 1.0 + 1e-9);
