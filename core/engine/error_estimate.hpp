@@ -3,15 +3,16 @@
 ///
 /// Headline figures: what a designer reads first, over the reported cycle — the minimum film
 /// thickness of each lubricated joint, the big end's largest eccentricity ratio, the peak film
-/// pressure of each joint and the cycle-mean friction power loss of each joint. This is their
+/// pressure of each joint, the cycle-mean friction power loss of each joint and, for a
+/// mass-conserving film, the oil it takes in over the cycle. This is their
 /// one definition: summary.json, the CLI, the GUI and the estimate all use it.
 ///
 /// Estimate: a second, coarser run of the whole coupled model — every film mesh with half the
 /// elements in each direction (same grading; spacing ratio r ≈ 2), the run's own integrator
 /// tolerances (so that the time error is alike in both). Richardson's estimate of the run's
 /// error is then (f − f_coarse) / (r^p − 1) with p = 2 the figures' observed order, signed:
-/// converged value ≈ f + error. It sees the coupled result (the coarse films move the journal and the
-/// piston). Justification and its check against converged solutions: docs/validation/errors.md.
+/// converged value ≈ f + error. It sees the coupled result (the coarse films move the journal and
+/// the piston). Justification and its check against converged solutions: docs/validation/errors.md.
 #include <cstddef>
 #include <limits>
 #include <optional>
@@ -33,10 +34,24 @@ struct HeadlineFigure {
 };
 
 /// The headline figures present for the samples' joints, in a fixed order: skirt MOFT min,
-/// skirt peak pressure, skirt mean FPL, big-end MOFT min, max ε, big-end peak pressure, big-end
-/// mean FPL. Means are plain means over the cycle's equally spaced output samples (the periodic
-/// trapezoidal rule). Empty when no sample has a lubricated joint.
+/// skirt peak pressure, skirt mean FPL, skirt oil per cycle, big-end MOFT min, max ε, big-end
+/// peak pressure, big-end mean FPL, big-end oil per cycle. Means are plain means over the
+/// cycle's equally spaced output samples (the periodic trapezoidal rule); the oil per cycle is
+/// AccountedOil's, present for mass-conserving films only. Empty when no sample has a lubricated
+/// joint.
 std::vector<HeadlineFigure> HeadlineFigures(const std::vector<CrankTrainSample>& samples);
+
+/// Oil into and out of a joint's film over a cycle [m^3].
+struct OilPerCycle {
+  double in = 0.0;   ///< big end: through its supply; skirt: at its inflow nodes
+  double out = 0.0;  ///< big end: side leakage; skirt: at its outflow nodes
+};
+/// A mass-conserving film's oil per cycle from the account it books at every integrator step
+/// (coupling::OilAccount): between the first and last of the equally spaced output samples,
+/// scaled to the samples' whole span (their count times their interval: the cycle's duration for
+/// a whole cycle). None when the joint keeps no account (a Reynolds film) or there are fewer
+/// than two samples.
+std::optional<OilPerCycle> AccountedOil(const std::vector<CrankTrainSample>& samples, bool big_end);
 /// The figure of a headline key with this value: label, joint and order from the table (an
 /// unknown key keeps itself as label; "bearing_…" keys belong to the big end).
 HeadlineFigure HeadlineFigureFor(const std::string& key, double value);

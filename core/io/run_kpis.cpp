@@ -180,14 +180,12 @@ std::optional<JointKpis> FilmKpisOf(const std::vector<engine::CrankTrainSample>&
     if (skirt) j.mean_wetted_fraction = wetted / n;
     const coupling::OilAccount& first = skirt ? with.front()->skirt.oil : with.front()->bearing.oil;
     const coupling::OilAccount& last = skirt ? with.back()->skirt.oil : with.back()->bearing.oil;
-    if (first.kept && last.kept && last.time > first.time) {
-      j.oil_balance = last.BalanceSince(first);
-      // A film that keeps its account booked the oil at every integrator step: its mean rates
-      // between the first and last output steps, over the cycle's duration, instead of the
-      // sampled flows (which miss the spikes between the samples).
-      const double rate = span / (last.time - first.time);
-      j.oil_in_per_cycle = (last.supplied - first.supplied) * rate;
-      j.oil_out_per_cycle = (last.lost - first.lost) * rate;
+    if (first.kept && last.kept && last.time > first.time) j.oil_balance = last.BalanceSince(first);
+    // A film that keeps its account booked the oil at every integrator step: that, instead of
+    // the sampled flows (which miss the spikes between the samples).
+    if (const auto oil = engine::AccountedOil(samples, !skirt)) {
+      j.oil_in_per_cycle = oil->in;
+      j.oil_out_per_cycle = oil->out;
     }
   }
   return j;

@@ -117,6 +117,34 @@ class TestErrorEstimate : public QObject {
              e.Summary().c_str());
   }
 
+  // A mass-conserving film's oil per cycle is its account's: a film booking 2e-6 m³/s in and
+  // 1.5e-6 m³/s out at steps that end after each output sample takes in 2e-6 × 8 × 1e-4 m³ over
+  // the 8 samples' span, whatever its sampled flows say; a film without an account has none.
+  void oilPerCycleIsTheAccounts() {
+    std::vector<engine::CrankTrainSample> samples(8);
+    for (int k = 0; k < 8; ++k) {
+      engine::CrankTrainSample& s = samples[k];
+      s.time = 0.05 + 1e-4 * k;
+      s.bearing.present = true;
+      s.bearing.supply_flow = k == 3 ? 1.0 : 0.0;       // a sampled spike the account does not see
+      const double step_end = s.time + 3e-6 * (k % 3);  // the accepted step past the sample
+      s.bearing.oil.Book(step_end, step_end - 0.04, 2e-6, 1.5e-6, 0.0, 0.0, 0.0);
+    }
+    const std::optional<engine::OilPerCycle> oil = engine::AccountedOil(samples, true);
+    QVERIFY(oil);
+    QVERIFY(std::abs(oil->in / (2e-6 * 8e-4) - 1.0) < 1e-12);
+    QVERIFY(std::abs(oil->out / (1.5e-6 * 8e-4) - 1.0) < 1e-12);
+    QVERIFY(!engine::AccountedOil(samples, false));  // no skirt account
+    const auto v = Values(engine::HeadlineFigures(samples));
+    QCOMPARE(v.at("bearing_oil_per_cycle[m^3]"), oil->in);
+    QCOMPARE(engine::HeadlineFigureFor("bearing_oil_per_cycle[m^3]", 1.0).label,
+             std::string("big-end oil per cycle"));
+    QCOMPARE(engine::HeadlineDisplayUnit("bearing_oil_per_cycle[m^3]").unit, std::string("mm³"));
+    for (auto& s : samples) s.bearing.oil = {};  // a Reynolds film keeps no account
+    QVERIFY(!engine::AccountedOil(samples, true));
+    QVERIFY(!Values(engine::HeadlineFigures(samples)).count("bearing_oil_per_cycle[m^3]"));
+  }
+
   // A peak film pressure the output samples do not resolve in time: a Gaussian peak whose width
   // at half height spans w output intervals is down to 2^(-4/w²) one interval away, so its ratio
   // to the larger neighbour is 2^(4/w²): resolved at w = 4 (1.19), not at w = 2 (2). Neighbours
