@@ -22,6 +22,8 @@ enum class Reduce {
   kFmepBearing,
   kSlapEnergyMax,
   kSlapEnergySum,
+  kOilSkirt,
+  kOilBearing,
   kWorstError
 };
 
@@ -74,6 +76,10 @@ const std::vector<FigureRecipe>& Recipes() {
       // thrust side, and their sum over the cycle.
       {{"max_slap_energy[J]", "max slap energy [mJ]", 1e3}, "", Reduce::kSlapEnergyMax},
       {{"slap_energy_sum[J]", "slap energy per cycle [mJ]", 1e3}, "", Reduce::kSlapEnergySum},
+      // The oil a mass-conserving film takes in over the cycle (the headline figure of that
+      // key, summary.json's kpis oil_in_per_cycle); none for a Reynolds film (no oil account).
+      {{"skirt_oil_per_cycle[m^3]", "skirt oil per cycle [mm³]", 1e9}, "", Reduce::kOilSkirt},
+      {{"bearing_oil_per_cycle[m^3]", "big-end oil per cycle [mm³]", 1e9}, "", Reduce::kOilBearing},
       // The largest estimated discretisation error of the run's headline figures (relative).
       {{"max_discretisation_error[-]", "max est. discretisation error [%]", 100.0},
        "",
@@ -139,6 +145,10 @@ ComparisonRow ReadComparisonRow(const std::filesystem::path& folder) {
         value = recipe.reduce == Reduce::kSlapEnergySum ? std::optional<double>(slap.energy_sum)
                                                         : slap.energy_max.value_or(0.0);
       }
+    } else if (recipe.reduce == Reduce::kOilSkirt || recipe.reduce == Reduce::kOilBearing) {
+      const std::optional<JointKpis>& joint =
+          recipe.reduce == Reduce::kOilSkirt ? summary.kpis.skirt : summary.kpis.big_end;
+      if (joint && joint->oil_balance) value = joint->oil_in_per_cycle;
     } else if (recipe.reduce == Reduce::kWorstError) {
       if (summary.error_estimate.Estimated()) value = summary.error_estimate.worst_relative;
     } else if (const auto e = summary.extremes.find(recipe.column); e != summary.extremes.end()) {

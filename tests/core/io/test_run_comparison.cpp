@@ -56,6 +56,8 @@ class TestRunComparison : public QObject {
     // The piston slap from the KPIs.
     QCOMPARE(*row.figures[FigureIndex("max_slap_energy[J]")], 7.5e-5);
     QCOMPARE(*row.figures[FigureIndex("slap_energy_sum[J]")], 2.25e-4);
+    // No oil account (a Reynolds film): no oil per cycle to compare.
+    QVERIFY(!row.figures[FigureIndex("skirt_oil_per_cycle[m^3]")].has_value());
 
     std::ostringstream csv;
     filmdyn::io::WriteComparisonCsv(csv, {row});
@@ -67,6 +69,25 @@ class TestRunComparison : public QObject {
     // Every row of the Markdown table has the same number of cells.
     const auto lines = markdown.trimmed().split('\n');
     for (const auto& line : lines) QCOMPARE(line.count('|'), lines.first().count('|'));
+  }
+
+  // A mass-conserving film's oil per cycle (its KPI, kept with an oil account) is compared; a
+  // Reynolds film's sampled flows are not.
+  void oilPerCycleOfMassConservingFilms() {
+    QTemporaryDir dir;
+    const std::filesystem::path folder = dir.filePath("oil").toStdString();
+    WriteSummary(folder, R"({"model": "skirt-lbrbe", "rpm": 6000, "status": "completed",
+      "cycles": 2, "wall_time_s": 9.0, "extremes": {},
+      "kpis": {"skirt": {"min_moft[m]": 1.8e-5, "oil_in_per_cycle[m^3]": 3.0e-6,
+                         "oil_out_per_cycle[m^3]": 3.0e-6, "oil_balance[-]": null},
+               "big_end": {"min_moft[m]": 1.4e-6, "oil_in_per_cycle[m^3]": 1.2874e-7,
+                           "oil_out_per_cycle[m^3]": 1.2873e-7, "oil_balance[-]": 2e-14}}})");
+    const auto row = filmdyn::io::ReadComparisonRow(folder);
+    QCOMPARE(*row.figures[FigureIndex("bearing_oil_per_cycle[m^3]")], 1.2874e-7);
+    QVERIFY(!row.figures[FigureIndex("skirt_oil_per_cycle[m^3]")].has_value());
+    const QString markdown = QString::fromStdString(filmdyn::io::ComparisonMarkdown({row}));
+    QVERIFY2(markdown.contains("big-end oil per cycle [mm³]") && markdown.contains("| 128.7 |"),
+             qPrintable(markdown));
   }
 
   // A peak film pressure the run warns is a spike between its output samples (unresolved_peak)
