@@ -123,6 +123,12 @@ struct FigureError {
 inline constexpr const char* kUnresolvedPeakNote = "not estimated (a spike between output samples)";
 
 /// The estimate of a run.
+/// What the estimate's summary adds for a mass-conserving big end.
+inline constexpr const char* kMassConservingBigEndNote =
+    "a mass-conserving big end converges slowly with its circumferential mesh at low speed (at "
+    "2000 rpm its minimum film fell 10-12 % per refinement up to 400 x 40): there this estimate "
+    "understates its error (docs/validation/errors.md, section 6)";
+
 struct ErrorEstimate {
   /// "estimated"; "off" (solver.error_estimate = 0); "not-applicable" (no lubricated joint);
   /// "unavailable" (the coarse run did not complete: `message` says why).
