@@ -123,11 +123,12 @@ struct FigureError {
 inline constexpr const char* kUnresolvedPeakNote = "not estimated (a spike between output samples)";
 
 /// The estimate of a run.
-/// What the estimate's summary adds for a mass-conserving big end.
-inline constexpr const char* kMassConservingBigEndNote =
-    "a mass-conserving big end converges slowly with its circumferential mesh at low speed (at "
-    "2000 rpm its minimum film fell 10-12 % per refinement up to 400 x 40): there this estimate "
-    "understates its error (docs/validation/errors.md, section 6)";
+/// What the estimate's summary adds for a run with a mass-conserving film.
+inline constexpr const char* kMassConservingNote =
+    "mass-conserving films converge with the mesh at first order or slower at low speed (at "
+    "2000 rpm the big end's minimum film fell 10-12 % per refinement up to 400 x 40, the "
+    "skirt's 5-8 %): there this estimate understates their error "
+    "(docs/validation/errors.md, section 6)";
 
 struct ErrorEstimate {
   /// "estimated"; "off" (solver.error_estimate = 0); "not-applicable" (no lubricated joint);

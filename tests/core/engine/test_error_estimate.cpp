@@ -140,16 +140,16 @@ class TestErrorEstimate : public QObject {
     QCOMPARE(engine::HeadlineFigureFor("bearing_oil_per_cycle[m^3]", 1.0).label,
              std::string("big-end oil per cycle"));
     QCOMPARE(engine::HeadlineDisplayUnit("bearing_oil_per_cycle[m^3]").unit, std::string("mm³"));
-    // Its estimate says that a mass-conserving big end converges slowly at low speed.
+    // Its estimate says that mass-conserving films converge slowly at low speed.
     engine::CoarseCompanion companion;
     companion.big_end_ratio = 2.0;
     const engine::ErrorEstimate e = engine::EstimateErrors(samples, samples, companion);
-    QVERIFY2(e.Summary().find(engine::kMassConservingBigEndNote) != std::string::npos,
+    QVERIFY2(e.Summary().find(engine::kMassConservingNote) != std::string::npos,
              e.Summary().c_str());
     for (auto& s : samples) s.bearing.oil = {};  // a Reynolds film keeps no account
     QVERIFY(engine::EstimateErrors(samples, samples, companion)
                 .Summary()
-                .find(engine::kMassConservingBigEndNote) == std::string::npos);
+                .find(engine::kMassConservingNote) == std::string::npos);
     QVERIFY(!engine::AccountedOil(samples, true));
     QVERIFY(!Values(engine::HeadlineFigures(samples)).count("bearing_oil_per_cycle[m^3]"));
   }
