@@ -178,14 +178,15 @@ std::optional<JointKpis> FilmKpisOf(const std::vector<engine::CrankTrainSample>&
     j.oil_in_per_cycle = in / n * span;
     j.oil_out_per_cycle = out / n * span;
     if (skirt) j.mean_wetted_fraction = wetted / n;
-    const coupling::OilAccount& first = skirt ? with.front()->skirt.oil : with.front()->bearing.oil;
-    const coupling::OilAccount& last = skirt ? with.back()->skirt.oil : with.back()->bearing.oil;
-    if (first.kept && last.kept && last.time > first.time) j.oil_balance = last.BalanceSince(first);
     // A film that keeps its account booked the oil at every integrator step: that, instead of
-    // the sampled flows (which miss the spikes between the samples).
+    // the sampled flows (which miss the spikes between the samples), and its balance.
     if (const auto oil = engine::AccountedOil(samples, !skirt)) {
       j.oil_in_per_cycle = oil->in;
       j.oil_out_per_cycle = oil->out;
+      const auto account = [skirt](const S* s) -> const coupling::OilAccount& {
+        return skirt ? s->skirt.oil : s->bearing.oil;
+      };
+      j.oil_balance = account(with.back()).BalanceSince(account(with.front()));
     }
   }
   return j;
