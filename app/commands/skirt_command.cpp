@@ -198,7 +198,7 @@ Command MakeSkirtCommand() {
       if (!json) {
         streams.out << fmt::format(
             "equilibrium under a side force of {:g} N and a moment of {:g} N·m at {:g} m/s: {}\n"
-            "({} Newton iterations, {} skirt solves; residual {:.3g} N, {:.3g} N·m)\n",
+            "({} iterations, {} skirt solves; residual {:.3g} N, {:.3g} N·m)\n",
             load.side_force, load.moment, load.piston_velocity, eq.status, eq.iterations,
             eq.reynolds_solves, eq.force_residual, eq.moment_residual);
       }

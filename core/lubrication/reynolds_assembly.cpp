@@ -247,16 +247,27 @@ void ReynoldsFem::Assemble(const ReynoldsParams& params) {
   }
   if (jfo) {
     for (int k = 0; k < n; ++k) f_[k] -= lumped_area_[k] * phi_c_[k] * dhdt_[k];
-    // JFO: the Couette transport is written as first-order upwind finite-volume face fluxes on
-    // the dual cells, (|U|/2) w_k h_k (1 - r_k) from node k to its downstream neighbour, for the
-    // full-film part (here) and the void part (matrix B in SolveJfo) alike. A central full-film
-    // flux with an upwind void flux was tried first: it let theta leave [0, 1] at film steps
-    // and made the active-set iteration cycle (pocketed slider).
+    // JFO: the Couette transport is written as finite-volume face fluxes on the dual cells,
+    // (|U|/2) w_k h_f (1 - r_k) from node k to its downstream neighbour d, for the full-film part
+    // (here) and the void part (matrix B in SolveJfo) alike: the gap at the face, h_f = (h_k +
+    // h_d)/2 (a known field), times the fluid fraction of the upwind node. A full film's Couette
+    // flow is then centred, second order like the Galerkin wedge term of the Reynolds films (with
+    // the upwind gap h_k its source sat half a cell upstream: first order, the steady bearing's
+    // load 14 % high on 60 cells); a cavity still sends on only the oil it holds (no flow out of
+    // an empty cell, so theta stays in [0, 1]). A starved boundary node (fluid fraction < 1)
+    // supplies its own content, (|U|/2) w theta_b h_k: a partial film carries its content
+    // theta h unchanged, and the supply is then exactly the one given. A centred full-film flux
+    // with a separate upwind void flux, (|U|/2) w (h_f - h_k r_k), was tried first: an empty cell
+    // then still sent oil on, theta left [0, 1] at film steps and the active-set iteration cycled
+    // (pocketed slider).
     const bool plus = params.u_sum >= 0.0;
+    h_face_.resize(n);
     for (int k = 0; k < n; ++k) {
       const int d = plus ? down_node_plus_[k] : down_node_minus_[k];
+      const bool starved_edge = fixed_[k] && theta_fixed_[k] < 1.0;
+      h_face_[k] = d >= 0 && !starved_edge ? 0.5 * (h_[k] + h_[d]) : h_[k];
       if (d < 0) continue;
-      const double flux = 0.5 * std::abs(params.u_sum) * face_width_[k] * h_[k];  // upwind
+      const double flux = 0.5 * std::abs(params.u_sum) * face_width_[k] * h_face_[k];
       f_[k] -= flux;
       f_[d] += flux;
     }

@@ -23,20 +23,21 @@
 ///    Giacopini, Fowell, Dini & Strozzi (2010, J. Tribol. 132 041702): lubricant density ratio
 ///    1 - r, with p >= 0, r >= 0, p.r = 0 and one mass balance per node
 ///        (K p - f)_k + (B r)_k = 0,
-///    B = first-order upwind finite-volume transport of the void content (U_sum/2) h r plus
-///    -r dh/dt, on the dual cells of the structured mesh. Solved by the same active-set
-///    (semismooth Newton) iteration on the mixed unknowns (p on full-film nodes, r on cavitated
-///    ones), started from the Reynolds solution; non-symmetric, so a sparse LU is used.
-///    Quasi-static (ReynoldsParams::time_step = 0): d(phi_c r h)/dt ~ phi_c r dh/dt, no history.
-///    Transient (time_step > 0): the void content V = phi_c r h of every node is carried from
-///    the previous step (void_history()) and its rate is the backward difference
-///    (V - V_old) / dt (lumped), while the full-film squeeze phi_c dh/dt keeps the exact dh/dt of
-///    the caller (a function of the state, so an ODE integrator's error control covers it). The
-///    nodal balances then conserve oil exactly through rupture and reformation: the void that
-///    collapses where the film reforms must be filled by the flow (Elrod-Adams / JFO in the
-///    time-dependent form of Ausas et al. 2009, J. Tribol. 131 031702).
-///    Fixed nodes carry a prescribed fluid fraction (boundary_fraction(), default 1): a starved
-///    inlet brings the void 1 - theta into the film with its Couette flow.
+///    B = finite-volume transport of the void content (U_sum/2) h_f r plus -r dh/dt, on the
+///    dual cells of the structured mesh: the gap at the cell face h_f centred, the fraction r of
+///    the upwind node (a full film's Couette flow second order, a cavity's first order). Solved by
+///    the same active-set (semismooth Newton) iteration on the mixed unknowns (p on full-film
+///    nodes, r on cavitated ones), started from the Reynolds solution; non-symmetric, so a sparse
+///    LU is used. Quasi-static (ReynoldsParams::time_step = 0): d(phi_c r h)/dt ~ phi_c r dh/dt, no
+///    history. Transient (time_step > 0): the void content V = phi_c r h of every node is carried
+///    from the previous step (void_history()) and its rate is the backward difference (V - V_old) /
+///    dt (lumped), while the full-film squeeze phi_c dh/dt keeps the exact dh/dt of the caller (a
+///    function of the state, so an ODE integrator's error control covers it). The nodal balances
+///    then conserve oil exactly through rupture and reformation: the void that collapses where the
+///    film reforms must be filled by the flow (Elrod-Adams / JFO in the time-dependent form of
+///    Ausas et al. 2009, J. Tribol. 131 031702). Fixed nodes carry a prescribed fluid fraction
+///    (boundary_fraction(), default 1): a starved inlet brings the void 1 - theta into the film
+///    with its Couette flow.
 ///  - kNone: full Sommerfeld film, negative pressures allowed (verification only).
 #include <Eigen/Sparse>
 #include <cstdint>
@@ -240,6 +241,7 @@ class ReynoldsFem {
   std::vector<int> diag_pos_full_, down_pos_plus_, down_pos_minus_;  // JFO transport slots
   std::vector<int> down_node_plus_, down_node_minus_;
   std::vector<double> face_width_;  // dual-cell width across the sliding direction [m]
+  Eigen::VectorXd h_face_;  // JFO: gap carried by the Couette flux from node k downstream [m]
   std::unique_ptr<SparseLdlt> ldlt_;
   std::unique_ptr<SparseLu> lu_;  // JFO: the mixed (p, r) system
   Eigen::VectorXd h_, dhdt_, p_fixed_, f_, rhs_, x_, work_, theta_fixed_, void_old_;

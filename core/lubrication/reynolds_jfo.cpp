@@ -53,7 +53,7 @@ bool ReynoldsFem::SolveJfo() {
     bnode[k] = plus ? down_node_plus_[k] : down_node_minus_[k];
     bpos[k] = plus ? down_pos_plus_[k] : down_pos_minus_[k];
     // No downstream neighbour (an open end): no Couette flux, as in the full-film assembly.
-    const double a = bnode[k] >= 0 ? 0.5 * std::abs(u_sum_) * h_[k] * face_width_[k] : 0.0;
+    const double a = bnode[k] >= 0 ? 0.5 * std::abs(u_sum_) * h_face_[k] * face_width_[k] : 0.0;
     const double storage = transient ? h_[k] * inv_dt : dhdt_[k];
     bdiag[k] = -a - lumped_area_[k] * phi_c_[k] * storage;
     if (std::abs(bdiag[k]) < 1e-14 * flow_scale_) bdiag[k] = -kf[diag_pos_full_[k]];  // r idle

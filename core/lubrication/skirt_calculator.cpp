@@ -5,7 +5,9 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
+#include <optional>
 
 #include "core/base/input_error.hpp"
 
@@ -140,7 +142,114 @@ std::vector<SkirtPoint> SkirtCalculator::Map(const std::vector<double>& e0_value
 
 namespace {
 constexpr double kSecantStep = 1e-2;  // Newton's difference step after a stall (see Newton)
+constexpr int kRootIterations = 100;  // per one-dimensional root of the nested fallback
+
+// A root of f in the bracket [a, b] (f(a), f(b) of opposite signs, given) by the Illinois
+// variant of regula falsi: the x whose |f| is the smallest found once |f| <= tol or the bracket
+// has shrunk to round-off; f is monotone here but only piecewise smooth, which regula falsi
+// with bracketing survives where Newton's method need not.
+template <class F>
+std::pair<double, double> BracketedRoot(const F& f, double a, double fa, double b, double fb,
+                                        double tol) {
+  std::pair<double, double> best =
+      std::abs(fa) < std::abs(fb) ? std::pair{a, fa} : std::pair{b, fb};
+  int side = 0;
+  for (int it = 0; it < kRootIterations && std::abs(best.second) > tol; ++it) {
+    double x = (a * fb - b * fa) / (fb - fa);
+    if (!(x > std::min(a, b) && x < std::max(a, b))) x = 0.5 * (a + b);
+    if (std::abs(b - a) <= 1e-14 * std::max(std::abs(a), std::abs(b))) break;
+    const double fx = f(x);
+    if (std::abs(fx) < std::abs(best.second)) best = {x, fx};
+    if ((fx < 0.0) == (fb < 0.0)) {
+      b = x, fb = fx;
+      if (side == -1) fa *= 0.5;
+      side = -1;
+    } else {
+      a = x, fa = fx;
+      if (side == 1) fb *= 0.5;
+      side = 1;
+    }
+  }
+  return best;
+}
 }  // namespace
+
+bool SkirtCalculator::Nested(const SkirtLoad& load, double tilt, SkirtEquilibrium* eq) {
+  const double L = solver_.config().geometry.skirt_length;
+  const double c = solver_.config().geometry.radial_clearance;
+  const double floor = min_equilibrium_film();
+  const double scale = std::max({std::abs(load.side_force), std::abs(load.moment) / L, 1e-3});
+  auto evaluate = [&](double e0, double gamma) {
+    SkirtState s;
+    s.e0 = e0;
+    s.gamma = gamma;
+    s.piston_velocity = load.piston_velocity;
+    ++eq->reynolds_solves;
+    return Evaluate(s);
+  };
+  // The scaled moment residual at the tilt's force equilibrium (nullopt: no e0 carries the side
+  // force at this tilt with the film above the floor).
+  struct Carried {
+    SkirtPoint point;
+    double force = 0.0, moment = 0.0;  // scaled residuals
+  };
+  int tilts = 0;
+  auto carry = [&](double gamma) -> std::optional<Carried> {
+    ++tilts;
+    const auto [lo, hi] = E0Range(gamma, floor);
+    if (!(lo < hi)) return std::nullopt;
+    std::vector<SkirtPoint> seen;
+    auto force = [&](double e0) {
+      seen.push_back(evaluate(e0, gamma));
+      return (seen.back().film.lateral_force + load.side_force) / scale;
+    };
+    const double f_lo = force(lo), f_hi = force(hi);
+    if ((f_lo < 0.0) == (f_hi < 0.0)) return std::nullopt;
+    const auto [e0, f] = BracketedRoot(force, lo, f_lo, hi, f_hi, 0.1 * kTolerance);
+    for (const SkirtPoint& p : seen) {
+      if (p.state.e0 != e0) continue;
+      return Carried{p, f, (p.film.moment_about_pin + load.moment) / (scale * L)};
+    }
+    return std::nullopt;  // not reached: the root is one of the points evaluated
+  };
+  std::optional<Carried> at = carry(tilt);
+  if (!at) return false;
+  // Bracket the moment's root: tilts stepped outward on both sides, doubling from 2 % of c / L.
+  double a = tilt, b = tilt;
+  std::optional<Carried> at_a = at, at_b;
+  const double step0 = 0.02 * c / L;
+  for (int k = 0; k < 12 && !at_b; ++k) {
+    for (const double sign : {1.0, -1.0}) {
+      const double g = tilt + sign * step0 * std::ldexp(1.0, k);
+      std::optional<Carried> trial = carry(g);
+      if (trial && (trial->moment < 0.0) != (at->moment < 0.0)) {
+        b = g, at_b = trial;
+        break;
+      }
+    }
+  }
+  if (!at_b) return false;
+  std::vector<Carried> seen;
+  auto moment = [&](double gamma) {
+    std::optional<Carried> p = carry(gamma);
+    if (!p) return std::numeric_limits<double>::quiet_NaN();
+    seen.push_back(*p);
+    return p->moment;
+  };
+  const auto [gamma, m] = BracketedRoot(moment, a, at_a->moment, b, at_b->moment, kTolerance);
+  std::optional<Carried> best = std::abs(at_a->moment) < std::abs(at_b->moment) ? at_a : at_b;
+  for (const Carried& p : seen)
+    if (p.point.state.gamma == gamma) best = p;
+  eq->iterations = tilts;
+  eq->point = best->point;
+  eq->force_residual = best->force * scale;
+  eq->moment_residual = best->moment * scale * L;
+  eq->converged = std::max(std::abs(best->force), std::abs(best->moment)) <= kTolerance;
+  eq->status = eq->converged ? "converged"
+                             : fmt::format("no equilibrium found (scaled residual {:.2g})",
+                                           std::max(std::abs(best->force), std::abs(best->moment)));
+  return eq->converged;
+}
 
 bool SkirtCalculator::Newton(const SkirtLoad& load, double e0, double tilt, SkirtEquilibrium* eq) {
   const double L = solver_.config().geometry.skirt_length;
@@ -228,8 +337,10 @@ bool SkirtCalculator::Newton(const SkirtLoad& load, double e0, double tilt, Skir
                                r.lpNorm<Eigen::Infinity>());
       return false;
     }
-    // Backtracking on |r|^2 (Armijo, sufficient decrease 1e-4).
+    // Backtracking on |r|^2 (Armijo, sufficient decrease 1e-4). No decrease along the step:
+    // the differences straddled a switch of the film (see above); once more with the secant.
     double t = t_max;
+    bool secant_again = false;
     for (;;) {
       const Eigen::Vector2d trial_x = x + t * dx;
       SkirtPoint trial = evaluate(trial_x);
@@ -241,11 +352,19 @@ bool SkirtCalculator::Newton(const SkirtLoad& load, double e0, double tilt, Skir
         break;
       }
       t *= 0.5;
+      if (t < 1e-10 && fd_step < kSecantStep) {
+        secant_again = true;
+        break;
+      }
       if (t < 1e-10) {
         eq->status = fmt::format("the line search stalled (scaled residual {:.2g})",
                                  r.lpNorm<Eigen::Infinity>());
         return false;
       }
+    }
+    if (secant_again) {
+      fd_step = kSecantStep;
+      history.clear();
     }
   }
 }
@@ -265,12 +384,20 @@ SkirtEquilibrium SkirtCalculator::AtLoad(const SkirtLoad& load) {
   SkirtEquilibrium eq;
   if (Newton(load, start, 0.0, &eq)) return eq;
   // Failing with a film of a few per cent of the clearance: the load is (close to) beyond what
-  // the skirt carries. Elsewhere it is a numerical failure: reported, not an input error.
+  // the skirt carries. Elsewhere it is a numerical failure (a mass-conserving film's force is
+  // only piecewise smooth, and Newton can stall on one of its steps): the continuation below
+  // is tried all the same, and if it too fails the failure is reported, not an input error.
   const double thin = 0.05 * config().geometry.radial_clearance;
-  if (eq.point.min_gap.gap > thin) return eq;
+  const bool numerical = eq.point.min_gap.gap > thin;
+  if (numerical) {
+    SkirtEquilibrium nested;
+    nested.reynolds_solves = eq.reynolds_solves;
+    if (Nested(load, eq.point.state.gamma, &nested)) return nested;
+    eq.reynolds_solves = nested.reynolds_solves;
+  }
 
-  // Beyond the capacity: the largest fraction of the load carried, by bisection, each Newton
-  // started from the last equilibrium found.
+  // The largest fraction of the load carried, by bisection, each Newton started from the last
+  // equilibrium found.
   int solves = eq.reynolds_solves;
   double carried = 0.0, beyond = 1.0;
   SkirtEquilibrium at;
@@ -301,6 +428,10 @@ SkirtEquilibrium SkirtCalculator::AtLoad(const SkirtLoad& load) {
       continued.reynolds_solves = solves;
       return continued;
     }
+  }
+  if (numerical) {
+    eq.reynolds_solves = solves;
+    return eq;
   }
   const bool force_named = load.side_force != 0.0;
   const std::string with_other = force_named && load.moment != 0.0

@@ -59,7 +59,7 @@ struct SkirtEquilibrium {
   SkirtPoint point;
   bool converged = false;
   std::string status;            ///< "converged" or why not
-  int iterations = 0;            ///< Newton iterations
+  int iterations = 0;            ///< Newton iterations (the fallback: tilts tried)
   int reynolds_solves = 0;       ///< skirt solves, Jacobian columns included
   double force_residual = 0.0;   ///< film + applied lateral force at the answer [N]
   double moment_residual = 0.0;  ///< film + applied moment at the answer [N m]
@@ -103,6 +103,10 @@ class SkirtCalculator {
   void CheckState(const SkirtState& state) const;
   // Newton's method from x0 = (e0, γ); returns converged and leaves the best point in *eq.
   bool Newton(const SkirtLoad& load, double e0, double tilt, SkirtEquilibrium* eq);
+  // The fallback where Newton's method fails on a film whose force is only piecewise smooth:
+  // for each tilt the e0 that carries the side force, and the tilt whose moment balances, each
+  // a bracketed one-dimensional root (regula falsi), the tilt searched outward from `tilt`.
+  bool Nested(const SkirtLoad& load, double tilt, SkirtEquilibrium* eq);
 
   SkirtSolver solver_;
   SkirtInputNames names_;

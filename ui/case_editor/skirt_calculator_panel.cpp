@@ -87,7 +87,7 @@ SkirtCalculation Calculate(const engine::EngineCase& engine_case, std::string ca
       out.point = eq.point;
       out.ok = eq.converged;
       out.message = eq.converged
-                        ? QString("Equilibrium found: %1 Newton iterations, %2 skirt solves")
+                        ? QString("Equilibrium found: %1 iterations, %2 skirt solves")
                               .arg(eq.iterations)
                               .arg(eq.reynolds_solves)
                         : QString("No equilibrium: %1").arg(QString::fromStdString(eq.status));
