@@ -125,10 +125,10 @@ inline constexpr const char* kUnresolvedPeakNote = "not estimated (a spike betwe
 /// The estimate of a run.
 /// What the estimate's summary adds for a run with a mass-conserving film.
 inline constexpr const char* kMassConservingNote =
-    "mass-conserving films converge with the mesh at first order or slower at low speed (at "
-    "2000 rpm the big end's minimum film fell 10-12 % per refinement up to 400 x 40, the "
-    "skirt's 5-8 %): there this estimate understates their error "
-    "(docs/validation/errors.md, section 6)";
+    "a mass-conserving film's oil per cycle converges slowly with the mesh (order 0.5 on the "
+    "skirt, 1.6 on the big end), and a mass-conserving big end's minimum film does not converge "
+    "at low speed (at 2000 rpm it fell 6-12 % per refinement up to 200 x 20): there this "
+    "estimate understates its error (docs/validation/errors.md, section 6)";
 
 struct ErrorEstimate {
   /// "estimated"; "off" (solver.error_estimate = 0); "not-applicable" (no lubricated joint);
