@@ -48,6 +48,12 @@ class TestValidationCases : public QObject {
     const double e2 =
         std::abs(PocketSliderNumeric(c, 2000, CavitationModel::kJfo).sol.p_exit - ref.p_exit);
     QVERIFY(e2 < 0.4 * e1);
+    for (const int n : {500, 1000, 2000, 4000, 8000}) {
+      const PocketSliderFem f = PocketSliderNumeric(c, n, CavitationModel::kJfo);
+      qInfo("%d elements: q %.6g, p exit %.6g Pa (%+.2f %%), reformation %.4g mm, theta %.6g", n,
+            f.sol.q, f.sol.p_exit, 100.0 * (f.sol.p_exit / ref.p_exit - 1.0), f.sol.x_reform * 1e3,
+            f.sol.fluid_fraction);
+    }
   }
 };
 
