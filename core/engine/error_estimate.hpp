@@ -126,9 +126,10 @@ inline constexpr const char* kUnresolvedPeakNote = "not estimated (a spike betwe
 /// What the estimate's summary adds for a run with a mass-conserving film.
 inline constexpr const char* kMassConservingNote =
     "a mass-conserving film's oil per cycle converges slowly with the mesh (order 0.5 on the "
-    "skirt, 1.6 on the big end), and a mass-conserving big end's minimum film does not converge "
-    "at low speed (at 2000 rpm it fell 6-12 % per refinement up to 200 x 20): there this "
-    "estimate understates its error (docs/validation/errors.md, section 6)";
+    "skirt, 1.6 on the big end), and the minimum film of a mass-conserving big end fed only by "
+    "its film-start line does not converge at low speed (at 2000 rpm it fell 6-12 % per "
+    "refinement up to 200 x 20): there this estimate understates its error "
+    "(docs/validation/errors.md, section 6)";
 
 struct ErrorEstimate {
   /// "estimated"; "off" (solver.error_estimate = 0); "not-applicable" (no lubricated joint);

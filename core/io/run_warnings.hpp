@@ -26,7 +26,8 @@ inline constexpr double kHighEccentricity = 0.95;
 /// "synthetic_pressure", "oil_extrapolated" (a catalogue oil outside its fit's temperatures;
 /// value: the film temperature [K], limit: the bound it passes [K]), "unresolved_peak" (a peak
 /// film pressure the output samples do not resolve, engine::SampledPeak; value: the larger of
-/// its Ratio and StepRatio, limit: engine::kUnresolvedPeakRatio).
+/// its Ratio and StepRatio, limit: engine::kUnresolvedPeakRatio), "film_start_supply" (a
+/// mass-conserving big end fed only by its film-start line at ambient pressure).
 struct RunWarning {
   std::string code;
   std::string joint;    ///< "skirt", "big_end", or empty (the whole run)

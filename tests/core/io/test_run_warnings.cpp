@@ -269,6 +269,31 @@ class TestRunWarnings : public QObject {
     }
   }
 
+  void massConservingBigEndOnTheFilmStartLineWarns() {
+    // The supply warning is the configuration's: judged without a run.
+    const engine::RunResult none;
+    auto has = [&](const engine::EngineCase& c) {
+      const auto w = io::RunWarnings(Config(c, engine::Model::kOnlyLbrbe, 2000.0), none);
+      return std::any_of(w.begin(), w.end(), [](const io::RunWarning& x) {
+        return x.code == "film_start_supply" && x.joint == "big_end";
+      });
+    };
+    engine::EngineCase c = CoarseCase();
+    QVERIFY(!has(c));  // Reynolds: the film start is the published tables' boundary
+    c.big_end.cavitation = lubrication::CavitationModel::kJfo;
+    QVERIFY(has(c));
+    engine::EngineCase fed = c;
+    fed.big_end.supply = lubrication::OilFeedKind::kPinHoles;
+    fed.big_end.oil_feed_pressure = 3e5;
+    QVERIFY(!has(fed));
+    const auto w = io::RunWarnings(Config(c, engine::Model::kOnlyLbrbe, 2000.0), none);
+    for (const io::RunWarning& x : w)
+      if (x.code == "film_start_supply") {
+        QVERIFY(QString::fromStdString(x.message).contains("big_end.supply"));
+        QCOMPARE(QString::fromStdString(io::WarningShortText(x)), QString("film-start supply"));
+      }
+  }
+
   void thickFilmsGiveNoFilmWarnings() {
     engine::EngineCase c = CoarseCase();
     c.lubricant.viscosity = 0.08;  // 4 x the default: films far thicker than the roughness
