@@ -146,8 +146,9 @@ constexpr int kRootIterations = 100;  // per one-dimensional root of the nested 
 
 // A root of f in the bracket [a, b] (f(a), f(b) of opposite signs, given) by the Illinois
 // variant of regula falsi: the x whose |f| is the smallest found once |f| <= tol or the bracket
-// has shrunk to round-off; f is monotone here but only piecewise smooth, which regula falsi
-// with bracketing survives where Newton's method need not.
+// has shrunk to round-off (or f has no value at a point: NaN ends the search); f is monotone
+// here but only piecewise smooth, which regula falsi with bracketing survives where Newton's
+// method need not.
 template <class F>
 std::pair<double, double> BracketedRoot(const F& f, double a, double fa, double b, double fb,
                                         double tol) {
@@ -159,6 +160,7 @@ std::pair<double, double> BracketedRoot(const F& f, double a, double fa, double 
     if (!(x > std::min(a, b) && x < std::max(a, b))) x = 0.5 * (a + b);
     if (std::abs(b - a) <= 1e-14 * std::max(std::abs(a), std::abs(b))) break;
     const double fx = f(x);
+    if (!std::isfinite(fx)) break;  // no value there (the caller's NaN): keep the best so far
     if (std::abs(fx) < std::abs(best.second)) best = {x, fx};
     if ((fx < 0.0) == (fb < 0.0)) {
       b = x, fb = fx;
