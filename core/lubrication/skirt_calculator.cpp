@@ -144,24 +144,27 @@ namespace {
 constexpr double kSecantStep = 1e-2;  // Newton's difference step after a stall (see Newton)
 constexpr int kRootIterations = 100;  // per one-dimensional root of the nested fallback
 
+// Residuals are scaled by the load (a moment by the load times the skirt length L).
+double LoadScale(const SkirtLoad& load, double L) {
+  return std::max({std::abs(load.side_force), std::abs(load.moment) / L, 1e-3});
+}
+
 // A root of f in the bracket [a, b] (f(a), f(b) of opposite signs, given) by the Illinois
-// variant of regula falsi: the x whose |f| is the smallest found once |f| <= tol or the bracket
-// has shrunk to round-off (or f has no value at a point: NaN ends the search); f is monotone
-// here but only piecewise smooth, which regula falsi with bracketing survives where Newton's
-// method need not.
+// variant of regula falsi, until |f| <= tol, the bracket has shrunk to round-off, or f has no
+// value at a point (NaN); the caller keeps the best point it evaluated. f is monotone here but
+// only piecewise smooth, which regula falsi with bracketing survives where Newton's method need
+// not.
 template <class F>
-std::pair<double, double> BracketedRoot(const F& f, double a, double fa, double b, double fb,
-                                        double tol) {
-  std::pair<double, double> best =
-      std::abs(fa) < std::abs(fb) ? std::pair{a, fa} : std::pair{b, fb};
+void BracketedRoot(const F& f, double a, double fa, double b, double fb, double tol) {
+  double best = std::min(std::abs(fa), std::abs(fb));
   int side = 0;
-  for (int it = 0; it < kRootIterations && std::abs(best.second) > tol; ++it) {
+  for (int it = 0; it < kRootIterations && best > tol; ++it) {
     double x = (a * fb - b * fa) / (fb - fa);
     if (!(x > std::min(a, b) && x < std::max(a, b))) x = 0.5 * (a + b);
     if (std::abs(b - a) <= 1e-14 * std::max(std::abs(a), std::abs(b))) break;
     const double fx = f(x);
-    if (!std::isfinite(fx)) break;  // no value there (the caller's NaN): keep the best so far
-    if (std::abs(fx) < std::abs(best.second)) best = {x, fx};
+    if (!std::isfinite(fx)) break;
+    best = std::min(best, std::abs(fx));
     if ((fx < 0.0) == (fb < 0.0)) {
       b = x, fb = fx;
       if (side == -1) fa *= 0.5;
@@ -172,7 +175,6 @@ std::pair<double, double> BracketedRoot(const F& f, double a, double fa, double 
       side = 1;
     }
   }
-  return best;
 }
 }  // namespace
 
@@ -180,84 +182,78 @@ bool SkirtCalculator::Nested(const SkirtLoad& load, double tilt, SkirtEquilibriu
   const double L = solver_.config().geometry.skirt_length;
   const double c = solver_.config().geometry.radial_clearance;
   const double floor = min_equilibrium_film();
-  const double scale = std::max({std::abs(load.side_force), std::abs(load.moment) / L, 1e-3});
-  auto evaluate = [&](double e0, double gamma) {
-    SkirtState s;
-    s.e0 = e0;
-    s.gamma = gamma;
-    s.piston_velocity = load.piston_velocity;
-    ++eq->reynolds_solves;
-    return Evaluate(s);
-  };
-  // The scaled moment residual at the tilt's force equilibrium (nullopt: no e0 carries the side
-  // force at this tilt with the film above the floor).
+  const double scale = LoadScale(load, L);
   struct Carried {
     SkirtPoint point;
     double force = 0.0, moment = 0.0;  // scaled residuals
   };
   int tilts = 0;
+  // The tilt's force equilibrium: the e0 that carries the side force, and the moment left there
+  // (nullopt: no e0 carries it at this tilt with the film above the floor).
   auto carry = [&](double gamma) -> std::optional<Carried> {
     ++tilts;
     const auto [lo, hi] = E0Range(gamma, floor);
     if (!(lo < hi)) return std::nullopt;
-    std::vector<SkirtPoint> seen;
+    std::optional<Carried> best;
     auto force = [&](double e0) {
-      seen.push_back(evaluate(e0, gamma));
-      return (seen.back().film.lateral_force + load.side_force) / scale;
+      SkirtState s;
+      s.e0 = e0;
+      s.gamma = gamma;
+      s.piston_velocity = load.piston_velocity;
+      ++eq->reynolds_solves;
+      Carried p{Evaluate(s)};
+      p.force = (p.point.film.lateral_force + load.side_force) / scale;
+      p.moment = (p.point.film.moment_about_pin + load.moment) / (scale * L);
+      if (!best || std::abs(p.force) < std::abs(best->force)) best = p;
+      return p.force;
     };
     const double f_lo = force(lo), f_hi = force(hi);
     if ((f_lo < 0.0) == (f_hi < 0.0)) return std::nullopt;
-    const auto [e0, f] = BracketedRoot(force, lo, f_lo, hi, f_hi, 0.1 * kTolerance);
-    for (const SkirtPoint& p : seen) {
-      if (p.state.e0 != e0) continue;
-      return Carried{p, f, (p.film.moment_about_pin + load.moment) / (scale * L)};
-    }
-    return std::nullopt;  // not reached: the root is one of the points evaluated
+    BracketedRoot(force, lo, f_lo, hi, f_hi, 0.1 * kTolerance);
+    return best;
   };
-  std::optional<Carried> at = carry(tilt);
-  if (!at) return false;
-  // Bracket the moment's root: tilts stepped outward on both sides, doubling from 2 % of c / L.
-  double a = tilt, b = tilt;
-  std::optional<Carried> at_a = at, at_b;
+  // The tilt whose moment balances; the best point of every tilt tried is kept.
+  std::optional<Carried> best;
+  auto moment = [&](double gamma) {
+    std::optional<Carried> p = carry(gamma);
+    if (!p) return std::numeric_limits<double>::quiet_NaN();
+    const double m = p->moment;
+    if (!best || std::abs(m) < std::abs(best->moment)) best = std::move(p);
+    return m;
+  };
+  const double m_tilt = moment(tilt);
+  if (!std::isfinite(m_tilt)) return false;
+  // Bracket the root: tilts stepped outward on both sides, doubling from 2 % of c / L.
   const double step0 = 0.02 * c / L;
-  for (int k = 0; k < 12 && !at_b; ++k) {
+  bool bracketed = false;
+  for (int k = 0; k < 12 && !bracketed; ++k) {
     for (const double sign : {1.0, -1.0}) {
       const double g = tilt + sign * step0 * std::ldexp(1.0, k);
-      std::optional<Carried> trial = carry(g);
-      if (trial && (trial->moment < 0.0) != (at->moment < 0.0)) {
-        b = g, at_b = trial;
+      const double m = moment(g);
+      if (std::isfinite(m) && (m < 0.0) != (m_tilt < 0.0)) {
+        BracketedRoot(moment, tilt, m_tilt, g, m, kTolerance);
+        bracketed = true;
         break;
       }
     }
   }
-  if (!at_b) return false;
-  std::vector<Carried> seen;
-  auto moment = [&](double gamma) {
-    std::optional<Carried> p = carry(gamma);
-    if (!p) return std::numeric_limits<double>::quiet_NaN();
-    seen.push_back(*p);
-    return p->moment;
-  };
-  const auto [gamma, m] = BracketedRoot(moment, a, at_a->moment, b, at_b->moment, kTolerance);
-  std::optional<Carried> best = std::abs(at_a->moment) < std::abs(at_b->moment) ? at_a : at_b;
-  for (const Carried& p : seen)
-    if (p.point.state.gamma == gamma) best = p;
+  if (!bracketed) return false;
   eq->iterations = tilts;
   eq->point = best->point;
   eq->force_residual = best->force * scale;
   eq->moment_residual = best->moment * scale * L;
-  eq->converged = std::max(std::abs(best->force), std::abs(best->moment)) <= kTolerance;
-  eq->status = eq->converged ? "converged"
-                             : fmt::format("no equilibrium found (scaled residual {:.2g})",
-                                           std::max(std::abs(best->force), std::abs(best->moment)));
+  const double residual = std::max(std::abs(best->force), std::abs(best->moment));
+  eq->converged = residual <= kTolerance;
+  eq->status = eq->converged
+                   ? "converged"
+                   : fmt::format("no equilibrium found (scaled residual {:.2g})", residual);
   return eq->converged;
 }
 
 bool SkirtCalculator::Newton(const SkirtLoad& load, double e0, double tilt, SkirtEquilibrium* eq) {
   const double L = solver_.config().geometry.skirt_length;
   const double floor = min_equilibrium_film();
-  // Residuals scaled by the load (a moment by the load times the skirt length).
-  const double scale = std::max({std::abs(load.side_force), std::abs(load.moment) / L, 1e-3});
+  const double scale = LoadScale(load, L);
   auto residual = [&](const SkirtPoint& p) {
     return Eigen::Vector2d((p.film.lateral_force + load.side_force) / scale,
                            (p.film.moment_about_pin + load.moment) / (scale * L));

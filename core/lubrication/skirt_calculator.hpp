@@ -17,7 +17,9 @@
 /// film and the floor `min_equilibrium_film`, so every iterate has a positive film everywhere.
 /// A load whose equilibrium would need a thinner film than the floor is beyond what the skirt
 /// carries: the largest multiple of the load that it does carry is found by bisection and
-/// reported in the InputError (docs/skirt-calculator.md).
+/// reported in the InputError. Where Newton's method fails with the film well above the floor
+/// (a mass-conserving film's force is only piecewise smooth), two nested bracketed roots take
+/// over (docs/skirt-calculator.md).
 #include <string>
 #include <utility>
 #include <vector>
