@@ -1,13 +1,15 @@
 #pragma once
 /// @file Transient mass-conserving cavitation: the oscillatory squeeze film with its exact
-/// solution (the first example of Ausas, Jai & Buscaglia 2009, J. Tribol. 131 031702), solved
-/// by the transient JFO model of ReynoldsFem, and the rows of `filmdyn validate --suite
-/// cavitation`. The exact solution is derived in docs/validation/cavitation.md.
+/// solution (the first example of Ausas, Jai & Buscaglia 2009, J. Tribol. 131 031702), a
+/// compressible squeeze, and a starved slider whose supply grows (the partial film's transport
+/// and the moving front's jump condition), solved by the transient JFO model of ReynoldsFem, and
+/// the rows of `filmdyn validate --suite cavitation`. The exact solutions are derived in
+/// docs/validation/cavitation.md.
 ///
-/// Dimensionless problem: x in [0, 1], a uniform gap h(t) = 0.375 + 0.125 cos(4 pi t) (period
-/// 1/2), pure squeeze (no sliding), div(h^3 grad p) = 2 d(theta h)/dt, p = p0 = 0.025 at both
-/// ends, a full film (theta = 1) at t = 0. ReynoldsFem solves it with mu = 1/6 (then
-/// h^3/(12 mu) = h^3/2), in SI units whose numbers are the dimensionless ones.
+/// The oscillatory squeeze, a dimensionless problem: x in [0, 1], a uniform gap h(t) = 0.375 +
+/// 0.125 cos(4 pi t) (period 1/2), pure squeeze (no sliding), div(h^3 grad p) = 2 d(theta h)/dt, p
+/// = p0 = 0.025 at both ends, a full film (theta = 1) at t = 0. ReynoldsFem solves it with mu = 1/6
+/// (then h^3/(12 mu) = h^3/2), in SI units whose numbers are the dimensionless ones.
 #include <vector>
 
 #include "core/base/validation_row.hpp"
@@ -89,6 +91,45 @@ struct CompressibleSqueeze {
 /// SqueezeRun of the compressible squeeze (p_mid at x = 1/2; options.bulk_modulus is the
 /// problem's).
 SqueezeRun SolveCompressibleSqueeze(const CompressibleSqueeze& problem, SqueezeRunOptions options);
+
+/// A converging slider starved at its inlet whose supply grows: the partial film carries its oil
+/// downstream at U/2 and the full film's front moves upstream to take the extra oil (film
+/// history with sliding, which the squeeze problems above do not have). A linear gap h(x) from
+/// h_in to h_out over [0, L], one surface sliding at U, p = 0 at both ends, the inlet supplying
+/// the fluid fraction Supply(t) (steady at theta_start before t = 0, then rising to theta_end
+/// over ramp_time along (1 - cos)/2, or at once when `step`). In the partial film (p = 0) the oil
+/// content c = theta h obeys dc/dt + (U/2) dc/dx = 0, so c(x, t) = h_in Supply(t - 2x/U). In the
+/// full film on [x_f, L] (incompressible, the gap fixed in time) the flow is uniform,
+/// q(x_f) = (U/2) J2/J3 with J_n = int_{x_f}^{L} h^-n dx (p(x_f) = p(L) = 0), and the front obeys
+/// the jump condition dx_f/dt = (q(x_f) - (U/2) c) / (h(x_f) - c), c taken at the front.
+struct StarvedSlider {
+  double length = 0.01, h_in = 20e-6, h_out = 10e-6, speed = 2.0, viscosity = 0.02;
+  double theta_start = 0.55, theta_end = 0.64, ramp_time = 4e-3;
+  bool step = false;
+  double Supply(double t) const;
+  double Gap(double x) const;
+  double FullFilmFlow(double front) const;  ///< q(x_f) per unit width [m^2/s]
+  double SteadyFront(double theta) const;   ///< x_f where q(x_f) = (U/2) theta h_in (bisection)
+  double Load(double front) const;          ///< int p dx per unit width [N/m], closed form
+  /// The front from the steady one at t = 0 to end_time, classical Runge-Kutta at dt.
+  struct Trajectory {
+    std::vector<double> t, front;
+  };
+  Trajectory Front(double end_time, double dt = 1e-6) const;
+  static double At(double t, const Trajectory& trajectory);  ///< linear interpolation
+};
+/// The slider on a strip of `cells` elements, stepped at the time step that moves the partial
+/// film `courant` cells per step, from its steady state (a quasi-static JFO solve) at t = 0.
+struct SliderRun {
+  std::vector<double> t;      ///< step end times
+  std::vector<double> front;  ///< between the last cavitated and the first full node [m]
+  std::vector<double> load;   ///< int p dx per unit width [N/m]
+  double mass_balance = 0.0;  ///< (oil in - oil out - change of stored oil) / oil in
+  double fraction_excess = 0.0;
+  ReynoldsStats stats;
+};
+SliderRun SolveStarvedSlider(const StarvedSlider& problem, int cells, double courant,
+                             double end_time);
 
 /// The rows of `filmdyn validate --suite cavitation`.
 std::vector<verification::ValidationRow> CavitationValidationRows();
