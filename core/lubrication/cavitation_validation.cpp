@@ -358,8 +358,9 @@ SliderRun SolveStarvedSlider(const StarvedSlider& problem, int cells, double cou
       inflow += dt * std::max(sol.residual[k], 0.0);
     }
     fem.void_history() = sol.void_content;
-    // The front: half-way between the last cavitated node and the full one after it.
-    double front = problem.length;
+    // The front: half-way between the last cavitated node and the full one after it (the inlet
+    // when no node is cavitated; the outlet's node is prescribed, never cavitated).
+    double front = 0.0;
     for (int i = nx - 1; i > 0; --i)
       if (sol.cavitated[m.Node(i - 1, 0)] && !sol.cavitated[m.Node(i, 0)]) {
         front = m.x[m.Node(i, 0)] - 0.5 * dx;
