@@ -390,7 +390,8 @@ std::string ErrorEstimate::Summary() const {
   if (std::any_of(figures.begin(), figures.end(), [](const FigureError& e) {
         return e.figure.key == kSkirtOilKey || e.figure.key == kBearingOilKey;
       })) {
-    spikes += std::string("; ") + kMassConservingNote;
+    spikes += "; ";
+    spikes += kMassConservingNote;
   }
   if (worst_relative <= threshold) {
     return fmt::format("estimated discretisation error <= {:.2g} % (largest: {}){}",

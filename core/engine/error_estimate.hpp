@@ -126,10 +126,11 @@ inline constexpr const char* kUnresolvedPeakNote = "not estimated (a spike betwe
 /// What the estimate's summary adds for a run with a mass-conserving film.
 inline constexpr const char* kMassConservingNote =
     "a mass-conserving film's oil per cycle converges slowly with the mesh (order 0.5 on the "
-    "skirt, 1.6 on the big end), and the minimum film of a mass-conserving big end fed only by "
-    "its film-start line does not converge at low speed (at 2000 rpm it fell 6-12 % per "
-    "refinement up to 200 x 20): there this estimate understates its error "
-    "(docs/validation/errors.md, section 6)";
+    "skirt, 1.6 on the big end), and at low speed a mass-conserving big end's figures are not "
+    "in the asymptotic range of these meshes (at 2000 rpm, fed only by its film-start line, its "
+    "minimum film fell 7-14 % per refinement up to 800 elements around; fed by a crank-pin hole, "
+    "its friction power rose 4-7 % per refinement up to 400): there this estimate understates "
+    "their error (docs/validation/errors.md, section 6)";
 
 struct ErrorEstimate {
   /// "estimated"; "off" (solver.error_estimate = 0); "not-applicable" (no lubricated joint);
