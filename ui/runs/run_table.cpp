@@ -44,30 +44,37 @@ void ShowErrorEstimate(const engine::ErrorEstimate& e, QTableWidgetItem* cell) {
   } else if (e.status == "unavailable") {
     text = QStringLiteral("⚠ not estimated");
   }
-  QString tip = QString::fromStdString(e.Summary());
+  // Rich text, so that Qt wraps the summary line (a run with a mass-conserving film adds a
+  // long note to it); one line per figure below it.
+  QStringList lines;
   for (const engine::FigureError& f : e.figures) {
     const engine::DisplayUnit display = engine::HeadlineDisplayUnit(f.figure.key);
     const double scale = display.scale;
     const QString unit = QString::fromStdString(display.unit);
     if (!f.resolved_in_time) {
-      tip += QString("\n%1: %2 %3, %4")
+      lines << QString("%1: %2 %3, %4")
+                   .arg(QString::fromStdString(f.figure.label))
+                   .arg(QString::number(f.figure.value * scale, 'g', 5))
+                   .arg(unit)
+                   .arg(QString::fromUtf8(engine::kUnresolvedPeakNote))
+                   .toHtmlEscaped();
+      continue;
+    }
+    lines << QString("%1: %2 %3, %4%5 % → %6 %3")
                  .arg(QString::fromStdString(f.figure.label))
                  .arg(QString::number(f.figure.value * scale, 'g', 5))
                  .arg(unit)
-                 .arg(QString::fromUtf8(engine::kUnresolvedPeakNote));
-      continue;
-    }
-    tip += QString("\n%1: %2 %3, %4%5 % → %6 %3")
-               .arg(QString::fromStdString(f.figure.label))
-               .arg(QString::number(f.figure.value * scale, 'g', 5))
-               .arg(unit)
-               .arg(f.error >= 0 ? "+" : "−")
-               .arg(QString::number(100.0 * f.relative, 'g', 2))
-               .arg(QString::number((f.figure.value + f.error) * scale, 'g', 5));
+                 .arg(f.error >= 0 ? "+" : "−")
+                 .arg(QString::number(100.0 * f.relative, 'g', 2))
+                 .arg(QString::number((f.figure.value + f.error) * scale, 'g', 5))
+                 .toHtmlEscaped();
   }
+  QString tip = "<p>" + QString::fromStdString(e.Summary()).toHtmlEscaped() + "</p>";
+  if (!lines.isEmpty()) tip += "<p>" + lines.join("<br>") + "</p>";
   if (e.Estimated()) {
-    tip += QString("\n(value, estimated error, extrapolated value = value + error; from a "
-                   "companion run on meshes with half the elements, %1 s)")
+    tip += QString(
+               "<p>(value, estimated error, extrapolated value = value + error; from a "
+               "companion run on meshes with half the elements, %1 s)</p>")
                .arg(QString::number(e.coarse_wall_time, 'f', 1));
   }
   cell->setText(text);
