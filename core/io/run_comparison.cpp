@@ -148,6 +148,9 @@ ComparisonRow ReadComparisonRow(const std::filesystem::path& folder) {
     } else if (recipe.reduce == Reduce::kOilSkirt || recipe.reduce == Reduce::kOilBearing) {
       const std::optional<JointKpis>& joint =
           recipe.reduce == Reduce::kOilSkirt ? summary.kpis.skirt : summary.kpis.big_end;
+      // Mass-conserving films only (those that keep an oil account, hence a balance): a
+      // Reynolds film creates and loses oil where it cavitates, and a Reynolds skirt's inflow
+      // falls with the mesh (docs/outputs.md).
       if (joint && joint->oil_balance) value = joint->oil_in_per_cycle;
     } else if (recipe.reduce == Reduce::kWorstError) {
       if (summary.error_estimate.Estimated()) value = summary.error_estimate.worst_relative;
