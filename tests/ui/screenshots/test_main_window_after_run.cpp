@@ -295,8 +295,15 @@ class TestMainWindowAfterRun : public QObject {
         QToolTip::showText(window.runTable()->viewport()->mapToGlobal(cell_rect.center()),
                            error_cell->toolTip(), window.runTable()->viewport(), cell_rect);
         QTest::qWait(500);
-        QVERIFY(QGuiApplication::primaryScreen()->grabWindow(0).save(
-            QDir(dir).filePath("run_error_tooltip_jfo.png")));
+        // The tooltip and the cell it belongs to, cut from the screen.
+        QRect shown(window.runTable()->viewport()->mapToGlobal(cell_rect.topLeft()),
+                    cell_rect.size());
+        for (QWidget* top : QApplication::topLevelWidgets())
+          if (top->inherits("QTipLabel") && top->isVisible()) shown = shown.united(top->geometry());
+        shown.adjust(-10, -10, 10, 10);
+        QVERIFY(QGuiApplication::primaryScreen()
+                    ->grabWindow(0, shown.x(), shown.y(), shown.width(), shown.height())
+                    .save(QDir(dir).filePath("run_error_tooltip.png")));
         QToolTip::hideText();
       }
       window.workspace()->setCurrentIndex(2);
