@@ -123,10 +123,10 @@ struct FigureError {
 inline constexpr const char* kUnresolvedPeakNote = "not estimated (a spike between output samples)";
 
 /// The estimate of a run.
-/// What the estimate's summary adds for a run with a mass-conserving film.
+/// What the estimate's summary adds for a run with a mass-conserving big end.
 inline constexpr const char* kMassConservingNote =
-    "a mass-conserving film's oil per cycle converges slowly with the mesh (order 0.5 on the "
-    "skirt, 1.6 on the big end), and at low speed a mass-conserving big end's figures are not "
+    "a mass-conserving big end's oil per cycle converges more slowly with the mesh than its film "
+    "(order 1.6), and at low speed a mass-conserving big end's figures are not "
     "in the asymptotic range of these meshes (at 2000 rpm, fed only by its film-start line, its "
     "minimum film fell 7-14 % per refinement up to 800 elements around; fed by a crank-pin hole, "
     "its friction power rose 4-7 % per refinement up to 400): there this estimate understates "

@@ -359,11 +359,22 @@ const SkirtResult& SkirtSolver::SolveStep(const SkirtState& s, double time_step)
     wetted_area += 2.0 * sol.wetted_area;  // x2: the mirrored half
     r.squeeze_rate += 2.0 * sol.squeeze_rate;
     r.void_volume += 2.0 * sol.void_volume;
+    // The oil through each of the panel's edges, net: its upper edge, its lower edge and the
+    // rest of its boundary (the pin-boss relief's edge). Node by node, the reactions along the
+    // relief's edge, where the oil slides along the edge, have both signs, and their positive
+    // part is no oil entering the film: a gross inflow that falls only in proportion to the cell
+    // (docs/validation/errors.md, section 6).
     const TriMesh& pm = pa->fem->mesh();
+    double edge[3] = {0.0, 0.0, 0.0};  // top, bottom, relief
+    const double y_top = pm.y_lines.front(), y_bottom = pm.y_lines.back();
     for (int k = 0; k < pm.NodeCount(); ++k) {
       if (!pm.fixed[k]) continue;
-      r.inflow += 2.0 * std::max(sol.residual[k], 0.0);
-      r.outflow += 2.0 * std::max(-sol.residual[k], 0.0);
+      const int e = pm.y[k] <= y_top ? 0 : (pm.y[k] >= y_bottom ? 1 : 2);
+      edge[e] += sol.residual[k];
+    }
+    for (double net : edge) {
+      r.inflow += 2.0 * std::max(net, 0.0);
+      r.outflow += 2.0 * std::max(-net, 0.0);
     }
   }
   fields_stale_ = true;

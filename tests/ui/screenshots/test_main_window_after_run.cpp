@@ -283,7 +283,7 @@ class TestMainWindowAfterRun : public QObject {
       QTableWidgetItem* error_cell = window.runTable()->item(window.runTable()->rowOf(run->id()),
                                                              filmdyn::ui::RunTable::kError);
       QVERIFY(Qt::mightBeRichText(error_cell->toolTip()));
-      QVERIFY2(error_cell->toolTip().contains("converges slowly with the mesh"),
+      QVERIFY2(error_cell->toolTip().contains("not in the asymptotic range"),
                qPrintable(error_cell->toolTip()));
       window.workspace()->setCurrentIndex(1);
       window.runTable()->scrollToItem(force);
