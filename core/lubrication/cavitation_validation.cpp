@@ -325,22 +325,17 @@ SliderRun SolveStarvedSlider(const StarvedSlider& problem, int cells, double cou
   params.viscosity = problem.viscosity;
   params.u_sum = problem.speed;
   params.u_diff = problem.speed;
-  const std::vector<double>& area = fem.lumped_area();
-  auto void_total = [&](const Eigen::VectorXd& v) {
-    double sum = 0.0;
-    for (int k = 0; k < n; ++k) sum += area[k] * v[k];
-    return sum;
-  };
   // The steady state at the starting supply (quasi-static: no history).
   set_supply(problem.theta_start);
+  double v_start = 0.0, v_end = 0.0;  // the voids' volume at the start and the end
   {
     const ReynoldsSolution& sol = fem.Solve(params);
     if (sol.stats.status != SolveStatus::kConverged)
       throw std::runtime_error("starved slider: the steady solve did not converge");
     fem.void_history() = sol.void_content;
+    v_start = v_end = sol.void_volume;
   }
   SliderRun run;
-  const double v_start = void_total(fem.void_history());
   const double dt = courant * dx / (0.5 * problem.speed);
   const int steps = static_cast<int>(std::ceil(end_time / dt - 1e-9));
   double net_in = 0.0, inflow = 0.0;
@@ -358,6 +353,7 @@ SliderRun SolveStarvedSlider(const StarvedSlider& problem, int cells, double cou
       inflow += dt * std::max(sol.residual[k], 0.0);
     }
     fem.void_history() = sol.void_content;
+    v_end = sol.void_volume;
     // The front: half-way between the last cavitated node and the full one after it (the inlet
     // when no node is cavitated; the outlet's node is prescribed, never cavitated).
     double front = 0.0;
@@ -372,9 +368,23 @@ SliderRun SolveStarvedSlider(const StarvedSlider& problem, int cells, double cou
     run.fraction_excess = std::max(run.fraction_excess, sol.stats.fraction_excess);
   }
   // The stored oil is the gap's less the voids'; the gap is fixed in time.
-  const double stored_change = -(void_total(fem.void_history()) - v_start);
+  const double stored_change = -(v_end - v_start);
   run.mass_balance = (net_in - stored_change) / std::max(inflow, 1e-300);
   return run;
+}
+
+SliderErrors CompareWithExact(const StarvedSlider& problem, const SliderRun& run,
+                              const StarvedSlider::Trajectory& exact) {
+  SliderErrors e;
+  const double final_load = problem.Load(problem.SteadyFront(problem.theta_end));
+  for (size_t i = 0; i < run.t.size(); ++i) {
+    const double xf = StarvedSlider::At(run.t[i], exact);
+    const double error = std::abs(run.front[i] - xf);
+    e.front_max = std::max(e.front_max, error);
+    e.front_mean += error / double(run.t.size());
+    e.load_max = std::max(e.load_max, std::abs(run.load[i] - problem.Load(xf)) / final_load);
+  }
+  return e;
 }
 
 std::vector<verification::ValidationRow> CavitationValidationRows() {
@@ -447,30 +457,18 @@ std::vector<verification::ValidationRow> CavitationValidationRows() {
   const StarvedSlider slider;
   const double slider_end = 0.025;
   const StarvedSlider::Trajectory slider_exact = slider.Front(slider_end);
-  const double slider_load = slider.Load(slider.SteadyFront(slider.theta_end));
-  struct SliderErrors {
-    double front = 0.0, load = 0.0;
-  };
-  auto slider_errors = [&](const SliderRun& run) {
-    SliderErrors e;
-    for (size_t i = 0; i < run.t.size(); ++i) {
-      const double xf = StarvedSlider::At(run.t[i], slider_exact);
-      e.front = std::max(e.front, std::abs(run.front[i] - xf));
-      e.load = std::max(e.load, std::abs(run.load[i] - slider.Load(xf)) / slider_load);
-    }
-    return e;
-  };
-  const SliderRun slider_coarse = SolveStarvedSlider(slider, 200, 1.0, slider_end);
   const SliderRun slider_run = SolveStarvedSlider(slider, 400, 1.0, slider_end);
-  const SliderErrors e_coarse = slider_errors(slider_coarse), e_run = slider_errors(slider_run);
+  const SliderErrors e_coarse =
+      CompareWithExact(slider, SolveStarvedSlider(slider, 200, 1.0, slider_end), slider_exact);
+  const SliderErrors e_run = CompareWithExact(slider, slider_run, slider_exact);
   const std::string s_src = "starved slider, supply rising: partial film + front jump condition";
   rows.push_back({"cavitation", "starved slider: front, max error over the run [mm] (400 cells)",
-                  s_src, e_run.front * 1e3, 0.0, 0.2, false});
+                  s_src, e_run.front_max * 1e3, 0.0, 0.2, false});
   rows.push_back({"cavitation", "starved slider: load, max error / final load (400 cells)", s_src,
-                  e_run.load, 0.0, 0.015, false});
+                  e_run.load_max, 0.0, 0.015, false});
   rows.push_back({"cavitation", "starved slider: order of the front error (200 -> 400 cells)",
-                  "first-order transport", std::log2(e_coarse.front / e_run.front), 1.0, 0.3,
-                  false});
+                  "first-order transport", std::log2(e_coarse.front_max / e_run.front_max), 1.0,
+                  0.3, false});
   rows.push_back({"cavitation", "starved slider: oil balance over the run / inflow",
                   "mass conservation", slider_run.mass_balance, 0.0, 1e-9, false});
   SqueezeRunOptions stiff = options;

@@ -130,6 +130,13 @@ struct SliderRun {
 };
 SliderRun SolveStarvedSlider(const StarvedSlider& problem, int cells, double courant,
                              double end_time);
+/// A run's errors against the exact solution over its steps: the front's largest and mean
+/// [m], the load's largest relative to the final supply's steady load.
+struct SliderErrors {
+  double front_max = 0.0, front_mean = 0.0, load_max = 0.0;
+};
+SliderErrors CompareWithExact(const StarvedSlider& problem, const SliderRun& run,
+                              const StarvedSlider::Trajectory& exact);
 
 /// The rows of `filmdyn validate --suite cavitation`.
 std::vector<verification::ValidationRow> CavitationValidationRows();

@@ -243,17 +243,11 @@ class TestTransientCavitation : public QObject {
       if (step) problem.theta_end = 0.58;  // the arriving jump stays below the gap at the front
       const double end_time = 0.025;
       const StarvedSlider::Trajectory exact = problem.Front(end_time);
-      const double w_end = problem.Load(problem.SteadyFront(problem.theta_end));
       std::vector<double> front_max, front_mean, load_max;
       for (int cells : {100, 200, 400, 800}) {
         const SliderRun run = SolveStarvedSlider(problem, cells, 1.0, end_time);
-        double fm = 0.0, fa = 0.0, lm = 0.0;
-        for (size_t i = 0; i < run.t.size(); ++i) {
-          const double xf = StarvedSlider::At(run.t[i], exact);
-          fm = std::max(fm, std::abs(run.front[i] - xf));
-          fa += std::abs(run.front[i] - xf) / double(run.t.size());
-          lm = std::max(lm, std::abs(run.load[i] - problem.Load(xf)) / w_end);
-        }
+        const SliderErrors e = CompareWithExact(problem, run, exact);
+        const double fm = e.front_max, fa = e.front_mean, lm = e.load_max;
         qInfo(
             "%s supply, %d cells: front error max %.4f mm, mean %.4f mm; load error max %.4f "
             "of the final load; oil balance %.2g",
