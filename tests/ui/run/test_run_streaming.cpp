@@ -277,7 +277,7 @@ class TestRunStreaming : public QObject {
     // Under AddressSanitizer the heap figures say nothing (below): two runs for the rest.
     constexpr int kRuns = FILMDYN_ASAN ? 2 : 8;
     std::vector<double> heap_mb;
-    std::size_t kept_samples = 0;  // output and motion samples of the last run (its curves)
+    std::vector<double> kept_samples;  // output and motion samples of each run (its curves)
     for (int k = 0; k < kRuns; ++k) {
       bool cancelled = false;
       auto connection =
@@ -299,20 +299,22 @@ class TestRunStreaming : public QObject {
       QVERIFY(!run->writeFields(QDir::tempPath() + "/filmdyn-cancelled-fields", &error));
       QVERIFY2(error.contains("cancelled"), qPrintable(error));
       heap_mb.push_back(HeapInUseMegabytes());
-      kept_samples = run->samples().size() + run->motion().size();
+      kept_samples.push_back(static_cast<double>(run->samples().size() + run->motion().size()));
     }
-    // After the first few runs (plot items, caches), later runs add little each (their curves);
-    // kept frames were ~8 MB per run more (the recorder's and the view's copies of ~150 frames).
+    // After the first few runs (plot items, caches), later runs add little each: their curves.
+    // Measured 3.85 MB per run on 2026-11-25, 4.46-4.48 MB on 2026-11-27 (runs of 1 400-1 700
+    // output and motion samples; the growth hardly follows the count). With the film frames kept
+    // (the recorder's and the view's copies of ~150 frames; tried by disabling the drop) it was
+    // 12.5 MB per run: that is what the bound is there to catch, with room for the curves' own
+    // growth as the outputs grow (the old bound of 5 MB failed once on a loaded machine).
     // AddressSanitizer replaces malloc (its quarantine keeps freed blocks): no bound there.
     if (!FILMDYN_ASAN) {
       const double growth = (heap_mb.back() - heap_mb[3]) / (kRuns - 4);
-      qInfo("heap in use after each cancelled run [MB]: %s; growth %.2f MB per run; the last "
-            "run keeps %zu output and motion samples",
-            qPrintable(JoinNumbers(heap_mb)), growth, kept_samples);
-      // Measured 3.85 MB per run on 2026-11-25 (1.6 MB in an earlier version; each run now
-      // also keeps its motion samples, ~0.6 MB of the difference): the bound is there to catch
-      // the film frames kept again (8 MB per run and more).
-      QVERIFY2(growth < 5.0, qPrintable(QString::number(growth)));
+      qInfo(
+          "heap in use after each cancelled run [MB]: %s; growth %.2f MB per run; output and "
+          "motion samples kept per run: %s",
+          qPrintable(JoinNumbers(heap_mb)), growth, qPrintable(JoinNumbers(kept_samples)));
+      QVERIFY2(growth < 7.0, qPrintable(QString::number(growth)));
     }
     QCOMPARE(window.runTable()->rowCount(), kRuns);
     // The field view says why the selected (cancelled) run shows no fields.
