@@ -71,7 +71,8 @@ struct JointKpis {
   /// (big end: side leakage; skirt: outflow nodes) over the cycle [m^3]: mass-conserving films
   /// from their oil account (every integrator step booked) between the cycle's first and last
   /// output steps, scaled to the cycle's duration; other films the mean of the equally spaced
-  /// output samples times the cycle's duration.
+  /// output samples times the cycle's duration — except a Reynolds skirt's inflow, which is
+  /// none (a mesh quantity: the film creates the oil it lacks where it reforms).
   std::optional<double> oil_in_per_cycle, oil_out_per_cycle;
   /// Mass-conserving (JFO) films: the oil balance between the cycle's first and last output
   /// steps relative to the oil supplied (coupling::OilAccount::BalanceSince); none otherwise.
