@@ -130,7 +130,8 @@ CaseField Cavitation(std::string path, Section EngineCase::*section,
                  1.0,
                  {},
                  "\"reynolds\" (Swift–Stieber, the paper's) or \"jfo\" (mass-conserving, "
-                 "the film's oil content carried from step to step)"});
+                 "the film's oil content carried from step to step; its sharper motion takes "
+                 "some 2–6× the integrator steps, and the run as much longer)"});
 }
 
 // The fields of one oil (lubrication::OilSpec) named prefix + "viscosity_model", ...: the case's
