@@ -38,5 +38,15 @@ function(filmdyn_add_qtest name)
     add_test(NAME ${name} COMMAND ${name})
     set_tests_properties(${name} PROPERTIES ENVIRONMENT "QT_QPA_PLATFORM=offscreen")
   endif()
+  # One time bound per suite, CTest's: QtTest's own watchdog (5 minutes per test function by
+  # default) is set to the suite's timeout, so that a slow machine or an instrumented build gets
+  # the whole budget and a suite that overruns it ends with CTest's clear timeout.
+  math(EXPR function_timeout_ms "${T_TIMEOUT} * 1000")
+  set_property(TEST ${name} APPEND PROPERTY ENVIRONMENT "QTEST_FUNCTION_TIMEOUT=${function_timeout_ms}")
+  # Instrumented builds (the sanitizer scripts' -fsanitize=...) run 3-6x slower: a suite may
+  # leave out there what only checks numbers the Release suites check (FILMDYN_INSTRUMENTED).
+  if(CMAKE_CXX_FLAGS MATCHES "-fsanitize=")
+    target_compile_definitions(${name} PRIVATE FILMDYN_INSTRUMENTED=1)
+  endif()
   set_tests_properties(${name} PROPERTIES LABELS "${labels}" TIMEOUT ${T_TIMEOUT})
 endfunction()

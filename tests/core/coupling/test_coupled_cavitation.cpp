@@ -241,7 +241,14 @@ class TestCoupledCavitation : public QObject {
     c.skirt.supply = lubrication::SkirtSupply::kStarved;
     c.solver.max_cycles = 4;
     double moft[2] = {}, fpl[2] = {};
-    for (int tight = 0; tight < 2; ++tight) {
+#ifdef FILMDYN_INSTRUMENTED
+    // Under the sanitizers (3-6x slower) the case's run alone: memory is what they check, the
+    // figures the Release suite does.
+    constexpr int kRuns = 1;
+#else
+    constexpr int kRuns = 2;
+#endif
+    for (int tight = 0; tight < kRuns; ++tight) {
       engine::EngineCase run = c;
       if (tight) {
         run.solver.position_tolerance *= 0.1;
@@ -258,6 +265,7 @@ class TestCoupledCavitation : public QObject {
       qInfo("starved skirt, tolerances x%g: %d cycles, %ld steps, min film %.4f um, FPL %.2f W",
             tight ? 0.1 : 1.0, r.cycles, r.stats.steps, 1e6 * moft[tight], fpl[tight]);
     }
+    if (kRuns < 2) return;
     QVERIFY2(std::abs(moft[0] - moft[1]) < 0.025 * moft[1], "min film: 2.5 % between 1x and 0.1x");
     QVERIFY2(std::abs(fpl[0] - fpl[1]) < 0.005 * fpl[1], "friction power: 0.5 %");
   }
