@@ -184,8 +184,12 @@ class TestRunStreaming : public QObject {
     // Coalescing: far fewer redraws than samples (one per ≥ 40 ms).
     QVERIFY(updates_while_running <= run_ms / filmdyn::ui::RunController::kRedrawIntervalMs + 5);
     QVERIFY2(heartbeat.maxGap() < 250 * kSlowBuild, "the GUI thread was blocked");
-    // Loose (2 shared cores): the timer must keep running, not hit every 10 ms.
-    QVERIFY(heartbeat.ticks() > run_ms / 10 / 10 / kSlowBuild);
+    // Loose (2 shared cores): the timer must keep running, not hit every 10 ms — a tenth of the
+    // ticks in the Release build, a fortieth under the sanitizers (measured there on a slow
+    // machine: 28 ticks in a 5.6 s run, with its largest gap 302 ms; the gap bound above is the
+    // responsiveness check).
+    QVERIFY2(heartbeat.ticks() > run_ms / 10 / (FILMDYN_ASAN ? 40 : 10),
+             qPrintable(QString::number(heartbeat.ticks())));
     // One reported cycle at 0.5 °CA, drawn in the plots and counted in the run table.
     QCOMPARE(int(run->samples().size()), 1440);
     QVERIFY(window.plotPanel()->pointCount(run->id()) >= 1440);
