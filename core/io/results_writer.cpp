@@ -257,7 +257,10 @@ OutputRow RowFromSample(const engine::CrankTrainSample& s, engine::Model model,
     r.skirt_peak_contact_pressure = s.skirt.max_contact_pressure;
     r.skirt_contact_friction_force = s.skirt.contact_friction_force;
     r.skirt_contact_fpl = s.skirt.contact_fpl;
-    r.skirt_inflow = s.skirt.inflow;
+    // A Reynolds skirt creates the oil it lacks where its film reforms: its boundary inflow is
+    // only the edge cells' share beside a cavitated zone, which falls with the cell. Only a
+    // mass-conserving skirt (one that keeps an oil account) has an inflow to report.
+    if (s.skirt.oil.kept) r.skirt_inflow = s.skirt.inflow;
     r.skirt_outflow = s.skirt.outflow;
     r.skirt_wetted_fraction = s.skirt.wetted_fraction;
     r.skirt_max_deformation = s.skirt.max_deformation;

@@ -275,6 +275,19 @@ class TestRunKpis : public QObject {
     QVERIFY(Near(skirt.oil_out_per_cycle.value(), 2e-6 * Synthetic::kPeriod, 1e-12));
     QVERIFY(!skirt.oil_in_per_cycle);
     QVERIFY(!skirt.oil_balance && !big_end.oil_balance);
+    // Likewise its results.csv column: the Reynolds skirt's inflow is an empty cell, its outflow
+    // and the big end's flows are there; a skirt that keeps an oil account (JFO) reports it.
+    {
+      engine::CrankTrainSample reynolds = cycle.samples.at(10);
+      const io::OutputRow row = io::RowFromSample(reynolds, engine::Model::kSkirtLbrbe, 0.0);
+      QVERIFY(!row.skirt_inflow);
+      QCOMPARE(row.skirt_outflow.value(), reynolds.skirt.outflow);
+      QCOMPARE(row.bearing_supply_flow.value(), reynolds.bearing.supply_flow);
+      engine::CrankTrainSample jfo = reynolds;
+      jfo.skirt.oil.Book(jfo.time, 1e-6, 0.5e-6, 0.4e-6, 0.0, 0.0, 0.0);
+      QCOMPARE(io::RowFromSample(jfo, engine::Model::kSkirtLbrbe, 0.0).skirt_inflow.value(),
+               0.5e-6);
+    }
     // The position rule's other quadrants: 90° = toward the small end, 0 = rod-frame x.
     engine::CrankTrainSample s;
     s.bearing.journal_ecc_rod = {0.0, 2e-5};

@@ -273,9 +273,9 @@ class TestPlotPanel : public QObject {
          {{"supply", filmdyn::ui::FormatReadout((*at)[Column::kBearingSupplyFlow] * 1e6, "cm³/s")},
           {"side leakage",
            filmdyn::ui::FormatReadout((*at)[Column::kBearingSideFlow] * 1e6, "cm³/s")}}},
+        // The run's skirt is a Reynolds film: its outflow only (its inflow is no figure).
         {"skirt_oil_flow",
-         {{"in", filmdyn::ui::FormatReadout((*at)[Column::kSkirtInflow] * 1e6, "cm³/s")},
-          {"out", filmdyn::ui::FormatReadout((*at)[Column::kSkirtOutflow] * 1e6, "cm³/s")}}},
+         {{"out", filmdyn::ui::FormatReadout((*at)[Column::kSkirtOutflow] * 1e6, "cm³/s")}}},
         {"skirt_wetted_fraction",
          {{"skirt", filmdyn::ui::FormatReadout((*at)[Column::kSkirtWettedFraction], "")}}}};
     for (const Expected& e : plots) {
@@ -290,6 +290,16 @@ class TestPlotPanel : public QObject {
         if (e.series.size() > 1) QVERIFY2(legend.contains(name), qPrintable(legend.join(" | ")));
         QVERIFY2(readout.contains(value), qPrintable(readout + " lacks " + value));
       }
+    }
+    // The Reynolds skirt's inflow (an empty results.csv cell) is neither drawn nor listed.
+    QVERIFY(std::isnan((*at)[Column::kSkirtInflow]));
+    {
+      const int i = panel.chartIndex("skirt_oil_flow");
+      QStringList legend;
+      for (const auto& [text, pen] : panel.legendEntries(i)) legend << text;
+      QVERIFY2(!legend.contains("in"), qPrintable(legend.join(" | ")));
+      for (const QString& line : panel.readoutLines(i))
+        QVERIFY2(!line.startsWith("in:"), qPrintable(line));
     }
     // The skirt's flows cannot be negative, nor the oil-covered share: their axes start at 0.
     QCOMPARE(Axis(panel.chart(panel.chartIndex("skirt_oil_flow")), Qt::Vertical)->min(), 0.0);
