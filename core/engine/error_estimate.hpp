@@ -126,12 +126,13 @@ inline constexpr const char* kUnresolvedPeakNote = "not estimated (a spike betwe
 /// What the estimate's summary adds for a run with a mass-conserving big end.
 inline constexpr const char* kMassConservingNote =
     "a mass-conserving big end's oil per cycle converges more slowly with the mesh than its film "
-    "(order 1.6), and at low speed a mass-conserving big end's figures are not "
+    "(order 1.6), and at 4000 rpm and below a mass-conserving big end's figures are not "
     "in the asymptotic range of these meshes (at 2000 rpm, fed only by its film-start line, its "
     "minimum film fell 7-14 % per refinement up to 800 elements around; fed by a crank-pin hole, "
-    "its film after the gas-exchange TDC fell at first order, to some 13 % below the default "
-    "mesh's minimum, and its friction power rose 2-7 % per refinement up to 800): there this "
-    "estimate understates their error (docs/validation/errors.md, section 6)";
+    "at 2000 and 4000 rpm its film after the gas-exchange TDC fell at first order, to some 13 % "
+    "below the default mesh's minimum, and at 2000 rpm its friction power rose 2-7 % per "
+    "refinement up to 800): there this estimate understates their error "
+    "(docs/validation/errors.md, section 6)";
 
 struct ErrorEstimate {
   /// "estimated"; "off" (solver.error_estimate = 0); "not-applicable" (no lubricated joint);
