@@ -47,10 +47,10 @@ fi
 cmake --build "$asan" -j "$jobs"
 echo "sanitizers: ASan + UBSan build ($scope scope) done at $(( $(date +%s) - start )) s"
 filmdyn_sanitizer_env
-# The tests labelled 'long' are left out here: the estimate's own test (two full coupled runs at
-# several speeds, ~160 s in Release), `filmdyn reproduce` (six runs of the paper's study, ~110 s
-# under ASan) and the engine runs with elastic joints (~120 s under ASan); their code paths are
-# those of the run-job, coupled-run, CLI and elastic-film tests.
+# The tests labelled 'long' are left out in both scopes: the estimate's own test (two full
+# coupled runs at several speeds, ~160 s in Release), `filmdyn reproduce` (six runs of the paper's
+# study, ~110 s under ASan) and the engine runs with elastic joints (~120 s under ASan); their
+# code paths are those of the run-job, coupled-run, CLI and elastic-film tests.
 # The GL tests (label 'gl') run without leak detection: Mesa's driver is unloaded at exit and
 # leaves allocations no stack can be attributed to; ASan and UBSan still check them.
 # The ci scope also leaves out the tests labelled 'heavy' (see the header).

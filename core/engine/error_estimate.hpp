@@ -129,7 +129,7 @@ inline constexpr const char* kMassConservingNote =
     "(order 1.6), and at 4000 rpm and below a mass-conserving big end's figures are not "
     "in the asymptotic range of these meshes (at 2000 rpm, fed only by its film-start line, its "
     "minimum film fell 7-14 % per refinement up to 800 elements around; fed by a crank-pin hole, "
-    "at 2000 and 4000 rpm its film after the gas-exchange TDC fell at first order, to some 13 % "
+    "at 2000 and 4000 rpm its film after the gas-exchange TDC fell at first order, to some 13-15 % "
     "below the default mesh's minimum, and at 2000 rpm its friction power rose 2-7 % per "
     "refinement up to 800): there this estimate understates their error "
     "(docs/validation/errors.md, section 6)";

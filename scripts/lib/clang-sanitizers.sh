@@ -38,7 +38,8 @@ filmdyn_configure_clang() {
 }
 
 filmdyn_asan_build_dir() { echo "${FILMDYN_ASAN_BUILD_DIR:-$filmdyn_root/build-asan}"; }
-# filmdyn_configure_asan [CMAKE_ARGS...]: later arguments override the defaults (-DFILMDYN_BUILD_UI=OFF).
+# filmdyn_configure_asan [CMAKE_ARGS...]: later arguments override the defaults
+# (-DFILMDYN_BUILD_UI=OFF).
 filmdyn_configure_asan() {
   filmdyn_configure_clang "$(filmdyn_asan_build_dir)" "$filmdyn_asan_flags" \
     -DFILMDYN_BUILD_UI=ON -DFILMDYN_BUILD_TESTS=ON -DFILMDYN_BUILD_FUZZ=ON "$@"
