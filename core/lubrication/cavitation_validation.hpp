@@ -138,6 +138,30 @@ struct SliderErrors {
 SliderErrors CompareWithExact(const StarvedSlider& problem, const SliderRun& run,
                               const StarvedSlider::Trajectory& exact);
 
+/// A partial film carried through a parallel gap: the film never fills the gap, so there is no
+/// pressure anywhere and the fluid fraction is only transported, unchanged, at U/2. The film
+/// entered through the inlet, whose supply rose smoothly from theta_start to theta_end over
+/// ramp_time along (1 - cos)/2 and has since stayed at theta_end; at t = 0 the rise lies inside
+/// the strip (it began `entered` before): theta(x, t) = Supply(entered + t - 2x/U). The exact
+/// solution of the void transport alone, which shows its order in the cell size (the starved
+/// slider's errors are its front's; here no front and no change at the inlet).
+struct CarriedFilm {
+  double length = 0.01, gap = 20e-6, speed = 2.0, viscosity = 0.02;
+  double theta_start = 0.3, theta_end = 0.7, ramp_time = 4e-3, entered = 5e-3;
+  double Supply(double t) const;
+  double Exact(double x, double t) const { return Supply(entered + t - 2.0 * x / speed); }
+};
+/// |theta - exact| over the free nodes at the end of a run: mean and largest.
+struct CarriedFilmError {
+  double mean = 0.0, max = 0.0;
+  double mass_balance = 0.0;  ///< (oil in - oil out - change of stored oil) / oil in
+};
+/// The carried film on a strip of `cells` elements from the exact film at t = 0, stepped by the
+/// transient JFO solve (backward Euler) at the step that moves the film `courant` cells, to
+/// end_time, carried by the given ReynoldsOptions::void_transport_order.
+CarriedFilmError SolveCarriedFilm(const CarriedFilm& problem, int cells, double courant,
+                                  double end_time, int transport_order);
+
 /// The rows of `filmdyn validate --suite cavitation`.
 std::vector<verification::ValidationRow> CavitationValidationRows();
 

@@ -116,6 +116,8 @@ ReynoldsFem::ReynoldsFem(TriMesh mesh, int sliding_axis, ReynoldsOptions options
   down_pos_plus_.assign(n, -1);
   down_pos_minus_.assign(n, -1);
   face_width_.assign(n, 0.0);
+  down_gap_plus_.assign(n, 0.0);
+  down_gap_minus_.assign(n, 0.0);
   for (int j = 0; j < ny; ++j) {
     for (int i = 0; i < nx; ++i) {
       const int k = mesh_.Node(i, j);
@@ -133,6 +135,11 @@ ReynoldsFem::ReynoldsFem(TriMesh mesh, int sliding_axis, ReynoldsOptions options
         if (j > 0) w += 0.5 * (mesh_.y_lines[j] - mesh_.y_lines[j - 1]);
         if (j + 1 < ny) w += 0.5 * (mesh_.y_lines[j + 1] - mesh_.y_lines[j]);
         face_width_[k] = w;
+        if (i + 1 < nx || mesh_.periodic_x) down_gap_plus_[k] = mesh_.ColumnWidth(i);
+        if (i > 0)
+          down_gap_minus_[k] = mesh_.ColumnWidth(i - 1);
+        else if (mesh_.periodic_x)
+          down_gap_minus_[k] = mesh_.ColumnWidth(nx - 1);
       } else {
         if (j + 1 < ny) down_node_plus_[k] = mesh_.Node(i, j + 1);
         if (j > 0) down_node_minus_[k] = mesh_.Node(i, j - 1);
@@ -143,6 +150,8 @@ ReynoldsFem::ReynoldsFem(TriMesh mesh, int sliding_axis, ReynoldsOptions options
         else if (mesh_.periodic_x)
           w += 0.5 * mesh_.ColumnWidth(nx - 1);
         face_width_[k] = w;
+        if (j + 1 < ny) down_gap_plus_[k] = mesh_.y_lines[j + 1] - mesh_.y_lines[j];
+        if (j > 0) down_gap_minus_[k] = mesh_.y_lines[j] - mesh_.y_lines[j - 1];
       }
       if (down_node_plus_[k] >= 0) down_pos_plus_[k] = FindPos(k_full_, down_node_plus_[k], k);
       if (down_node_minus_[k] >= 0) down_pos_minus_[k] = FindPos(k_full_, down_node_minus_[k], k);

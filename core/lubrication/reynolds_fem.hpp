@@ -79,6 +79,14 @@ struct ReynoldsOptions {
   /// Convergence: max|M^-1 r| <= pcg_tolerance * max|p| (M^-1 r is the correction the
   /// preconditioner would apply, i.e. ~ the error of p).
   double pcg_tolerance = 1e-11;
+  /// JFO transient films: the fluid fraction the Couette flow carries through a dual-cell face.
+  /// 2 (default): reconstructed at the face from the upwind node's fraction and its limited
+  /// slope (minmod of the slopes on either side), the slope taken from the last accepted
+  /// state's fractions (a deferred correction, so that each solve stays one linear complementarity
+  /// problem) — second order where the partial film is smooth, and no new extremum.
+  /// 1: the upwind node's own fraction (first order; kept for the verification's comparison).
+  /// Quasi-static solves (time_step = 0) carry the upwind node's fraction in either case.
+  int void_transport_order = 2;
 };
 
 /// Scalars of one solve. Nodal inputs are set through ReynoldsFem's mutable accessors.
@@ -241,6 +249,9 @@ class ReynoldsFem {
   std::vector<int> diag_pos_full_, down_pos_plus_, down_pos_minus_;  // JFO transport slots
   std::vector<int> down_node_plus_, down_node_minus_;
   std::vector<double> face_width_;  // dual-cell width across the sliding direction [m]
+  std::vector<double> down_gap_plus_, down_gap_minus_;  // distance to that neighbour [m]
+  std::vector<int> up_node_;                            // JFO: the upstream neighbour (scratch)
+  Eigen::VectorXd fraction_old_, face_correction_;      // JFO second-order transport (scratch)
   Eigen::VectorXd h_face_;  // JFO: gap carried by the Couette flux from node k downstream [m]
   std::unique_ptr<SparseLdlt> ldlt_;
   std::unique_ptr<SparseLu> lu_;  // JFO: the mixed (p, r) system

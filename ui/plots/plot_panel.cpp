@@ -856,7 +856,9 @@ void PlotPanel::paintOverlay(const ChartEntry& entry, QPainter* painter) const {
     painter->setClipRect(area);
     // A mark's label goes outward from the plot's origin (the bearing centre, the zero load)
     // or, where that place is taken by an earlier label (the curve passes a spot twice, e.g.
-    // 270° and 630°), to the nearest free place around the mark.
+    // 270° and 630°), to the nearest free place around the mark, a little farther out if none
+    // is free beside it. Where none is free (marks crowded in a small diagram) the label is left
+    // out rather than drawn over another: the mark's dot stays and the cursor readout names it.
     std::vector<QRectF> labels;
     const QPointF origin = to_pos(QPointF(0, 0));
     auto draw_label = [&](QPointF at, const QString& text) {
@@ -866,20 +868,29 @@ void PlotPanel::paintOverlay(const ChartEntry& entry, QPainter* painter) const {
                               ? std::atan2(outward.y(), outward.x())
                               : -std::numbers::pi / 4;
       QRectF chosen;
-      for (int i = 0; i < 16 && chosen.isNull(); ++i) {
-        const double a = base + (i % 2 ? 1 : -1) * ((i + 1) / 2) * (std::numbers::pi / 8);
-        const QPointF dir(std::cos(a), std::sin(a));
-        const double reach =
-            6.0 + 0.5 * (std::abs(dir.x()) * size.width() + std::abs(dir.y()) * size.height());
-        const QRectF rect(at + dir * reach - QPointF(size.width() / 2, size.height() / 2), size);
-        const bool free = std::none_of(labels.begin(), labels.end(),
-                                       [&rect](const QRectF& r) { return r.intersects(rect); });
-        if (free && area.contains(rect)) chosen = rect;
+      for (double gap : {6.0, 16.0}) {
+        for (int i = 0; i < 16 && chosen.isNull(); ++i) {
+          const double a = base + (i % 2 ? 1 : -1) * ((i + 1) / 2) * (std::numbers::pi / 8);
+          const QPointF dir(std::cos(a), std::sin(a));
+          const double reach =
+              gap + 0.5 * (std::abs(dir.x()) * size.width() + std::abs(dir.y()) * size.height());
+          const QRectF rect(at + dir * reach - QPointF(size.width() / 2, size.height() / 2), size);
+          const bool free = std::none_of(labels.begin(), labels.end(),
+                                         [&rect](const QRectF& r) { return r.intersects(rect); });
+          if (free && area.contains(rect)) chosen = rect;
+        }
+        if (!chosen.isNull()) break;
       }
-      if (chosen.isNull()) chosen = QRectF(at + QPointF(5, -4 - size.height()), size);
+      if (chosen.isNull()) return;
       labels.push_back(chosen);
       painter->drawText(chosen, Qt::AlignCenter, text);
     };
+    struct PendingLabel {
+      QPointF at;
+      int mark;
+      QColor colour;
+    };
+    std::vector<PendingLabel> pending;
     for (int id : runs) {
       const auto points = entry.run_points.value(id);
       for (size_t k = 0; k < points.size(); ++k) {
@@ -890,10 +901,9 @@ void PlotPanel::paintOverlay(const ChartEntry& entry, QPainter* painter) const {
             painter->setPen(QPen(Qt::white, 1));
             painter->setBrush(colour);
             painter->drawEllipse(at, 3.5, 3.5);
-            if (id == runs.front()) {  // labels once (the first run); the others' marks align
-              painter->setPen(colour.darker(130));
-              draw_label(at, QString("%1°").arg(mark));
-            }
+            // Labels once (the first run; the others' marks align), drawn over every run's
+            // marks and arrows below.
+            if (id == runs.front()) pending.push_back({at, mark, colour.darker(130)});
           }
           // An arrowhead half way to the next mark, along the local tangent.
           const auto a = PointAtAngle(points[k], mark + 44.0);
@@ -916,6 +926,10 @@ void PlotPanel::paintOverlay(const ChartEntry& entry, QPainter* painter) const {
           }
         }
       }
+    }
+    for (const PendingLabel& label : pending) {
+      painter->setPen(label.colour);
+      draw_label(label.at, QString("%1°").arg(label.mark));
     }
     painter->setClipping(false);
   }
