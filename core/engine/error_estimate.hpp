@@ -127,11 +127,11 @@ inline constexpr const char* kUnresolvedPeakNote = "not estimated (a spike betwe
 inline constexpr const char* kMassConservingNote =
     "a mass-conserving big end's oil per cycle converges more slowly with the mesh than its film "
     "(order 1.6), and at 4000 rpm and below a mass-conserving big end's figures are not "
-    "in the asymptotic range of these meshes (at 2000 rpm, fed only by its film-start line, its "
-    "minimum film fell 7-14 % per refinement up to 800 elements around; fed by a crank-pin hole, "
-    "at 2000 and 4000 rpm its film after the gas-exchange TDC fell at first order, to some 13-15 % "
-    "below the default mesh's minimum, and at 2000 rpm its friction power rose 2-7 % per "
-    "refinement up to 800): there this estimate understates their error "
+    "in the asymptotic range of these meshes (fed only by its film-start line, at 2000 rpm its "
+    "minimum film fell by a quarter from 100 to 200 elements around; fed by a crank-pin hole, "
+    "its minimum film, after the gas-exchange TDC, was 7-11 % thinner with 200 or more elements "
+    "around at 4000 and 2000 rpm, and it and the oil through the hole moved by 9-14 % with the "
+    "elements across): there this estimate understates their error "
     "(docs/validation/errors.md, section 6)";
 
 struct ErrorEstimate {
