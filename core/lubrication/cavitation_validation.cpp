@@ -7,6 +7,7 @@
 #include <functional>
 #include <numbers>
 #include <stdexcept>
+#include <string>
 
 #include "core/lubrication/tri_mesh.hpp"
 
@@ -306,30 +307,72 @@ double StarvedSlider::At(double t, const Trajectory& tr) {
   return tr.front[i - 1] + w * (tr.front[i] - tr.front[i - 1]);
 }
 
+namespace {
+
+// The strip of the sliding problems: `cells` JFO elements, one surface sliding at `speed`, p = 0
+// at both ends, the inlet's fixed nodes supplying a fluid fraction, the outlet's full.
+struct SlidingStrip {
+  static constexpr double kWidth = 1e-4;
+  ReynoldsFem fem;
+  ReynoldsParams params;
+  double net_in = 0.0, inflow = 0.0;  // oil through the fixed nodes so far [m^3 per width]
+  SlidingStrip(double length, int cells, double speed, double viscosity, int transport_order)
+      : fem(MakeStripMesh(length, cells, kWidth), 0, Options(transport_order)), half(0.5 * length) {
+    fem.film_rate().setZero();
+    params.viscosity = viscosity;
+    params.u_sum = speed;
+    params.u_diff = speed;
+  }
+  static ReynoldsOptions Options(int transport_order) {
+    ReynoldsOptions opt;
+    opt.cavitation = CavitationModel::kJfo;
+    opt.void_transport_order = transport_order;
+    return opt;
+  }
+  void SetSupply(double theta) {
+    const TriMesh& m = fem.mesh();
+    for (int k = 0; k < m.NodeCount(); ++k)
+      fem.boundary_fraction()[k] = m.x[k] < half ? theta : 1.0;
+  }
+  // One transient step of dt from the history; books the flows through the fixed nodes and makes
+  // the solution the next step's history. `what` names the problem in the error.
+  const ReynoldsSolution& Step(double dt, const char* what) {
+    params.time_step = dt;
+    const ReynoldsSolution& sol = fem.Solve(params);
+    if (sol.stats.status != SolveStatus::kConverged)
+      throw std::runtime_error(std::string(what) + ": a transient solve did not converge");
+    const TriMesh& m = fem.mesh();
+    for (int k = 0; k < m.NodeCount(); ++k) {
+      if (!m.fixed[k]) continue;
+      net_in += dt * sol.residual[k];
+      inflow += dt * std::max(sol.residual[k], 0.0);
+    }
+    fem.void_history() = sol.void_content;
+    return sol;
+  }
+  // (oil in - oil out - change of stored oil) / oil in, from the voids' volume at the start and
+  // now (the gap is fixed in time, so the stored oil changes as minus the voids').
+  double MassBalance(double v_start, double v_end) const {
+    return (net_in + (v_end - v_start)) / std::max(inflow, 1e-300);
+  }
+  double half;
+};
+
+}  // namespace
+
 SliderRun SolveStarvedSlider(const StarvedSlider& problem, int cells, double courant,
                              double end_time) {
-  const double width = 1e-4;
-  ReynoldsOptions opt;
-  opt.cavitation = CavitationModel::kJfo;
-  ReynoldsFem fem(MakeStripMesh(problem.length, cells, width), 0, opt);
+  SlidingStrip strip(problem.length, cells, problem.speed, problem.viscosity, 2);
+  ReynoldsFem& fem = strip.fem;
   const TriMesh& m = fem.mesh();
   const int nx = m.nx_nodes(), n = m.NodeCount();
   const double dx = problem.length / cells;
   for (int k = 0; k < n; ++k) fem.film_thickness()[k] = problem.Gap(m.x[k]);
-  fem.film_rate().setZero();
-  auto set_supply = [&](double theta) {
-    for (int k = 0; k < n; ++k)
-      fem.boundary_fraction()[k] = m.x[k] < 0.5 * problem.length ? theta : 1.0;
-  };
-  ReynoldsParams params;
-  params.viscosity = problem.viscosity;
-  params.u_sum = problem.speed;
-  params.u_diff = problem.speed;
   // The steady state at the starting supply (quasi-static: no history).
-  set_supply(problem.theta_start);
+  strip.SetSupply(problem.theta_start);
   double v_start = 0.0, v_end = 0.0;  // the voids' volume at the start and the end
   {
-    const ReynoldsSolution& sol = fem.Solve(params);
+    const ReynoldsSolution& sol = fem.Solve(strip.params);
     if (sol.stats.status != SolveStatus::kConverged)
       throw std::runtime_error("starved slider: the steady solve did not converge");
     fem.void_history() = sol.void_content;
@@ -338,21 +381,11 @@ SliderRun SolveStarvedSlider(const StarvedSlider& problem, int cells, double cou
   SliderRun run;
   const double dt = courant * dx / (0.5 * problem.speed);
   const int steps = static_cast<int>(std::ceil(end_time / dt - 1e-9));
-  double net_in = 0.0, inflow = 0.0;
-  params.time_step = dt;
   for (int step = 1; step <= steps; ++step) {
     const double t = step * dt;
-    set_supply(problem.Supply(t));
-    const ReynoldsSolution& sol = fem.Solve(params);
-    if (sol.stats.status != SolveStatus::kConverged)
-      throw std::runtime_error("starved slider: a transient solve did not converge");
+    strip.SetSupply(problem.Supply(t));
+    const ReynoldsSolution& sol = strip.Step(dt, "starved slider");
     run.stats.Add(sol.stats);
-    for (int k = 0; k < n; ++k) {
-      if (!m.fixed[k]) continue;
-      net_in += dt * sol.residual[k];
-      inflow += dt * std::max(sol.residual[k], 0.0);
-    }
-    fem.void_history() = sol.void_content;
     v_end = sol.void_volume;
     // The front: half-way between the last cavitated node and the full one after it (the inlet
     // when no node is cavitated; the outlet's node is prescribed, never cavitated).
@@ -364,12 +397,10 @@ SliderRun SolveStarvedSlider(const StarvedSlider& problem, int cells, double cou
       }
     run.t.push_back(t);
     run.front.push_back(front);
-    run.load.push_back(fem.Integrate(sol.pressure) / width);
+    run.load.push_back(fem.Integrate(sol.pressure) / SlidingStrip::kWidth);
     run.fraction_excess = std::max(run.fraction_excess, sol.stats.fraction_excess);
   }
-  // The stored oil is the gap's less the voids'; the gap is fixed in time.
-  const double stored_change = -(v_end - v_start);
-  run.mass_balance = (net_in - stored_change) / std::max(inflow, 1e-300);
+  run.mass_balance = strip.MassBalance(v_start, v_end);
   return run;
 }
 
@@ -381,24 +412,11 @@ double CarriedFilm::Supply(double t) const {
 
 CarriedFilmError SolveCarriedFilm(const CarriedFilm& problem, int cells, double courant,
                                   double end_time, int transport_order) {
-  const double width = 1e-4;
-  ReynoldsOptions opt;
-  opt.cavitation = CavitationModel::kJfo;
-  opt.void_transport_order = transport_order;
-  ReynoldsFem fem(MakeStripMesh(problem.length, cells, width), 0, opt);
+  SlidingStrip strip(problem.length, cells, problem.speed, problem.viscosity, transport_order);
+  ReynoldsFem& fem = strip.fem;
   const TriMesh& m = fem.mesh();
   const int n = m.NodeCount();
-  const double dx = problem.length / cells;
   fem.film_thickness().setConstant(problem.gap);
-  fem.film_rate().setZero();
-  auto set_supply = [&](double theta) {
-    for (int k = 0; k < n; ++k)
-      fem.boundary_fraction()[k] = m.x[k] < 0.5 * problem.length ? theta : 1.0;
-  };
-  ReynoldsParams params;
-  params.viscosity = problem.viscosity;
-  params.u_sum = problem.speed;
-  params.u_diff = problem.speed;
   // The exact film at t = 0 (smooth surfaces: the void content is (1 - theta) h).
   const std::vector<double> area = LumpedAreas(m);
   double v_start = 0.0, v_end = 0.0;
@@ -407,22 +425,12 @@ CarriedFilmError SolveCarriedFilm(const CarriedFilm& problem, int cells, double 
     fem.void_history()[k] = m.fixed[k] ? 0.0 : (1.0 - problem.Exact(m.x[k], 0.0)) * problem.gap;
     v_start += area[k] * fem.void_history()[k];
   }
-  const double dt = courant * dx / (0.5 * problem.speed);
+  const double dt = courant * (problem.length / cells) / (0.5 * problem.speed);
   const int steps = static_cast<int>(std::ceil(end_time / dt - 1e-9));
-  params.time_step = dt;
-  double net_in = 0.0, inflow = 0.0;
   Eigen::VectorXd fraction;
   for (int step = 1; step <= steps; ++step) {
-    set_supply(problem.Exact(0.0, step * dt));
-    const ReynoldsSolution& sol = fem.Solve(params);
-    if (sol.stats.status != SolveStatus::kConverged)
-      throw std::runtime_error("carried film: a transient solve did not converge");
-    for (int k = 0; k < n; ++k) {
-      if (!m.fixed[k]) continue;
-      net_in += dt * sol.residual[k];
-      inflow += dt * std::max(sol.residual[k], 0.0);
-    }
-    fem.void_history() = sol.void_content;
+    strip.SetSupply(problem.Exact(0.0, step * dt));
+    const ReynoldsSolution& sol = strip.Step(dt, "carried film");
     v_end = sol.void_volume;
     fraction = sol.fluid_fraction;
   }
@@ -436,7 +444,7 @@ CarriedFilmError SolveCarriedFilm(const CarriedFilm& problem, int cells, double 
     ++count;
   }
   e.mean /= std::max(count, 1);
-  e.mass_balance = (net_in + (v_end - v_start)) / std::max(inflow, 1e-300);
+  e.mass_balance = strip.MassBalance(v_start, v_end);
   return e;
 }
 
