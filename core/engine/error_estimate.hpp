@@ -129,10 +129,11 @@ inline constexpr const char* kMassConservingNote =
     "(order 1.6), and at 4000 rpm and below a mass-conserving big end's figures are not "
     "in the asymptotic range of these meshes (fed only by its film-start line, at 2000 rpm its "
     "minimum film fell by a quarter from 100 to 200 elements around; fed by a crank-pin hole, "
-    "the oil through the hole was some 19 % more with 20 elements across instead of 10 and 200 "
-    "around, and its minimum film, after the gas-exchange TDC, moved by 6-11 % with the elements "
-    "around and across, in opposite ways, to within 3 % of the finest meshes' on the default "
-    "mesh): there this estimate understates their error (docs/validation/errors.md, section 6)";
+    "its oil per cycle on the default mesh was some 18 % below the finest meshes' (the hole "
+    "holds one row of its elements across), and its minimum film, after the gas-exchange TDC, "
+    "moved by 6-11 % with the elements around and across, in opposite ways, to within 4 % of "
+    "the finest meshes' on the default mesh): there this estimate understates their error "
+    "(docs/validation/errors.md, section 6)";
 
 struct ErrorEstimate {
   /// "estimated"; "off" (solver.error_estimate = 0); "not-applicable" (no lubricated joint);
