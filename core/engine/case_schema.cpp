@@ -746,7 +746,11 @@ void SetDescriptions(std::vector<CaseField>& fields) {
       {"big_end.supply_hole_angles",
        "Where the supply holes are: shell holes measured from the rod axis toward the small "
        "end, crank-pin holes from the crank web's axis, counter-clockwise. One angle per hole."},
-      {"big_end.supply_hole_diameter", "Diameter of each supply hole."},
+      {"big_end.supply_hole_diameter",
+       "Diameter of each supply hole. The film holds the supply pressure at the mesh nodes "
+       "inside the hole: with 10 elements across, one row of them; the oil a crank-pin hole "
+       "feeds a mass-conserving film is some 18 % low there, so give 20 or more (big-end mesh "
+       "across)."},
       {"big_end.groove_start_angle",
        "Where the shell groove starts, from the rod axis toward the small end, "
        "counter-clockwise."},
