@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/lubrication/bearing_solver.hpp"
 #include "core/lubrication/tri_mesh.hpp"
 
 namespace filmdyn::lubrication {
@@ -316,8 +317,9 @@ struct SlidingStrip {
   ReynoldsFem fem;
   ReynoldsParams params;
   double net_in = 0.0, inflow = 0.0;  // oil through the fixed nodes so far [m^3 per width]
-  SlidingStrip(double length, int cells, double speed, double viscosity, int transport_order)
-      : fem(MakeStripMesh(length, cells, kWidth), 0, Options(transport_order)), half(0.5 * length) {
+  SlidingStrip(std::vector<double> x_lines, double speed, double viscosity, int transport_order)
+      : fem(MakeStripMesh(x_lines, kWidth), 0, Options(transport_order)),
+        half(0.5 * x_lines.back()) {
     fem.film_rate().setZero();
     params.viscosity = viscosity;
     params.u_sum = speed;
@@ -362,7 +364,7 @@ struct SlidingStrip {
 
 SliderRun SolveStarvedSlider(const StarvedSlider& problem, int cells, double courant,
                              double end_time) {
-  SlidingStrip strip(problem.length, cells, problem.speed, problem.viscosity, 2);
+  SlidingStrip strip(Linspace(0.0, problem.length, cells), problem.speed, problem.viscosity, 2);
   ReynoldsFem& fem = strip.fem;
   const TriMesh& m = fem.mesh();
   const int nx = m.nx_nodes(), n = m.NodeCount();
@@ -412,7 +414,8 @@ double CarriedFilm::Supply(double t) const {
 
 CarriedFilmError SolveCarriedFilm(const CarriedFilm& problem, int cells, double courant,
                                   double end_time, int transport_order) {
-  SlidingStrip strip(problem.length, cells, problem.speed, problem.viscosity, transport_order);
+  SlidingStrip strip(GradedWidth(cells, problem.length, problem.grading, false), problem.speed,
+                     problem.viscosity, transport_order);
   ReynoldsFem& fem = strip.fem;
   const TriMesh& m = fem.mesh();
   const int n = m.NodeCount();

@@ -148,6 +148,8 @@ SliderErrors CompareWithExact(const StarvedSlider& problem, const SliderRun& run
 struct CarriedFilm {
   double length = 0.01, gap = 20e-6, speed = 2.0, viscosity = 0.02;
   double theta_start = 0.3, theta_end = 0.7, ramp_time = 4e-3, entered = 5e-3;
+  /// Largest / smallest cell, graded smoothly (GradedWidth: the largest mid-strip); 1 = uniform.
+  double grading = 1.0;
   double Supply(double t) const;
   double Exact(double x, double t) const { return Supply(entered + t - 2.0 * x / speed); }
 };
@@ -157,7 +159,7 @@ struct CarriedFilmError {
   double mass_balance = 0.0;  ///< (oil in - oil out - change of stored oil) / oil in
 };
 /// The carried film on a strip of `cells` elements from the exact film at t = 0, stepped by the
-/// transient JFO solve (backward Euler) at the step that moves the film `courant` cells, to
+/// transient JFO solve (backward Euler) at the step that moves the film `courant` mean cells, to
 /// end_time, carried by the given ReynoldsOptions::void_transport_order.
 CarriedFilmError SolveCarriedFilm(const CarriedFilm& problem, int cells, double courant,
                                   double end_time, int transport_order);

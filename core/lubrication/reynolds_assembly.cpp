@@ -157,6 +157,12 @@ ReynoldsFem::ReynoldsFem(TriMesh mesh, int sliding_axis, ReynoldsOptions options
       if (down_node_minus_[k] >= 0) down_pos_minus_[k] = FindPos(k_full_, down_node_minus_[k], k);
     }
   }
+  up_node_plus_.assign(n, -1);
+  up_node_minus_.assign(n, -1);
+  for (int k = 0; k < n; ++k) {
+    if (down_node_plus_[k] >= 0) up_node_plus_[down_node_plus_[k]] = k;
+    if (down_node_minus_[k] >= 0) up_node_minus_[down_node_minus_[k]] = k;
+  }
 
   ldlt_ = SparseLdlt::Create(options_.backend);
   ldlt_->Analyze(k_lower_);  // ordering + symbolic factorisation, once per mesh

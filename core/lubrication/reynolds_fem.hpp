@@ -250,7 +250,7 @@ class ReynoldsFem {
   std::vector<int> down_node_plus_, down_node_minus_;
   std::vector<double> face_width_;  // dual-cell width across the sliding direction [m]
   std::vector<double> down_gap_plus_, down_gap_minus_;  // distance to that neighbour [m]
-  std::vector<int> up_node_;                            // JFO: the upstream neighbour (scratch)
+  std::vector<int> up_node_plus_, up_node_minus_;       // the node whose downstream is k
   Eigen::VectorXd fraction_old_, face_correction_;      // JFO second-order transport (scratch)
   Eigen::VectorXd h_face_;  // JFO: gap carried by the Couette flux from node k downstream [m]
   std::unique_ptr<SparseLdlt> ldlt_;

@@ -80,9 +80,7 @@ bool ReynoldsFem::SolveJfo() {
   Eigen::VectorXd& correction = face_correction_;
   correction.setZero(n);
   if (transient && options_.void_transport_order >= 2) {
-    up_node_.assign(n, -1);
-    for (int k = 0; k < n; ++k)
-      if (bnode[k] >= 0) up_node_[bnode[k]] = k;
+    const std::vector<int>& up = plus ? up_node_plus_ : up_node_minus_;
     const std::vector<double>& gap = plus ? down_gap_plus_ : down_gap_minus_;
     Eigen::VectorXd& old = fraction_old_;
     old.resize(n);
@@ -93,7 +91,7 @@ bool ReynoldsFem::SolveJfo() {
                                 : 0.0;
     }
     for (int k = 0; k < n; ++k) {
-      const int d = bnode[k], u = up_node_[k];
+      const int d = bnode[k], u = up[k];
       if (d < 0 || u < 0 || fixed_[k] || fixed_[d]) continue;
       const double s_up = (old[k] - old[u]) / gap[u], s_down = (old[d] - old[k]) / gap[k];
       if (!(s_up * s_down > 0.0)) continue;

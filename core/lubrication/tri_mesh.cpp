@@ -14,7 +14,11 @@ double TriMesh::ColumnWidth(int i) const {
 }
 
 TriMesh MakeStripMesh(double length, int n, double width) {
-  TriMesh mesh = MakeTensorMesh(Linspace(0.0, length, n), Linspace(0.0, width, 1), false, 0.0);
+  return MakeStripMesh(Linspace(0.0, length, n), width);
+}
+
+TriMesh MakeStripMesh(std::vector<double> x_lines, double width) {
+  TriMesh mesh = MakeTensorMesh(std::move(x_lines), Linspace(0.0, width, 1), false, 0.0);
   const int nx = mesh.nx_nodes();
   for (int j = 0; j < 2; ++j) {
     mesh.fixed[mesh.Node(0, j)] = 1;

@@ -40,6 +40,8 @@ TriMesh MakeTensorMesh(std::vector<double> x_lines, std::vector<double> y_lines,
 /// A strip of n x 1 elements along x on [0, length] x [0, width], both ends' nodes fixed: the
 /// mesh of one-dimensional verification problems (no flow across the strip's sides).
 TriMesh MakeStripMesh(double length, int n, double width);
+/// The same strip on given node lines along x (first 0, last the length).
+TriMesh MakeStripMesh(std::vector<double> x_lines, double width);
 
 /// Evenly spaced lines: n intervals on [a, b] (n + 1 values).
 std::vector<double> Linspace(double a, double b, int n);

@@ -306,6 +306,23 @@ class TestTransientCavitation : public QObject {
       QVERIFY(o2 > 1.6);
       QVERIFY(o1 > 0.8 && o1 < 1.3);
     }
+    // On a smoothly graded strip (cells 4:1, the bearing's grading kind) the slopes take the
+    // spacing on either side: still second order.
+    CarriedFilm graded = problem;
+    graded.grading = 4.0;
+    std::vector<double> errors;
+    for (int cells : {100, 200, 400}) {
+      const CarriedFilmError e = SolveCarriedFilm(graded, cells, 0.2 * 100.0 / cells, end_time, 2);
+      qInfo("graded 4:1, %d cells: mean error %.3g, oil balance %.2g", cells, e.mean,
+            e.mass_balance);
+      QVERIFY(std::abs(e.mass_balance) < 1e-12);
+      errors.push_back(e.mean);
+    }
+    for (size_t i = 1; i < errors.size(); ++i) {
+      const double order = std::log2(errors[i - 1] / errors[i]);
+      qInfo("  graded: order of the mean error %.2f", order);
+      QVERIFY(order > 1.6);
+    }
   }
 
   void starvedInletOfAConvergingSlider() {
