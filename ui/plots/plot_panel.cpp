@@ -24,6 +24,7 @@
 #include "ui/charts/chart_export.hpp"
 #include "ui/charts/palette.hpp"
 #include "ui/charts/round_ticks.hpp"
+#include "ui/plots/mark_labels.hpp"
 
 namespace filmdyn::ui {
 
@@ -854,37 +855,9 @@ void PlotPanel::paintOverlay(const ChartEntry& entry, QPainter* painter) const {
   // Crank-angle marks every 90 °CA and arrows along the direction of travel (orbit, load).
   if (entry.spec->equal_axes) {
     painter->setClipRect(area);
-    // A mark's label goes outward from the plot's origin (the bearing centre, the zero load)
-    // or, where that place is taken by an earlier label (the curve passes a spot twice, e.g.
-    // 270° and 630°), to the nearest free place around the mark, a little farther out if none
-    // is free beside it. Where none is free (marks crowded in a small diagram) the label is left
-    // out rather than drawn over another: the mark's dot stays and the cursor readout names it.
-    std::vector<QRectF> labels;
+    // Labels placed by PlaceMarkLabels: outward, else beside their mark, else left out (the
+    // mark's dot stays and the cursor readout names it).
     const QPointF origin = to_pos(QPointF(0, 0));
-    auto draw_label = [&](QPointF at, const QString& text) {
-      const QSizeF size = metrics.size(0, text);
-      const QPointF outward = at - origin;
-      const double base = std::hypot(outward.x(), outward.y()) > 1e-6
-                              ? std::atan2(outward.y(), outward.x())
-                              : -std::numbers::pi / 4;
-      QRectF chosen;
-      for (double gap : {6.0, 16.0}) {
-        for (int i = 0; i < 16 && chosen.isNull(); ++i) {
-          const double a = base + (i % 2 ? 1 : -1) * ((i + 1) / 2) * (std::numbers::pi / 8);
-          const QPointF dir(std::cos(a), std::sin(a));
-          const double reach =
-              gap + 0.5 * (std::abs(dir.x()) * size.width() + std::abs(dir.y()) * size.height());
-          const QRectF rect(at + dir * reach - QPointF(size.width() / 2, size.height() / 2), size);
-          const bool free = std::none_of(labels.begin(), labels.end(),
-                                         [&rect](const QRectF& r) { return r.intersects(rect); });
-          if (free && area.contains(rect)) chosen = rect;
-        }
-        if (!chosen.isNull()) break;
-      }
-      if (chosen.isNull()) return;
-      labels.push_back(chosen);
-      painter->drawText(chosen, Qt::AlignCenter, text);
-    };
     struct PendingLabel {
       QPointF at;
       int mark;
@@ -927,9 +900,14 @@ void PlotPanel::paintOverlay(const ChartEntry& entry, QPainter* painter) const {
         }
       }
     }
-    for (const PendingLabel& label : pending) {
-      painter->setPen(label.colour);
-      draw_label(label.at, QString("%1°").arg(label.mark));
+    std::vector<MarkLabel> marks;
+    for (const PendingLabel& label : pending)
+      marks.push_back({label.at, metrics.size(0, QString("%1°").arg(label.mark))});
+    const std::vector<QRectF> placed = PlaceMarkLabels(marks, origin, area);
+    for (std::size_t i = 0; i < pending.size(); ++i) {
+      if (placed[i].isNull()) continue;
+      painter->setPen(pending[i].colour);
+      painter->drawText(placed[i], Qt::AlignCenter, QString("%1°").arg(pending[i].mark));
     }
     painter->setClipping(false);
   }

@@ -12,12 +12,15 @@
 #include <QValueAxis>
 #include <QWheelEvent>
 #include <QtTest>
+#include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "core/engine/run_job.hpp"
 #include "core/io/case_file.hpp"
 #include "core/io/results_writer.hpp"
 #include "ui/charts/round_ticks.hpp"
+#include "ui/plots/mark_labels.hpp"
 #include "ui/plots/plot_export.hpp"
 #include "ui/plots/plot_panel.hpp"
 
@@ -174,6 +177,62 @@ class TestPlotPanel : public QObject {
     QVERIFY(panel.legendEntries(lateral).empty());  // one kind: the shared legend says it all
     panel.setRunVisible(ideal_.id, false);
     QVERIFY(!panel.runLegendText().contains(ideal_.label));
+  }
+
+  void crankAngleLabelsNeverOverlap() {
+    // The marks of an orbit every 90 °CA (eight per cycle) on a ring of radius 20-120 px around
+    // the origin, two cycles' marks close together (the curve passes a spot twice), in a small
+    // and a large diagram: every label placed lies in the plot, none overlaps another; in a large
+    // diagram every label finds a place; a crowded one leaves some out rather than overlap.
+    const QSizeF size(34.0, 14.0);  // "630°" in an 9-10 pt font
+    for (double radius : {20.0, 60.0, 120.0}) {
+      const QRectF area(0.0, 0.0, 6.0 * radius + 120.0, 6.0 * radius + 120.0);
+      const QPointF origin = area.center();
+      std::vector<filmdyn::ui::MarkLabel> marks;
+      for (int mark = 0; mark < 720; mark += 90) {
+        const double a = mark * std::numbers::pi / 180.0;
+        const double r = radius * (mark < 360 ? 1.0 : 1.04);  // the second pass 4 % outside
+        marks.push_back({origin + QPointF(r * std::cos(a), r * std::sin(a)), size});
+      }
+      const std::vector<QRectF> placed = filmdyn::ui::PlaceMarkLabels(marks, origin, area);
+      QCOMPARE(placed.size(), marks.size());
+      int shown = 0;
+      for (std::size_t i = 0; i < placed.size(); ++i) {
+        if (placed[i].isNull()) continue;
+        ++shown;
+        QVERIFY(area.contains(placed[i]));
+        QCOMPARE(placed[i].size(), size);
+        for (std::size_t j = 0; j < i; ++j)
+          QVERIFY2(
+              placed[j].isNull() || !placed[j].intersects(placed[i]),
+              qPrintable(QString("radius %1: labels %2 and %3 overlap").arg(radius).arg(j).arg(i)));
+        // Near its mark: within the farther reach and the label's own size.
+        const QPointF d = placed[i].center() - marks[i].at;
+        QVERIFY(std::hypot(d.x(), d.y()) < 16.0 + size.width());
+      }
+      qInfo("marks on a ring of %g px: %d of %zu labels shown", radius, shown, marks.size());
+      if (radius >= 120.0) QCOMPARE(shown, int(marks.size()));
+      QVERIFY(shown >= 4);  // at least the first cycle's marks' labels
+    }
+    // A diagram too small for its labels (eight marks on a ring of 8 px in 90 × 60 px): some are
+    // left out, and those shown still never overlap (drawing them anyway would).
+    std::vector<filmdyn::ui::MarkLabel> crowded;
+    const QRectF small(0.0, 0.0, 90.0, 60.0);
+    for (int mark = 0; mark < 720; mark += 90) {
+      const double a = mark * std::numbers::pi / 180.0;
+      crowded.push_back({small.center() + QPointF(8.0 * std::cos(a), 8.0 * std::sin(a)), size});
+    }
+    const std::vector<QRectF> placed = filmdyn::ui::PlaceMarkLabels(crowded, small.center(), small);
+    const auto left_out =
+        std::count_if(placed.begin(), placed.end(), [](const QRectF& r) { return r.isNull(); });
+    qInfo("a 90 x 60 px diagram: %d of 8 labels left out", int(left_out));
+    QVERIFY(left_out > 0 && left_out < 8);
+    for (std::size_t i = 0; i < placed.size(); ++i) {
+      if (placed[i].isNull()) continue;
+      QVERIFY(small.contains(placed[i]));
+      for (std::size_t j = 0; j < i; ++j)
+        QVERIFY(placed[j].isNull() || !placed[i].intersects(placed[j]));
+    }
   }
 
   void orbitFillsItsPanelInsideTheClearance() {

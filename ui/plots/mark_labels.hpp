@@ -1,0 +1,25 @@
+#pragma once
+
+#include <QPointF>
+#include <QRectF>
+#include <QSizeF>
+#include <vector>
+
+namespace filmdyn::ui {
+
+/// A crank-angle mark's label to place: the mark's position and the label's text size [px].
+struct MarkLabel {
+  QPointF at;
+  QSizeF size;
+};
+
+/// Places the labels of an orbit's or a load diagram's crank-angle marks, in order: each goes
+/// outward from the diagram's origin (the bearing centre, the zero load) or, where an earlier
+/// label took that place (the curve passes a spot twice, e.g. 270° and 630°), to the nearest
+/// free place around its mark, a little farther out if none is free beside it. Where none is
+/// free within `area` (marks crowded in a small diagram) the label is left out: its rectangle is
+/// null. The placed rectangles lie within `area` and never overlap one another.
+std::vector<QRectF> PlaceMarkLabels(const std::vector<MarkLabel>& marks, QPointF origin,
+                                    const QRectF& area);
+
+}  // namespace filmdyn::ui
