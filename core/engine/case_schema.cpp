@@ -749,8 +749,8 @@ void SetDescriptions(std::vector<CaseField>& fields) {
       {"big_end.supply_hole_diameter",
        "Diameter of each supply hole. The film holds the supply pressure at the mesh nodes "
        "inside the hole: with 10 elements across, one row of them; the oil a crank-pin hole "
-       "feeds a mass-conserving film is some 18 % low there, so give 20 or more (big-end mesh "
-       "across)."},
+       "feeds a mass-conserving film is some 18 % low there, so give 20 or more across and 200 "
+       "around (big-end mesh); a run on a mesh that does not hold the hole warns."},
       {"big_end.groove_start_angle",
        "Where the shell groove starts, from the rod axis toward the small end, "
        "counter-clockwise."},

@@ -12,12 +12,14 @@
 //   the film or eccentricity warnings.
 // - A run stopped at max_cycles before it is periodic: the not-periodic warning with the last
 //   cycle-to-cycle change; progress still ends at 1.
+#include <QRegularExpression>
 #include <QtTest>
 
 #include <algorithm>
 #include <cmath>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "core/engine/run_job.hpp"
 #include "core/io/case_file.hpp"
@@ -292,6 +294,55 @@ class TestRunWarnings : public QObject {
         QVERIFY(QString::fromStdString(x.message).contains("big_end.supply"));
         QCOMPARE(QString::fromStdString(io::WarningShortText(x)), QString("film-start supply"));
       }
+  }
+
+  void supplyHoleOnACoarseMeshWarns() {
+    // Judged from the case: a JFO big end fed through a 4 mm crank-pin hole on the default mesh
+    // (100 around, 10 graded 4:1 across: only the mid-width row inside the hole) warns and names
+    // a mesh that holds it; on that mesh, a Reynolds film or no holes, it does not.
+    const engine::RunResult none;
+    auto find = [&](const engine::EngineCase& c) -> std::optional<io::RunWarning> {
+      for (const io::RunWarning& x :
+           io::RunWarnings(Config(c, engine::Model::kOnlyLbrbe, 2000.0), none))
+        if (x.code == "supply_hole_mesh") return x;
+      return std::nullopt;
+    };
+    engine::EngineCase c = engine::EngineCase{};
+    c.big_end.cavitation = lubrication::CavitationModel::kJfo;
+    c.big_end.supply = lubrication::OilFeedKind::kPinHoles;
+    c.big_end.oil_feed_pressure = 3e5;
+    QCOMPARE(c.big_end.mesh_theta, 100);
+    QCOMPARE(c.big_end.mesh_z, 10);
+    const auto w = find(c);
+    QVERIFY(w.has_value());
+    QCOMPARE(w->joint, std::string("big_end"));
+    QCOMPARE(w->value, 1.0);  // the mid-width row alone
+    QCOMPARE(w->limit, double(io::kHoleRowsAcross));
+    const QString text = QString::fromStdString(w->message);
+    qInfo("%s", qPrintable(text));
+    QVERIFY(text.contains("big_end.mesh_z = 10") && text.contains("1 row of"));
+    QCOMPARE(QString::fromStdString(io::WarningShortText(*w)),
+             QString("supply hole on a coarse mesh"));
+    // The mesh it names holds the hole: no warning there.
+    const QRegularExpression named("big_end.mesh_z = (\\d+) and big_end.mesh_theta = (\\d+)");
+    const QRegularExpressionMatch m = named.match(text);
+    QVERIFY(m.hasMatch());
+    engine::EngineCase fine = c;
+    fine.big_end.mesh_z = m.captured(1).toInt();
+    fine.big_end.mesh_theta = m.captured(2).toInt();
+    QCOMPARE(fine.big_end.mesh_z, 20);       // rows at 0 and ±1.7 mm, within 0.9 × 2 mm
+    QCOMPARE(fine.big_end.mesh_theta, 200);  // 8.6 mean elements across the hole
+    QVERIFY(!find(fine).has_value());
+    // 20 across but 100 around (the hole spans 4.3 mean elements; the oil was 6 % low): coarse.
+    engine::EngineCase across_only = c;
+    across_only.big_end.mesh_z = 20;
+    QVERIFY(find(across_only).has_value());
+    engine::EngineCase reynolds = c;
+    reynolds.big_end.cavitation = lubrication::CavitationModel::kReynolds;
+    QVERIFY(!find(reynolds).has_value());
+    engine::EngineCase groove = c;
+    groove.big_end.supply = lubrication::OilFeedKind::kGroove;
+    QVERIFY(!find(groove).has_value());
   }
 
   void thickFilmsGiveNoFilmWarnings() {
