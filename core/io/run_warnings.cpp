@@ -290,10 +290,7 @@ void SupplyHoleMeshWarning(const engine::EngineCase& c, std::vector<RunWarning>*
   const double r = 0.9 * 0.5 * be.supply_hole_diameter, mid = 0.5 * be.width;
   // The rows across as the solver lays them (the symmetric half mirrors the same lines).
   auto rows_inside = [&](int n_z) {
-    const std::vector<double> z =
-        be.mesh_z_grading == 1.0
-            ? lubrication::Linspace(0.0, be.width, n_z)
-            : lubrication::GradedWidth(n_z, be.width, be.mesh_z_grading, false);
+    const std::vector<double> z = lubrication::WidthLines(n_z, be.width, be.mesh_z_grading, false);
     return static_cast<int>(
         std::count_if(z.begin(), z.end(), [&](double zk) { return std::abs(zk - mid) <= r; }));
   };
@@ -303,16 +300,21 @@ void SupplyHoleMeshWarning(const engine::EngineCase& c, std::vector<RunWarning>*
   const double spans = around(be.mesh_theta);
   if (rows >= kHoleRowsAcross && spans >= kHoleElementsAround) return;
   // The smallest meshes that hold it: an even count across (the symmetric half), around a
-  // multiple of 50.
+  // multiple of 50; none beyond the case's largest meshes.
+  auto most = [](std::string_view path) {
+    return static_cast<int>(engine::FindCaseField(path)->range.hi);
+  };
+  const int most_z = most("big_end.mesh_z"), most_theta = most("big_end.mesh_theta");
   int n_z = be.mesh_z;
   if (rows < kHoleRowsAcross)
-    while (n_z < 5000 && (n_z % 2 != 0 || rows_inside(n_z) < kHoleRowsAcross)) ++n_z;
+    while (n_z < most_z && (n_z % 2 != 0 || rows_inside(n_z) < kHoleRowsAcross)) ++n_z;
   int n_theta = be.mesh_theta;
   if (spans < kHoleElementsAround) {
-    n_theta = static_cast<int>(
-                  std::ceil(kHoleElementsAround * circumference / be.supply_hole_diameter / 50.0)) *
-              50;
+    n_theta = std::min(most_theta, static_cast<int>(std::ceil(kHoleElementsAround * circumference /
+                                                              be.supply_hole_diameter / 50.0)) *
+                                       50);
   }
+  const bool held = rows_inside(n_z) >= kHoleRowsAcross && around(n_theta) >= kHoleElementsAround;
   RunWarning w;
   w.code = "supply_hole_mesh";
   w.joint = "big_end";
@@ -325,10 +327,12 @@ void SupplyHoleMeshWarning(const engine::EngineCase& c, std::vector<RunWarning>*
       "than {} rows or {:g} elements the oil a mass-conserving film takes through a crank-pin "
       "hole was 6-19 % below the finest meshes' at 2000-4000 rpm (on 200 x 20, the first mesh "
       "that holds it, 2.5 % below 400 x 20), which the error estimate does not see "
-      "(docs/validation/errors.md, section 6); "
-      "big_end.mesh_z = {} and big_end.mesh_theta = {} hold this hole",
+      "(docs/validation/errors.md, section 6); {}",
       be.supply_hole_diameter * 1e3, rows, rows == 1 ? "" : "s", spans, be.mesh_z, be.mesh_theta,
-      kHoleRowsAcross, kHoleElementsAround, n_z, n_theta);
+      kHoleRowsAcross, kHoleElementsAround,
+      held ? fmt::format("big_end.mesh_z = {} and big_end.mesh_theta = {} hold this hole", n_z,
+                         n_theta)
+           : std::string("no mesh the case allows holds a hole this small"));
   out->push_back(std::move(w));
 }
 

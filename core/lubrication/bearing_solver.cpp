@@ -151,6 +151,11 @@ std::vector<double> GradedWidth(int n, double length, double ratio, bool half) {
   return z;
 }
 
+std::vector<double> WidthLines(int n, double length, double ratio, bool half) {
+  return ratio == 1.0 ? Linspace(0.0, half ? 0.5 * length : length, n)  // uniform
+                      : GradedWidth(n, length, ratio, half);
+}
+
 TriMesh BearingSolver::MakeMesh(const BearingGeometry& g, const BearingMeshSpec& spec,
                                 bool fix_theta0) {
   const double period = 2.0 * kPi * g.radius;
@@ -163,10 +168,7 @@ TriMesh BearingSolver::MakeMesh(const BearingGeometry& g, const BearingMeshSpec&
     xs.back() = period;
   }
   xs.pop_back();  // periodic: x = 2 pi R is node column 0
-  const double width = spec.symmetric_half ? 0.5 * g.length : g.length;
-  std::vector<double> zs =
-      spec.z_grading == 1.0 ? Linspace(0.0, width, spec.n_z)  // uniform
-                            : GradedWidth(spec.n_z, g.length, spec.z_grading, spec.symmetric_half);
+  std::vector<double> zs = WidthLines(spec.n_z, g.length, spec.z_grading, spec.symmetric_half);
   TriMesh m = MakeTensorMesh(std::move(xs), std::move(zs), true, period);
   const int nx = m.nx_nodes(), ny = m.ny_nodes();
   for (int i = 0; i < nx; ++i) {

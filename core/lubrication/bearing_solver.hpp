@@ -55,6 +55,11 @@ std::vector<double> GradedAngles(int n, double ratio);
 /// beta = (ratio - 1) / (ratio + 1).
 std::vector<double> GradedWidth(int n, double length, double ratio, bool half);
 
+/// The node lines across the width of a bearing mesh of n elements (or of its half): uniform
+/// when `ratio` is 1 (Linspace), else GradedWidth. One definition for the solver's mesh and for
+/// whoever judges it (a run's warnings).
+std::vector<double> WidthLines(int n, double length, double ratio, bool half);
+
 /// Oil supply: where the film is held at the supply pressure (fixed-pressure nodes, a full film
 /// there; with mass-conserving cavitation the oil they pass into the film is the supply flow).
 ///  - kLineOfCentres (default): p = 0 on theta = 0, the film start following the line of

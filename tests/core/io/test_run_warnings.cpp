@@ -337,6 +337,12 @@ class TestRunWarnings : public QObject {
     engine::EngineCase across_only = c;
     across_only.big_end.mesh_z = 20;
     QVERIFY(find(across_only).has_value());
+    // A hole too small for any mesh the case allows (a 10 µm hole needs 75 000 elements around).
+    engine::EngineCase pinhole = c;
+    pinhole.big_end.supply_hole_diameter = 1e-5;
+    const auto tiny = find(pinhole);
+    QVERIFY(tiny.has_value());
+    QVERIFY(QString::fromStdString(tiny->message).contains("no mesh the case allows"));
     engine::EngineCase reynolds = c;
     reynolds.big_end.cavitation = lubrication::CavitationModel::kReynolds;
     QVERIFY(!find(reynolds).has_value());
