@@ -268,7 +268,8 @@ void FilmStartSupplyWarning(const engine::EngineCase& c, std::vector<RunWarning>
       "(big_end.supply = line_of_centres): at low speed that starves its film, whose figures "
       "then depend on the mesh beyond the error estimate (at 2000 rpm its minimum film fell by "
       "a quarter from 100 to 200 elements around, with no limit in sight; fed by a crank-pin "
-      "hole at 0.3 MPa it converges, within 1 % from 200 elements around and 20 across: "
+      "hole at 0.3 MPa its minimum film converges, within 1 % from 200 elements around and 20 "
+      "across: "
       "docs/validation/errors.md, section 6); give the engine's oil supply (big_end.supply, "
       "big_end.oil_feed_pressure)";
   out->push_back(std::move(w));
