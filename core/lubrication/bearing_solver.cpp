@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <tuple>
 
 #include "core/base/input_error.hpp"
 #include "core/lubrication/film_integrals.hpp"
@@ -235,6 +236,8 @@ void BearingSolver::MarkSupplyNodes(const BearingState& s) {
   Eigen::VectorXd& pb = fem_.boundary_pressure();
   std::fill(extra.begin(), extra.end(), 0);
   pb.setZero();
+  std::vector<EmbeddedCut>& cuts = fem_.embedded_cuts();
+  cuts.clear();
   const double pressure = s.supply_pressure.value_or(feed.pressure);
   const double z_mid = 0.5 * g.length;  // the symmetric half's mid-plane is its last row
   int j_mid = 0;
@@ -245,45 +248,122 @@ void BearingSolver::MarkSupplyNodes(const BearingState& s) {
   auto frame_angle = [&](double body_angle, double orientation) {
     return WrapTwoPi(orientation + body_angle - (s.line_of_centres_angle + kPi));
   };
-  auto distance = [](double a, double b) { return std::abs(WrapTwoPi(a - b + kPi) - kPi); };
   auto mark = [&](int k) {
     if (m.fixed[k]) return;
     extra[k] = 1;
     pb[k] = pressure;
   };
+  const int nx = m.nx_nodes(), ny = m.ny_nodes();
+  // Each region is held on the nodes inside it (a region narrower than the mesh on its nearest
+  // nodes); its edge between those nodes and their free neighbours is then placed where it
+  // cuts the mesh lines (EmbeddedCut: the flow into the film sees the region's true size, at
+  // second order, and changes continuously as a region turns over the mesh). `entry(free,
+  // held)` is the fraction of the way from the free node (i, j) to the held one where the
+  // segment enters the region; a node held only as the nearest, outside it, keeps the plain
+  // finite-element boundary. Cut after every region is marked (a node another region holds is
+  // not free); an edge two regions cut keeps the nearer crossing.
+  using Ij = std::array<int, 2>;
+  auto cut_edges = [&](auto&& inside, auto&& entry) {
+    for (int j = 0; j < ny; ++j) {
+      for (int i = 0; i < nx; ++i) {
+        const int held = m.Node(i, j);
+        if (!extra[held] || !inside(Ij{i, j})) continue;
+        for (Ij nb : {Ij{i - 1, j}, Ij{i + 1, j}, Ij{i, j - 1}, Ij{i, j + 1}}) {
+          if (nb[1] < 0 || nb[1] >= ny) continue;
+          if (nb[0] < 0 || nb[0] >= nx) {
+            if (!m.periodic_x) continue;
+            nb[0] = (nb[0] + nx) % nx;
+          }
+          const int k = m.Node(nb[0], nb[1]);
+          if (extra[k] || m.fixed[k]) continue;
+          cuts.push_back({k, held, std::clamp(entry(nb, Ij{i, j}), 0.0, 1.0)});
+        }
+      }
+    }
+  };
+  // The groove: signed distance to its rectangle (negative inside), across the width and around
+  // from its two ends in the bearing body (a whole-circle groove has none). Each is linear along
+  // a mesh line inside the other's band, so the crossing by interpolation is exact.
+  const double span = feed.groove_end - feed.groove_start;
+  const bool whole_circle = span >= 2.0 * kPi - 1e-12;
+  auto groove_around = [&](const Ij& n) {
+    if (whole_circle) return -1e300;
+    const double body = WrapTwoPi(theta_[m.Node(n[0], n[1])] + s.line_of_centres_angle + kPi -
+                                  s.bearing_angle - feed.groove_start);
+    return g.radius *
+           (body <= span ? -std::min(body, span - body) : std::min(body - span, 2.0 * kPi - body));
+  };
+  auto groove_distance = [&](const Ij& n) {
+    return std::max(std::abs(m.y_lines[n[1]] - z_mid) - 0.5 * feed.groove_width, groove_around(n));
+  };
   if (HasGroove(feed.kind)) {
-    const double span = feed.groove_end - feed.groove_start;
-    for (int j = 0; j < m.ny_nodes(); ++j) {
+    for (int j = 0; j < ny; ++j) {
       if (j != j_mid && std::abs(m.y_lines[j] - z_mid) > 0.5 * feed.groove_width) continue;
-      for (int i = 0; i < m.nx_nodes(); ++i) {
-        const int k = m.Node(i, j);
-        // The node's angle in the bearing body, from the groove's start.
-        const double body = WrapTwoPi(theta_[k] + s.line_of_centres_angle + kPi - s.bearing_angle -
-                                      feed.groove_start);
-        if (span >= 2.0 * kPi - 1e-12 || body <= span) mark(k);
-      }
+      for (int i = 0; i < nx; ++i)
+        if (groove_around(Ij{i, j}) <= 0.0) mark(m.Node(i, j));
     }
   }
-  if (!HasHoles(feed.kind)) return;
-  const bool pin = HasPinHoles(feed.kind);
-  const double orientation = pin ? s.journal_angle : s.bearing_angle;
+  // The holes: a node's position from a hole's centre, around (signed, the short way) and
+  // across.
   const double r_hole = 0.5 * feed.hole_diameter;
-  for (double hole : feed.hole_angles) {
-    const double centre = frame_angle(hole, orientation);
-    int nearest = -1;
-    double best = 1e300;
-    for (int j = 0; j < m.ny_nodes(); ++j) {
-      const double dz = m.y_lines[j] - z_mid;
-      for (int i = 0; i < m.nx_nodes(); ++i) {
-        const int k = m.Node(i, j);
-        const double dx = g.radius * distance(theta_[k], centre);
-        const double d2 = dx * dx + dz * dz;
-        if (d2 <= r_hole * r_hole) mark(k);
-        if (d2 < best) best = d2, nearest = k;
+  auto hole_offset = [&](double centre, const Ij& n) {
+    const double turn = WrapTwoPi(theta_[m.Node(n[0], n[1])] - centre + kPi) - kPi;
+    return std::array<double, 2>{g.radius * turn, m.y_lines[n[1]] - z_mid};
+  };
+  auto in_hole = [&](double centre, const Ij& n) {
+    const std::array<double, 2> d = hole_offset(centre, n);
+    return d[0] * d[0] + d[1] * d[1] <= r_hole * r_hole;
+  };
+  // Signed distance from the hole's edge (negative inside), interpolated linearly along an
+  // edge for the crossing: a node just inside the circle then has its plain boundary (fraction
+  // 1), as the hole's nearest node has when the circle holds none, and the hole's flow stays
+  // continuous as a node enters it (the exact intersection would jump there).
+  auto hole_distance = [&](double centre, const Ij& n) {
+    const std::array<double, 2> d = hole_offset(centre, n);
+    return std::hypot(d[0], d[1]) - r_hole;
+  };
+  std::vector<double> centres;
+  if (HasHoles(feed.kind)) {
+    const double orientation = HasPinHoles(feed.kind) ? s.journal_angle : s.bearing_angle;
+    for (double hole : feed.hole_angles) {
+      const double centre = frame_angle(hole, orientation);
+      centres.push_back(centre);
+      int nearest = -1;
+      double best = 1e300;
+      for (int j = 0; j < ny; ++j) {
+        for (int i = 0; i < nx; ++i) {
+          const std::array<double, 2> d = hole_offset(centre, Ij{i, j});
+          const double d2 = d[0] * d[0] + d[1] * d[1];
+          if (d2 <= r_hole * r_hole) mark(m.Node(i, j));
+          if (d2 < best) best = d2, nearest = m.Node(i, j);
+        }
       }
+      if (nearest >= 0) mark(nearest);
     }
-    if (nearest >= 0) mark(nearest);
   }
+  if (HasGroove(feed.kind)) {
+    cut_edges([&](const Ij& n) { return groove_distance(n) <= 0.0; },
+              [&](const Ij& out, const Ij& in) {
+                const double d_out = groove_distance(out), d_in = groove_distance(in);
+                return d_out / (d_out - d_in);
+              });
+  }
+  for (double centre : centres) {
+    cut_edges([&](const Ij& n) { return in_hole(centre, n); },
+              [&](const Ij& free, const Ij& held) {
+                const double d_out = hole_distance(centre, free);
+                return d_out / (d_out - hole_distance(centre, held));
+              });
+  }
+  std::sort(cuts.begin(), cuts.end(), [](const EmbeddedCut& x, const EmbeddedCut& y) {
+    return std::tie(x.free_node, x.fixed_node, x.fraction) <
+           std::tie(y.free_node, y.fixed_node, y.fraction);
+  });
+  cuts.erase(std::unique(cuts.begin(), cuts.end(),
+                         [](const EmbeddedCut& x, const EmbeddedCut& y) {
+                           return x.free_node == y.free_node && x.fixed_node == y.fixed_node;
+                         }),
+             cuts.end());
 }
 
 const BearingResult& BearingSolver::SolveAt(const BearingState& state, double t) {

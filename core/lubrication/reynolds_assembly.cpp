@@ -299,4 +299,31 @@ void ReynoldsFem::Assemble(const ReynoldsParams& params) {
   flow_scale_ = scale > 0.0 ? scale : 1e-300;
 }
 
+void ReynoldsFem::ApplyEmbeddedCuts() {
+  for (const EmbeddedCut& cut : cuts_) {
+    const int k = cut.free_node, j = cut.fixed_node;
+    if (k < 0 || j < 0 || k >= NodeCount() || j >= NodeCount() || !fixed_[j] || fixed_[k])
+      throw std::logic_error("ReynoldsFem: an embedded cut must join a free node to a fixed one");
+    if (!(cut.fraction >= 0.0 && cut.fraction <= 1.0))
+      throw std::logic_error("ReynoldsFem: an embedded cut's fraction must be in [0, 1]");
+    const int lower = FindPos(k_lower_, std::max(k, j), std::min(k, j));
+    if (lower < 0) continue;  // not neighbours in the pattern: no pressure flow between them
+    // The edge's conductance c = -K_kj over the fraction of its length: the off-diagonals and
+    // both diagonals (row sums stay zero, the matrix symmetric) change by c (1/s - 1).
+    const double s = std::max(cut.fraction, EmbeddedCut::kMinFraction);
+    double* kl = k_lower_.valuePtr();
+    const double extra = -kl[lower] * (1.0 / s - 1.0);
+    kl[lower] -= extra;
+    kl[FindPos(k_lower_, k, k)] += extra;
+    kl[FindPos(k_lower_, j, j)] += extra;
+    if (full_assembled_) {
+      double* kf = k_full_.valuePtr();
+      kf[FindPos(k_full_, k, j)] -= extra;
+      kf[FindPos(k_full_, j, k)] -= extra;
+      kf[FindPos(k_full_, k, k)] += extra;
+      kf[FindPos(k_full_, j, j)] += extra;
+    }
+  }
+}
+
 }  // namespace filmdyn::lubrication

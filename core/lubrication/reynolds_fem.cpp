@@ -68,6 +68,7 @@ const ReynoldsSolution& ReynoldsFem::Solve(const ReynoldsParams& params) {
   auto t0 = Clock::now();
   for (int k = 0; k < n; ++k) fixed_[k] = mesh_.fixed[k] || extra_fixed_[k];
   Assemble(params);
+  ApplyEmbeddedCuts();
   sol_.stats.assembly_s = Seconds(t0, Clock::now());
   sol_.fluid_fraction.setOnes();
   sol_.void_content.setZero();
