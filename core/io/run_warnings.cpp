@@ -275,11 +275,10 @@ void FilmStartSupplyWarning(const engine::EngineCase& c, std::vector<RunWarning>
   out->push_back(std::move(w));
 }
 
-// A mass-conserving big end fed through holes on a mesh that holds too few of the hole's nodes
-// (the hole holds the nodes inside its circle): its oil per cycle was 6-19 % low on such meshes
-// (docs/validation/errors.md, section 6), an error the run's estimate does not see, since its
-// coarser companion holds the hole no better. The thresholds: kHoleRowsAcross,
-// kHoleElementsAround.
+// A mass-conserving big end fed through holes on a mesh too coarse for them: the hole's edge is
+// placed where it cuts the mesh lines, which converges at second order, but with one node row
+// inside it across the width its oil per cycle was still 6 % below 20 elements across
+// (docs/validation/errors.md, section 6). The thresholds: kHoleRowsAcross, kHoleElementsAround.
 void SupplyHoleMeshWarning(const engine::EngineCase& c, std::vector<RunWarning>* out) {
   const engine::BigEndCase& be = c.big_end;
   if (be.model != engine::JointModel::kLubricated ||
@@ -325,10 +324,10 @@ void SupplyHoleMeshWarning(const engine::EngineCase& c, std::vector<RunWarning>*
       "the big end's {:g} mm supply hole holds {} row{} of film nodes across the width (within "
       "0.9 of its radius) and "
       "spans {:.1f} elements around (big_end.mesh_z = {}, big_end.mesh_theta = {}); with fewer "
-      "than {} rows or {:g} elements the oil a mass-conserving film takes through a crank-pin "
-      "hole was 6-19 % below the finest meshes' at 2000-4000 rpm (on 200 x 20, the first mesh "
-      "that holds it, 2.5 % below 400 x 20), which the error estimate does not see "
-      "(docs/validation/errors.md, section 6); {}",
+      "than {} rows or {:g} elements the film around the hole is resolved too coarsely: the oil "
+      "a mass-conserving film took through a crank-pin hole at 2000 rpm was 6 % below 20 "
+      "elements across with one row, 3.6 % below 100 around with 2 elements (the error estimate "
+      "sees the former: docs/validation/errors.md, section 6); {}",
       be.supply_hole_diameter * 1e3, rows, rows == 1 ? "" : "s", spans, be.mesh_z, be.mesh_theta,
       kHoleRowsAcross, kHoleElementsAround,
       held ? fmt::format("big_end.mesh_z = {} and big_end.mesh_theta = {} hold this hole", n_z,

@@ -23,11 +23,10 @@ inline constexpr double kHighEccentricity = 0.95;
 
 /// A supply hole of a mass-conserving big end is resolved when the film's node rows within 0.9
 /// of its radius across the width number at least kHoleRowsAcross and the hole spans at least
-/// kHoleElementsAround mean elements around (docs/validation/errors.md, section 6: on coarser
-/// meshes its oil per cycle was 6-19 % below the finest meshes', on the first that holds it
-/// 2.5 % below 400 x 20; the run's estimate does not see it).
+/// kHoleElementsAround mean elements around (docs/validation/errors.md, section 6: with one row
+/// across its oil per cycle was 6 % below 20 across; the run's estimate does not see it).
 inline constexpr int kHoleRowsAcross = 3;
-inline constexpr double kHoleElementsAround = 8.0;
+inline constexpr double kHoleElementsAround = 4.0;
 
 /// One warning. Stable codes: "asperity_contact", "mixed_lubrication" (film ratios; the worse
 /// of the two per joint), "high_eccentricity", "not_periodic", "assumed_inputs",

@@ -331,13 +331,13 @@ class TestRunWarnings : public QObject {
     fine.big_end.mesh_z = m.captured(1).toInt();
     fine.big_end.mesh_theta = m.captured(2).toInt();
     QCOMPARE(fine.big_end.mesh_z, 20);       // rows at 0 and ±1.7 mm, within 0.9 × 2 mm
-    QCOMPARE(fine.big_end.mesh_theta, 200);  // 8.6 mean elements across the hole
+    QCOMPARE(fine.big_end.mesh_theta, 100);  // 4.3 mean elements across the hole
     QVERIFY(!find(fine).has_value());
-    // 20 across but 100 around (the hole spans 4.3 mean elements; the oil was 6 % low): coarse.
-    engine::EngineCase across_only = c;
-    across_only.big_end.mesh_z = 20;
+    // 20 across but 50 around (the hole spans 2.1 mean elements; the oil was 3.6 % low): coarse.
+    engine::EngineCase across_only = fine;
+    across_only.big_end.mesh_theta = 50;
     QVERIFY(find(across_only).has_value());
-    // A hole too small for any mesh the case allows (a 10 µm hole needs 75 000 elements around).
+    // A hole too small for any mesh the case allows (a 10 µm hole needs 38 000 elements around).
     engine::EngineCase pinhole = c;
     pinhole.big_end.supply_hole_diameter = 1e-5;
     const auto tiny = find(pinhole);
