@@ -72,7 +72,9 @@ std::vector<double> WidthLines(int n, double length, double ratio, bool half);
 ///  - kPinHolesAndGroove: both the pin holes and the shell groove, at the one supply pressure
 ///    (a pin drilling that passes under a partial groove as the crank turns).
 /// A hole holds the nodes inside its circle (diameter hole_diameter, centred on the mid-width),
-/// at least the node nearest its centre; a groove at least the mid-width row.
+/// at least the node nearest its centre; a groove at least the mid-width row. Between the held
+/// nodes and their free neighbours the region's edge lies where it cuts the mesh lines
+/// (EmbeddedCut), not halfway between the nodes.
 struct OilFeed {
   using Kind = OilFeedKind;
   Kind kind = Kind::kLineOfCentres;
