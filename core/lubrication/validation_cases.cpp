@@ -157,6 +157,19 @@ PocketSliderFem PocketSliderNumeric(const PocketSliderCase& c, int n, Cavitation
   return out;
 }
 
+double HoleInStripFlow(double gap, double viscosity, double width, double hole_radius,
+                       double pressure) {
+  const double pi = std::numbers::pi;
+  return 2.0 * pi * gap * gap * gap / (12.0 * viscosity) * pressure /
+         std::log(2.0 * width / (pi * hole_radius));
+}
+
+double GrooveInStripFlow(double gap, double viscosity, double width, double groove_width,
+                         double circumference, double pressure) {
+  return 2.0 * circumference * gap * gap * gap / (12.0 * viscosity) * pressure /
+         (0.5 * (width - groove_width));
+}
+
 std::vector<verification::ValidationRow> LubricationValidationRows() {
   using verification::ValidationRow;
   std::vector<ValidationRow> rows;
@@ -236,6 +249,32 @@ std::vector<verification::ValidationRow> LubricationValidationRows() {
     rows.push_back({"jfo", "flooded bearing S, 60x10 mesh, eps=0.8",
                     "the Reynolds film's on the same mesh", j.sommerfeld, r.sommerfeld, 1e-8,
                     true});
+  }
+  // Supplies whose edges fall between the mesh lines: a 4 mm hole (off the nodes) and a 3.3 mm
+  // groove (rows 2.5 mm apart) in a still film, 25 mm wide, 25 mm radius, 25 um gap, 0.3 MPa.
+  {
+    const double R = 0.025, L = 0.025, c = 25e-6, mu = 0.01, p_s = 3e5;
+    BearingConfig cfg;
+    cfg.geometry = {R, L, c};
+    cfg.viscosity = mu;
+    cfg.mesh = {126, 20, false};  // square elements of 1.25 mm
+    cfg.feed.pressure = p_s;
+    cfg.feed.kind = OilFeedKind::kShellHoles;
+    cfg.feed.hole_angles = {0.031};
+    cfg.feed.hole_diameter = 4e-3;
+    BearingSolver hole(cfg);
+    rows.push_back({"bearing", "supply hole flow, 4 mm hole, still film, 126x20 mesh",
+                    "strip with a round source, conformal map (closed form)",
+                    hole.Solve(BearingState{}).feed_flow, HoleInStripFlow(c, mu, L, 2e-3, p_s),
+                    0.02, true});
+    cfg.mesh = {63, 10, false};  // rows 2.5 mm apart
+    cfg.feed.kind = OilFeedKind::kGroove;
+    cfg.feed.groove_width = 3.3e-3;
+    BearingSolver groove(cfg);
+    rows.push_back(
+        {"bearing", "supply groove flow, 3.3 mm groove between rows, still film",
+         "linear pressure fall to the edges (closed form)", groove.Solve(BearingState{}).feed_flow,
+         GrooveInStripFlow(c, mu, L, 3.3e-3, 2.0 * std::numbers::pi * R, p_s), 1e-8, true});
   }
   // LCP exactness: complementarity residual of a cavitated bearing solve.
   {

@@ -40,6 +40,18 @@ double OcvirkAttitudeDeg(double eps);
 double SqueezeIntegralFull(double eps);
 double SqueezeIntegralHalf(double eps);
 
+/// Pressure flow from a round hole (radius a, gauge pressure p_s) at the middle of a film of
+/// uniform gap c and width L whose two edges are at ambient pressure, on a circumference far
+/// longer than L (no motion): the strip |z| < L/2 maps onto the unit disc by w = tanh(pi z / 2L),
+/// the hole's circle onto a circle of radius pi a / 2L to fourth order in a / L, so
+/// Q = 2 pi (c^3 / 12 mu) p_s / ln(2 L / (pi a)) [m^3/s].
+double HoleInStripFlow(double gap, double viscosity, double width, double hole_radius,
+                       double pressure);
+/// The same film fed by a whole-circle groove of width w round a circumference P:
+/// Q = 2 P (c^3 / 12 mu) p_s / ((L - w) / 2) (exact) [m^3/s].
+double GrooveInStripFlow(double gap, double viscosity, double width, double groove_width,
+                         double circumference, double pressure);
+
 /// Pocketed parallel slider (Fowell et al. 2007; configuration used by Giacopini et al. 2010 and
 /// Almqvist et al. 2014): L = 20 mm, pocket [2, 5] mm of depth 9 um over h0 = 1 um, U = 1 m/s,
 /// mu = 0.01 Pa s, both ends at 50 kPa above the cavitation pressure.

@@ -329,11 +329,11 @@ class TestBearing : public QObject {
   // longer than L. The strip |z| < L/2 maps onto the unit disc by w = tanh(pi z / (2 L)), edges
   // onto its rim, the hole's circle onto a near-circle of radius pi a / (2 L) whose deviation
   // changes the flow at fourth order in a / L (~3e-5 here): Q = 2 pi (c^3 / 12 mu) p_s /
-  // ln(2 L / (pi a)). The hole's edge is taken where it cuts the mesh lines, so the flow
-  // converges at second order and does not jump as the hole moves over the nodes (a hole
-  // represented by the nodes inside its circle alone: 23-40 % low on the coarsest mesh here,
-  // 2-3 % on the finest, first order, and jumps of 29 % as it moves; with the edge placed:
-  // 6-7 %, 1.2-1.4 %, 0.2-0.3 % on the three meshes).
+  // ln(2 L / (pi a)) (HoleInStripFlow, a `filmdyn validate` row too). The hole's edge is taken
+  // where it cuts the mesh lines, so the flow converges at second order and does not jump as the
+  // hole moves over the nodes (a hole represented by the nodes inside its circle alone: 23-40 % low
+  // on the coarsest mesh here, 2-3 % on the finest, first order, and jumps of 29 % as it moves;
+  // with the edge placed: 6-7 %, 1.2-1.4 %, 0.2-0.3 % on the three meshes).
   static BearingConfig HoleInStill(int refinement, double hole_angle) {
     BearingConfig cfg = Bearing({63 * refinement, 10 * refinement, false});  // square elements
     cfg.feed.kind = OilFeed::Kind::kShellHoles;
@@ -344,9 +344,7 @@ class TestBearing : public QObject {
   }
 
   void supplyHoleFlowConvergesAtSecondOrder() {
-    const double pi = std::numbers::pi;
-    const double c = 25e-6, mu = 0.01, L = 0.025, a = 0.002, p_s = 3e5;
-    const double exact = 2.0 * pi * c * c * c / (12.0 * mu) * p_s / std::log(2.0 * L / (pi * a));
+    const double exact = HoleInStripFlow(25e-6, 0.01, 0.025, 0.002, 3e5);
     double worst[3] = {0.0, 0.0, 0.0};
     for (double hole_angle : {0.0123, 0.031, 0.05}) {  // the hole's centre off the nodes
       for (int level = 0; level < 3; ++level) {
@@ -391,11 +389,10 @@ class TestBearing : public QObject {
     // linear elements hold exactly once the edge is where it is (rows alone: the groove one
     // row wide, 13 % too little flow).
     const double pi = std::numbers::pi;
-    const double R = 0.025, L = 0.025, c = 25e-6, mu = 0.01, p_s = 3e5, w = 3.3e-3;
     BearingConfig cfg = HoleInStill(1, 0.0);
     cfg.feed.kind = OilFeed::Kind::kGroove;
-    cfg.feed.groove_width = w;
-    const double exact = 2.0 * (2.0 * pi * R) * c * c * c / (12.0 * mu) * p_s / (0.5 * (L - w));
+    cfg.feed.groove_width = 3.3e-3;
+    const double exact = GrooveInStripFlow(25e-6, 0.01, 0.025, 3.3e-3, 2.0 * pi * 0.025, 3e5);
     BearingSolver solver(cfg);
     const BearingResult& r = solver.Solve(BearingState{});
     qInfo("whole groove: Q %.9g m3/s, exact %.9g", r.feed_flow, exact);
