@@ -207,8 +207,9 @@ class ReynoldsFem {
   Eigen::VectorXd& film_rate() { return dhdt_; }             ///< dh/dt [m/s]
   Eigen::VectorXd& boundary_pressure() { return p_fixed_; }  ///< p on fixed nodes [Pa] (>= 0)
   std::vector<std::uint8_t>& extra_fixed() { return extra_fixed_; }  ///< per-solve Dirichlet
-  /// Per-solve embedded edges of the extra_fixed() regions (empty: each fixed node's region
-  /// reaches halfway to its free neighbours, the plain finite-element boundary).
+  /// Per-solve embedded edges of the extra_fixed() regions (empty: a region ends at its fixed
+  /// nodes, the pressure falling from them over whole mesh edges: the plain finite-element
+  /// boundary).
   std::vector<EmbeddedCut>& embedded_cuts() { return cuts_; }
   /// JFO: fluid fraction theta on fixed nodes, in (0, 1] (default 1: a flooded boundary).
   Eigen::VectorXd& boundary_fraction() { return theta_fixed_; }
