@@ -750,7 +750,7 @@ void SetDescriptions(std::vector<CaseField>& fields) {
        "Diameter of each supply hole. The film holds the supply pressure inside the hole, its "
        "edge placed where it cuts the mesh lines; the film around it needs elements smaller "
        "than the hole: with 10 elements across (one node row in a 4 mm hole) the oil a "
-       "crank-pin hole feeds a mass-conserving film was 6 % low, with 20 across within 1.5 % "
+       "crank-pin hole feeds a mass-conserving film was 7 % low, with 20 across within 2 % "
        "(big-end mesh); a run on a mesh too coarse for the hole warns."},
       {"big_end.groove_start_angle",
        "Where the shell groove starts, from the rod axis toward the small end, "

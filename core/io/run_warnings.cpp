@@ -277,7 +277,7 @@ void FilmStartSupplyWarning(const engine::EngineCase& c, std::vector<RunWarning>
 
 // A mass-conserving big end fed through holes on a mesh too coarse for them: the hole's edge is
 // placed where it cuts the mesh lines, which converges at second order, but with one node row
-// inside it across the width its oil per cycle was still 6 % below 20 elements across
+// inside it across the width its oil per cycle was still 7 % below the finest meshes'
 // (docs/validation/errors.md, section 6). The thresholds: kHoleRowsAcross, kHoleElementsAround.
 void SupplyHoleMeshWarning(const engine::EngineCase& c, std::vector<RunWarning>* out) {
   const engine::BigEndCase& be = c.big_end;
@@ -325,8 +325,8 @@ void SupplyHoleMeshWarning(const engine::EngineCase& c, std::vector<RunWarning>*
       "0.9 of its radius) and "
       "spans {:.1f} elements around (big_end.mesh_z = {}, big_end.mesh_theta = {}); with fewer "
       "than {} rows or {:g} elements the film around the hole is resolved too coarsely: the oil "
-      "a mass-conserving film took through a crank-pin hole at 2000 rpm was 6 % below 20 "
-      "elements across with one row, 3.6 % below 100 around with 2 elements (the error estimate "
+      "a mass-conserving film took through a crank-pin hole at 2000 rpm was 7 % below the "
+      "finest meshes' with one row across, 3.6 % below 100 around with 2 elements (the estimate "
       "sees the former: docs/validation/errors.md, section 6); {}",
       be.supply_hole_diameter * 1e3, rows, rows == 1 ? "" : "s", spans, be.mesh_z, be.mesh_theta,
       kHoleRowsAcross, kHoleElementsAround,

@@ -24,7 +24,7 @@ inline constexpr double kHighEccentricity = 0.95;
 /// A supply hole of a mass-conserving big end is resolved when the film's node rows within 0.9
 /// of its radius across the width number at least kHoleRowsAcross and the hole spans at least
 /// kHoleElementsAround mean elements around (docs/validation/errors.md, section 6: with one row
-/// across its oil per cycle was 6 % below 20 across, which the run's estimate sees).
+/// across its oil per cycle was 7 % below the finest meshes', which the run's estimate sees).
 inline constexpr int kHoleRowsAcross = 3;
 inline constexpr double kHoleElementsAround = 4.0;
 

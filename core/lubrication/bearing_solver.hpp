@@ -74,7 +74,7 @@ std::vector<double> WidthLines(int n, double length, double ratio, bool half);
 /// A hole holds the nodes inside its circle (diameter hole_diameter, centred on the mid-width),
 /// at least the node nearest its centre; a groove at least the mid-width row. Between the held
 /// nodes and their free neighbours the region's edge lies where it cuts the mesh lines
-/// (EmbeddedCut), not halfway between the nodes.
+/// (EmbeddedCut), not at the held nodes.
 struct OilFeed {
   using Kind = OilFeedKind;
   Kind kind = Kind::kLineOfCentres;

@@ -333,7 +333,8 @@ class TestRunWarnings : public QObject {
     QCOMPARE(fine.big_end.mesh_z, 20);       // rows at 0 and ±1.7 mm, within 0.9 × 2 mm
     QCOMPARE(fine.big_end.mesh_theta, 100);  // 4.3 mean elements across the hole
     QVERIFY(!find(fine).has_value());
-    // 20 across but 50 around (the hole spans 2.1 mean elements; the oil was 3.6 % low): coarse.
+    // 20 across but 50 around (the hole spans 2.1 mean elements; at 10 across the oil on 50
+    // around was 3.6 % below 100 around): coarse.
     engine::EngineCase across_only = fine;
     across_only.big_end.mesh_theta = 50;
     QVERIFY(find(across_only).has_value());
