@@ -130,8 +130,9 @@ CaseField Cavitation(std::string path, Section EngineCase::*section,
                  1.0,
                  {},
                  "\"reynolds\" (Swift–Stieber, the paper's) or \"jfo\" (mass-conserving, "
-                 "the film's oil content carried from step to step; its sharper motion takes "
-                 "some 2–6× the integrator steps, and the run as much longer)"});
+                 "the film's oil content carried from step to step; a run takes some 4–6× as "
+                 "long as with \"reynolds\" where the big end is fed by the engine's supply, up to "
+                 "20× on a starved film-start line at low speed: docs/performance.md)"});
 }
 
 // The fields of one oil (lubrication::OilSpec) named prefix + "viscosity_model", ...: the case's
