@@ -104,6 +104,11 @@ struct CoarseCompanion {
   double skirt_ratio = 2.0;        ///< h_coarse / h of the skirt mesh (√ of the element ratio)
   double big_end_ratio = 2.0;      ///< the same for the big-end mesh
   double tolerance_factor = 1.0;   ///< coarse tolerances / the run's
+  /// The highest order of convergence the skirt's figures are taken at: 1 for a starved skirt
+  /// (its inlet takes the liner's film half a cell late, a first-order lag; observed orders
+  /// 1.1-1.6 for its film, friction and oil: docs/validation/errors.md, section 6), else none
+  /// below the figures' own.
+  double skirt_max_order = 2.0;
 };
 CoarseCompanion MakeCoarseCompanion(const EngineCase& engine_case);
 

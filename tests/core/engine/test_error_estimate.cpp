@@ -16,6 +16,7 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <stdexcept>
 
 #include "core/engine/error_estimate.hpp"
 #include "core/engine/run_job.hpp"
@@ -78,6 +79,53 @@ class TestErrorEstimate : public QObject {
     const engine::CoarseCompanion m = engine::MakeCoarseCompanion(c);
     QCOMPARE(m.engine_case.big_end.mesh_theta, 8);
     QCOMPARE(m.engine_case.skirt.mesh_relief, 1);
+  }
+
+  // A starved skirt's inlet takes the liner's film half a cell late (first order): its figures
+  // are estimated at order 1, not 2, so that the estimate covers what the meshes show (film,
+  // friction and oil at orders 1.1-1.6, docs/validation/errors.md, section 6). The big end's
+  // figures keep their own order.
+  void starvedSkirtFiguresAreEstimatedAtFirstOrder() {
+    engine::EngineCase c = io::LoadCase({}).value;
+    c.skirt.model = c.big_end.model = engine::JointModel::kLubricated;
+    QCOMPARE(engine::MakeCoarseCompanion(c).skirt_max_order, 2.0);
+    c.skirt.cavitation = lubrication::CavitationModel::kJfo;
+    c.skirt.supply = lubrication::SkirtSupply::kStarved;
+    const engine::CoarseCompanion companion = engine::MakeCoarseCompanion(c);
+    QCOMPARE(companion.skirt_max_order, 1.0);
+    std::vector<engine::CrankTrainSample> samples(4);
+    for (int k = 0; k < 4; ++k) {
+      samples[k].skirt.present = samples[k].bearing.present = true;
+      samples[k].skirt.moft = 3e-6 + 1e-7 * k;
+      samples[k].skirt.fpl = 16.0;
+      samples[k].bearing.moft = 1e-6;
+      samples[k].bearing.eps = 0.9;
+      samples[k].bearing.fpl = 100.0;
+    }
+    auto coarse = samples;
+    for (auto& s : coarse) {
+      s.skirt.moft -= 0.8e-6;
+      s.skirt.fpl = 17.0;
+      s.bearing.moft = 0.7e-6;
+    }
+    const engine::ErrorEstimate e = engine::EstimateErrors(samples, coarse, companion);
+    QCOMPARE(e.status, std::string("estimated"));
+    auto find = [&e](const std::string& key) -> const engine::FigureError& {
+      for (const auto& f : e.figures)
+        if (f.figure.key == key) return f;
+      throw std::runtime_error("no figure " + key);
+    };
+    const double r = companion.skirt_ratio;
+    const engine::FigureError& film = find("skirt_moft_min[m]");
+    QCOMPARE(film.figure.order, 1.0);  // what summary.json reports
+    QVERIFY(std::abs(film.error - 0.8e-6 / (r - 1.0)) < 1e-15);
+    const engine::FigureError& friction = find("skirt_fpl_mean[W]");
+    QCOMPARE(friction.figure.order, 1.0);
+    QVERIFY(std::abs(friction.error - (-1.0 / (r - 1.0))) < 1e-12);
+    const engine::FigureError& bearing = find("bearing_moft_min[m]");
+    QCOMPARE(bearing.figure.order, 2.0);
+    QVERIFY(std::abs(bearing.error - 0.3e-6 / (std::pow(companion.big_end_ratio, 2.0) - 1.0)) <
+            1e-15);
   }
 
   void headlineFiguresAreTheirDefinitions() {
