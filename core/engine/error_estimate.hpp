@@ -106,8 +106,8 @@ struct CoarseCompanion {
   double tolerance_factor = 1.0;   ///< coarse tolerances / the run's
   /// The highest order of convergence the skirt's figures are taken at: 1 for a starved skirt
   /// (its inlet takes the liner's film half a cell late, a first-order lag; observed orders
-  /// 1.1-1.6 for its film, friction and oil: docs/validation/errors.md, section 6), else none
-  /// below the figures' own.
+  /// 1.1 for its friction and oil, 1.6-2 for its film: docs/validation/errors.md, section 6),
+  /// else none below the figures' own.
   double skirt_max_order = 2.0;
 };
 CoarseCompanion MakeCoarseCompanion(const EngineCase& engine_case);

@@ -82,9 +82,9 @@ class TestErrorEstimate : public QObject {
   }
 
   // A starved skirt's inlet takes the liner's film half a cell late (first order): its figures
-  // are estimated at order 1, not 2, so that the estimate covers what the meshes show (film,
-  // friction and oil at orders 1.1-1.6, docs/validation/errors.md, section 6). The big end's
-  // figures keep their own order.
+  // are estimated at order 1, not 2, so that the estimate covers what the meshes show (friction
+  // and oil at order 1.1, the film at 1.6-2, docs/validation/errors.md, section 6). The big
+  // end's figures keep their own order.
   void starvedSkirtFiguresAreEstimatedAtFirstOrder() {
     engine::EngineCase c = io::LoadCase({}).value;
     c.skirt.model = c.big_end.model = engine::JointModel::kLubricated;
