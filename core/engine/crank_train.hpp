@@ -113,4 +113,8 @@ MotionSample SampleMotion(const CrankTrain& train, const EngineCase& engine_case
 /// The motion part of a full sample: the same values SampleMotion gives at its state.
 MotionSample MotionOf(const CrankTrainSample& sample);
 
+/// The crank angle within the reported cycle [°CA], [0, 720), rounded to 1e-9 °CA, of an
+/// unwrapped crank angle [rad] (results.csv's first column; one rule for every row and figure).
+double CycleCrankAngleDeg(double crank_angle);
+
 }  // namespace filmdyn::engine

@@ -184,16 +184,6 @@ const std::vector<ResultColumn>& MotionColumns() {
   return columns;
 }
 
-double CycleCrankAngleDeg(double crank_angle) {
-  double deg = std::fmod(crank_angle * (180.0 / std::numbers::pi), 720.0);
-  if (deg < 0) deg += 720.0;
-  // To 1e-9 °CA, far below what any run resolves: an output step's angle reads 411, not the
-  // 411.0000000000002 of radians turned into degrees.
-  deg = std::round(deg * 1e9) / 1e9;
-  if (deg > 720.0 - 1e-9) deg = 0.0;
-  return deg;
-}
-
 OutputRow RowFromMotion(const engine::MotionSample& s, engine::Model model,
                         double cycle_start_time) {
   OutputRow r;

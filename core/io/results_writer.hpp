@@ -54,9 +54,8 @@ const std::vector<ResultColumn>& ResultColumns();
 /// for a header it does not know or a cell that is not a number.
 std::string ResultsCsvInDisplayUnits(const std::string& si_csv);
 
-/// The crank angle within the reported cycle [°CA], [0, 720), rounded to 1e-9 °CA, of an
-/// unwrapped crank angle [rad] (results.csv's first column; one rule for every row and figure).
-double CycleCrankAngleDeg(double crank_angle);
+/// The crank angle within the reported cycle [°CA] (defined with the crank train's samples).
+using engine::CycleCrankAngleDeg;
 
 /// Header names with units, in column order.
 std::vector<std::string> ResultsHeader();

@@ -325,6 +325,12 @@ json SummaryToJson(const RunSummary& s) {
                              {"order", f.figure.order},
                              {"extrapolated", f.figure.value + f.error},
                              {"resolved_in_time", f.resolved_in_time}};
+    if (f.crank_angle && f.extrapolated_crank_angle) {
+      json& o = figures[f.figure.key];
+      o["crank_angle[deg]"] = engine::CycleCrankAngleDeg(*f.crank_angle);
+      o["extrapolated_crank_angle[deg]"] = engine::CycleCrankAngleDeg(*f.extrapolated_crank_angle);
+      o["extreme_elsewhere"] = f.extreme_elsewhere;
+    }
   }
   j["discretisation_error"] = {
       {"status", e.status},
@@ -500,6 +506,15 @@ RunSummary FromJson(const json& j) {
     fe.relative = Get<double>(f, "relative", at);
     Read(f, "order", at, &fe.figure.order);
     Read(f, "resolved_in_time", at, &fe.resolved_in_time);  // absent before: resolved
+    // A curve's extreme (absent for the other figures and in older summaries).
+    constexpr double kRadPerDeg = std::numbers::pi / 180.0;
+    const std::optional<double> own = GetOptional(f, "crank_angle[deg]", at);
+    const std::optional<double> extrapolated = GetOptional(f, "extrapolated_crank_angle[deg]", at);
+    if (own && extrapolated) {
+      fe.crank_angle = *own * kRadPerDeg;
+      fe.extrapolated_crank_angle = *extrapolated * kRadPerDeg;
+      Read(f, "extreme_elsewhere", at, &fe.extreme_elsewhere);
+    }
     e.figures.push_back(fe);
   }
   json warnings = json::array();

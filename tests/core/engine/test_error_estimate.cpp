@@ -8,14 +8,16 @@
 // docs/validation/errors.md). Exception, measured and documented there: the peak pressures on
 // the 1x meshes (coarser than the default case's), whose companion (big end 25 x 3) is not in
 // the asymptotic range — the nodal peak of a spike a few elements wide jumps with the node
-// positions; there the estimate overstates the error (up to 2.5x on the big end). Also: the companion's meshes and tolerances, the figures'
-// definitions against the samples, and the estimate off / unavailable.
+// positions; there the estimate overstates the error (up to 2.5x on the big end). Also: the
+// companion's meshes and tolerances, the figures' definitions against the samples, a minimum film
+// taken from the extrapolated curve, and the estimate off / unavailable.
 #include <QtTest>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <map>
+#include <numbers>
 #include <stdexcept>
 
 #include "core/engine/error_estimate.hpp"
@@ -126,6 +128,75 @@ class TestErrorEstimate : public QObject {
     QCOMPARE(bearing.figure.order, 2.0);
     QVERIFY(std::abs(bearing.error - 0.3e-6 / (std::pow(companion.big_end_ratio, 2.0) - 1.0)) <
             1e-15);
+  }
+
+  // A film's minimum is the minimum of the curve the two runs extrapolate to, sample by sample,
+  // not the extrapolation of the two runs' own minima: where the meshes put the minimum at
+  // different places in the cycle, the finer one's trend is what counts. Two dips: at A the fine
+  // film 1.00 µm, the coarse 0.96 µm (the runs' own minima); at B 1.05 µm, the coarse 1.35 µm —
+  // thinning fast with the mesh. At order 2 and r = 2, A extrapolates to 1.00 + 0.04/3 µm, B to
+  // 1.05 − 0.30/3 = 0.95 µm: the converged minimum is B's, 5 % below the run's.
+  void extremesAreThoseOfTheExtrapolatedCurve() {
+    constexpr int n = 72, a = 20, b = 50;
+    constexpr double cycle = 4.0 * std::numbers::pi;
+    std::vector<engine::CrankTrainSample> fine(n), coarse(n);
+    for (int k = 0; k < n; ++k) {
+      for (auto* s : {&fine[k], &coarse[k]}) {
+        s->bearing.present = true;
+        s->bearing.moft = 2e-6;
+        s->bearing.eps = 0.9;
+        s->bearing.fpl = 50.0;
+      }
+      fine[k].crank_angle = 3 * cycle + k * cycle / n;    // the runs reach their periodic
+      coarse[k].crank_angle = 2 * cycle + k * cycle / n;  // states after different cycles
+    }
+    fine[a].bearing.moft = 1.00e-6;
+    coarse[a].bearing.moft = 0.96e-6;
+    fine[b].bearing.moft = 1.05e-6;
+    coarse[b].bearing.moft = 1.35e-6;
+    fine[b].bearing.eps = 0.95;  // the eccentricity's maximum where both have it: as before
+    coarse[b].bearing.eps = 0.93;
+    engine::CoarseCompanion companion;
+    companion.big_end_ratio = 2.0;
+    auto find = [](const engine::ErrorEstimate& e,
+                   const std::string& key) -> const engine::FigureError& {
+      for (const auto& f : e.figures)
+        if (f.figure.key == key) return f;
+      throw std::runtime_error("no figure " + key);
+    };
+    const engine::ErrorEstimate e = engine::EstimateErrors(fine, coarse, companion);
+    const engine::FigureError& moft = find(e, "bearing_moft_min[m]");
+    QCOMPARE(moft.figure.value, 1.00e-6);
+    QCOMPARE(moft.coarse_value, 0.96e-6);
+    QVERIFY(std::abs(moft.error - (0.95e-6 - 1.00e-6)) < 1e-15);
+    QVERIFY(std::abs(moft.relative - 0.05) < 1e-9);
+    QVERIFY(moft.crank_angle && moft.extrapolated_crank_angle);
+    QCOMPARE(engine::CycleCrankAngleDeg(*moft.crank_angle), 200.0);  // sample 20 of 72
+    QCOMPARE(engine::CycleCrankAngleDeg(*moft.extrapolated_crank_angle), 500.0);
+    QVERIFY(moft.extreme_elsewhere);
+    QVERIFY2(
+        e.Summary().find("the meshes disagree on where the min big-end MOFT lies: this run "
+                         "has it at 200 °CA, the extrapolation at 500 °CA") != std::string::npos,
+        e.Summary().c_str());
+    const engine::FigureError& eps = find(e, "bearing_eps_max[-]");
+    QVERIFY(std::abs(eps.error - 0.02 / 3.0) < 1e-12);
+    QVERIFY(eps.crank_angle && *eps.crank_angle == fine[b].crank_angle);
+    QVERIFY(!eps.extreme_elsewhere);
+    QVERIFY(!find(e, "bearing_fpl_mean[W]").crank_angle);  // a mean: no curve's extreme
+    // B thinning less with the mesh (to 1.02 µm extrapolated): A's 1.0133 µm stays the minimum.
+    auto milder = coarse;
+    milder[b].bearing.moft = 1.14e-6;
+    const engine::FigureError& a_again =
+        find(engine::EstimateErrors(fine, milder, companion), "bearing_moft_min[m]");
+    QVERIFY(std::abs(a_again.error - 0.04e-6 / 3.0) < 1e-15);
+    QVERIFY(!a_again.extreme_elsewhere);
+    // Samples at other crank angles (another output step): the runs' own minima, as before.
+    auto shifted = coarse;
+    for (auto& s : shifted) s.crank_angle += 0.5 * cycle / n;
+    const engine::FigureError& own =
+        find(engine::EstimateErrors(fine, shifted, companion), "bearing_moft_min[m]");
+    QVERIFY(std::abs(own.error - 0.04e-6 / 3.0) < 1e-15);
+    QVERIFY(!own.crank_angle && !own.extrapolated_crank_angle && !own.extreme_elsewhere);
   }
 
   void headlineFiguresAreTheirDefinitions() {

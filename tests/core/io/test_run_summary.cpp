@@ -3,9 +3,11 @@
 // (ideal, short) run carries the run's figures.
 #include <QTemporaryDir>
 #include <QtTest>
+
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <numbers>
 
 #include "core/io/case_file.hpp"
 #include "core/io/results_writer.hpp"
@@ -50,7 +52,14 @@ io::RunSummary Full() {
       .kpis = {}};
   engine::ErrorEstimate& e = s.error_estimate;
   e.status = "estimated";
-  e.figures = {{{"bearing_moft_min[m]", "min big-end MOFT", 1.1e-6, true}, 1.0e-6, 3.3e-8, 0.03},
+  e.figures = {{{"bearing_moft_min[m]", "min big-end MOFT", 1.1e-6, true},
+                1.0e-6,
+                3.3e-8,
+                0.03,
+                true,
+                (4 * 720.0 + 48.0) * std::numbers::pi / 180.0,
+                (4 * 720.0 + 392.0) * std::numbers::pi / 180.0,
+                true},
                {{"bearing_peak_pressure[Pa]", "peak big-end film pressure", 1.8e9, true},
                 1.4e8,
                 5.5e8,
@@ -211,6 +220,22 @@ class TestRunSummary : public QObject {
     before_marks["discretisation_error"]["figures"]["bearing_peak_pressure[Pa]"].erase(
         "resolved_in_time");
     QVERIFY(io::SummaryFromJson(before_marks).error_estimate.figures.at(1).resolved_in_time);
+    // A curve's extreme: where the run has it and where the extrapolation does, in the cycle.
+    const nlohmann::json& moft = j["discretisation_error"]["figures"]["bearing_moft_min[m]"];
+    QCOMPARE(moft["crank_angle[deg]"].get<double>(), 392.0);
+    QCOMPARE(moft["extrapolated_crank_angle[deg]"].get<double>(), 48.0);
+    QVERIFY(moft["extreme_elsewhere"].get<bool>());
+    QVERIFY(!j["discretisation_error"]["figures"]["bearing_peak_pressure[Pa]"].contains(
+        "extrapolated_crank_angle[deg]"));
+    const engine::FigureError& moft_back = back.error_estimate.figures.at(0);
+    QVERIFY(moft_back.extreme_elsewhere && moft_back.crank_angle &&
+            moft_back.extrapolated_crank_angle);
+    QCOMPARE(engine::CycleCrankAngleDeg(*moft_back.extrapolated_crank_angle), 48.0);
+    QCOMPARE(back.error_estimate.Summary(), s.error_estimate.Summary());
+    QVERIFY2(back.error_estimate.Summary().find("this run has it at 392 °CA, the extrapolation "
+                                                "at 48 °CA") != std::string::npos,
+             back.error_estimate.Summary().c_str());
+    QVERIFY(!back.error_estimate.figures.at(1).extrapolated_crank_angle);
     QVERIFY(j["mean_fpl_w"]["bearing"].is_null());
     // The scatter over the last cycles of a run without a periodic state: null otherwise, and a
     // summary written before it existed reads without it.
