@@ -60,13 +60,21 @@ void ShowErrorEstimate(const engine::ErrorEstimate& e, QTableWidgetItem* cell) {
                    .toHtmlEscaped();
       continue;
     }
-    lines << QString("%1: %2 %3, %4%5 % → %6 %3")
+    // An extreme the meshes put at different places in the cycle: both crank angles.
+    const QString where =
+        f.extreme_elsewhere && f.crank_angle && f.extrapolated_crank_angle
+            ? QString(" (at %1 °CA, extrapolated at %2 °CA)")
+                  .arg(engine::CycleCrankAngleDeg(*f.crank_angle), 0, 'f', 0)
+                  .arg(engine::CycleCrankAngleDeg(*f.extrapolated_crank_angle), 0, 'f', 0)
+            : QString();
+    lines << QString("%1: %2 %3, %4%5 % → %6 %3%7")
                  .arg(QString::fromStdString(f.figure.label))
                  .arg(QString::number(f.figure.value * scale, 'g', 5))
                  .arg(unit)
                  .arg(f.error >= 0 ? "+" : "−")
                  .arg(QString::number(100.0 * f.relative, 'g', 2))
                  .arg(QString::number((f.figure.value + f.error) * scale, 'g', 5))
+                 .arg(where)
                  .toHtmlEscaped();
   }
   QString tip = "<p>" + QString::fromStdString(e.Summary()).toHtmlEscaped() + "</p>";

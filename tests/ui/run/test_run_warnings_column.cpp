@@ -1,10 +1,12 @@
 // The run table's Warnings column on a real run: core's run job through the GUI's backend into a
 // run record (as the worker thread does it), then the table row. A big end with rough surfaces
 // runs below h/σ = 1 at 6000 rpm: the cell names the film ratio in red and its tooltip holds
-// every warning's message; a run without warnings shows "–".
+// every warning's message; a run without warnings shows "–". Beside it, the discretisation-error
+// cell's tooltip names both crank angles of a minimum film the meshes put at different places.
 #include <QDir>
 #include <QtTest>
 #include <atomic>
+#include <numbers>
 
 #include "core/io/case_file.hpp"
 #include "ui/run/run_backend.hpp"
@@ -31,6 +33,40 @@ ui::RunRequest RoughBigEnd() {
 class TestRunWarningsColumn : public QObject {
   Q_OBJECT
  private slots:
+  void errorTooltipNamesWhereTheMeshesPutTheMinimum() {
+    auto run = std::make_shared<ui::RunRecord>(1, RoughBigEnd());
+    engine::ErrorEstimate e;
+    e.status = "estimated";
+    engine::FigureError moft;
+    moft.figure = engine::HeadlineFigureFor("bearing_moft_min[m]", 0.93e-6);
+    moft.coarse_value = 0.894e-6;
+    moft.error = -0.091e-6;
+    moft.relative = 0.098;
+    constexpr double kDeg = std::numbers::pi / 180.0;
+    moft.crank_angle = (3 * 720.0 + 392.0) * kDeg;
+    moft.extrapolated_crank_angle = (3 * 720.0 + 48.0) * kDeg;
+    moft.extreme_elsewhere = true;
+    e.figures = {moft};
+    e.worst_relative = 0.098;
+    e.worst_label = moft.figure.label;
+    run->ReportErrorEstimate(e);
+    run->finish(ui::RunStatus::kFinished, {});
+    ui::RunTable table;
+    table.updateRun(run);
+    const QString tip = table.item(0, ui::RunTable::kError)->toolTip();
+    QVERIFY2(tip.contains("min big-end MOFT: 0.93 µm, −9.8 % → 0.839 µm (at 392 °CA, "
+                          "extrapolated at 48 °CA)"),
+             qPrintable(tip));
+    QVERIFY2(tip.contains("the meshes disagree on where the min big-end MOFT lies"),
+             qPrintable(tip));
+    // Where they agree, no crank angles.
+    moft.extreme_elsewhere = false;
+    e.figures = {moft};
+    run->ReportErrorEstimate(e);
+    table.updateRun(run);
+    QVERIFY(!table.item(0, ui::RunTable::kError)->toolTip().contains("extrapolated at"));
+  }
+
   void tableShowsTheRunsWarnings() {
     auto run = std::make_shared<ui::RunRecord>(1, RoughBigEnd());
     const std::atomic<bool> cancel{false};
