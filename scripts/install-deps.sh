@@ -4,7 +4,7 @@
 set -euo pipefail
 
 packages=(
-  build-essential cmake ninja-build pkg-config git
+  build-essential cmake ninja-build pkg-config git lld
   qt6-base-dev qt6-charts-dev qt6-svg-dev libqt6opengl6-dev
   libeigen3-dev libsuitesparse-dev libvtk9-dev nlohmann-json3-dev
   libsundials-dev libfmt-dev libtbb-dev libcli11-dev libboost-math-dev libhdf5-dev
