@@ -4,6 +4,8 @@
 // every warning's message; a run without warnings shows "–". Beside it, the discretisation-error
 // cell's tooltip names both crank angles of a minimum film the meshes put at different places.
 #include <QDir>
+#include <QScreen>
+#include <QToolTip>
 #include <QtTest>
 #include <atomic>
 #include <numbers>
@@ -59,6 +61,27 @@ class TestRunWarningsColumn : public QObject {
              qPrintable(tip));
     QVERIFY2(tip.contains("the meshes disagree on where the min big-end MOFT lies"),
              qPrintable(tip));
+    // With FILMDYN_SCREENSHOT_DIR set: the cell and its tooltip, cut from the screen, for review.
+    if (const QString dir = qEnvironmentVariable("FILMDYN_SCREENSHOT_DIR"); !dir.isEmpty()) {
+      table.resize(1500, 120);
+      table.show();
+      QTableWidgetItem* cell = table.item(0, ui::RunTable::kError);
+      table.scrollToItem(cell, QAbstractItemView::PositionAtCenter);
+      QVERIFY(QTest::qWaitForWindowExposed(&table));
+      const QRect rect = table.visualItemRect(cell);
+      QToolTip::showText(table.viewport()->mapToGlobal(rect.center()), tip, table.viewport(), rect);
+      QTest::qWait(500);
+      QRect shown(table.viewport()->mapToGlobal(rect.topLeft()), rect.size());
+      for (QWidget* top : QApplication::topLevelWidgets())
+        if (top->inherits("QTipLabel") && top->isVisible()) shown = shown.united(top->geometry());
+      shown.adjust(-10, -10, 10, 10);
+      QDir().mkpath(dir);
+      QVERIFY(QGuiApplication::primaryScreen()
+                  ->grabWindow(0, shown.x(), shown.y(), shown.width(), shown.height())
+                  .save(QDir(dir).filePath("run_error_tooltip_elsewhere.png")));
+      QToolTip::hideText();
+      table.hide();
+    }
     // Where they agree, no crank angles.
     moft.extreme_elsewhere = false;
     e.figures = {moft};
