@@ -43,7 +43,7 @@ struct HeadlineDefinition {
   double (*between_samples)(const CrankTrainSample&);
   /// Order of convergence in the element size. Observed in the coupled run over three meshes
   /// (big end 50 x 5 ... 200 x 20 graded, skirt 12 + 2 + 12 x 16 ... 48 + 8 + 48 x 64) at 2000
-  /// and 6000 rpm: 1.86-2.22 for every figure (docs/validation/errors.md), so 2 for all; kept per
+  /// and 6000 rpm: 1.82-2.22 for every figure (docs/validation/errors.md), so 2 for all; kept per
   /// figure so that a model with another order says so here.
   double order;
 };
