@@ -461,20 +461,19 @@ std::string ErrorEstimate::Summary() const {
   if (status == "unavailable") {
     return "warning: discretisation error not estimated: " + message;
   }
-  // Peaks between output samples: named, not estimated.
-  std::string spikes;
+  // What follows the figure: peaks between output samples (named, not estimated), extremes the
+  // meshes place apart, a mass-conserving big end's note.
+  std::string notes, spikes;
   for (const FigureError& e : figures) {
     if (e.resolved_in_time) continue;
     if (!spikes.empty()) spikes += " and ";
     spikes += e.figure.label;
   }
-  if (!spikes.empty()) {
-    spikes = fmt::format("; {} {}", spikes, kUnresolvedPeakNote);
-  }
+  if (!spikes.empty()) notes = fmt::format("; {} {}", spikes, kUnresolvedPeakNote);
   // Extremes whose place in the cycle the meshes disagree on.
   for (const FigureError& e : figures) {
     if (!e.extreme_elsewhere || !e.crank_angle || !e.extrapolated_crank_angle) continue;
-    spikes += fmt::format(
+    notes += fmt::format(
         "; the meshes disagree on where the {} lies: this run has it at {:.0f} °CA, the "
         "extrapolation at {:.0f} °CA",
         e.figure.label, CycleCrankAngleDeg(*e.crank_angle),
@@ -485,12 +484,12 @@ std::string ErrorEstimate::Summary() const {
   // skirt's figures converge as its film's.
   if (std::any_of(figures.begin(), figures.end(),
                   [](const FigureError& e) { return e.figure.key == kBearingOilKey; })) {
-    spikes += "; ";
-    spikes += kMassConservingNote;
+    notes += "; ";
+    notes += kMassConservingNote;
   }
   if (worst_relative <= threshold) {
     return fmt::format("estimated discretisation error <= {:.2g} % (largest: {}){}",
-                       100.0 * worst_relative, worst_label, spikes);
+                       100.0 * worst_relative, worst_label, notes);
   }
   const FigureError* worst = nullptr;
   for (const FigureError& e : figures) {
@@ -502,7 +501,7 @@ std::string ErrorEstimate::Summary() const {
   return fmt::format(
       "warning: estimated discretisation error {:.2g} % in the {} (above {:.0f} %): refine the "
       "mesh ({}) or tighten solver.relative_tolerance{}",
-      100.0 * worst_relative, worst_label, 100.0 * threshold, refine, spikes);
+      100.0 * worst_relative, worst_label, 100.0 * threshold, refine, notes);
 }
 
 }  // namespace filmdyn::engine

@@ -4,13 +4,12 @@
 // every warning's message; a run without warnings shows "–". Beside it, the discretisation-error
 // cell's tooltip names both crank angles of a minimum film the meshes put at different places.
 #include <QDir>
-#include <QScreen>
-#include <QToolTip>
 #include <QtTest>
 #include <atomic>
 #include <numbers>
 
 #include "core/io/case_file.hpp"
+#include "tests/ui/tooltip_screenshot.hpp"
 #include "ui/run/run_backend.hpp"
 #include "ui/run/run_record.hpp"
 #include "ui/runs/run_table.hpp"
@@ -68,18 +67,9 @@ class TestRunWarningsColumn : public QObject {
       QTableWidgetItem* cell = table.item(0, ui::RunTable::kError);
       table.scrollToItem(cell, QAbstractItemView::PositionAtCenter);
       QVERIFY(QTest::qWaitForWindowExposed(&table));
-      const QRect rect = table.visualItemRect(cell);
-      QToolTip::showText(table.viewport()->mapToGlobal(rect.center()), tip, table.viewport(), rect);
-      QTest::qWait(500);
-      QRect shown(table.viewport()->mapToGlobal(rect.topLeft()), rect.size());
-      for (QWidget* top : QApplication::topLevelWidgets())
-        if (top->inherits("QTipLabel") && top->isVisible()) shown = shown.united(top->geometry());
-      shown.adjust(-10, -10, 10, 10);
       QDir().mkpath(dir);
-      QVERIFY(QGuiApplication::primaryScreen()
-                  ->grabWindow(0, shown.x(), shown.y(), shown.width(), shown.height())
-                  .save(QDir(dir).filePath("run_error_tooltip_elsewhere.png")));
-      QToolTip::hideText();
+      QVERIFY(test::SaveCellToolTip(&table, table.visualItemRect(cell), tip,
+                                    QDir(dir).filePath("run_error_tooltip_elsewhere.png")));
       table.hide();
     }
     // Where they agree, no crank angles.

@@ -22,6 +22,7 @@
 #include <cmath>
 
 #include "core/engine/case_schema.hpp"
+#include "tests/ui/tooltip_screenshot.hpp"
 #include "ui/case_editor/array_table_model.hpp"
 #include "ui/case_editor/case_document.hpp"
 #include "ui/case_editor/case_editor.hpp"
@@ -291,20 +292,9 @@ class TestMainWindowAfterRun : public QObject {
       Save(&window, "run_results_jfo.png");
       if (const QString dir = qEnvironmentVariable("FILMDYN_SCREENSHOT_DIR"); !dir.isEmpty()) {
         window.runTable()->scrollToItem(error_cell);
-        const QRect cell_rect = window.runTable()->visualItemRect(error_cell);
-        QToolTip::showText(window.runTable()->viewport()->mapToGlobal(cell_rect.center()),
-                           error_cell->toolTip(), window.runTable()->viewport(), cell_rect);
-        QTest::qWait(500);
-        // The tooltip and the cell it belongs to, cut from the screen.
-        QRect shown(window.runTable()->viewport()->mapToGlobal(cell_rect.topLeft()),
-                    cell_rect.size());
-        for (QWidget* top : QApplication::topLevelWidgets())
-          if (top->inherits("QTipLabel") && top->isVisible()) shown = shown.united(top->geometry());
-        shown.adjust(-10, -10, 10, 10);
-        QVERIFY(QGuiApplication::primaryScreen()
-                    ->grabWindow(0, shown.x(), shown.y(), shown.width(), shown.height())
-                    .save(QDir(dir).filePath("run_error_tooltip.png")));
-        QToolTip::hideText();
+        QVERIFY(filmdyn::test::SaveCellToolTip(
+            window.runTable(), window.runTable()->visualItemRect(error_cell), error_cell->toolTip(),
+            QDir(dir).filePath("run_error_tooltip.png")));
       }
       window.workspace()->setCurrentIndex(2);
       auto* field_view = window.fieldView();
