@@ -12,6 +12,9 @@ struct NodalFilmFactors {
   double phi_across = 1.0;        ///< pressure flow factor across it
   double phi_shear = 0.0;         ///< shear flow factor phi_s (multiplies sigma, Patir-Cheng 1979)
   double phi_contact = 1.0;       ///< Wu-Zheng contact factor phi_c = d(h_T)/dh
+  /// h_T - h [m]: the mean gap h_T (the oil a full film holds per unit area) less the nominal
+  /// gap h; 0 for smooth surfaces and from H = 3 on
+  double mean_gap_excess = 0.0;
   double contact_pressure = 0.0;  ///< Greenwood-Tripp asperity pressure [Pa]
   double shear_f = 1.0;           ///< Patir-Cheng shear-stress factor Phi_f
   double shear_fs = 0.0;          ///< Phi_fs

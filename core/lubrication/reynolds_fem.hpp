@@ -23,13 +23,15 @@
 ///    Giacopini, Fowell, Dini & Strozzi (2010, J. Tribol. 132 041702): lubricant density ratio
 ///    1 - r, with p >= 0, r >= 0, p.r = 0 and one mass balance per node
 ///        (K p - f)_k + (B r)_k = 0,
-///    B = finite-volume transport of the void content (U_sum/2) h_f r plus -r dh/dt, on the
-///    dual cells of the structured mesh: the gap at the cell face h_f centred, the fraction r of
-///    the upwind node (a full film's Couette flow second order, a cavity's first order). Solved by
+///    B = finite-volume transport of the void content (U_sum/2) h_f r plus -r dh_T/dt, on the
+///    dual cells of the structured mesh: the mean gap at the cell face h_f centred, the fraction r
+///    of the upwind node (a full film's Couette flow second order, a cavity's first order). The
+///    mean gap h_T = h + NodalFilmFactors::mean_gap_excess is the oil a full rough film holds per
+///    unit area (dh_T/dh = phi_c; h for smooth surfaces and from H = 3 on). Solved by
 ///    the same active-set (semismooth Newton) iteration on the mixed unknowns (p on full-film
 ///    nodes, r on cavitated ones), started from the Reynolds solution; non-symmetric, so a sparse
-///    LU is used. Quasi-static (ReynoldsParams::time_step = 0): d(phi_c r h)/dt ~ phi_c r dh/dt, no
-///    history. Transient (time_step > 0): the void content V = phi_c r h of every node is carried
+///    LU is used. Quasi-static (ReynoldsParams::time_step = 0): d(r h_T)/dt ~ r phi_c dh/dt, no
+///    history. Transient (time_step > 0): the void content V = r h_T of every node is carried
 ///    from the previous step (void_history()) and its rate is the backward difference (V - V_old) /
 ///    dt (lumped), while the full-film squeeze phi_c dh/dt keeps the exact dh/dt of the caller (a
 ///    function of the state, so an ODE integrator's error control covers it). The nodal balances
@@ -99,7 +101,7 @@ struct ReynoldsParams {
   /// content is in ReynoldsFem::void_history().
   double time_step = 0.0;
   /// JFO transient only: the oil's bulk modulus beta [Pa] (0 = incompressible). The full film
-  /// then stores phi_c h p / beta more oil than its gap holds at the cavitation pressure
+  /// then stores h_T p / beta more oil than its gap holds at the cavitation pressure
   /// (density rho0 (1 + p / beta)); the fluxes keep the density rho0. Not with a
   /// pressure-dependent viscosity (the solve is in the reduced pressure there).
   double bulk_modulus = 0.0;
@@ -145,9 +147,9 @@ struct ReynoldsSolution {
   Eigen::VectorXd contact_pressure;     ///< asperity pressure p_c [Pa]
   Eigen::VectorXd fluid_fraction;       ///< JFO theta = 1 - r (1 in the full film) [-]
   /// JFO: the oil the node's film lacks against a full film at the cavitation pressure, per
-  /// unit area [m]: the void content phi_c (1 - theta) h, less the compressed oil phi_c h p /
-  /// beta of a compressible full film (ReynoldsParams::bulk_modulus; negative there); 0 on fixed
-  /// nodes. The next transient step's void_history().
+  /// unit area [m]: the void content (1 - theta) h_T (h_T the mean gap), less the compressed oil
+  /// h_T p / beta of a compressible full film (ReynoldsParams::bulk_modulus; negative there); 0 on
+  /// fixed nodes. The next transient step's void_history().
   Eigen::VectorXd void_content;
   Eigen::VectorXd residual;             ///< w = K p - f (+B r): nodal net outflow [m^3/s]; at
                                         ///< fixed nodes minus the boundary outflow
@@ -295,6 +297,9 @@ class ReynoldsFem {
   std::vector<int> add_rows_;
   std::vector<double> add_values_;
   Eigen::VectorXd phi_c_, source_scale_;
+  /// The mean gap h_T = h + NodalFilmFactors::mean_gap_excess [m]: a JFO film's oil capacity and
+  /// what its Couette flow carries (h for smooth surfaces and from H = 3 on).
+  Eigen::VectorXd h_mean_;
   double u_sum_ = 0, flow_scale_ = 1;
   ReynoldsSolution sol_;
 };

@@ -41,11 +41,14 @@ bool ReynoldsFem::SolveJfo() {
   }
   for (int k = 0; k < n; ++k)
     if (fixed_[k]) base[k] = kf[diag_pos_full_[k]] * p_fixed_[k];
-  // Void transport coefficients: B_kk = -(|U|/2) h_k w_k - A_k phi_c s_k,
-  // B_dk = +(|U|/2) h_k w_k (d = downstream neighbour of k), where s_k = dh/dt (quasi-static) or
-  // h_k / dt (transient: the void content's backward difference, its old part moved to `base`).
+  // Void transport coefficients: B_kk = -(|U|/2) h_f w_k - A_k s_k, B_dk = +(|U|/2) h_f w_k
+  // (d = downstream neighbour of k, h_f the mean gap at their face), where s_k = phi_c dh/dt =
+  // dh_T/dt (quasi-static) or h_T / dt (transient: the void content h_T r's backward
+  // difference, its old part moved to `base`). h_T is the mean gap, the oil a full film holds
+  // per unit area (h for smooth surfaces and from H = 3 on).
   const bool transient = time_step_ > 0.0;
   const double inv_dt = transient ? 1.0 / time_step_ : 0.0;
+  auto storage = [&](int k) { return transient ? h_mean_[k] * inv_dt : phi_c_[k] * dhdt_[k]; };
   Eigen::VectorXd bdiag(n), boff(n), r_fixed(n);
   std::vector<int> bpos(n), bnode(n);
   const bool plus = u_sum_ >= 0.0;
@@ -54,24 +57,23 @@ bool ReynoldsFem::SolveJfo() {
     bpos[k] = plus ? down_pos_plus_[k] : down_pos_minus_[k];
     // No downstream neighbour (an open end): no Couette flux, as in the full-film assembly.
     const double a = bnode[k] >= 0 ? 0.5 * std::abs(u_sum_) * h_face_[k] * face_width_[k] : 0.0;
-    const double storage = transient ? h_[k] * inv_dt : dhdt_[k];
-    bdiag[k] = -a - lumped_area_[k] * phi_c_[k] * storage;
+    bdiag[k] = -a - lumped_area_[k] * storage(k);
     if (std::abs(bdiag[k]) < 1e-14 * flow_scale_) bdiag[k] = -kf[diag_pos_full_[k]];  // r idle
     boff[k] = a;
     r_fixed[k] = fixed_[k] ? 1.0 - theta_fixed_[k] : 0.0;
   }
-  // A compressible full film (transient) stores phi_c h p / beta more oil at node k: the
-  // backward difference of that content adds A_k phi_c h_k / (beta dt) to its pressure column's
+  // A compressible full film (transient) stores h_T p / beta more oil at node k: the
+  // backward difference of that content adds A_k h_T,k / (beta dt) to its pressure column's
   // diagonal (its old part is in the node's old content, V_old, below).
   Eigen::VectorXd& compress = compress_;
   compress.setZero(n);  // allocated once per solver
   if (compressibility_ > 0.0)
     for (int k = 0; k < n; ++k)
-      if (!fixed_[k]) compress[k] = lumped_area_[k] * phi_c_[k] * h_[k] * compressibility_ * inv_dt;
+      if (!fixed_[k]) compress[k] = lumped_area_[k] * h_mean_[k] * compressibility_ * inv_dt;
   // Second-order transport (ReynoldsOptions::void_transport_order): the fraction carried
   // through the face from k to d is the upwind node's, 1 - r_k, less the limited slope's part
   // over the half gap to the face, c_k = (gap_kd / 2) minmod(s_uk, s_kd), where the slopes come
-  // from the last accepted state's void fractions (the history's content over phi_c h). c_k is
+  // from the last accepted state's void fractions (the history's content over h_T). c_k is
   // known, so the flux a (1 - r_k - c_k) keeps the solve linear in (p, r): its c part is a known
   // flow from k to d, booked on the right-hand side (and in the mass balance below). minmod keeps
   // the face's fraction between the two nodes' (no new extremum). The flows out of and into a
@@ -85,7 +87,7 @@ bool ReynoldsFem::SolveJfo() {
     Eigen::VectorXd& old = fraction_old_;
     old.resize(n);
     for (int k = 0; k < n; ++k) {
-      const double capacity = phi_c_[k] * h_[k];
+      const double capacity = h_mean_[k];
       old[k] = fixed_[k]        ? r_fixed[k]
                : capacity > 0.0 ? std::clamp(void_old_[k] / capacity, 0.0, 1.0)
                                 : 0.0;
@@ -204,8 +206,7 @@ bool ReynoldsFem::SolveJfo() {
     if (r[k] == 0.0) continue;
     const double a = boff[k];
     if (!fixed_[k]) {
-      const double storage = transient ? h_[k] * inv_dt : dhdt_[k];
-      work_[k] += (-a - lumped_area_[k] * phi_c_[k] * storage) * r[k];
+      work_[k] += (-a - lumped_area_[k] * storage(k)) * r[k];
     } else {
       work_[k] -= a * r[k];  // a starved boundary node sends less oil downstream
     }
@@ -217,13 +218,13 @@ bool ReynoldsFem::SolveJfo() {
   for (int k = 0; k < n; ++k) {
     if (fixed_[k]) continue;
     mass = std::max(mass, std::abs(work_[k]));
-    if (transient) scale = std::max(scale, lumped_area_[k] * phi_c_[k] * h_[k] * inv_dt);
+    if (transient) scale = std::max(scale, lumped_area_[k] * h_mean_[k] * inv_dt);
   }
   st.max_mass_residual = mass / scale;
   st.fraction_excess = excess;
   sol_.fluid_fraction = Eigen::VectorXd::Ones(n) - r;
   for (int k = 0; k < n; ++k)
-    sol_.void_content[k] = fixed_[k] ? 0.0 : phi_c_[k] * h_[k] * (r[k] - compressibility_ * p[k]);
+    sol_.void_content[k] = fixed_[k] ? 0.0 : h_mean_[k] * (r[k] - compressibility_ * p[k]);
   prev_active_ = cav;
   jfo_warm_ = converged;
   return converged;

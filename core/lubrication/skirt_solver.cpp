@@ -224,7 +224,7 @@ void SkirtSolver::SolvePanel(Panel& pa, const SkirtState& s, double time_step) {
   }
   if (config_.supply == SkirtSupply::kStarved) {
     // The leading edge (where the liner's oil enters): y = L while the piston moves toward the
-    // crank, y = 0 on the way back; a partial film theta = 2 h_oil / h there (SkirtConfig).
+    // crank, y = 0 on the way back; a partial film theta = 2 h_oil / h_T there (SkirtConfig).
     Eigen::VectorXd& theta_in = fem.boundary_fraction();
     theta_in.setOnes();
     const TriMesh& pm = fem.mesh();
@@ -234,7 +234,10 @@ void SkirtSolver::SolvePanel(Panel& pa, const SkirtState& s, double time_step) {
       const double h_oil =
           config_.oil_film_table.empty() ? config_.oil_film : config_.oil_film_table(at);
       for (int k = 0; k < n; ++k) {
-        if (pm.fixed[k] && pm.y[k] == y_lead) theta_in[k] = std::min(1.0, 2.0 * h_oil / h[k]);
+        if (!(pm.fixed[k] && pm.y[k] == y_lead)) continue;
+        const double mean_gap =
+            h[k] + (config_.film ? config_.film->At(h[k]).mean_gap_excess : 0.0);
+        theta_in[k] = std::min(1.0, 2.0 * h_oil / mean_gap);
       }
     }
   }

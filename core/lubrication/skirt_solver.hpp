@@ -59,8 +59,9 @@ struct SkirtConfig {
   /// thickness h_oil at its own speed into the skirt's leading edge (the lower edge while the
   /// piston moves toward the crank, the upper one on the way back). Its flow |u_p| h_oil enters
   /// as a partial film that moves at the mean surface speed |u_p|/2, i.e. with the film
-  /// content theta h = 2 h_oil (full when h_oil >= h/2). h_oil is `oil_film`, or the table
-  /// `oil_film_table` over the liner position of that edge (from the skirt top's position at
+  /// content theta h_T = 2 h_oil (full when h_oil >= h_T/2; h_T the mean gap, h for smooth
+  /// surfaces and from H = 3 on: NodalFilmFactors::mean_gap_excess). h_oil is `oil_film`, or the
+  /// table `oil_film_table` over the liner position of that edge (from the skirt top's position at
   /// top dead centre, + toward the crank).
   SkirtSupply supply = SkirtSupply::kFlooded;
   double oil_film = 0.0;   ///< [m]

@@ -14,6 +14,7 @@ NodalFilmFactors SurfaceFilm::At(double h) const {
   f.phi_across = fl.pressure_across;
   f.phi_shear = fl.shear;
   f.phi_contact = fl.contact;
+  f.mean_gap_excess = fl.mean_gap_excess * model_.sigma();
   f.contact_pressure = model_.ContactPressure(h);
   f.shear_f = sh.f;
   f.shear_fs = sh.fs;
@@ -53,6 +54,7 @@ NodalFilmFactors TabulatedSurfaceFilm::At(double h) const {
   f.phi_across = mix(a.phi_across, b.phi_across);
   f.phi_shear = mix(a.phi_shear, b.phi_shear);
   f.phi_contact = mix(a.phi_contact, b.phi_contact);
+  f.mean_gap_excess = mix(a.mean_gap_excess, b.mean_gap_excess);
   f.contact_pressure = mix(a.contact_pressure, b.contact_pressure);
   f.shear_f = mix(a.shear_f, b.shear_f);
   f.shear_fs = mix(a.shear_fs, b.shear_fs);

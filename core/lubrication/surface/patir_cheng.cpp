@@ -5,6 +5,8 @@
 #include <cassert>
 #include <cmath>
 
+#include <boost/math/quadrature/gauss.hpp>
+
 namespace filmdyn::lubrication::patir_cheng {
 namespace {
 
@@ -266,6 +268,14 @@ double WuZhengContactFactor(double H) {
   const double h = std::max(H, 0.0);
   const double correction = WuZhengExponent(kWzUpper) * h / kWzUpper;  // 0.0015 H / 3
   return std::exp(WuZhengExponent(h) - correction);
+}
+
+double WuZhengMeanGapExcess(double H) {
+  if (H >= kWzUpper) return 0.0;
+  const double from = std::max(H, 0.0);
+  const double above = boost::math::quadrature::gauss<double, 20>::integrate(
+      [](double x) { return 1.0 - WuZhengContactFactor(x); }, from, kWzUpper);
+  return H < 0.0 ? above - H * (1.0 - WuZhengContactFactor(0.0)) : above;
 }
 
 }  // namespace filmdyn::lubrication::patir_cheng

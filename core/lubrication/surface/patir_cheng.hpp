@@ -85,5 +85,12 @@ double ShearStressF(double H);
 double WuZhengContactFactor(double H);
 /// The uncorrected [WZ89] cubic fit (for tests/docs).
 double WuZhengContactFactorRawFit(double H);
+/// The mean gap's excess over the nominal gap, (h_T - h) / sigma, that the contact factor
+/// implies: phi_c = dh_T/dh and h_T = h from H = 3 on (phi_c = 1 there), so
+/// (h_T - h) / sigma = integral from H to 3 of (1 - phi_c(H')) dH' — 0 for H >= 3, 0.085 at H = 1,
+/// 0.40 at H = 0 (a Gaussian height density gives 0.083 and 1/sqrt(2 pi) = 0.399); below H = 0,
+/// where phi_c is held at phi_c(0), it grows with slope 1 - phi_c(0).
+/// (Gauss–Legendre quadrature of the smooth fit, exact to round-off.)
+double WuZhengMeanGapExcess(double H);
 
 }  // namespace filmdyn::lubrication::patir_cheng

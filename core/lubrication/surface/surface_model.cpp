@@ -73,6 +73,7 @@ FlowFactors SurfaceModel::Flow(double H) const {
   factors.pressure_across = patir_cheng::PressureFlow(across_, H);
   factors.shear = shear_sign_weight_ * patir_cheng::ShearFlow(along_, H);
   factors.contact = patir_cheng::WuZhengContactFactor(H);
+  factors.mean_gap_excess = patir_cheng::WuZhengMeanGapExcess(H);
   return factors;
 }
 

@@ -62,6 +62,7 @@ struct FlowFactors {
   double pressure_across;  ///< ... across the sliding direction (= along-factor at 1/gamma)
   double shear;            ///< shear flow factor phi_s = (Vr1 - Vr2) Phi_s
   double contact;          ///< Wu–Zheng contact factor phi_c
+  double mean_gap_excess;  ///< (h_T - h) / sigma: the mean gap the contact factor implies
 };
 
 /// Patir–Cheng 1979 shear-stress factors Phi_f, Phi_fs (times Vr1 - Vr2), Phi_fp.

@@ -150,16 +150,22 @@ class TestCoupledCavitation : public QObject {
     const io::RunKpis k = io::RunKpisOf(config, r);
     QVERIFY(k.big_end && k.big_end->oil_balance);
     QVERIFY(std::abs(*k.big_end->oil_balance) < 1e-9);
+    // The oil the supply gave over 180 °CA of high pressure (270-450 °CA) and 180 °CA of low
+    // (630-90 °CA), from the account kept at every integrator step. (Not the mean of the sampled
+    // flows: a flow sampled at an output time just after the turning hole's node moved holds
+    // that node's void filled within the short time since the step, a spike of 226-3885 cm^3/s
+    // at one 2 °CA sample depending on the step sequence; the account books the same oil.)
     double high = 0.0, low = 0.0;
-    int n_high = 0, n_low = 0;
-    for (const auto& s : r.samples) {
+    for (size_t i = 1; i < r.samples.size(); ++i) {
+      const auto& s = r.samples[i];
       const double deg = std::fmod(s.crank_angle * 180.0 / std::numbers::pi, 720.0);
-      if (deg > 270.0 && deg < 450.0) high += s.bearing.supply_flow, ++n_high;
-      if (deg < 90.0 || deg > 630.0) low += s.bearing.supply_flow, ++n_low;
+      const double in = s.bearing.oil.supplied - r.samples[i - 1].bearing.oil.supplied;
+      if (deg > 270.0 && deg <= 450.0) high += in;
+      if (deg <= 90.0 || deg > 630.0) low += in;
     }
-    qInfo("mean supply flow %.3g cm^3/s at high pressure, %.3g at low", high / n_high * 1e6,
-          low / n_low * 1e6);
-    QVERIFY(high / n_high > low / n_low);
+    qInfo("oil supplied over 180 °CA: %.4g mm^3 at high pressure, %.4g mm^3 at low", high * 1e9,
+          low * 1e9);
+    QVERIFY(low > 0.0 && high > 1.5 * low);
   }
 
   // Crank-pin holes passing under a partial shell groove, fed at one pressure: the film takes
