@@ -377,7 +377,7 @@ const BearingResult& BearingSolver::SolveAt(const BearingState& state, double t)
     from = history_.Before(t);
   }
   fem_.void_history() = from->void_content.front();
-  return SolveStep(state, t - from->time);
+  return SolveStep(state, t - from->time, history_.StepContaining(t));
 }
 
 void BearingSolver::AcceptStep(double t) {
@@ -406,7 +406,8 @@ Eigen::VectorXd BearingSolver::PredictorInputs(const BearingState& s) const {
   return Eigen::Map<const Eigen::VectorXd>(z.data(), static_cast<Eigen::Index>(z.size()));
 }
 
-const BearingResult& BearingSolver::SolveStep(const BearingState& s, double time_step) {
+const BearingResult& BearingSolver::SolveStep(const BearingState& s, double time_step,
+                                              double fill_time) {
   // Elastic surfaces: the journal may pass the rigid wall (eps >= 1) where the deformation keeps
   // the film open (ElasticFilm refuses a film it cannot open).
   s.Validate("bearing_state", config_.compliance.rigid() ? 1.0 : kElasticEpsLimit);
@@ -429,6 +430,7 @@ const BearingResult& BearingSolver::SolveStep(const BearingState& s, double time
   params.u_diff = R * (s.omega_journal - s.omega_bearing);
   params.film = config_.film.get();
   params.time_step = time_step;
+  params.fill_time = fill_time;
   params.bulk_modulus = config_.bulk_modulus;
   // An imported compliance is fixed in the bearing body: the film's theta = 0 lies at the body
   // angle phi + pi - (bearing orientation).

@@ -221,7 +221,9 @@ class BearingSolver {
   static TriMesh MakeMesh(const BearingGeometry& g, const BearingMeshSpec& spec, bool fix_theta0);
 
  private:
-  const BearingResult& SolveStep(const BearingState& state, double time_step);
+  /// fill_time: ReynoldsParams::fill_time.
+  const BearingResult& SolveStep(const BearingState& state, double time_step,
+                                 double fill_time = 0.0);
   /// Holds the supply's nodes at the supply pressure (extra fixed nodes of this solve).
   void MarkSupplyNodes(const BearingState& state);
   // The film's inputs for the deformation's predictor (ElasticFilm::Solve).

@@ -151,21 +151,30 @@ class TestCoupledCavitation : public QObject {
     QVERIFY(k.big_end && k.big_end->oil_balance);
     QVERIFY(std::abs(*k.big_end->oil_balance) < 1e-9);
     // The oil the supply gave over 180 °CA of high pressure (270-450 °CA) and 180 °CA of low
-    // (630-90 °CA), from the account kept at every integrator step. (Not the mean of the sampled
-    // flows: a flow sampled at an output time just after the turning hole's node moved holds
-    // that node's void filled within the short time since the step, a spike of 226-3885 cm^3/s
-    // at one 2 °CA sample depending on the step sequence; the account books the same oil.)
-    double high = 0.0, low = 0.0;
+    // (630-90 °CA), from the account kept at every integrator step.
+    double high = 0.0, low = 0.0, interval_mean = 0.0, sampled = 0.0;
     for (size_t i = 1; i < r.samples.size(); ++i) {
       const auto& s = r.samples[i];
+      const auto& before = r.samples[i - 1].bearing.oil;
       const double deg = std::fmod(s.crank_angle * 180.0 / std::numbers::pi, 720.0);
-      const double in = s.bearing.oil.supplied - r.samples[i - 1].bearing.oil.supplied;
+      const double in = s.bearing.oil.supplied - before.supplied;
       if (deg > 270.0 && deg <= 450.0) high += in;
       if (deg <= 90.0 || deg > 630.0) low += in;
+      interval_mean = std::max(interval_mean, in / (s.bearing.oil.time - before.time));
+      sampled = std::max(sampled, s.bearing.supply_flow);
     }
     qInfo("oil supplied over 180 °CA: %.4g mm^3 at high pressure, %.4g mm^3 at low", high * 1e9,
           low * 1e9);
     QVERIFY(low > 0.0 && high > 1.5 * low);
+    // A sample at an output time just after the step in which a turning hole took in a node of
+    // the ruptured film holds that node's void filled at the rate the account booked it over
+    // that step (ReynoldsParams::fill_time): 179 cm^3/s at 12 °CA, where the output interval's
+    // mean is 39 cm^3/s. Filled within the short time since the step's start, as before, the
+    // same sample read 3885 cm^3/s (226 with another step sequence). The node held by a hole
+    // narrower than the mesh takes its void in at once; the account has the same oil.
+    qInfo("largest sampled supply flow %.4g cm^3/s, largest mean over an output interval %.4g",
+          sampled * 1e6, interval_mean * 1e6);
+    QVERIFY(sampled < 10.0 * interval_mean);
   }
 
   // Crank-pin holes passing under a partial shell groove, fed at one pressure: the film takes
