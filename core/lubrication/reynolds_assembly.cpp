@@ -247,10 +247,12 @@ void ReynoldsFem::Assemble(const ReynoldsParams& params) {
     // -int q dN_r/ds over the element (q at its mean: P1). Free nodes get the same as the source
     // form int N_r dq/ds; a fixed node's reaction then holds the shear flow through the boundary
     // too, so that the boundary flows add up to the change of stored oil (without it, a skirt,
-    // open along the sliding direction, lost the oil its edges' shear flows carry).
+    // open along the sliding direction, lost the oil its edges' shear flows carry). JFO: face
+    // fluxes carrying the upwind fluid fraction instead (below).
     const double q_mean =
-        0.5 * params.u_diff * sigma *
-        (factors_[n0].phi_shear + factors_[n1].phi_shear + factors_[n2].phi_shear) / 3.0;
+        jfo ? 0.0
+            : 0.5 * params.u_diff * sigma *
+                  (factors_[n0].phi_shear + factors_[n1].phi_shear + factors_[n2].phi_shear) / 3.0;
     const double wedge = jfo ? 0.0 : 0.5 * params.u_sum * dhds * a / 12.0;  // JFO: see below
     // JFO: the squeeze term lumped (below), like the void's storage, so that a node's oil
     // balance holds only its own cell's storage and a cavity cannot give away oil it lacks.
@@ -289,6 +291,28 @@ void ReynoldsFem::Assemble(const ReynoldsParams& params) {
       const double flux = 0.5 * std::abs(params.u_sum) * face_width_[k] * h_face_[k];
       f_[k] -= flux;
       f_[d] += flux;
+    }
+    // The roughness's shear flow q_s = (U1 - U2)/2 sigma phi_s as face fluxes alike, carrying the
+    // upwind node's fluid fraction (its void part in SolveJfo): a partial film carries the shear
+    // flow of the oil it holds, a dry one none. phi_s has one sign over the film (that of the
+    // surfaces' variance ratios Vr1 - Vr2), so the flow runs one way everywhere: along +s where
+    // (U1 - U2) phi_s > 0. phi_s at the face centred; a starved boundary node sends its own.
+    double phi_s_sum = 0.0;
+    for (int k = 0; k < n; ++k) phi_s_sum += factors_[k].phi_shear;
+    shear_plus_ = params.u_diff * phi_s_sum >= 0.0;
+    shear_face_.setZero(n);
+    if (sigma > 0.0 && params.u_diff != 0.0 && phi_s_sum != 0.0) {
+      for (int k = 0; k < n; ++k) {
+        const int d = shear_plus_ ? down_node_plus_[k] : down_node_minus_[k];
+        if (d < 0) continue;
+        const bool starved_edge = fixed_[k] && theta_fixed_[k] < 1.0;
+        const double phi_s = starved_edge ? factors_[k].phi_shear
+                                          : 0.5 * (factors_[k].phi_shear + factors_[d].phi_shear);
+        const double flux = 0.5 * std::abs(params.u_diff * phi_s) * sigma * face_width_[k];
+        shear_face_[k] = flux;
+        f_[k] -= flux;
+        f_[d] += flux;
+      }
     }
   }
   u_sum_ = params.u_sum;

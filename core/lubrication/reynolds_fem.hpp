@@ -23,17 +23,18 @@
 ///    Giacopini, Fowell, Dini & Strozzi (2010, J. Tribol. 132 041702): lubricant density ratio
 ///    1 - r, with p >= 0, r >= 0, p.r = 0 and one mass balance per node
 ///        (K p - f)_k + (B r)_k = 0,
-///    B = finite-volume transport of the void content (U_sum/2) h_f r plus -r dh_T/dt, on the
-///    dual cells of the structured mesh: the mean gap at the cell face h_f centred, the fraction r
-///    of the upwind node (a full film's Couette flow second order, a cavity's first order). The
-///    mean gap h_T = h + NodalFilmFactors::mean_gap_excess is the oil a full rough film holds per
-///    unit area (dh_T/dh = phi_c; h for smooth surfaces and from H = 3 on). Solved by
-///    the same active-set (semismooth Newton) iteration on the mixed unknowns (p on full-film
-///    nodes, r on cavitated ones), started from the Reynolds solution; non-symmetric, so a sparse
-///    LU is used. Quasi-static (ReynoldsParams::time_step = 0): d(r h_T)/dt ~ r phi_c dh/dt, no
-///    history. Transient (time_step > 0): the void content V = r h_T of every node is carried
-///    from the previous step (void_history()) and its rate is the backward difference (V - V_old) /
-///    dt (lumped), while the full-film squeeze phi_c dh/dt keeps the exact dh/dt of the caller (a
+///    B = finite-volume transport of the void content (U_sum/2) h_f r (and of the roughness's
+///    shear flow's void part, (U_diff/2) sigma phi_s,f r, along its own direction) plus -r dh_T/dt,
+///    on the dual cells of the structured mesh: the mean gap at the cell face h_f centred, the
+///    fraction r of the upwind node (a full film's Couette flow second order, a cavity's first
+///    order). The mean gap h_T = h + NodalFilmFactors::mean_gap_excess is the oil a full rough film
+///    holds per unit area (dh_T/dh = phi_c; h for smooth surfaces and from H = 3 on). Solved by the
+///    same active-set (semismooth Newton) iteration on the mixed unknowns (p on full-film nodes, r
+///    on cavitated ones), started from the Reynolds solution; non-symmetric, so a sparse LU is
+///    used. Quasi-static (ReynoldsParams::time_step = 0): d(r h_T)/dt ~ r phi_c dh/dt, no history.
+///    Transient (time_step > 0): the void content V = r h_T of every node is carried from the
+///    previous step (void_history()) and its rate is the backward difference (V - V_old) / dt
+///    (lumped), while the full-film squeeze phi_c dh/dt keeps the exact dh/dt of the caller (a
 ///    function of the state, so an ODE integrator's error control covers it). The nodal balances
 ///    then conserve oil exactly through rupture and reformation: the void that collapses where the
 ///    film reforms must be filled by the flow (Elrod-Adams / JFO in the time-dependent form of
@@ -283,7 +284,11 @@ class ReynoldsFem {
   std::vector<double> down_gap_plus_, down_gap_minus_;  // distance to that neighbour [m]
   std::vector<int> up_node_plus_, up_node_minus_;       // the node whose downstream is k
   Eigen::VectorXd fraction_old_, face_correction_;      // JFO second-order transport (scratch)
-  Eigen::VectorXd h_face_;  // JFO: gap carried by the Couette flux from node k downstream [m]
+  Eigen::VectorXd h_face_;
+  /// JFO: the roughness's shear flow through the face from node k to its neighbour along
+  /// shear_plus_ ? +s : -s (|(U1 - U2)/2 sigma phi_s| w) [m^3/s]; 0 without one.
+  Eigen::VectorXd shear_face_;
+  bool shear_plus_ = true;  // JFO: gap carried by the Couette flux from node k downstream [m]
   std::unique_ptr<SparseLdlt> ldlt_;
   std::unique_ptr<SparseLu> lu_;  // JFO: the mixed (p, r) system
   Eigen::VectorXd h_, dhdt_, p_fixed_, f_, rhs_, x_, work_, theta_fixed_, void_old_;

@@ -49,15 +49,21 @@ bool ReynoldsFem::SolveJfo() {
   const bool transient = time_step_ > 0.0;
   const double inv_dt = transient ? 1.0 / time_step_ : 0.0;
   auto storage = [&](int k) { return transient ? h_mean_[k] * inv_dt : phi_c_[k] * dhdt_[k]; };
+  // The roughness's shear flow carries the upwind fraction too: its void part, soff_k r_k from k
+  // to its neighbour along the shear flow (Assemble: shear_face_), adds -soff_k to B_kk and
+  // +soff_k to B_sk.
   Eigen::VectorXd bdiag(n), boff(n), r_fixed(n);
   std::vector<int> bpos(n), bnode(n);
   const bool plus = u_sum_ >= 0.0;
+  const std::vector<int>& snode = shear_plus_ ? down_node_plus_ : down_node_minus_;
+  const std::vector<int>& spos = shear_plus_ ? down_pos_plus_ : down_pos_minus_;
+  const Eigen::VectorXd& soff = shear_face_;
   for (int k = 0; k < n; ++k) {
     bnode[k] = plus ? down_node_plus_[k] : down_node_minus_[k];
     bpos[k] = plus ? down_pos_plus_[k] : down_pos_minus_[k];
     // No downstream neighbour (an open end): no Couette flux, as in the full-film assembly.
     const double a = bnode[k] >= 0 ? 0.5 * std::abs(u_sum_) * h_face_[k] * face_width_[k] : 0.0;
-    bdiag[k] = -a - lumped_area_[k] * storage(k);
+    bdiag[k] = -a - soff[k] - lumped_area_[k] * storage(k);
     if (std::abs(bdiag[k]) < 1e-14 * flow_scale_) bdiag[k] = -kf[diag_pos_full_[k]];  // r idle
     boff[k] = a;
     r_fixed[k] = fixed_[k] ? 1.0 - theta_fixed_[k] : 0.0;
@@ -109,6 +115,8 @@ bool ReynoldsFem::SolveJfo() {
     if (transient && !fixed_[k]) base[k] -= lumped_area_[k] * void_old_[k] * inv_dt;
     if (fixed_[k] && r_fixed[k] != 0.0 && bnode[k] >= 0 && !fixed_[bnode[k]])
       base[bnode[k]] -= boff[k] * r_fixed[k];
+    if (fixed_[k] && r_fixed[k] != 0.0 && snode[k] >= 0 && !fixed_[snode[k]])
+      base[snode[k]] -= soff[k] * r_fixed[k];
   }
   if (!lu_) {
     lu_ = std::make_unique<SparseLu>();
@@ -138,8 +146,9 @@ bool ReynoldsFem::SolveJfo() {
         else if (fixed_[c])
           v = 0.0;
         else if (cav[c])
-          v = void_scale[c] *
-              ((q == diag_pos_full_[c]) ? bdiag[c] : (q == bpos[c] ? boff[c] : 0.0));
+          v = void_scale[c] * ((q == diag_pos_full_[c]) ? bdiag[c]
+                                                        : (q == bpos[c] ? boff[c] : 0.0) +
+                                                              (q == spos[c] ? soff[c] : 0.0));
         else
           v = q == diag_pos_full_[c] ? kf[q] + compress[c] : kf[q];
         mv[q] = v;
@@ -208,11 +217,12 @@ bool ReynoldsFem::SolveJfo() {
     if (r[k] == 0.0) continue;
     const double a = boff[k];
     if (!fixed_[k]) {
-      work_[k] += (-a - lumped_area_[k] * storage(k)) * r[k];
+      work_[k] += (-a - soff[k] - lumped_area_[k] * storage(k)) * r[k];
     } else {
-      work_[k] -= a * r[k];  // a starved boundary node sends less oil downstream
+      work_[k] -= (a + soff[k]) * r[k];  // a starved boundary node sends less oil downstream
     }
     if (bnode[k] >= 0) work_[bnode[k]] += a * r[k];
+    if (snode[k] >= 0) work_[snode[k]] += soff[k] * r[k];
   }
   // Relative to the flow scale, which for a transient solve includes the flow that fills a
   // node's cell within the step.
