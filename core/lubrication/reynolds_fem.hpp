@@ -284,11 +284,11 @@ class ReynoldsFem {
   std::vector<double> down_gap_plus_, down_gap_minus_;  // distance to that neighbour [m]
   std::vector<int> up_node_plus_, up_node_minus_;       // the node whose downstream is k
   Eigen::VectorXd fraction_old_, face_correction_;      // JFO second-order transport (scratch)
-  Eigen::VectorXd h_face_;
+  Eigen::VectorXd h_face_;  // JFO: mean gap carried by the Couette flux from node k downstream [m]
   /// JFO: the roughness's shear flow through the face from node k to its neighbour along
   /// shear_plus_ ? +s : -s (|(U1 - U2)/2 sigma phi_s| w) [m^3/s]; 0 without one.
   Eigen::VectorXd shear_face_;
-  bool shear_plus_ = true;  // JFO: gap carried by the Couette flux from node k downstream [m]
+  bool shear_plus_ = true;
   std::unique_ptr<SparseLdlt> ldlt_;
   std::unique_ptr<SparseLu> lu_;  // JFO: the mixed (p, r) system
   Eigen::VectorXd h_, dhdt_, p_fixed_, f_, rhs_, x_, work_, theta_fixed_, void_old_;
