@@ -3,9 +3,9 @@
 // mesh's cells, the mirror of a symmetric half), the coupled film solve's fixed point (h =
 // h_rigid + C p at every converged solution), the infinitely stiff limit against the rigid
 // solver, the elastic-layer bearing against an independent finite-difference solution
-// written here, over eps 0.2-0.9 at two layer compliances and with Barus' and Cross' laws, and
-// the mass-conserving film on
-// elastic surfaces against the Reynolds one where no film reforms (second order in the mesh).
+// written here, over eps 0.2-0.9 at two layer compliances and with Barus', Roelands' and Cross'
+// laws, and the mass-conserving film on elastic surfaces against the Reynolds one where no film
+// reforms (second order in the mesh).
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -464,12 +464,13 @@ class TestElasticFilm : public QObject {
     }
   }
 
-  // The oil's laws on elastic surfaces: the elastic-layer bearing with Barus' pressure-viscosity
-  // law and with Cross' shear thinning against the finite-difference solution above, its
-  // conductivity h^3 mu0 / mu taken from the law's formula written here, node by node (in p
-  // itself, not the reduced pressure FilmDyn solves for), at eps 0.5 and 0.8: load within
-  // 0.3 % and attitude within 0.1 % (measured: 0.06 % and 0.01 %), where each law moves the load
-  // by 2.7-27 % (Barus, 5e-8 1/Pa) and 15-22 % (Cross).
+  // The oil's laws on elastic surfaces: the elastic-layer bearing with Barus' and Roelands'
+  // pressure-viscosity laws and with Cross' shear thinning against the finite-difference solution
+  // above, its conductivity h^3 mu0 / mu taken from the law's formula written here, node by node
+  // (in p itself, not the reduced pressure FilmDyn solves for), at eps 0.5 and 0.8: load within 0.3
+  // % and attitude within 0.1 % (measured: 0.06 % and 0.02 %), and each law moving the load by ten
+  // times its difference to the independent solution at least (Barus, 5e-8 1/Pa: 2.7 and 27 %;
+  // Roelands, z = 0.6: 0.8 and 6.4 %; Cross: 15 and 22 %).
   void elasticLayerBearingWithTheOilsLawsMatchesAnIndependentSolution() {
     const double omega = 3000.0 * 2.0 * kPi / 60.0, modulus = 10e9, alpha = 5e-8;
     const double layer = LayerCompliance(1e-3, modulus, 0.3);
@@ -478,12 +479,19 @@ class TestElasticFilm : public QObject {
     cross.critical_rate = 1e6;
     cross.exponent = 1.0;
     const double u = omega * 0.025;  // the journal's surface speed, the bearing at rest
-    for (int law = 0; law < 2; ++law) {
+    const double z = 0.6, log_ratio = std::log(0.01 / 6.31e-5), p_r = 1.96e8;  // Roelands
+    const char* names[] = {"Barus 5e-8 1/Pa", "Roelands z 0.6", "Cross r 0.5, 1e6 1/s"};
+    for (int law = 0; law < 3; ++law) {
       BearingConfig cfg = LayerBearing(modulus, 240, 24);
       std::function<double(double, double)> fluidity;
       if (law == 0) {
         cfg.pressure_viscosity = PressureViscosity::Barus(alpha);
         fluidity = [&](double p, double) { return std::exp(-alpha * std::max(p, 0.0)); };
+      } else if (law == 1) {
+        cfg.pressure_viscosity = PressureViscosity::Roelands(z, 0.01);
+        fluidity = [&](double p, double) {
+          return std::exp(-log_ratio * (std::pow(1.0 + std::max(p, 0.0) / p_r, z) - 1.0));
+        };
       } else {
         cfg.shear_thinning = cross;
         fluidity = [&](double, double h) {
@@ -506,12 +514,11 @@ class TestElasticFilm : public QObject {
         qInfo(
             "%s, eps %.1f: load %.6g vs %.6g (%+.3f %%; Newtonian %.6g), attitude %.4f vs "
             "%.4f (%+.3f %%), deformation %.3g vs %.3g m",
-            law == 0 ? "Barus 5e-8 1/Pa" : "Cross r 0.5, 1e6 1/s", eps, r.load, fd.load,
-            100 * load_err, plain, r.attitude_deg, fd.attitude_deg, 100 * att_err,
-            r.max_deformation, fd.max_deformation);
+            names[law], eps, r.load, fd.load, 100 * load_err, plain, r.attitude_deg,
+            fd.attitude_deg, 100 * att_err, r.max_deformation, fd.max_deformation);
         QVERIFY(std::abs(load_err) < 3e-3);
         QVERIFY(std::abs(att_err) < 1e-3);
-        QVERIFY(std::abs(r.load / plain - 1.0) > 0.02);
+        QVERIFY(std::abs(r.load / plain - 1.0) > 10.0 * std::abs(load_err));
       }
     }
   }
