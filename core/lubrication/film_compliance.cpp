@@ -583,15 +583,16 @@ bool ElasticFilm::Newton(ReynoldsFem& fem, const ReynoldsParams& params, std::st
       // A Newton step far larger than the residual it answers: I - C P' is nearly singular,
       // the film-surface equilibrium turns here (docs/validation/ehd.md, known limits).
       const double gain = step.norm() / beta;
-      // The residual allowed is a share of the thinnest film: none where the iterate has
-      // closed the film (a journal or skirt pressed past the rigid wall, the film held open by
-      // the deformation alone down to nothing).
+      // The residual allowed is a share of the thinnest film: nothing where the film is held
+      // open by the deformation alone down to molecular size (a journal or skirt pressed past
+      // the rigid wall): the surfaces touch there, which no film solve can carry.
       const double h_min = (h_rigid_ + delta_).minCoeff();
       return fail("line search found no decrease of the deformation residual (residual " +
-                  FormatValue(stats_.residual) + " m, " +
-                  (h_min > 0.0 ? "allowed " + FormatValue(stats_.tolerance) + " m"
-                               : "none allowed: the film is closed at the iterate, thinnest " +
-                                     FormatValue(h_min) + " m") +
+                  FormatValue(stats_.residual) + " m, allowed " + FormatValue(stats_.tolerance) +
+                  " m" +
+                  (h_min < kTouching
+                       ? "; the thinnest film is " + FormatValue(h_min) + " m: the surfaces touch"
+                       : std::string()) +
                   (gain > kTurningGain
                        ? "; the Newton step is " + FormatValue(std::round(gain)) +
                              " times the residual: the film-surface equilibrium has a turning "

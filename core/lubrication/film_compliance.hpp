@@ -206,6 +206,9 @@ class ElasticFilm {
   // A failed Newton step this many times the residual it answers is reported as a turning
   // point of the equilibrium (measured 200 at the CalculiX skirt's; about 1 in a good step).
   static constexpr double kTurningGain = 20.0;
+  // A film thinner than this (a molecule's size) at a failed solve is reported as the surfaces
+  // touching [m].
+  static constexpr double kTouching = 1e-9;
   std::vector<Eigen::VectorXd> recycled_u_, recycled_c_;
   // The predictor's data: the last converged solves that came with inputs (the compliance's
   // share appended), newest last, at most kPredictorPoints. `field` is the film's deformation
