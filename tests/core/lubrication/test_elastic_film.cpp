@@ -527,7 +527,7 @@ class TestElasticFilm : public QObject {
   // converged (halving the shooting steps changes its load by less than 1e-9).
   void validationRowsPass() {
     const auto rows = EhdValidationRows();
-    QCOMPARE(rows.size(), std::size_t(6));
+    QCOMPARE(rows.size(), std::size_t(7));
     for (const auto& row : rows) QVERIFY2(row.Pass(), row.name.c_str());
     const InclinedSlider slider;
     const double layer = LayerCompliance(2e-3, 3e9, 0.3);
