@@ -718,7 +718,10 @@ void SetDescriptions(std::vector<CaseField>& fields) {
        "the paper). \"elastic_layer\": the bearing lining, of the given thickness, is squeezed "
        "point by point against a rigid backing (its Young's modulus and Poisson ratio are the "
        "bearing's). \"half_space\": journal and bearing deform as elastic half-spaces, each "
-       "point under the pressure of the whole film. The film and the deformation are then solved "
+       "point under the pressure of the whole film (a model for a loaded zone small against the "
+       "radius: round a whole bearing it gives way far more than a shell, and engine runs of the "
+       "default case end in their run-in: use the elastic layer or an imported compliance "
+       "there). The film and the deformation are then solved "
        "together at every step."},
       {"big_end.layer_thickness",
        "Thickness of the bearing lining that deforms with the elastic-layer model (the backing "

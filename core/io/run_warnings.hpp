@@ -36,7 +36,8 @@ inline constexpr double kHoleElementsAround = 4.0;
 /// its Ratio and StepRatio, limit: engine::kUnresolvedPeakRatio), "film_start_supply" (a
 /// mass-conserving big end fed only by its film-start line at ambient pressure),
 /// "supply_hole_mesh" (its supply holes on a mesh too coarse for them; value: the node rows
-/// inside a hole across the width, limit: kHoleRowsAcross).
+/// inside a hole across the width, limit: kHoleRowsAcross), "half_space_big_end" (a big end on
+/// elastic half-spaces, a model engine runs outgrow).
 struct RunWarning {
   std::string code;
   std::string joint;    ///< "skirt", "big_end", or empty (the whole run)

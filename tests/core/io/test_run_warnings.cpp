@@ -296,6 +296,34 @@ class TestRunWarnings : public QObject {
       }
   }
 
+  void halfSpaceBigEndWarns() {
+    // Judged from the case: a big end on elastic half-spaces, which engine runs outgrow; not the
+    // skirt's half-spaces, nor the big end's elastic layer.
+    const engine::RunResult none;
+    auto warnings = [&](const engine::EngineCase& c) {
+      return io::RunWarnings(Config(c, engine::Model::kSkirtLbrbe, 6000.0), none);
+    };
+    auto has = [&](const engine::EngineCase& c) {
+      const auto w = warnings(c);
+      return std::any_of(w.begin(), w.end(), [](const io::RunWarning& x) {
+        return x.code == "half_space_big_end" && x.joint == "big_end";
+      });
+    };
+    engine::EngineCase c = CoarseCase();
+    QVERIFY(!has(c));
+    c.skirt.compliance = lubrication::ComplianceModel::kHalfSpace;
+    QVERIFY(!has(c));
+    c.big_end.compliance = lubrication::ComplianceModel::kElasticLayer;
+    QVERIFY(!has(c));
+    c.big_end.compliance = lubrication::ComplianceModel::kHalfSpace;
+    QVERIFY(has(c));
+    for (const io::RunWarning& x : warnings(c))
+      if (x.code == "half_space_big_end") {
+        QVERIFY(QString::fromStdString(x.message).contains("big_end.compliance = elastic_layer"));
+        QCOMPARE(QString::fromStdString(io::WarningShortText(x)), QString("half-space big end"));
+      }
+  }
+
   void supplyHoleOnACoarseMeshWarns() {
     // Judged from the case: a JFO big end fed through a 4 mm crank-pin hole on the default mesh
     // (100 around, 10 graded 4:1 across: only the mid-width row inside the hole) warns and names
