@@ -251,6 +251,16 @@ void SyntheticPressureWarning(const engine::RunConfig& config, std::vector<RunWa
   out->push_back(std::move(w));
 }
 
+// Adds a warning on one joint that the case alone raises (no value, no crank angle).
+void AddJointWarning(std::vector<RunWarning>* out, const char* code, const char* joint,
+                     std::string message) {
+  RunWarning w;
+  w.code = code;
+  w.joint = joint;
+  w.message = std::move(message);
+  out->push_back(std::move(w));
+}
+
 // A mass-conserving big end fed only by its film-start line at ambient pressure (the published
 // tables' idealisation, no supply hardware): at low speed its film starves, and its figures then
 // depend on the mesh beyond the error estimate (docs/validation/errors.md, section 6).
@@ -260,10 +270,8 @@ void FilmStartSupplyWarning(const engine::EngineCase& c, std::vector<RunWarning>
       c.big_end.supply != lubrication::OilFeedKind::kLineOfCentres) {
     return;
   }
-  RunWarning w;
-  w.code = "film_start_supply";
-  w.joint = "big_end";
-  w.message =
+  AddJointWarning(
+      out, "film_start_supply", "big_end",
       "the mass-conserving big end is fed only by its film-start line at ambient pressure "
       "(big_end.supply = line_of_centres): at low speed that starves its film, whose figures "
       "then depend on the mesh beyond the error estimate (at 2000 rpm its minimum film fell by "
@@ -273,8 +281,7 @@ void FilmStartSupplyWarning(const engine::EngineCase& c, std::vector<RunWarning>
       "docs/validation/errors.md, section 6), and its oil content settles slowly (the default "
       "case at 2000 and 4000 rpm: 7 cycles to the periodic state, against 2–3 fed by a "
       "crank-pin hole: docs/performance.md); give the engine's oil supply (big_end.supply, "
-      "big_end.oil_feed_pressure)";
-  out->push_back(std::move(w));
+      "big_end.oil_feed_pressure)");
 }
 
 // A big end on elastic half-spaces in an engine run: Boussinesq's half-space assumes a loaded
@@ -286,19 +293,18 @@ void HalfSpaceBigEndWarning(const engine::EngineCase& c, std::vector<RunWarning>
       c.big_end.compliance != lubrication::ComplianceModel::kHalfSpace) {
     return;
   }
-  RunWarning w;
-  w.code = "half_space_big_end";
-  w.joint = "big_end";
-  w.message =
+  AddJointWarning(
+      out, "half_space_big_end", "big_end",
       "the big end's journal and bearing deform as elastic half-spaces (big_end.compliance = "
       "half_space), a model for a loaded zone small against the radius, which a journal "
       "bearing's film is not: wrapped round the whole bearing it gives way far more than a "
-      "shell does (9.9 µm under the default case's loads, against its 50 µm clearance), and the "
-      "default case's runs at 1000, 3000 and 6000 rpm end in their run-in with the journal past "
+      "shell does (9.9 µm under the default case's loads, against its 50 µm clearance), and "
+      "the "
+      "default case's runs at 1000, 3000 and 6000 rpm end in their run-in with the journal "
+      "past "
       "the rigid wall (docs/validation/ehd.md); for the big end in an engine run use the "
       "elastic layer (big_end.compliance = elastic_layer) or a finite-element compliance "
-      "(imported)";
-  out->push_back(std::move(w));
+      "(imported)");
 }
 
 // A mass-conserving big end fed through holes on a mesh too coarse for them: the hole's edge is

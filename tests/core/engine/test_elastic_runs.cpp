@@ -22,6 +22,15 @@ engine::RunConfig DefaultConfig(double rpm, engine::Model model) {
   const io::LoadedCase loaded = io::LoadCase({});
   return engine::MakeRunConfig(loaded.value, model, rpm, io::PressureCurveForSpeed(loaded, rpm));
 }
+// Only-LBRBE on the coarse test mesh (48 x 6), no error estimate.
+engine::RunConfig CoarseBigEnd(double rpm) {
+  engine::RunConfig config = DefaultConfig(rpm, engine::Model::kOnlyLbrbe);
+  engine::EngineCase& c = config.engine_case;
+  c.solver.error_estimate = 0;
+  c.big_end.mesh_theta = 48;
+  c.big_end.mesh_z = 6;
+  return config;
+}
 }  // namespace
 
 class TestElasticRuns : public QObject {
@@ -33,11 +42,8 @@ class TestElasticRuns : public QObject {
   void elasticLayerBigEndReportsItsDeformation() {
     double moft[2] = {};
     for (int k = 0; k < 2; ++k) {
-      engine::RunConfig config = DefaultConfig(3000, engine::Model::kOnlyLbrbe);
-      config.engine_case.solver.error_estimate = 0;
+      engine::RunConfig config = CoarseBigEnd(3000);
       engine::BigEndCase& b = config.engine_case.big_end;
-      b.mesh_theta = 48;
-      b.mesh_z = 6;
       if (k == 1) {
         b.compliance = lubrication::ComplianceModel::kElasticLayer;
         b.layer_thickness = 1e-3;
@@ -106,11 +112,8 @@ class TestElasticRuns : public QObject {
   // runs through the run-in to its periodic state and deforms; without a file, or with a file
   // that is not there, the case is refused naming the field.
   void importedBigEndComplianceRuns() {
-    engine::RunConfig config = DefaultConfig(3000, engine::Model::kOnlyLbrbe);
+    engine::RunConfig config = CoarseBigEnd(3000);
     engine::EngineCase& c = config.engine_case;
-    c.solver.error_estimate = 0;
-    c.big_end.mesh_theta = 48;
-    c.big_end.mesh_z = 6;
     c.big_end.compliance = lubrication::ComplianceModel::kImported;
     for (const std::string bad : {"", "no-such-file.mtx"}) {
       c.big_end.compliance_file = bad;
@@ -137,11 +140,8 @@ class TestElasticRuns : public QObject {
   // periodic state: its oil account closes to round-off, its film ruptures and its fluid
   // fraction stays within [0, 1] at every output step while the shell deforms by microns.
   void massConservingBigEndRunsOnTheCalculixShell() {
-    engine::RunConfig config = DefaultConfig(6000, engine::Model::kOnlyLbrbe);
+    engine::RunConfig config = CoarseBigEnd(6000);
     engine::EngineCase& c = config.engine_case;
-    c.solver.error_estimate = 0;
-    c.big_end.mesh_theta = 48;
-    c.big_end.mesh_z = 6;
     c.big_end.cavitation = lubrication::CavitationModel::kJfo;
     c.big_end.compliance = lubrication::ComplianceModel::kImported;
     c.big_end.compliance_file = "examples/calculix-bearing-shell/shell_compliance.mtx";
