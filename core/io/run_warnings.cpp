@@ -299,10 +299,9 @@ void HalfSpaceBigEndWarning(const engine::EngineCase& c, std::vector<RunWarning>
       "half_space), a model for a loaded zone small against the radius, which a journal "
       "bearing's film is not: wrapped round the whole bearing it gives way far more than a "
       "shell does (9.9 µm under the default case's loads, against its 50 µm clearance), and "
-      "the "
-      "default case's runs at 1000, 3000 and 6000 rpm end in their run-in with the journal "
-      "past "
-      "the rigid wall (docs/validation/ehd.md); for the big end in an engine run use the "
+      "the default case's runs at 1000, 3000 and 6000 rpm end in their run-in with the "
+      "journal past the rigid wall (docs/validation/ehd.md); for the big end in an engine run "
+      "use the "
       "elastic layer (big_end.compliance = elastic_layer) or a finite-element compliance "
       "(imported)");
 }
