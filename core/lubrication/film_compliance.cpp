@@ -588,11 +588,10 @@ bool ElasticFilm::Newton(ReynoldsFem& fem, const ReynoldsParams& params, std::st
       // the rigid wall): the surfaces touch there, which no film solve can carry.
       const double h_min = (h_rigid_ + delta_).minCoeff();
       return fail("line search found no decrease of the deformation residual (residual " +
-                  FormatValue(stats_.residual) + " m, allowed " + FormatValue(stats_.tolerance) +
-                  " m" +
+                  FormatValue(stats_.residual) + " m" +
                   (h_min < kTouching
                        ? "; the thinnest film is " + FormatValue(h_min) + " m: the surfaces touch"
-                       : std::string()) +
+                       : ", allowed " + FormatValue(stats_.tolerance) + " m") +
                   (gain > kTurningGain
                        ? "; the Newton step is " + FormatValue(std::round(gain)) +
                              " times the residual: the film-surface equilibrium has a turning "

@@ -172,6 +172,25 @@ class TestElasticRuns : public QObject {
     QVERIFY(largest > 1e-6 && moft > 0.0);
   }
 
+  // The CalculiX shell lets the journal through the film at 1000 rpm (a known limit,
+  // docs/validation/ehd.md): the run ends failed at firing, its status naming the joint and
+  // saying that the surfaces touch (the thinnest film below a nanometre), samples kept.
+  void shellThatLetsTheJournalThroughSaysTheSurfacesTouch() {
+    engine::RunConfig config = CoarseBigEnd(1000);
+    engine::EngineCase& c = config.engine_case;
+    c.big_end.compliance = lubrication::ComplianceModel::kImported;
+    c.big_end.compliance_file = "examples/calculix-bearing-shell/shell_compliance.mtx";
+    config.factories = engine::FilmJointFactories(FILMDYN_SOURCE_DIR);
+    const engine::RunResult r = engine::RunJob(config);
+    qInfo("%s: %s", engine::StatusName(r.status).c_str(), r.message.c_str());
+    QCOMPARE(r.status, engine::RunStatus::kFailed);
+    const QString message = QString::fromStdString(r.message);
+    QVERIFY(message.contains("big-end elastic film") && message.contains("the surfaces touch") &&
+            message.contains("°CA"));
+    QVERIFY(!message.contains("allowed -"));
+    QVERIFY(!r.samples.empty());
+  }
+
   // The skirt with the shipped CalculiX skirt's compliance (examples/calculix-skirt-shell, a
   // whole-skirt grid) runs to its periodic state: the thin wall gives way by more than the
   // clearance, the secondary motion grows and the thinnest film falls against the rigid skirt.
