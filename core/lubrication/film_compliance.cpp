@@ -409,25 +409,69 @@ const ElasticSolveStats& ElasticFilm::Solve(ReynoldsFem& fem, const ReynoldsPara
   // elastic one (a Newton start far outside its basin), so the compliance grows from zero in
   // steps that double after a success and shrink fourfold after a failure, each stage starting
   // from the last converged deformation.
-  Eigen::VectorXd converged = Eigen::VectorXd::Zero(n);
-  double done = 0.0, step = target_;
-  while (step >= target_ / 4096.0) {
-    scale_ = std::min(target_, done + step);
+  // Returns the share of the compliance reached (target_ on success), delta_ at it.
+  auto compliance_continuation = [&](const ReynoldsParams& film_params) {
+    Eigen::VectorXd converged = Eigen::VectorXd::Zero(n);
+    double done = 0.0, step = target_;
+    while (step >= target_ / 4096.0) {
+      scale_ = std::min(target_, done + step);
+      delta_ = converged;
+      if (Newton(fem, film_params, why)) {
+        done = scale_;
+        converged = delta_;
+        if (done == target_) return done;
+        step *= 2.0;
+      } else {
+        step *= 0.25;
+      }
+    }
     delta_ = converged;
-    if (Newton(fem, params, why)) {
-      done = scale_;
-      converged = delta_;
-      if (done == target_) return Finish(fem, params, "");
-      step *= 2.0;
-    } else {
-      step *= 0.25;
+    scale_ = target_;
+    return done;
+  };
+  const double done = compliance_continuation(params);
+  if (done == target_) return Finish(fem, params, "");
+  const Eigen::VectorXd partial = delta_;
+  const std::string partial_why = why;
+  // Continuation in the pressure-viscosity law at the full compliance: where the rigid film has
+  // no finite piezoviscous pressure (its isoviscous pressure past the law's limit, 1/alpha for
+  // Barus), the continuation in the compliance starts where there is no solution, while the
+  // elastic isoviscous film always has one; from it the law's strength grows from zero in steps
+  // that double after a success and shrink fourfold after a failure.
+  const PressureViscosity* law = params.pressure_viscosity;
+  double strength = -1.0;  // the law's share reached from the elastic isoviscous film
+  if (law != nullptr && law->active()) {
+    PressureViscosity weakened;  // none: isoviscous
+    ReynoldsParams weak = params;
+    weak.pressure_viscosity = &weakened;
+    if (compliance_continuation(weak) == target_) {
+      Eigen::VectorXd converged = delta_;
+      double step = 1.0;
+      strength = 0.0;
+      while (step >= 1.0 / 1024.0) {
+        const double share = std::min(1.0, strength + step);
+        weakened = law->Weakened(share);
+        delta_ = converged;
+        if (Newton(fem, share == 1.0 ? params : weak, why)) {
+          strength = share;
+          converged = delta_;
+          if (strength == 1.0) return Finish(fem, params, "");
+          step *= 2.0;
+        } else {
+          step *= 0.25;
+        }
+      }
     }
   }
-  delta_ = converged;
+  delta_ = partial;
   scale_ = target_;
   return Finish(fem, params,
                 "deformation not converged: the compliance could be raised only to " +
-                    FormatValue(done / target_) + " of its value (" + why + ")");
+                    FormatValue(done / target_) + " of its value (" + partial_why + ")" +
+                    (strength >= 0.0 ? "; from the elastic isoviscous film the pressure law "
+                                       "only to " +
+                                           FormatValue(strength) + " of its strength (" + why + ")"
+                                     : std::string()));
 }
 
 const ElasticSolveStats& ElasticFilm::Finish(ReynoldsFem& fem, const ReynoldsParams& params,

@@ -4,8 +4,9 @@
 // h_rigid + C p at every converged solution), the infinitely stiff limit against the rigid
 // solver, the elastic-layer bearing against an independent finite-difference solution
 // written here, over eps 0.2-0.9 at two layer compliances and with Barus', Roelands' and Cross'
-// laws, and the mass-conserving film on elastic surfaces against the Reynolds one where no film
-// reforms (second order in the mesh).
+// laws, the mass-conserving film on elastic surfaces against the Reynolds one where no film
+// reforms (second order in the mesh), and a pressure law the rigid film cannot carry, reached
+// from the elastic isoviscous film.
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -328,6 +329,48 @@ class TestElasticFilm : public QObject {
         }
       }
     }
+  }
+
+  // A pressure law the rigid film cannot carry: at eps 0.9 the rigid bearing's isoviscous
+  // pressure passes Barus' limit 1/alpha (alpha = 1e-7 1/Pa), so no finite pressure exists and
+  // the continuation in the compliance, which starts from the rigid film, fails. From the
+  // elastic isoviscous film the law's strength is raised to its full value instead: the solve
+  // converges (h = h_rigid + C p within its tolerance, no node at the law's limit) and agrees
+  // with the independent finite-difference solution.
+  void pressureLawTheRigidFilmCannotCarryIsReachedFromTheIsoviscousFilm() {
+    const double omega = 314.0, alpha = 1e-7, modulus = 5e9;
+    BearingState s;
+    s.omega_journal = omega;
+    s.eps = 0.9;
+    BearingConfig cfg = LayerBearing(modulus, 192, 16);
+    cfg.pressure_viscosity = PressureViscosity::Barus(alpha);
+    BearingConfig rigid_cfg = cfg;
+    rigid_cfg.compliance = {};
+    BearingSolver rigid(rigid_cfg), elastic(cfg);
+    const BearingResult a = rigid.Solve(s);
+    qInfo("rigid: %d nodes at the law's limit", a.stats.capped_nodes);
+    QVERIFY(a.stats.capped_nodes > 0);
+    const BearingResult& r = elastic.Solve(s);
+    QVERIFY2(r.elastic.converged, qPrintable(QString::fromStdString(r.elastic.message)));
+    QCOMPARE(r.stats.capped_nodes, 0);
+    const Eigen::VectorXd& h = elastic.film_thickness();
+    Eigen::VectorXd load = elastic.fields().pressure + elastic.fields().contact_pressure, cp;
+    SurfaceCompliance::Build(cfg.compliance, elastic.mesh(), 0.01).Apply(load, cp);
+    double worst = 0.0;
+    for (int k = 0; k < h.size(); ++k) {
+      const double rigid_h = 25e-6 * (1.0 + s.eps * std::cos(elastic.mesh().x[k] / 0.025));
+      worst = std::max(worst, std::abs(h[k] - rigid_h - cp[k]));
+    }
+    QVERIFY(worst <= cfg.compliance.tolerance * h.minCoeff());
+    const FdBearing fd =
+        SolveFd(0.025, 0.02, 25e-6, 0.01, omega, s.eps, LayerCompliance(1e-3, modulus, 0.3), 160,
+                16, [&](double p, double) { return std::exp(-alpha * std::max(p, 0.0)); });
+    qInfo(
+        "elastic: load %.6g vs %.6g N (%+.3f %%), peak %.4g MPa, deformation %.3g vs %.3g um, "
+        "fixed point %.2e m",
+        r.load, fd.load, 100 * (r.load / fd.load - 1.0), r.max_pressure * 1e-6,
+        r.max_deformation * 1e6, fd.max_deformation * 1e6, worst);
+    QVERIFY(std::abs(r.load / fd.load - 1.0) < 0.01);
   }
 
   // A mass-conserving film on elastic surfaces is the Reynolds film where no film reforms. The
