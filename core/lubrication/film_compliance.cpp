@@ -352,6 +352,30 @@ const ElasticSolveStats& ElasticFilm::Solve(ReynoldsFem& fem, const ReynoldsPara
   }
   h_rigid_ = fem.film_thickness();
   std::string why;
+  // A continuation: a share raised from 0 to `to` in steps, the first `first`, doubled after a
+  // success and quartered after a failure down to `smallest`; each stage is set by `stage`, which
+  // returns the film's parameters for it, and solved by Newton from the last converged
+  // deformation (`converged`: the start). Returns the share reached (`to` when it got there),
+  // delta_ at the last converged stage.
+  auto continuation = [&](double to, double first, double smallest, Eigen::VectorXd converged,
+                          const auto& stage) {
+    double done = 0.0, step = first;
+    while (step >= smallest) {
+      const double share = std::min(to, done + step);
+      const ReynoldsParams& stage_params = stage(share);
+      delta_ = converged;
+      if (Newton(fem, stage_params, why)) {
+        done = share;
+        converged = delta_;
+        if (done == to) break;
+        step *= 2.0;
+      } else {
+        step *= 0.25;
+      }
+    }
+    delta_ = converged;
+    return done;
+  };
   // A rigid film closed somewhere (the journal or piston past the rigid wall): only the deformation
   // can open it, so the solve must start from one that does.
   const int closed = static_cast<int>((h_rigid_.array() <= 0.0).count());
@@ -376,21 +400,12 @@ const ElasticSolveStats& ElasticFilm::Solve(ReynoldsFem& fem, const ReynoldsPara
     // journal past the rigid wall) from the last open one.
     if (last_h_rigid_.size() == n) {
       const Eigen::VectorXd h_target = h_rigid_, h_last = last_h_rigid_;
-      Eigen::VectorXd converged = last_delta;
-      double done = 0.0, step = 0.5;
-      while (step >= 1.0 / 1024.0) {
-        const double share = std::min(1.0, done + step);
-        h_rigid_ = h_last + share * (h_target - h_last);
-        delta_ = converged;
-        if (Newton(fem, params, why)) {
-          done = share;
-          converged = delta_;
-          if (done == 1.0) return Finish(fem, params, "");
-          step *= 2.0;
-        } else {
-          step *= 0.25;
-        }
-      }
+      const double reached = continuation(1.0, 0.5, 1.0 / 1024.0, last_delta,
+                                          [&](double share) -> const ReynoldsParams& {
+                                            h_rigid_ = h_last + share * (h_target - h_last);
+                                            return params;
+                                          });
+      if (reached == 1.0) return Finish(fem, params, "");
       h_rigid_ = h_target;
       delta_ = last_delta;
     }
@@ -409,25 +424,15 @@ const ElasticSolveStats& ElasticFilm::Solve(ReynoldsFem& fem, const ReynoldsPara
   // elastic one (a Newton start far outside its basin), so the compliance grows from zero in
   // steps that double after a success and shrink fourfold after a failure, each stage starting
   // from the last converged deformation.
-  // Returns the share of the compliance reached (target_ on success), delta_ at it.
   auto compliance_continuation = [&](const ReynoldsParams& film_params) {
-    Eigen::VectorXd converged = Eigen::VectorXd::Zero(n);
-    double done = 0.0, step = target_;
-    while (step >= target_ / 4096.0) {
-      scale_ = std::min(target_, done + step);
-      delta_ = converged;
-      if (Newton(fem, film_params, why)) {
-        done = scale_;
-        converged = delta_;
-        if (done == target_) return done;
-        step *= 2.0;
-      } else {
-        step *= 0.25;
-      }
-    }
-    delta_ = converged;
+    const double reached =
+        continuation(target_, target_, target_ / 4096.0, Eigen::VectorXd::Zero(n),
+                     [&](double share) -> const ReynoldsParams& {
+                       scale_ = share;
+                       return film_params;
+                     });
     scale_ = target_;
-    return done;
+    return reached;
   };
   const double done = compliance_continuation(params);
   if (done == target_) return Finish(fem, params, "");
@@ -445,22 +450,12 @@ const ElasticSolveStats& ElasticFilm::Solve(ReynoldsFem& fem, const ReynoldsPara
     ReynoldsParams weak = params;
     weak.pressure_viscosity = &weakened;
     if (compliance_continuation(weak) == target_) {
-      Eigen::VectorXd converged = delta_;
-      double step = 1.0;
-      strength = 0.0;
-      while (step >= 1.0 / 1024.0) {
-        const double share = std::min(1.0, strength + step);
-        weakened = law->Weakened(share);
-        delta_ = converged;
-        if (Newton(fem, share == 1.0 ? params : weak, why)) {
-          strength = share;
-          converged = delta_;
-          if (strength == 1.0) return Finish(fem, params, "");
-          step *= 2.0;
-        } else {
-          step *= 0.25;
-        }
-      }
+      strength =
+          continuation(1.0, 1.0, 1.0 / 1024.0, delta_, [&](double share) -> const ReynoldsParams& {
+            weakened = law->Weakened(share);
+            return share == 1.0 ? params : weak;
+          });
+      if (strength == 1.0) return Finish(fem, params, "");
     }
   }
   delta_ = partial;
