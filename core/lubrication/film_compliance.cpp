@@ -452,8 +452,9 @@ const ElasticSolveStats& ElasticFilm::Solve(ReynoldsFem& fem, const ReynoldsPara
     if (compliance_continuation(weak) == target_) {
       strength =
           continuation(1.0, 1.0, 1.0 / 1024.0, delta_, [&](double share) -> const ReynoldsParams& {
+            if (share == 1.0) return params;  // the law itself: nothing to weaken
             weakened = law->Weakened(share);
-            return share == 1.0 ? params : weak;
+            return weak;
           });
       if (strength == 1.0) return Finish(fem, params, "");
     }
