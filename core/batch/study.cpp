@@ -58,6 +58,14 @@ long IntegerAt(const Study& s, const json& j, const std::string& key, long lo, l
   return j.get<long>();
 }
 
+// The overrides ("path=value") that give both joints the models of the run model `name`.
+std::vector<std::string> ModelOverrides(const std::string& name) {
+  engine::EngineCase probe;
+  engine::ApplyModel(engine::ParseModel(name), &probe);
+  return {std::string("skirt.model=") + engine::JointModelName(probe.skirt.model),
+          std::string("big_end.model=") + engine::JointModelName(probe.big_end.model)};
+}
+
 StudyDesign ParseDesign(const Study& s, const json& j) {
   const std::string allowed =
       "must be \"full-factorial\", \"latin-hypercube\" or \"one-at-a-time\"";
@@ -198,10 +206,7 @@ std::vector<std::string> PointOverrides(const Study& study, const StudyPoint& po
   for (std::size_t f = 0; f < study.factors.size(); ++f) {
     const std::string& path = study.factors[f].path;
     if (path == kModelFactor) {
-      engine::EngineCase probe;
-      engine::ApplyModel(engine::ParseModel(point.values[f]), &probe);
-      sets.push_back(std::string("skirt.model=") + engine::JointModelName(probe.skirt.model));
-      sets.push_back(std::string("big_end.model=") + engine::JointModelName(probe.big_end.model));
+      for (const std::string& o : ModelOverrides(point.values[f])) sets.push_back(o);
     } else {
       sets.push_back(path + "=" + point.values[f]);
     }
@@ -316,12 +321,42 @@ Study ParseStudy(const std::string& text, const fs::path& path) {
     if (!j["set"].is_object())
       Bad(s, "set", JsonText(j["set"]), "must be an object of path: value");
     for (const auto& [key, value] : j["set"].items()) {
+      const std::string set_key = "set." + key;
+      if (key == kModelFactor) {  // the run model, as for a factor: both joints' models
+        if (!value.is_string()) Bad(s, set_key, JsonText(value), "must be a run model's name");
+        const std::string name = value.get<std::string>();
+        try {
+          for (const std::string& o : ModelOverrides(name)) s.base_overrides.push_back(o);
+        } catch (const InputError& e) {
+          Bad(s, set_key, "\"" + name + "\"", e.allowed());
+        }
+        continue;
+      }
+      const engine::CaseField* field = engine::FindCaseField(key);
       if (value.is_number()) {
-        s.base_overrides.push_back(key + "=" + Number(NumberAt(s, value, "set." + key)));
+        const double v = NumberAt(s, value, set_key);
+        if (field != nullptr && (field->kind == engine::FieldKind::kNumber ||
+                                 field->kind == engine::FieldKind::kInteger)) {
+          if (field->kind == engine::FieldKind::kInteger && v != std::floor(v))
+            Bad(s, set_key, JsonText(value), "must be a whole number");
+          field->Check(v, s.study_file.filename().string() + ": " + set_key);
+        }
+        s.base_overrides.push_back(key + "=" + Number(v));
       } else if (value.is_string()) {
         s.base_overrides.push_back(key + "=" + value.get<std::string>());
+      } else if (value.is_array() && field != nullptr &&
+                 field->kind == engine::FieldKind::kNumberList) {
+        std::string list;
+        for (std::size_t k = 0; k < value.size(); ++k) {
+          list += (k ? "," : "") +
+                  Number(NumberAt(s, value[k], set_key + "[" + std::to_string(k) + "]"));
+        }
+        s.base_overrides.push_back(key + "=[" + list + "]");
       } else {
-        Bad(s, "set." + key, JsonText(value), "must be a number or a text");
+        Bad(s, set_key, JsonText(value),
+            field != nullptr && field->kind == engine::FieldKind::kNumberList
+                ? "must be a list of numbers"
+                : "must be a number or a text");
       }
     }
   }
@@ -462,13 +497,37 @@ std::vector<StudyPoint> DesignPoints(const Study& study, const engine::EngineCas
   return points;
 }
 
+namespace {
+
+// LoadCase names an override's error "--set <path>", as the command line writes it; a study's
+// overrides are its file's "set" entries (a factor's own values are checked when parsed).
+io::LoadedCase LoadWithOverrides(const Study& study, const std::vector<std::string>& overrides) {
+  try {
+    return io::LoadCase(study.case_file, overrides);
+  } catch (const InputError& e) {
+    const std::string prefix = "--set";
+    if (e.field().rfind(prefix, 0) != 0) throw;
+    std::string path = e.field().substr(prefix.size());
+    if (!path.empty() && path[0] == ' ') path.erase(0, 1);
+    const bool from_set = std::any_of(
+        study.base_overrides.begin(), study.base_overrides.end(),
+        [&path](const std::string& o) { return path.empty() || o.rfind(path + "=", 0) == 0; });
+    if (!from_set) throw;
+    throw InputError(
+        study.study_file.filename().string() + ": set" + (path.empty() ? "" : ".") + path,
+        e.value(), e.allowed());
+  }
+}
+
+}  // namespace
+
 io::LoadedCase LoadStudyBase(const Study& study) {
-  return io::LoadCase(study.case_file, study.base_overrides);
+  return LoadWithOverrides(study, study.base_overrides);
 }
 
 io::LoadedCase LoadPointCase(const Study& study, const StudyPoint& point) {
   try {
-    return io::LoadCase(study.case_file, PointOverrides(study, point));
+    return LoadWithOverrides(study, PointOverrides(study, point));
   } catch (const InputError& e) {
     std::string where;
     for (std::size_t f = 0; f < study.factors.size(); ++f) {
@@ -492,6 +551,8 @@ std::string StudyJson(const Study& s) {
       const double number = std::strtod(value.c_str(), &end);
       if (end != value.c_str() && *end == '\0') {
         set[o.substr(0, eq)] = number;
+      } else if (json list = json::parse(value, nullptr, false); list.is_array()) {
+        set[o.substr(0, eq)] = list;  // a list field, as the file gave it
       } else {
         set[o.substr(0, eq)] = value;
       }

@@ -394,6 +394,10 @@ void ApplyOverride(json* root, const std::string& assignment) {
       throw InputError("--set " + path, text,
                        "replaced by skirt.cold_clearance, the cold radial skirt clearance "
                        "(piston radius = geometry.liner_radius − skirt.cold_clearance)");
+    } else if (path == "model") {
+      throw InputError("--set " + path, text,
+                       "is not a case field: the run model is chosen with --model (or the joints' "
+                       "models with skirt.model and big_end.model)");
     } else {
       throw InputError("--set " + path, text, "no such field in the case (see docs/case-file.md)");
     }

@@ -24,6 +24,7 @@ enum class Reduce {
   kSlapEnergySum,
   kOilSkirt,
   kOilBearing,
+  kWettedSkirt,
   kWorstError
 };
 
@@ -80,6 +81,11 @@ const std::vector<FigureRecipe>& Recipes() {
       // key, summary.json's kpis oil_in_per_cycle); none for a Reynolds film (no oil account).
       {{"skirt_oil_per_cycle[m^3]", "skirt oil per cycle [mm³]", 1e9}, "", Reduce::kOilSkirt},
       {{"bearing_oil_per_cycle[m^3]", "big-end oil per cycle [mm³]", 1e9}, "", Reduce::kOilBearing},
+      // The mean oil-covered share of a mass-conserving skirt film (summary.json's kpis
+      // mean_wetted_fraction): how starved the skirt runs.
+      {{"mean_skirt_wetted_fraction[-]", "mean skirt wetted fraction [%]", 100.0},
+       "",
+       Reduce::kWettedSkirt},
       // The largest estimated discretisation error of the run's headline figures (relative).
       {{"max_discretisation_error[-]", "max est. discretisation error [%]", 100.0},
        "",
@@ -152,6 +158,10 @@ ComparisonRow ReadComparisonRow(const std::filesystem::path& folder) {
       // Reynolds film creates and loses oil where it cavitates, and a Reynolds skirt's inflow
       // falls with the mesh (docs/outputs.md).
       if (joint && joint->oil_balance) value = joint->oil_in_per_cycle;
+    } else if (recipe.reduce == Reduce::kWettedSkirt) {
+      // As the oil: a Reynolds skirt's "wetted" share is its uncavitated share, another quantity.
+      if (summary.kpis.skirt && summary.kpis.skirt->oil_balance)
+        value = summary.kpis.skirt->mean_wetted_fraction;
     } else if (recipe.reduce == Reduce::kWorstError) {
       if (summary.error_estimate.Estimated()) value = summary.error_estimate.worst_relative;
     } else if (const auto e = summary.extremes.find(recipe.column); e != summary.extremes.end()) {

@@ -8,6 +8,7 @@
 
 #include <QTemporaryDir>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
 
@@ -205,6 +206,60 @@ class TestStudy : public QObject {
       QVERIFY2(Contains(text, "point 2 (model = only-skirt, geometry.rod_length = 0.03)"),
                e.what());
       QVERIFY2(Contains(text, "geometry.rod_length"), e.what());
+    }
+  }
+
+  // The changes every point shares ("set"): the run model by its name (both joints' models, as
+  // for a factor), a list field as a JSON list, and every error named with the file and the
+  // set's key — a value out of range when the file is read, an unknown path when the base case
+  // is built (not as the command line's --set).
+  void setTakesTheModelAndListsAndNamesItsErrors() {
+    const Study s = ParseStudy(R"({"design": "full-factorial",
+        "set": {"model": "only-lbrbe", "big_end.supply": "pin_holes",
+                "big_end.supply_hole_angles": [0, 3.1], "skirt.oil_film": 1e-5},
+        "factors": [{"path": "operating.rpm", "levels": [2000, 4000]}]})",
+                               "s.json");
+    const engine::EngineCase base = batch::LoadStudyBase(s).value;
+    QCOMPARE(engine::ModelName(engine::ModelOfCase(base)), std::string("only-lbrbe"));
+    QCOMPARE(base.big_end.supply_hole_angles, (std::vector<double>{0.0, 3.1}));
+    QCOMPARE(base.skirt.oil_film, 1e-5);
+    const auto points = batch::DesignPoints(s, base);
+    QCOMPARE(engine::ModelName(engine::ModelOfCase(batch::LoadPointCase(s, points[1]).value)),
+             std::string("only-lbrbe"));
+    // study.json writes the list back as a list, and reads it again the same.
+    const std::string text = batch::StudyJson(s);
+    const auto written = nlohmann::json::parse(text)["set"]["big_end.supply_hole_angles"];
+    QVERIFY2(written == nlohmann::json::parse("[0, 3.1]"), text.c_str());
+    QCOMPARE(batch::StudyJson(ParseStudy(text, "study.json")), text);
+
+    const struct {
+      const char* set;
+      const char* names;
+    } refused[] = {
+        {R"({"skirt.oil_film": -1})", "s.json: set.skirt.oil_film = -1: must be a finite number"},
+        {R"({"big_end.mesh_z": 8.5})", "s.json: set.big_end.mesh_z = 8.5: must be a whole number"},
+        {R"({"model": "fast"})", "s.json: set.model = \"fast\""},
+        {R"({"model": 2})", "s.json: set.model = 2: must be a run model's name"},
+        {R"({"big_end.supply_hole_angles": [0, "a"]})",
+         "s.json: set.big_end.supply_hole_angles[1]"},
+        {R"({"skirt.oil_film": [1e-5]})", "s.json: set.skirt.oil_film = [1e-05]: must be a number"},
+    };
+    for (const auto& c : refused) {
+      const std::string error =
+          ErrorOf(std::string(R"({"design": "full-factorial", "set": )") + c.set +
+                  R"(, "factors": [{"path": "operating.rpm", "levels": [2000]}]})");
+      QVERIFY2(Contains(error, c.names), (error + " for " + c.set).c_str());
+    }
+    // A path the case has not: found when the base case is built, named as the file's.
+    const Study unknown = ParseStudy(R"({"design": "full-factorial", "set": {"skirt.nope": 1},
+        "factors": [{"path": "operating.rpm", "levels": [2000]}]})",
+                                     "s.json");
+    try {
+      batch::LoadStudyBase(unknown);
+      QFAIL("an unknown path in set was accepted");
+    } catch (const InputError& e) {
+      QCOMPARE(e.field(), std::string("s.json: set.skirt.nope"));
+      QVERIFY2(Contains(e.allowed(), "no such field"), e.what());
     }
   }
 

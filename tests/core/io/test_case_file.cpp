@@ -368,6 +368,15 @@ class TestCaseFile : public QObject {
     QCOMPARE(field("geometry=1"), std::string("--set geometry"));
     QCOMPARE(field("geometry.rod_mass=nan"), std::string("geometry.rod_mass"));
     QCOMPARE(field("novalue"), std::string("--set"));
+    // The run model is no case field: the error says where it is chosen.
+    try {
+      json k = DefaultJson();
+      io::ApplyOverride(&k, "model=only-skirt");
+      QFAIL("--set model was accepted");
+    } catch (const InputError& e) {
+      QCOMPARE(e.field(), std::string("--set model"));
+      QVERIFY2(std::string(e.allowed()).find("--model") != std::string::npos, e.what());
+    }
 
     // A list field is set whole: comma-separated, in brackets or not, blanks ignored; "[]" empties
     // it; one element by its index. The pair rules apply after all overrides.

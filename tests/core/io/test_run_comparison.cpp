@@ -79,15 +79,31 @@ class TestRunComparison : public QObject {
     WriteSummary(folder, R"({"model": "skirt-lbrbe", "rpm": 6000, "status": "completed",
       "cycles": 2, "wall_time_s": 9.0, "extremes": {},
       "kpis": {"skirt": {"min_moft[m]": 1.8e-5, "oil_in_per_cycle[m^3]": 3.0e-6,
-                         "oil_out_per_cycle[m^3]": 3.0e-6, "oil_balance[-]": null},
+                         "oil_out_per_cycle[m^3]": 3.0e-6, "oil_balance[-]": null,
+                         "mean_wetted_fraction[-]": 0.93},
                "big_end": {"min_moft[m]": 1.4e-6, "oil_in_per_cycle[m^3]": 1.2874e-7,
                            "oil_out_per_cycle[m^3]": 1.2873e-7, "oil_balance[-]": 2e-14}}})");
     const auto row = filmdyn::io::ReadComparisonRow(folder);
     QCOMPARE(*row.figures[FigureIndex("bearing_oil_per_cycle[m^3]")], 1.2874e-7);
     QVERIFY(!row.figures[FigureIndex("skirt_oil_per_cycle[m^3]")].has_value());
+    // A Reynolds skirt's "wetted" share is its uncavitated share: not compared either.
+    QVERIFY(!row.figures[FigureIndex("mean_skirt_wetted_fraction[-]")].has_value());
     const QString markdown = QString::fromStdString(filmdyn::io::ComparisonMarkdown({row}));
     QVERIFY2(markdown.contains("big-end oil per cycle [mm³]") && markdown.contains("| 128.7 |"),
              qPrintable(markdown));
+    // A mass-conserving (here starved) skirt: its oil and its mean wetted fraction, in %.
+    const std::filesystem::path starved = dir.filePath("starved").toStdString();
+    WriteSummary(starved, R"({"model": "only-skirt", "rpm": 6000, "status": "completed",
+      "cycles": 2, "wall_time_s": 9.0, "extremes": {},
+      "kpis": {"skirt": {"min_moft[m]": 1.7e-6, "oil_in_per_cycle[m^3]": 1.62e-7,
+                         "oil_out_per_cycle[m^3]": 1.62e-7, "oil_balance[-]": -6e-14,
+                         "mean_wetted_fraction[-]": 0.351}}})");
+    const auto fed = filmdyn::io::ReadComparisonRow(starved);
+    QCOMPARE(*fed.figures[FigureIndex("mean_skirt_wetted_fraction[-]")], 0.351);
+    QCOMPARE(*fed.figures[FigureIndex("skirt_oil_per_cycle[m^3]")], 1.62e-7);
+    const QString table = QString::fromStdString(filmdyn::io::ComparisonMarkdown({fed}));
+    QVERIFY2(table.contains("mean skirt wetted fraction [%]") && table.contains("| 35.1 |"),
+             qPrintable(table));
   }
 
   // A peak film pressure the run warns is a spike between its output samples (unresolved_peak)
