@@ -606,7 +606,9 @@ struct BalancedJoint {
 };
 
 // The joint's mean friction power [W] (its headline figure) and mean outflow [m³/s] over the
-// reported samples; false when they hold no film of the joint.
+// reported samples; false when they hold no film of the joint. A mass-conserving film's outflow
+// is its oil account's (booked at every integrator step, the oil per cycle it reports), not the
+// samples' mean, which misses or over-weights the flows' spikes between the samples.
 bool PowerAndOutflow(const std::vector<CrankTrainSample>& samples, bool skirt, double* power,
                      double* outflow) {
   const char* key = skirt ? "skirt_fpl_mean[W]" : "bearing_fpl_mean[W]";
@@ -614,10 +616,16 @@ bool PowerAndOutflow(const std::vector<CrankTrainSample>& samples, bool skirt, d
   const auto fpl = std::find_if(figures.begin(), figures.end(),
                                 [key](const HeadlineFigure& f) { return f.key == key; });
   if (fpl == figures.end()) return false;
+  *power = fpl->value;
+  const double n = static_cast<double>(samples.size());
+  if (const auto oil = AccountedOil(samples, !skirt)) {
+    // The account's oil over the samples' whole span (their count times their interval).
+    *outflow = oil->out / ((samples[1].time - samples[0].time) * n);
+    return true;
+  }
   double q = 0.0;
   for (const CrankTrainSample& s : samples) q += skirt ? s.skirt.outflow : s.bearing.side_flow;
-  *power = fpl->value;
-  *outflow = q / static_cast<double>(samples.size());
+  *outflow = q / n;
   return true;
 }
 }  // namespace
