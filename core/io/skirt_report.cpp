@@ -56,7 +56,10 @@ const std::vector<SkirtQuantity>& SkirtQuantities() {
       {"moft_y", "m", "MOFT depth", "  where: distance below the skirt top",
        [](const SkirtPoint& p) { return p.film.moft_y; }, 1e3, "mm"},
       {"cavitated_fraction", "-", "Cavitated fraction", "cavitated fraction of the skirt panels",
-       [](const SkirtPoint& p) { return p.film.cavitated_fraction; }, 1.0, "-"}};
+       [](const SkirtPoint& p) { return p.film.cavitated_fraction; }, 1.0, "-"},
+      {"wetted_fraction", "-", "Wetted fraction",
+       "oil-covered (wetted) fraction of the skirt panels",
+       [](const SkirtPoint& p) { return p.film.wetted_fraction; }, 1.0, "-"}};
   return quantities;
 }
 

@@ -52,6 +52,31 @@ class TestCliSkirt : public QObject {
                      j.value("moment_about_pin").toDouble()) <
             1e-12 * std::abs(j.value("moment_about_pin").toDouble()));
     QCOMPARE(j.value("units").toObject().value("moft").toString(), QString("m"));
+    // A Reynolds film's wetted share is its uncavitated share.
+    QVERIFY(std::abs(j.value("wetted_fraction").toDouble() +
+                     j.value("cavitated_fraction").toDouble() - 1.0) < 1e-12);
+  }
+
+  // A starved skirt (a mass-conserving film fed by the liner's 3 µm of oil) under a load: its
+  // wetted fraction, the mean film fraction, is less than its uncavitated share (the partial
+  // film counts by its oil) and is the figure docs/validation/cavitation.md tabulates (0.37).
+  void starvedSkirtReportsItsWettedFraction() {
+    const Result r =
+        Run({"--side-force", "1500", "--speed", "10", "--set", "skirt.cavitation=jfo", "--set",
+             "skirt.supply=starved", "--set", "skirt.oil_film=3e-6", "--json"});
+    QCOMPARE(r.exit_code, 0);
+    const QJsonObject j = Json(r);
+    QVERIFY(j.value("converged").toBool());
+    const double wetted = j.value("wetted_fraction").toDouble();
+    const double cavitated = j.value("cavitated_fraction").toDouble();
+    QVERIFY2(wetted < 1.0 - cavitated - 0.01, qPrintable(r.out));
+    QVERIFY2(std::abs(wetted - 0.37) < 0.01, qPrintable(r.out));
+    QCOMPARE(j.value("units").toObject().value("wetted_fraction").toString(), QString("-"));
+    const Result text =
+        Run({"--side-force", "1500", "--speed", "10", "--set", "skirt.cavitation=jfo", "--set",
+             "skirt.supply=starved", "--set", "skirt.oil_film=3e-6"});
+    QVERIFY2(text.out.contains("oil-covered (wetted) fraction of the skirt panels"),
+             qPrintable(text.out));
   }
 
   void loadModeFindsTheStateOfTheStateMode() {
