@@ -760,6 +760,15 @@ std::string StudyMarkdown(const Study& study, const std::vector<StudyRow>& rows,
      << (study.case_file.empty() ? std::string("the embedded default case")
                                  : study.case_file.filename().string())
      << ".\n\n";
+  if (!study.base_overrides.empty()) {  // the study file's "set": every point runs with these
+    md << "Changed in the base case for every point:";
+    for (std::size_t k = 0; k < study.base_overrides.size(); ++k) {
+      const std::string& o = study.base_overrides[k];
+      const std::size_t eq = o.find('=');
+      md << (k ? ", `" : " `") << o.substr(0, eq) << " = " << o.substr(eq + 1) << "`";
+    }
+    md << ".\n\n";
+  }
   md << "| factor | levels (SI) |\n|---|---|\n";
   for (const StudyFactor& f : study.factors) {
     md << "| " << FactorHeader(f) << " | ";

@@ -231,6 +231,18 @@ class TestStudy : public QObject {
     const auto written = nlohmann::json::parse(text)["set"]["big_end.supply_hole_angles"];
     QVERIFY2(written == nlohmann::json::parse("[0, 3.1]"), text.c_str());
     QCOMPARE(batch::StudyJson(ParseStudy(text, "study.json")), text);
+    // study.md says what every point ran with besides its factors.
+    const std::string md = batch::StudyMarkdown(s, DoneRows(s), "");
+    QVERIFY2(Contains(md,
+                      "Changed in the base case for every point: `big_end.supply = pin_holes`, "
+                      "`big_end.supply_hole_angles = [0,3.1]`, `skirt.model = ideal`, "
+                      "`big_end.model = lubricated`, `skirt.oil_film = 1e-05`."),
+             md.c_str());
+    QVERIFY(!Contains(batch::StudyMarkdown(ParseStudy(R"({"design": "full-factorial",
+        "factors": [{"path": "operating.rpm", "levels": [2000]}]})",
+                                                      "s.json"),
+                                           {}, ""),
+                      "Changed in the base case"));
 
     const struct {
       const char* set;
