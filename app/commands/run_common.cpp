@@ -176,7 +176,7 @@ BatchOutcome RunBatch(std::vector<batch::SweepJob> jobs, int parallel, bool quie
 
 std::string WriteComparison(const std::filesystem::path& out, const BatchOutcome& batch,
                             const std::string& title, const std::string& prefix, Streams& streams,
-                            const std::vector<int>& indices) {
+                            const std::vector<int>& indices, const std::string& intro) {
   std::vector<int> chosen = indices;
   if (chosen.empty()) {
     for (int k = 0; k < static_cast<int>(batch.jobs.size()); ++k) chosen.push_back(k);
@@ -196,13 +196,21 @@ std::string WriteComparison(const std::filesystem::path& out, const BatchOutcome
   io::WriteComparisonCsv(csv, rows);
   io::WriteFileAtomically(out / "comparison.csv", csv.str());
   const std::string table = io::ComparisonMarkdown(rows);
-  io::WriteFileAtomically(out / "comparison.md", "# " + title + "\n\n" + table);
+  io::WriteFileAtomically(out / "comparison.md",
+                          "# " + title + "\n\n" + (intro.empty() ? "" : intro + "\n\n") + table);
   QString plot_error;
   ui::ExportStandardPlots(runs, QString::fromStdString((out / "plots").string()), &plot_error);
   if (!plot_error.isEmpty()) {
     streams.err << prefix << ": comparison plots not written: " << plot_error.toStdString() << "\n";
   }
   return table;
+}
+
+std::string CaseAndChangesText(const io::LoadedCase& loaded, const std::vector<std::string>& sets) {
+  std::string text = "Case: " + (loaded.directory.empty() ? std::string("the embedded default case")
+                                                          : loaded.source);
+  if (!sets.empty()) text += "; changed for every run: " + io::OverridesText(sets);
+  return text + ".";
 }
 
 namespace {

@@ -80,10 +80,15 @@ BatchOutcome RunBatch(std::vector<batch::SweepJob> jobs, int parallel, bool quie
                       const std::string& prefix, Streams& streams);
 
 /// The comparison of the batch's runs `indices` (all when empty) into `out`: comparison.csv (SI),
-/// comparison.md (`title`, display units) and plots/ with the runs overlaid. Returns the table.
+/// comparison.md (`title`, then `intro` when given — e.g. what the runs share — and the table in
+/// display units) and plots/ with the runs overlaid. Returns the table.
 std::string WriteComparison(const std::filesystem::path& out, const BatchOutcome& batch,
                             const std::string& title, const std::string& prefix, Streams& streams,
-                            const std::vector<int>& indices = {});
+                            const std::vector<int>& indices = {}, const std::string& intro = {});
+
+/// One sentence for a comparison or report: the case the runs start from and the --set changes
+/// they share ("Case: the embedded default case; changed for every run: `a = 1`, `b = x`.").
+std::string CaseAndChangesText(const io::LoadedCase& loaded, const std::vector<std::string>& sets);
 
 /// Installs handlers of SIGINT (Ctrl-C), SIGTERM and SIGHUP for its lifetime: each sets flag() so
 /// runs stop cleanly with their partial results written.

@@ -79,7 +79,8 @@ Command MakeSweepCommand() {
 
     const BatchOutcome batch =
         RunBatch(std::move(sweep_jobs), jobs, args.Has("quiet"), "sweep", streams);
-    const std::string table = WriteComparison(out, batch, "Sweep of " + c.name, "sweep", streams);
+    const std::string table = WriteComparison(out, batch, "Sweep of " + c.name, "sweep", streams,
+                                              {}, CaseAndChangesText(loaded, args.Values("set")));
     streams.out << table;
     streams.err << "sweep: " << batch.runs.size() << " runs, " << batch.incomplete
                 << " incomplete; results in " << out.string() << "\n";

@@ -13,6 +13,7 @@
 
 #include "core/base/input_error.hpp"
 #include "core/engine/case_schema.hpp"
+#include "core/io/case_file.hpp"
 #include "core/io/output_files.hpp"
 #include "core/io/run_comparison.hpp"
 #include "core/io/run_summary.hpp"
@@ -761,13 +762,8 @@ std::string StudyMarkdown(const Study& study, const std::vector<StudyRow>& rows,
                                  : study.case_file.filename().string())
      << ".\n\n";
   if (!study.base_overrides.empty()) {  // the study file's "set": every point runs with these
-    md << "Changed in the base case for every point:";
-    for (std::size_t k = 0; k < study.base_overrides.size(); ++k) {
-      const std::string& o = study.base_overrides[k];
-      const std::size_t eq = o.find('=');
-      md << (k ? ", `" : " `") << o.substr(0, eq) << " = " << o.substr(eq + 1) << "`";
-    }
-    md << ".\n\n";
+    md << "Changed in the base case for every point: " << io::OverridesText(study.base_overrides)
+       << ".\n\n";
   }
   md << "| factor | levels (SI) |\n|---|---|\n";
   for (const StudyFactor& f : study.factors) {

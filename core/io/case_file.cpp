@@ -428,6 +428,16 @@ void ApplyOverride(json* root, const std::string& assignment) {
   }
 }
 
+std::string OverridesText(const std::vector<std::string>& overrides) {
+  std::string text;
+  for (const std::string& o : overrides) {
+    const std::size_t eq = o.find('=');
+    text += (text.empty() ? "`" : ", `") + o.substr(0, eq) + " = " +
+            (eq == std::string::npos ? std::string() : o.substr(eq + 1)) + "`";
+  }
+  return text;
+}
+
 LoadedCase LoadCase(const std::filesystem::path& path, const std::vector<std::string>& overrides) {
   LoadedCase loaded;
   std::string text;

@@ -27,6 +27,8 @@ nlohmann::json CaseToJson(const engine::EngineCase& engine_case);
 /// "skirt.model=lubricated", "pressure_curves.0.rpm=1000"). The path must name an existing
 /// scalar; numbers are parsed strictly. Throws InputError naming the path.
 void ApplyOverride(nlohmann::json* json, const std::string& assignment);
+/// Overrides ("key=value") as a report lists them: "`key = value`, `key = value`".
+std::string OverridesText(const std::vector<std::string>& overrides);
 
 /// A case and the directory its relative file names resolve against.
 struct LoadedCase {

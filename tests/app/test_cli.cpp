@@ -132,7 +132,7 @@ class TestCli : public QObject {
     QTemporaryDir dir;
     const QString out = dir.filePath("s");
     const Result result = Run({"sweep", "--models", "ideal", "--rpm", "1000,6000", "--jobs", "2",
-                               "--out", out, "--quiet"});
+                               "--set", "solver.max_cycles=3", "--out", out, "--quiet"});
     QCOMPARE(result.exit_code, 0);
     QFile csv(out + "/comparison.csv");
     QVERIFY(csv.open(QIODevice::ReadOnly));
@@ -141,7 +141,13 @@ class TestCli : public QObject {
     QVERIFY(lines[1].contains(",ideal,1000,completed,"));
     QVERIFY(lines[2].contains(",ideal,6000,completed,"));
     QVERIFY(result.out.contains("| ideal | 6000 | completed |"));
-    QVERIFY(QFileInfo::exists(out + "/comparison.md"));
+    // comparison.md says what the runs share: the case and the --set changes.
+    QFile md(out + "/comparison.md");
+    QVERIFY(md.open(QIODevice::ReadOnly));
+    const QString report = QString::fromUtf8(md.readAll());
+    QVERIFY2(report.contains("Case: the embedded default case; changed for every run: "
+                             "`solver.max_cycles = 3`."),
+             qPrintable(report));
     QVERIFY(!QImage(out + "/plots/bigend_forces.png").isNull());
     for (const char* rpm : {"1000", "6000"}) {
       const QString folder = out + "/zhao-shen-gasoline-ideal-" + rpm;

@@ -18,7 +18,7 @@ std::vector<batch::SweepJob> MakeJobs(const std::filesystem::path& root) {
     batch::SweepJob job;
     job.config = engine::MakeRunConfig(loaded.value, engine::Model::kIdeal, rpm,
                                        io::PressureCurveForSpeed(loaded, rpm));
-    job.case_name = "t";
+    job.case_name = std::string(1, 't');  // (GCC 12 warns falsely on assigning the literal)
     job.output_folder = root / ("ideal-" + std::to_string(int(rpm)));
     jobs.push_back(std::move(job));
   }

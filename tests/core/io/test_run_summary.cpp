@@ -49,7 +49,12 @@ io::RunSummary Full() {
           engine::CycleScatter{
               3, 7, {{{"bearing_moft_min[m]", "min big-end MOFT", 1.1e-6, true}, 1.05e-6, 1.2e-6}}},
       .warnings = {},
-      .kpis = {}};
+      .kpis = {},
+      .oil_skirt = {},
+      .oil_big_end = {},
+      .clearance_skirt = {},
+      .clearance_big_end = {},
+      .heat_balance = {}};
   engine::ErrorEstimate& e = s.error_estimate;
   e.status = "estimated";
   e.figures = {{{"bearing_moft_min[m]", "min big-end MOFT", 1.1e-6, true},
@@ -64,6 +69,9 @@ io::RunSummary Full() {
                 1.4e8,
                 5.5e8,
                 0.31,
+                false,
+                std::nullopt,
+                std::nullopt,
                 false}};
   e.worst_relative = 0.03;
   e.worst_label = "min big-end MOFT";

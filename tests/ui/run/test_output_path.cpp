@@ -71,7 +71,7 @@ class TestOutputPath : public QObject {
     QVERIFY(QFile::exists(cli_out + "/summary.json"));
 
     filmdyn::io::LoadedCase loaded = filmdyn::io::LoadCase({}, kOverrides);
-    filmdyn::ui::RunRequest request{loaded.value, "skirt-lbrbe", 6000.0};
+    filmdyn::ui::RunRequest request{loaded.value, "skirt-lbrbe", 6000.0, {}};
     filmdyn::ui::RunRecord record(1, request);
     std::atomic<bool> cancel{false};
     filmdyn::ui::CoreRunBackend()(request, cancel, record);
