@@ -89,6 +89,7 @@ RunConfig MakeRunConfig(const EngineCase& engine_case, Model model, double rpm,
   config.rpm = rpm;
   config.pressure = std::move(pressure);
   config.factories = FilmJointFactories(case_directory);
+  config.case_directory = case_directory;
   const SolverCase& s = engine_case.solver;
   config.integrator.relative_tolerance = s.relative_tolerance;
   config.integrator.position_tolerance = s.position_tolerance;

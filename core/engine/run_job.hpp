@@ -76,6 +76,9 @@ struct RunConfig {
   /// Copies of one cycle's film fields the field callback's consumers hold in memory (the run
   /// folder's recorder: 1; the GUI keeps its own view besides): for the memory check.
   double field_copies = 1.0;
+  /// Where the case's relative file names (an imported compliance, a pressure-curve file)
+  /// resolve: the case file's folder; empty = the working directory.
+  std::filesystem::path case_directory;
 };
 
 /// Refuses (InputError naming the largest film mesh) a run whose estimated memory exceeds what

@@ -478,12 +478,15 @@ engine::EngineCase LoadCaseText(const std::string& text, const std::string& sour
 
 namespace {
 
+// An inline curve's angle [°CA] in radians: the one conversion of the case reader.
+double InlineAngle(double deg) { return deg * std::numbers::pi / 180.0; }
+
 engine::PressureCurve CurveFromSource(const LoadedCase& loaded,
                                       const engine::PressureCurveSource& source,
                                       const std::string& field) {
   if (source.file.empty()) {
     std::vector<double> angles;
-    for (double deg : source.crank_angle_deg) angles.push_back(deg * std::numbers::pi / 180.0);
+    for (double deg : source.crank_angle_deg) angles.push_back(InlineAngle(deg));
     return engine::PressureCurve(angles, source.pressure, field);
   }
   const std::filesystem::path relative(source.file);
@@ -504,6 +507,20 @@ engine::PressureCurve CurveFromSource(const LoadedCase& loaded,
 }
 
 }  // namespace
+
+engine::PressureCurveSource InlinePressureCurve(const engine::PressureCurve& curve, double rpm) {
+  engine::PressureCurveSource source;
+  source.rpm = rpm;
+  for (double angle : curve.Angles()) {
+    double deg = angle * 180.0 / std::numbers::pi;
+    // A few ulps either way find the degrees that convert back to exactly this angle.
+    for (int k = 0; k < 8 && InlineAngle(deg) != angle; ++k)
+      deg = std::nextafter(deg, InlineAngle(deg) < angle ? HUGE_VAL : -HUGE_VAL);
+    source.crank_angle_deg.push_back(deg);
+  }
+  source.pressure = curve.Pressures();
+  return source;
+}
 
 engine::PressureCurve PressureCurveForSpeed(const LoadedCase& loaded, double rpm) {
   const auto& curves = loaded.value.pressure_curves;

@@ -27,6 +27,9 @@ nlohmann::json CaseToJson(const engine::EngineCase& engine_case);
 /// "skirt.model=lubricated", "pressure_curves.0.rpm=1000"). The path must name an existing
 /// scalar; numbers are parsed strictly. Throws InputError naming the path.
 void ApplyOverride(nlohmann::json* json, const std::string& assignment);
+/// A curve as a case file's inline pressure curve at `rpm` that the case reader turns back into
+/// exactly `curve` (its angles in degrees chosen so that they convert back to the same radians).
+engine::PressureCurveSource InlinePressureCurve(const engine::PressureCurve& curve, double rpm);
 /// Overrides ("key=value") as a report lists them: "`key = value`, `key = value`".
 std::string OverridesText(const std::vector<std::string>& overrides);
 

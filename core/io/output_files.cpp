@@ -55,8 +55,8 @@ void WriteFileAtomically(const std::filesystem::path& target, std::string_view b
 }
 
 namespace {
-constexpr const char* kRunFiles[] = {"results.csv", "motion.csv", "summary.json", "comparison.csv",
-                                     "comparison.md"};
+constexpr const char* kRunFiles[] = {"results.csv",      "motion.csv",     "summary.json",
+                                     "case-as-run.json", "comparison.csv", "comparison.md"};
 // FilmDyn's files in its subfolders, by extension.
 struct OwnFiles {
   const char* folder;

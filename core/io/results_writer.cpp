@@ -12,6 +12,7 @@
 #include <stdexcept>
 
 #include "core/base/input_error.hpp"
+#include "core/io/case_file.hpp"
 #include "core/io/run_summary.hpp"
 
 namespace filmdyn::io {
@@ -315,6 +316,33 @@ std::filesystem::path DefaultOutputFolder(const std::string& case_name, engine::
          fmt::format("{}-{}-{:g}", SafeFolderName(case_name), engine::ModelName(model), rpm);
 }
 
+nlohmann::json RunCaseJson(const engine::RunConfig& config) {
+  engine::EngineCase c = config.engine_case;
+  c.operating.rpm = config.rpm;
+  // Relative names resolved as the run resolved them, so that the file runs from anywhere.
+  const auto absolute = [&config](std::string* file) {
+    if (file->empty() || std::filesystem::path(*file).is_absolute()) return;
+    std::error_code ignored;
+    const std::filesystem::path full =
+        std::filesystem::absolute(config.case_directory / *file, ignored).lexically_normal();
+    if (!full.empty()) *file = full.string();
+  };
+  absolute(&c.skirt.compliance_file);
+  absolute(&c.big_end.compliance_file);
+  if (!config.pressure.Empty()) {  // the curve the run used (a --pressure-curve, a blend, ...)
+    c.pressure_curves = {InlinePressureCurve(config.pressure, config.rpm)};
+  } else {
+    for (engine::PressureCurveSource& curve : c.pressure_curves) absolute(&curve.file);
+  }
+  return CaseToJson(c);
+}
+
+namespace {
+void WriteRunCase(const std::filesystem::path& directory, const engine::RunConfig& config) {
+  WriteFileAtomically(directory / "case-as-run.json", RunCaseJson(config).dump(2) + "\n");
+}
+}  // namespace
+
 std::vector<OutputRow> WriteRunFolder(const std::filesystem::path& directory,
                                       const std::string& case_name, const engine::RunConfig& config,
                                       const engine::RunResult& result,
@@ -323,6 +351,7 @@ std::vector<OutputRow> WriteRunFolder(const std::filesystem::path& directory,
   std::filesystem::create_directories(directory, error);
   if (error)
     throw InputError("--out", directory.string(), "cannot create the folder: " + error.message());
+  WriteRunCase(directory, config);
   std::vector<OutputRow> rows;
   const double start = result.samples.empty() ? 0.0 : result.samples.front().time;
   for (const auto& s : result.samples) rows.push_back(RowFromSample(s, config.model, start));
@@ -342,6 +371,7 @@ std::vector<OutputRow> WriteRunFolder(const std::filesystem::path& directory,
 
 void MarkRunStarted(const std::filesystem::path& directory, const std::string& case_name,
                     const engine::RunConfig& config) {
+  WriteRunCase(directory, config);
   engine::RunResult running;
   RunSummary summary = SummarizeRun(case_name, config, running, {});
   summary.status = kRunningStatus;

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <functional>
 #include <iosfwd>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
@@ -85,18 +86,23 @@ void WriteMotionCsv(std::ostream& out, const std::vector<OutputRow>& rows);
 /// the caller's further outputs (fields, plots) go here, so that the summary comes last.
 using BeforeSummary = std::function<void(const std::vector<OutputRow>&)>;
 
-/// Writes results.csv and motion.csv (for a model with a film joint), then
-/// `before_summary`'s outputs, then summary.json into `directory`
-/// (created), each file atomically (core/io/output_files.hpp). Returns the rows written. Throws
-/// OutputError naming the file when a write fails (the summary then stays what it was:
-/// MarkRunStarted's "running").
+/// The case a run ran, as a case file that runs it again (`filmdyn run DIR/case-as-run.json`): its
+/// joint models, `operating.rpm` = the run's speed, the cylinder pressure it used as the one
+/// inline curve at that speed, and the files it names (imported compliances) by absolute paths.
+nlohmann::json RunCaseJson(const engine::RunConfig& config);
+
+/// Writes case-as-run.json (RunCaseJson), results.csv and motion.csv (for a model with a film
+/// joint), then `before_summary`'s outputs, then summary.json into `directory` (created), each file
+/// atomically (core/io/output_files.hpp). Returns the rows written. Throws OutputError naming the
+/// file when a write fails (the summary then stays what it was: MarkRunStarted's "running").
 std::vector<OutputRow> WriteRunFolder(const std::filesystem::path& directory,
                                       const std::string& case_name, const engine::RunConfig& config,
                                       const engine::RunResult& result,
                                       const BeforeSummary& before_summary = {});
 
-/// Writes the summary.json of a run that has started: status "running", not complete. A run
-/// killed before it writes its results leaves exactly this, never an earlier run's summary.
+/// Writes the case-as-run.json and the summary.json of a run that has started: status "running",
+/// not complete. A run killed before it writes its results leaves exactly this (with the inputs it
+/// was given), never an earlier run's summary.
 void MarkRunStarted(const std::filesystem::path& directory, const std::string& case_name,
                     const engine::RunConfig& config);
 

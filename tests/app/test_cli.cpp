@@ -156,6 +156,62 @@ class TestCli : public QObject {
     }
   }
 
+  // A run folder keeps the case it ran (case-as-run.json): its models, its speed, the cylinder
+  // pressure it used (here blended between the case's 2000 and 4000 rpm curves) inline, and the
+  // files it names by absolute paths. Running that file gives the same results, bit for bit.
+  void runFolderKeepsTheCaseItRan() {
+    QTemporaryDir dir;
+    const QString first = dir.filePath("first"), again = dir.filePath("again");
+    Result r = Run({"run", "--model", "ideal", "--rpm", "3500", "--set", "solver.max_cycles=3",
+                    "--no-fields", "--out", first, "--quiet"});
+    QVERIFY2(r.exit_code == 0, qPrintable(r.err));
+    QFile file(first + "/case-as-run.json");
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    const QJsonObject c = QJsonDocument::fromJson(file.readAll()).object();
+    QCOMPARE(c["operating"].toObject()["rpm"].toDouble(), 3500.0);
+    QCOMPARE(c["skirt"].toObject()["model"].toString(), QString("ideal"));
+    QCOMPARE(c["big_end"].toObject()["model"].toString(), QString("ideal"));
+    QCOMPARE(c["solver"].toObject()["max_cycles"].toInt(), 3);
+    const QJsonArray curves = c["pressure_curves"].toArray();
+    QCOMPARE(curves.size(), 1);
+    QCOMPARE(curves[0].toObject()["rpm"].toDouble(), 3500.0);
+    QVERIFY(curves[0].toObject()["crank_angle_deg"].toArray().size() >= 72);
+    r = Run({"run", first + "/case-as-run.json", "--no-fields", "--out", again, "--quiet"});
+    QVERIFY2(r.exit_code == 0, qPrintable(r.err));
+    for (const char* name : {"results.csv", "case-as-run.json"}) {
+      QFile a(first + "/" + name), b(again + "/" + name);
+      QVERIFY(a.open(QIODevice::ReadOnly) && b.open(QIODevice::ReadOnly));
+      QVERIFY2(a.readAll() == b.readAll(), name);
+    }
+
+    // A compliance named relative to its case file: absolute in case-as-run.json, which is
+    // written when the run starts (a run stopped at once keeps it).
+    const QString shell = QString(FILMDYN_SOURCE_DIR) + "/examples/calculix-bearing-shell/";
+    QVERIFY(QDir().mkpath(dir.filePath("engine")));
+    for (const char* name : {"shell_compliance.mtx", "shell_compliance.nodes.csv"})
+      QVERIFY(QFile::copy(shell + name, dir.filePath(QString("engine/") + name)));
+    QFile own(dir.filePath("engine/case.json"));
+    QVERIFY(own.open(QIODevice::WriteOnly));
+    own.write(R"({"big_end": {"compliance": "imported",
+                              "compliance_file": "shell_compliance.mtx"},
+                  "pressure_curves": [{"rpm": 6000,
+                                       "file": "../pressure/synthetic_6000rpm.csv"}]})");
+    own.close();
+    const QString stopped = dir.filePath("stopped");
+    r = Run({"run", dir.filePath("engine/case.json"), "--model", "only-lbrbe", "--time-limit",
+             "0.2", "--no-fields", "--out", stopped, "--quiet"});
+    QVERIFY2(r.exit_code == 1, qPrintable(r.err));  // incomplete: the time limit
+    QFile kept(stopped + "/case-as-run.json");
+    QVERIFY(kept.open(QIODevice::ReadOnly));
+    const QString named = QJsonDocument::fromJson(kept.readAll())
+                              .object()["big_end"]
+                              .toObject()["compliance_file"]
+                              .toString();
+    QCOMPARE(QFileInfo(named).canonicalFilePath(),
+             QFileInfo(dir.filePath("engine/shell_compliance.mtx")).canonicalFilePath());
+    QVERIFY2(QFileInfo(named).isAbsolute(), qPrintable(named));
+  }
+
   void sweepRejectsBadJobs() {
     const Result result = Run({"sweep", "--jobs", "0"});
     QCOMPARE(result.exit_code, 2);

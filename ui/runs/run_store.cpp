@@ -147,8 +147,9 @@ RunWriters CopyingWriters(const fs::path& folder) {
     fs::create_directories(to);
     io::WriteFileAtomically(to / "results.csv", ReadBytes(folder / "results.csv"));
     if (fs::is_directory(folder / "fields")) CopyFieldFiles(folder / "fields", to / "fields");
-    if (fs::exists(folder / "motion.csv"))
-      io::WriteFileAtomically(to / "motion.csv", ReadBytes(folder / "motion.csv"));
+    for (const char* file : {"motion.csv", "case-as-run.json"}) {
+      if (fs::exists(folder / file)) io::WriteFileAtomically(to / file, ReadBytes(folder / file));
+    }
     io::WriteFileAtomically(to / "summary.json", ReadBytes(folder / "summary.json"));
   };
   writers.csv = [folder] { return ReadBytes(folder / "results.csv"); };
