@@ -20,6 +20,10 @@ const lubrication::OilSpec& JointOilSpec(const EngineCase& c, const JointOil& oi
   return c.lubricant;
 }
 
+bool TemperatureFreeOil(const EngineCase& c, const JointOil& oil) {
+  return JointOilSpec(c, oil).model == lubrication::ViscosityModel::kConstant;
+}
+
 std::string JointOilPrefix(const JointOil& oil, const std::string& joint) {
   return oil.source == OilSource::kOwn ? joint + ".oil." : "lubricant.";
 }

@@ -16,6 +16,9 @@ namespace filmdyn::engine {
 /// The oil a joint's film carries: the case's lubricant or the joint's own (JointOil::source),
 /// and the prefix of its fields ("lubricant." or "<joint>.oil.").
 const lubrication::OilSpec& JointOilSpec(const EngineCase& c, const JointOil& oil);
+/// True when the joint's oil does not depend on its film temperature (a constant viscosity:
+/// its pressure and shear laws then do not either).
+bool TemperatureFreeOil(const EngineCase& c, const JointOil& oil);
 std::string JointOilPrefix(const JointOil& oil, const std::string& joint);
 /// A joint's oil at its film temperature (JointOilSpec). Throws filmdyn::InputError naming the
 /// field ("lubricant.vogel_a", "skirt.oil.temperature").

@@ -685,6 +685,15 @@ RunResult RunJob(const RunConfig& config, const RunMonitor& monitor,
       hb.converged = true;
       break;
     }
+    // Oils whose viscosity does not follow temperature: another run at the balance's temperature
+    // would be this one again, so the balance is its fixed point already.
+    if (std::all_of(joints.begin(), joints.end(),
+                    [&c](const BalancedJoint& j) { return TemperatureFreeOil(c, *j.oil); })) {
+      for (BalancedJoint& j : joints) j.t += j.f;
+      hb.residual = 0.0;
+      hb.converged = true;
+      break;
+    }
     if (hb.runs >= kMaxRuns) break;
     for (BalancedJoint& j : joints) {
       if (j.f >= 0.0) j.lo = std::max(j.lo, j.t);

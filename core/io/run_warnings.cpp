@@ -306,6 +306,32 @@ void HalfSpaceBigEndWarning(const engine::EngineCase& c, std::vector<RunWarning>
       "(imported)");
 }
 
+// A joint whose film temperature comes from its heat balance while its oil's viscosity does not
+// depend on temperature: the balance reports a temperature and changes nothing in the film.
+void ConstantViscosityHeatBalanceWarning(const engine::EngineCase& c,
+                                         std::vector<RunWarning>* out) {
+  for (const bool skirt : {true, false}) {
+    const engine::JointOil& oil = skirt ? c.skirt.oil : c.big_end.oil;
+    const engine::JointModel model = skirt ? c.skirt.model : c.big_end.model;
+    if (model != engine::JointModel::kLubricated ||
+        oil.temperature_mode != engine::FilmTemperature::kHeatBalance ||
+        !engine::TemperatureFreeOil(c, oil)) {
+      continue;
+    }
+    const std::string joint = skirt ? "skirt" : "big_end";
+    const std::string source = oil.source == engine::OilSource::kOwn
+                                   ? joint + ".oil.viscosity_model"
+                                   : std::string("lubricant.viscosity_model");
+    AddJointWarning(out, "heat_balance_constant_viscosity", skirt ? "skirt" : "big_end",
+                    fmt::format("the {}'s film temperature comes from its heat balance ({}.oil."
+                                "temperature_mode = heat_balance), but its oil's viscosity does "
+                                "not depend on temperature ({} = constant): the balance reports "
+                                "the film's temperature and changes nothing in the film; give the "
+                                "oil a temperature law (vogel or grade) for the balance to act",
+                                skirt ? "skirt" : "big end", joint, source));
+  }
+}
+
 // A mass-conserving big end fed through holes on a mesh too coarse for them: the hole's edge is
 // placed where it cuts the mesh lines, which converges at second order, but with one node row
 // inside it across the width its oil per cycle was still 7 % below the finest meshes'
@@ -483,6 +509,7 @@ std::vector<RunWarning> RunWarnings(const engine::RunConfig& config,
   FilmStartSupplyWarning(c, &out);
   SupplyHoleMeshWarning(c, &out);
   HalfSpaceBigEndWarning(c, &out);
+  ConstantViscosityHeatBalanceWarning(c, &out);
   return out;
 }
 
@@ -498,6 +525,7 @@ std::string WarningShortText(const RunWarning& w) {
   if (w.code == "film_start_supply") return "film-start supply";
   if (w.code == "supply_hole_mesh") return "supply hole on a coarse mesh";
   if (w.code == "half_space_big_end") return "half-space big end";
+  if (w.code == "heat_balance_constant_viscosity") return "heat balance, constant viscosity";
   if (w.code == "unresolved_peak") {
     return fmt::format("peak spike ×{:.2g} {}", w.value, w.joint == "skirt" ? "skirt" : "big end");
   }

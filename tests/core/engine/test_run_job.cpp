@@ -349,6 +349,32 @@ class TestRunJob : public QObject {
     QVERIFY(result.heat_balance->runs >= 2 && result.heat_balance->runs <= 10);
   }
 
+  // A big end in heat-balance mode whose oil's viscosity does not follow temperature: a second
+  // run at the balance's temperature would be the first again, so one run gives the balance's
+  // fixed point (residual 0) and the film temperature is the balance of that run's P and Q.
+  void heatBalanceOfAConstantViscosityTakesOneRun() {
+    engine::RunConfig config = CoarseBigEndWithVogelOil();
+    engine::EngineCase& c = config.engine_case;
+    c.lubricant.model = lubrication::ViscosityModel::kConstant;
+    c.big_end.oil.temperature_mode = engine::FilmTemperature::kHeatBalance;
+    c.big_end.oil.temperature = 373.15;
+    const engine::RunResult result = engine::RunJob(config);
+    QVERIFY2(result.status == engine::RunStatus::kCompleted, result.message.c_str());
+    QVERIFY(result.heat_balance && result.heat_balance->converged);
+    QCOMPARE(result.heat_balance->runs, 1);
+    QCOMPARE(result.heat_balance->residual, 0.0);
+    double power = 0.0, leakage = 0.0;
+    for (const auto& s : result.samples) {
+      power += s.bearing.fpl;
+      leakage += s.bearing.side_flow;
+    }
+    power /= double(result.samples.size());
+    leakage /= double(result.samples.size());
+    const double balance = 363.15 + power / (860.0 * 2000.0 * leakage);
+    QVERIFY2(std::abs(*result.big_end_film_temperature - balance) < 1e-9,
+             qPrintable(QString::number(*result.big_end_film_temperature - balance)));
+  }
+
   // A mass-conserving big end's heat balance takes the oil leaving the film from its oil account
   // (the oil per cycle it reports, booked at every integrator step), not the sampled leakage: the
   // balance computed here from the account misses the film temperature by exactly the residual

@@ -324,6 +324,38 @@ class TestRunWarnings : public QObject {
       }
   }
 
+  void heatBalanceOfAConstantViscosityWarns() {
+    // Judged from the case: a joint in heat-balance mode whose oil's viscosity does not follow
+    // temperature (the default lubricant is a constant 20 mPa s) — per joint, naming the field
+    // that gives the oil its law; not with a Vogel oil, nor with a given film temperature.
+    const engine::RunResult none;
+    auto found = [&](const engine::EngineCase& c,
+                     const char* joint) -> std::optional<io::RunWarning> {
+      for (const io::RunWarning& x :
+           io::RunWarnings(Config(c, engine::Model::kSkirtLbrbe, 6000.0), none)) {
+        if (x.code == "heat_balance_constant_viscosity" && x.joint == joint) return x;
+      }
+      return std::nullopt;
+    };
+    engine::EngineCase c = CoarseCase();
+    QVERIFY(!found(c, "skirt") && !found(c, "big_end"));
+    c.big_end.oil.temperature_mode = engine::FilmTemperature::kHeatBalance;
+    const auto w = found(c, "big_end");
+    QVERIFY(w && !found(c, "skirt"));
+    QVERIFY2(QString::fromStdString(w->message).contains("lubricant.viscosity_model = constant"),
+             w->message.c_str());
+    QCOMPARE(QString::fromStdString(io::WarningShortText(*w)),
+             QString("heat balance, constant viscosity"));
+    c.skirt.oil.temperature_mode = engine::FilmTemperature::kHeatBalance;
+    c.skirt.oil.source = engine::OilSource::kOwn;  // its own oil, constant too
+    const auto s = found(c, "skirt");
+    QVERIFY(s);
+    QVERIFY2(QString::fromStdString(s->message).contains("skirt.oil.viscosity_model = constant"),
+             s->message.c_str());
+    c.lubricant.model = lubrication::ViscosityModel::kVogel;  // the big end's oil follows T now
+    QVERIFY(!found(c, "big_end") && found(c, "skirt"));
+  }
+
   void supplyHoleOnACoarseMeshWarns() {
     // Judged from the case: a JFO big end fed through a 4 mm crank-pin hole on the default mesh
     // (100 around, 10 graded 4:1 across: only the mid-width row inside the hole) warns and names
