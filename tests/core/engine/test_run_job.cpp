@@ -7,6 +7,7 @@
 #include <QTemporaryDir>
 #include <atomic>
 #include <fstream>
+#include <functional>
 #include <optional>
 #include <sstream>
 
@@ -39,6 +40,29 @@ engine::RunConfig CoarseBigEndWithVogelOil() {
   c.lubricant.vogel_b = 1050.0;
   c.lubricant.vogel_c = 165.0;
   return config;
+}
+// The reported cycle's mean big-end friction power [W] and mean sampled side leakage [m³/s].
+std::pair<double, double> MeanBigEndPowerAndLeakage(const engine::RunResult& result) {
+  double power = 0.0, leakage = 0.0;
+  for (const auto& s : result.samples) {
+    power += s.bearing.fpl;
+    leakage += s.bearing.side_flow;
+  }
+  const double n = double(result.samples.size());
+  return {power / n, leakage / n};
+}
+
+// The coarse big end with the Vogel oil, its film temperature from its heat balance started at
+// 100 °C, `change` applied; run, and checked to complete with a converged balance.
+engine::RunResult HeatBalancedBigEnd(const std::function<void(engine::EngineCase&)>& change) {
+  engine::RunConfig config = CoarseBigEndWithVogelOil();
+  engine::EngineCase& c = config.engine_case;
+  c.big_end.oil.temperature_mode = engine::FilmTemperature::kHeatBalance;
+  c.big_end.oil.temperature = 373.15;  // the first guess
+  change(c);
+  engine::RunResult result = engine::RunJob(config);
+  if (result.status != engine::RunStatus::kCompleted) qWarning("%s", result.message.c_str());
+  return result;
 }
 }  // namespace
 
@@ -325,22 +349,12 @@ class TestRunJob : public QObject {
         engine::HeatBalanceTemperature(363.15, 0.5, 860.0 * 2000.0 * 1e-6, 860.0, 2000.0, 1e-6),
         363.65);
     QCOMPARE(engine::HeatBalanceTemperature(363.15, 1.0, 100.0, 860.0, 2000.0, 0.0), 363.15);
-    engine::RunConfig config = CoarseBigEndWithVogelOil();
-    engine::EngineCase& c = config.engine_case;
-    c.big_end.oil.temperature_mode = engine::FilmTemperature::kHeatBalance;
-    c.big_end.oil.temperature = 373.15;  // the first guess
-    const engine::RunResult result = engine::RunJob(config);
+    const engine::RunResult result = HeatBalancedBigEnd([](engine::EngineCase&) {});
     QVERIFY2(result.status == engine::RunStatus::kCompleted, result.message.c_str());
     QVERIFY(result.heat_balance && result.heat_balance->converged);
     QVERIFY(result.big_end_film_temperature && !result.skirt_film_temperature);
     const double t = *result.big_end_film_temperature;
-    double power = 0.0, leakage = 0.0;
-    for (const auto& s : result.samples) {
-      power += s.bearing.fpl;
-      leakage += s.bearing.side_flow;
-    }
-    power /= double(result.samples.size());
-    leakage /= double(result.samples.size());
+    const auto [power, leakage] = MeanBigEndPowerAndLeakage(result);
     const double balance = 363.15 + power / (860.0 * 2000.0 * leakage);
     qInfo("heat balance: %d runs, T %.3f K, balance %.3f K, P %.1f W, Q %.3g m3/s",
           result.heat_balance->runs, t, balance, power, leakage);
@@ -353,23 +367,13 @@ class TestRunJob : public QObject {
   // run at the balance's temperature would be the first again, so one run gives the balance's
   // fixed point (residual 0) and the film temperature is the balance of that run's P and Q.
   void heatBalanceOfAConstantViscosityTakesOneRun() {
-    engine::RunConfig config = CoarseBigEndWithVogelOil();
-    engine::EngineCase& c = config.engine_case;
-    c.lubricant.model = lubrication::ViscosityModel::kConstant;
-    c.big_end.oil.temperature_mode = engine::FilmTemperature::kHeatBalance;
-    c.big_end.oil.temperature = 373.15;
-    const engine::RunResult result = engine::RunJob(config);
+    const engine::RunResult result = HeatBalancedBigEnd(
+        [](engine::EngineCase& c) { c.lubricant.model = lubrication::ViscosityModel::kConstant; });
     QVERIFY2(result.status == engine::RunStatus::kCompleted, result.message.c_str());
     QVERIFY(result.heat_balance && result.heat_balance->converged);
     QCOMPARE(result.heat_balance->runs, 1);
     QCOMPARE(result.heat_balance->residual, 0.0);
-    double power = 0.0, leakage = 0.0;
-    for (const auto& s : result.samples) {
-      power += s.bearing.fpl;
-      leakage += s.bearing.side_flow;
-    }
-    power /= double(result.samples.size());
-    leakage /= double(result.samples.size());
+    const auto [power, leakage] = MeanBigEndPowerAndLeakage(result);
     const double balance = 363.15 + power / (860.0 * 2000.0 * leakage);
     QVERIFY2(std::abs(*result.big_end_film_temperature - balance) < 1e-9,
              qPrintable(QString::number(*result.big_end_film_temperature - balance)));
@@ -380,26 +384,16 @@ class TestRunJob : public QObject {
   // balance computed here from the account misses the film temperature by exactly the residual
   // the run reports (to round-off); the samples' mean leakage differs from the account's.
   void massConservingHeatBalanceUsesTheOilAccount() {
-    engine::RunConfig config = CoarseBigEndWithVogelOil();
-    engine::EngineCase& c = config.engine_case;
-    c.big_end.cavitation = lubrication::CavitationModel::kJfo;
-    c.big_end.oil.temperature_mode = engine::FilmTemperature::kHeatBalance;
-    c.big_end.oil.temperature = 373.15;
-    const engine::RunResult result = engine::RunJob(config);
+    const engine::RunResult result = HeatBalancedBigEnd(
+        [](engine::EngineCase& c) { c.big_end.cavitation = lubrication::CavitationModel::kJfo; });
     QVERIFY2(result.status == engine::RunStatus::kCompleted, result.message.c_str());
     QVERIFY(result.heat_balance && result.heat_balance->converged);
     const double t = *result.big_end_film_temperature;
     const auto oil = engine::AccountedOil(result.samples, true);
     QVERIFY(oil.has_value());
-    const double n = double(result.samples.size());
-    const double span = (result.samples[1].time - result.samples[0].time) * n;
-    double power = 0.0, sampled = 0.0;
-    for (const auto& s : result.samples) {
-      power += s.bearing.fpl;
-      sampled += s.bearing.side_flow;
-    }
-    power /= n;
-    sampled /= n;
+    const double span =
+        (result.samples[1].time - result.samples[0].time) * double(result.samples.size());
+    const auto [power, sampled] = MeanBigEndPowerAndLeakage(result);
     const double leakage = oil->out / span;
     const double balance = 363.15 + power / (860.0 * 2000.0 * leakage);
     const double residual = result.heat_balance->residual;
