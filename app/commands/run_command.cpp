@@ -15,6 +15,7 @@
 #include "core/io/field_output.hpp"
 #include "core/io/output_files.hpp"
 #include "core/io/results_writer.hpp"
+#include "core/io/run_kpis.hpp"
 
 namespace filmdyn::cli {
 
@@ -115,6 +116,13 @@ Command MakeRunCommand() {
                 << " cycles, " << result.stats.steps << " steps, " << result.wall_time
                 << " s; results in " << out.string() << "\n";
     streams.err << "filmdyn run: " << result.error_estimate.Summary() << "\n";
+    // A periodic run's last cycles (a run that is not periodic says so in its warning).
+    if (result.status == engine::RunStatus::kCompleted) {
+      if (const auto scatter = engine::ScatterOverCycles(result.cycle_headlines, result.samples,
+                                                         io::ReportsWholeCycle(result))) {
+        streams.err << "filmdyn run: " << scatter->Summary() << "\n";
+      }
+    }
     PrintRunWarnings(config, result, "filmdyn run", streams.err);
     if (result.status != engine::RunStatus::kCompleted) {
       streams.err << "filmdyn run: incomplete: " << result.message << "\n";

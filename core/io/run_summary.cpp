@@ -69,7 +69,12 @@ RunSummary SummarizeRun(const std::string& case_name, const engine::RunConfig& c
     if (f.key == "bearing_fpl_mean[W]") s.mean_fpl_bearing_w = f.value;
   }
   s.error_estimate = result.error_estimate;
-  if (result.status == engine::RunStatus::kNotConverged)
+  // How far the last cycles' headline figures disagree, for every run that reported a cycle
+  // after at least one other: the periodic-state test judges each quantity against its range
+  // over the cycle, which hides a minimum film's scatter (docs/validation/errors.md, "The step
+  // sequence's scatter").
+  if (result.status == engine::RunStatus::kNotConverged ||
+      result.status == engine::RunStatus::kCompleted)
     s.cycle_scatter =
         engine::ScatterOverCycles(result.cycle_headlines, result.samples, whole_cycle);
   s.warnings = RunWarnings(config, result);

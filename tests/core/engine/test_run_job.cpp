@@ -17,6 +17,7 @@
 #include "core/engine/run_job.hpp"
 #include "core/io/case_file.hpp"
 #include "core/io/results_writer.hpp"
+#include "core/io/run_summary.hpp"
 #include "core/io/run_warnings.hpp"
 #include "core/lubrication/film_compliance.hpp"
 
@@ -361,6 +362,35 @@ class TestRunJob : public QObject {
     QVERIFY(std::abs(balance - t) <= 0.25);
     QVERIFY(t > 363.15 + 1.0);
     QVERIFY(result.heat_balance->runs >= 2 && result.heat_balance->runs <= 10);
+  }
+
+  // Every run that reports a cycle after another says how far its last cycles' headline figures
+  // disagree (summary.json cycle_scatter), not only one that finds no periodic state: the
+  // periodic-state test judges each quantity against its range over the cycle, which hides a
+  // minimum film's scatter. The coarse big end, periodic after its cycles: each figure's range
+  // over them holds the reported value.
+  void periodicRunReportsItsCycleScatter() {
+    engine::RunConfig config = CoarseBigEndWithVogelOil();
+    config.engine_case.lubricant.model = lubrication::ViscosityModel::kConstant;
+    const engine::RunResult result = engine::RunJob(config);
+    QVERIFY2(result.status == engine::RunStatus::kCompleted, result.message.c_str());
+    QVERIFY(result.cycles >= 2);
+    QTemporaryDir dir;
+    io::WriteRunFolder(dir.path().toStdString(), "coarse", config, result);
+    const io::RunSummary s = io::ReadSummaryJson(dir.filePath("summary.json").toStdString());
+    QVERIFY(s.cycle_scatter.has_value());
+    QCOMPARE(s.cycle_scatter->last_cycle, result.cycles);
+    QCOMPARE(s.cycle_scatter->first_cycle, result.cycles >= 3 ? 2 : 1);
+    QCOMPARE(s.cycle_scatter->figures.size(), s.headline.size());
+    for (std::size_t k = 0; k < s.headline.size(); ++k) {
+      const auto& f = s.cycle_scatter->figures[k];
+      QCOMPARE(f.figure.key, s.headline[k].key);
+      QVERIFY(f.min <= s.headline[k].value && s.headline[k].value <= f.max);
+    }
+    qInfo("%s", s.cycle_scatter->Summary().c_str());
+    // The run warns of nothing about it: it is periodic.
+    for (const io::RunWarning& w : io::RunWarnings(config, result))
+      QVERIFY(w.code != "not_periodic");
   }
 
   // A big end in heat-balance mode whose oil's viscosity does not follow temperature: a second

@@ -365,7 +365,7 @@ class TestRunSummary : public QObject {
     QCOMPARE(s.extremes.at("gas_force[N]").min, lo);
     QCOMPARE(s.extremes.at("gas_force[N]").max, hi);
     QVERIFY(!s.mean_fpl_skirt_w);                    // ideal joints: no film, no FPL figure
-    QVERIFY(!s.cycle_scatter);                       // periodic, and no headline figures
+    QVERIFY(!s.cycle_scatter);                       // no headline figures (ideal joints)
     QVERIFY(!s.extremes.contains("skirt_moft[m]"));  // no film: no values, no extremes
     QVERIFY(!s.kpis.skirt && !s.kpis.big_end);       // nor KPIs
   }
