@@ -15,7 +15,7 @@
 #include "core/io/field_output.hpp"
 #include "core/io/output_files.hpp"
 #include "core/io/results_writer.hpp"
-#include "core/io/run_kpis.hpp"
+#include "core/io/run_summary.hpp"
 
 namespace filmdyn::cli {
 
@@ -118,10 +118,8 @@ Command MakeRunCommand() {
     streams.err << "filmdyn run: " << result.error_estimate.Summary() << "\n";
     // A periodic run's last cycles (a run that is not periodic says so in its warning).
     if (result.status == engine::RunStatus::kCompleted) {
-      if (const auto scatter = engine::ScatterOverCycles(result.cycle_headlines, result.samples,
-                                                         io::ReportsWholeCycle(result))) {
+      if (const auto scatter = io::ReportedCycleScatter(result))
         streams.err << "filmdyn run: " << scatter->Summary() << "\n";
-      }
     }
     PrintRunWarnings(config, result, "filmdyn run", streams.err);
     if (result.status != engine::RunStatus::kCompleted) {

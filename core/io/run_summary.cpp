@@ -19,6 +19,14 @@ namespace filmdyn::io {
 
 using nlohmann::json;
 
+std::optional<engine::CycleScatter> ReportedCycleScatter(const engine::RunResult& result) {
+  if (result.status != engine::RunStatus::kNotConverged &&
+      result.status != engine::RunStatus::kCompleted)
+    return std::nullopt;
+  return engine::ScatterOverCycles(result.cycle_headlines, result.samples,
+                                   ReportsWholeCycle(result));
+}
+
 RunSummary SummarizeRun(const std::string& case_name, const engine::RunConfig& config,
                         const engine::RunResult& result, const std::vector<OutputRow>& rows) {
   RunSummary s;
@@ -69,14 +77,7 @@ RunSummary SummarizeRun(const std::string& case_name, const engine::RunConfig& c
     if (f.key == "bearing_fpl_mean[W]") s.mean_fpl_bearing_w = f.value;
   }
   s.error_estimate = result.error_estimate;
-  // How far the last cycles' headline figures disagree, for every run that reported a cycle
-  // after at least one other: the periodic-state test judges each quantity against its range
-  // over the cycle, which hides a minimum film's scatter (docs/validation/errors.md, "The step
-  // sequence's scatter").
-  if (result.status == engine::RunStatus::kNotConverged ||
-      result.status == engine::RunStatus::kCompleted)
-    s.cycle_scatter =
-        engine::ScatterOverCycles(result.cycle_headlines, result.samples, whole_cycle);
+  s.cycle_scatter = ReportedCycleScatter(result);
   s.warnings = RunWarnings(config, result);
   s.kpis = RunKpisOf(config, result);
   auto oil_used = [&](engine::JointOil oil, const std::string& joint,

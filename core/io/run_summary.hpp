@@ -118,6 +118,12 @@ struct RunSummary {
   std::optional<HeatBalanceUsed> heat_balance;
 };
 
+/// How far the headline figures moved over the last cycles of a run that completed or stopped
+/// at its cycle limit (summary.json's cycle_scatter): none for other runs, or with fewer than two
+/// cycles or no headline figures. The periodic-state test judges each quantity against its range
+/// over the cycle, which hides a minimum film's scatter (docs/validation/errors.md).
+std::optional<engine::CycleScatter> ReportedCycleScatter(const engine::RunResult& result);
+
 /// The summary of a finished (or stopped) run from its configuration, result and the rows
 /// written to results.csv.
 RunSummary SummarizeRun(const std::string& case_name, const engine::RunConfig& config,

@@ -11,6 +11,7 @@
 #include "core/io/case_file.hpp"
 #include "core/io/field_output.hpp"
 #include "core/io/results_writer.hpp"
+#include "core/io/run_summary.hpp"
 #include "core/io/run_warnings.hpp"
 #include "core/lubrication/bearing_solver.hpp"
 #include "core/lubrication/skirt_solver.hpp"
@@ -140,6 +141,7 @@ RunBackend CoreRunBackend() {
                              double(result.stats.rejected_steps), result.max_constraint_violation,
                              double(result.reynolds_solves)});
     sink.ReportErrorEstimate(result.error_estimate);
+    sink.ReportCycleScatter(io::ReportedCycleScatter(result));
     sink.ReportWarnings(io::RunWarnings(config, result));
     switch (result.status) {
       case engine::RunStatus::kCompleted:

@@ -67,6 +67,11 @@ class RunSink {
   virtual void SetWriters(RunWriters writers) { (void)writers; }
   /// The estimated discretisation error of the run's headline figures.
   virtual void ReportErrorEstimate(const engine::ErrorEstimate& estimate) { (void)estimate; }
+  /// How far the headline figures moved over the run's last cycles (summary.json's
+  /// cycle_scatter; none with fewer than two cycles or no headline figures).
+  virtual void ReportCycleScatter(const std::optional<engine::CycleScatter>& scatter) {
+    (void)scatter;
+  }
   /// The film fields of the reported cycle (lubricated joints only).
   virtual void ReportFields(std::shared_ptr<const FieldFrames> fields) { (void)fields; }
   /// The engineering warnings of the finished run (io::RunWarnings: what summary.json lists).

@@ -38,6 +38,9 @@ class NotifyingSink : public RunSink {
   void ReportErrorEstimate(const engine::ErrorEstimate& estimate) override {
     record_->ReportErrorEstimate(estimate);
   }
+  void ReportCycleScatter(const std::optional<engine::CycleScatter>& scatter) override {
+    record_->ReportCycleScatter(scatter);
+  }
   void ReportWarnings(std::vector<io::RunWarning> warnings) override {
     record_->ReportWarnings(std::move(warnings));
   }

@@ -167,6 +167,17 @@ engine::ErrorEstimate RunRecord::errorEstimate() const {
   return error_estimate_;
 }
 
+void RunRecord::ReportCycleScatter(const std::optional<engine::CycleScatter>& scatter) {
+  std::lock_guard lock(mutex_);
+  cycle_scatter_ = scatter;
+  ++version_;
+}
+
+std::optional<engine::CycleScatter> RunRecord::cycleScatter() const {
+  std::lock_guard lock(mutex_);
+  return cycle_scatter_;
+}
+
 void RunRecord::ReportWarnings(std::vector<io::RunWarning> warnings) {
   std::lock_guard lock(mutex_);
   engineering_warnings_ = std::move(warnings);

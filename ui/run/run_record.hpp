@@ -64,11 +64,14 @@ class RunRecord : public RunSink {
   void Warn(const std::string& message) override;
   void SetWriters(RunWriters writers) override;
   void ReportErrorEstimate(const engine::ErrorEstimate& estimate) override;
+  void ReportCycleScatter(const std::optional<engine::CycleScatter>& scatter) override;
   void ReportWarnings(std::vector<io::RunWarning> warnings) override;
   /// The engineering warnings of the finished run (empty until it is reported).
   std::vector<io::RunWarning> engineeringWarnings() const;
   /// The estimate of the finished run (status "off" until one is reported).
   engine::ErrorEstimate errorEstimate() const;
+  /// The scatter of its headline figures over its last cycles (none until reported).
+  std::optional<engine::CycleScatter> cycleScatter() const;
   /// Writes the run folder as `filmdyn run` does; false with *error when it cannot (or when
   /// the backend provided no writer).
   bool writeRunFolder(const QString& directory, QString* error) const;
@@ -112,6 +115,7 @@ class RunRecord : public RunSink {
   std::shared_ptr<const FieldFrames> fields_;
   QString warning_;
   engine::ErrorEstimate error_estimate_;
+  std::optional<engine::CycleScatter> cycle_scatter_;
   std::vector<io::RunWarning> engineering_warnings_;
   RunWriters writers_;
   RunProgress progress_;

@@ -202,6 +202,7 @@ void RestoreFolder(RunRecord& run, const fs::path& folder, const io::RunSummary&
                           double(summary.solver.rejected_steps), summary.max_constraint_violation,
                           double(summary.solver.reynolds_solves)});
   run.ReportErrorEstimate(summary.error_estimate);
+  run.ReportCycleScatter(summary.cycle_scatter);
   run.ReportWarnings(summary.warnings);
   if (!fs::exists(folder / "results.csv")) {
     throw std::runtime_error("cannot read " + (folder / "results.csv").string() + ": missing");

@@ -35,8 +35,10 @@ QString BigEndForceSpikeTip(const RunFigures& f) {
 }
 
 // "≤ 0.4 %", "2.8 %" in red with a warning sign above the threshold, "–" when not estimated;
-// the tooltip lists every headline figure with its estimate.
-void ShowErrorEstimate(const engine::ErrorEstimate& e, QTableWidgetItem* cell) {
+// the tooltip lists every headline figure with its estimate, then how far the figures moved over
+// the last cycles (the time integration's scatter, which the mesh estimate does not hold).
+void ShowErrorEstimate(const engine::ErrorEstimate& e,
+                       const std::optional<engine::CycleScatter>& scatter, QTableWidgetItem* cell) {
   QString text = QStringLiteral("–");
   if (e.Estimated()) {
     const QString percent = QString::number(100.0 * e.worst_relative, 'g', 2);
@@ -84,6 +86,14 @@ void ShowErrorEstimate(const engine::ErrorEstimate& e, QTableWidgetItem* cell) {
                "<p>(value, estimated error, extrapolated value = value + error; from a "
                "companion run on meshes with half the elements, %1 s)</p>")
                .arg(QString::number(e.coarse_wall_time, 'f', 1));
+  }
+  if (scatter) {
+    tip += "<p>" +
+           (QString::fromStdString(scatter->Summary()) +
+            QStringLiteral(" (a lower bound on the time integration's scatter; "
+                           "docs/validation/errors.md)"))
+               .toHtmlEscaped() +
+           "</p>";
   }
   cell->setText(text);
   cell->setToolTip(tip);
@@ -443,7 +453,7 @@ void RunTable::updateRun(const RunHandle& run) {
                 Number(f.max_big_end_force, 1e-3));
   item(row, kBigEndForce)->setToolTip(f.big_end_force_spike ? BigEndForceSpikeTip(f) : QString());
   ShowEngineeringWarnings(run->engineeringWarnings(), item(row, kWarnings));
-  ShowErrorEstimate(run->errorEstimate(), item(row, kError));
+  ShowErrorEstimate(run->errorEstimate(), run->cycleScatter(), item(row, kError));
   item(row, kReason)->setText(run->reason());
   item(row, kReason)->setToolTip(run->reason());
   const bool failed = run->status() == RunStatus::kFailed;

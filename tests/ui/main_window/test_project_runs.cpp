@@ -213,6 +213,9 @@ class TestProjectRuns : public QObject {
     const auto original_fields = c->fields();
     const QByteArray original_csv = c->resultsCsv();
     const auto original_stats = c->statistics();
+    // One cycle (solver.max_cycles = 1): no scatter over cycles, and none restored.
+    const auto original_scatter = c->cycleScatter();
+    QVERIFY(!original_scatter.has_value());
     window->close();
     window.reset();
 
@@ -243,6 +246,7 @@ class TestProjectRuns : public QObject {
     const RunHandle rc = t->runs()[1];
     QCOMPARE(rc->statistics().at("cycles"), original_stats.at("cycles"));
     QCOMPARE(rc->statistics().at("steps"), original_stats.at("steps"));
+    QCOMPARE(rc->cycleScatter().has_value(), original_scatter.has_value());
     const auto fields = rc->fields();
     QVERIFY(fields != nullptr);
     QCOMPARE(fields->crank_angle_deg, original_fields->crank_angle_deg);

@@ -78,6 +78,7 @@ class TestRunWarningsColumn : public QObject {
     run->ReportErrorEstimate(e);
     table.updateRun(run);
     QVERIFY(!table.item(0, ui::RunTable::kError)->toolTip().contains("extrapolated at"));
+    QVERIFY(!table.item(0, ui::RunTable::kError)->toolTip().contains("over cycles"));
   }
 
   void tableShowsTheRunsWarnings() {
@@ -91,6 +92,25 @@ class TestRunWarningsColumn : public QObject {
 
     ui::RunTable table;
     table.updateRun(run);
+    // The error cell's tooltip also says how far the headline figures moved over the last
+    // cycles (the run's summary.json cycle_scatter), which the mesh estimate does not hold.
+    QVERIFY(run->cycleScatter().has_value());
+    const QString error_tip = table.item(0, ui::RunTable::kError)->toolTip();
+    QVERIFY2(error_tip.contains(
+                 QString::fromStdString(run->cycleScatter()->Summary()).toHtmlEscaped()) &&
+                 error_tip.contains("a lower bound on the time integration"),
+             qPrintable(error_tip));
+    if (const QString dir = qEnvironmentVariable("FILMDYN_SCREENSHOT_DIR"); !dir.isEmpty()) {
+      table.resize(1500, 120);
+      table.show();
+      QTableWidgetItem* error_cell = table.item(0, ui::RunTable::kError);
+      table.scrollToItem(error_cell, QAbstractItemView::PositionAtCenter);
+      QVERIFY(QTest::qWaitForWindowExposed(&table));
+      QDir().mkpath(dir);
+      QVERIFY(test::SaveCellToolTip(&table, table.visualItemRect(error_cell), error_tip,
+                                    QDir(dir).filePath("run_error_tooltip_cycles.png")));
+      table.hide();
+    }
     const QTableWidgetItem* cell = table.item(0, ui::RunTable::kWarnings);
     QVERIFY(cell);
     QVERIFY2(cell->text().startsWith("⚠ h/σ 0.") && cell->text().contains("< 1 big end"),
