@@ -29,6 +29,23 @@ ui::RunRequest RoughBigEnd() {
   return request;
 }
 
+// With FILMDYN_SCREENSHOT_DIR set: the first row's discretisation-error cell and its tooltip, cut
+// from the screen into `name` there, for review. True when not set or saved.
+bool SaveErrorTooltip(ui::RunTable* table, const QString& name) {
+  const QString dir = qEnvironmentVariable("FILMDYN_SCREENSHOT_DIR");
+  if (dir.isEmpty()) return true;
+  table->resize(1500, 120);
+  table->show();
+  QTableWidgetItem* cell = table->item(0, ui::RunTable::kError);
+  table->scrollToItem(cell, QAbstractItemView::PositionAtCenter);
+  if (!QTest::qWaitForWindowExposed(table)) return false;
+  QDir().mkpath(dir);
+  const bool saved = test::SaveCellToolTip(table, table->visualItemRect(cell), cell->toolTip(),
+                                           QDir(dir).filePath(name));
+  table->hide();
+  return saved;
+}
+
 }  // namespace
 
 class TestRunWarningsColumn : public QObject {
@@ -60,18 +77,7 @@ class TestRunWarningsColumn : public QObject {
              qPrintable(tip));
     QVERIFY2(tip.contains("the meshes disagree on where the min big-end MOFT lies"),
              qPrintable(tip));
-    // With FILMDYN_SCREENSHOT_DIR set: the cell and its tooltip, cut from the screen, for review.
-    if (const QString dir = qEnvironmentVariable("FILMDYN_SCREENSHOT_DIR"); !dir.isEmpty()) {
-      table.resize(1500, 120);
-      table.show();
-      QTableWidgetItem* cell = table.item(0, ui::RunTable::kError);
-      table.scrollToItem(cell, QAbstractItemView::PositionAtCenter);
-      QVERIFY(QTest::qWaitForWindowExposed(&table));
-      QDir().mkpath(dir);
-      QVERIFY(test::SaveCellToolTip(&table, table.visualItemRect(cell), tip,
-                                    QDir(dir).filePath("run_error_tooltip_elsewhere.png")));
-      table.hide();
-    }
+    QVERIFY(SaveErrorTooltip(&table, "run_error_tooltip_elsewhere.png"));
     // Where they agree, no crank angles.
     moft.extreme_elsewhere = false;
     e.figures = {moft};
@@ -100,17 +106,7 @@ class TestRunWarningsColumn : public QObject {
                  QString::fromStdString(run->cycleScatter()->Summary()).toHtmlEscaped()) &&
                  error_tip.contains("a lower bound on the time integration"),
              qPrintable(error_tip));
-    if (const QString dir = qEnvironmentVariable("FILMDYN_SCREENSHOT_DIR"); !dir.isEmpty()) {
-      table.resize(1500, 120);
-      table.show();
-      QTableWidgetItem* error_cell = table.item(0, ui::RunTable::kError);
-      table.scrollToItem(error_cell, QAbstractItemView::PositionAtCenter);
-      QVERIFY(QTest::qWaitForWindowExposed(&table));
-      QDir().mkpath(dir);
-      QVERIFY(test::SaveCellToolTip(&table, table.visualItemRect(error_cell), error_tip,
-                                    QDir(dir).filePath("run_error_tooltip_cycles.png")));
-      table.hide();
-    }
+    QVERIFY(SaveErrorTooltip(&table, "run_error_tooltip_cycles.png"));
     const QTableWidgetItem* cell = table.item(0, ui::RunTable::kWarnings);
     QVERIFY(cell);
     QVERIFY2(cell->text().startsWith("⚠ h/σ 0.") && cell->text().contains("< 1 big end"),
