@@ -319,13 +319,14 @@ std::filesystem::path DefaultOutputFolder(const std::string& case_name, engine::
 nlohmann::json RunCaseJson(const engine::RunConfig& config) {
   engine::EngineCase c = config.engine_case;
   c.operating.rpm = config.rpm;
-  // Relative names resolved as the run resolved them, so that the file runs from anywhere.
+  // Relative names of files found from the case's folder, as the run found them, made absolute
+  // so that the file runs from anywhere (a name of the built-in resources stays as it is).
   const auto absolute = [&config](std::string* file) {
     if (file->empty() || std::filesystem::path(*file).is_absolute()) return;
     std::error_code ignored;
     const std::filesystem::path full =
         std::filesystem::absolute(config.case_directory / *file, ignored).lexically_normal();
-    if (!full.empty()) *file = full.string();
+    if (!full.empty() && std::filesystem::exists(full, ignored)) *file = full.string();
   };
   absolute(&c.skirt.compliance_file);
   absolute(&c.big_end.compliance_file);

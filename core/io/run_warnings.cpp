@@ -318,17 +318,15 @@ void ConstantViscosityHeatBalanceWarning(const engine::EngineCase& c,
         !engine::TemperatureFreeOil(c, oil)) {
       continue;
     }
-    const std::string joint = skirt ? "skirt" : "big_end";
-    const std::string source = oil.source == engine::OilSource::kOwn
-                                   ? joint + ".oil.viscosity_model"
-                                   : std::string("lubricant.viscosity_model");
-    AddJointWarning(out, "heat_balance_constant_viscosity", skirt ? "skirt" : "big_end",
+    const char* joint = skirt ? "skirt" : "big_end";
+    AddJointWarning(out, "heat_balance_constant_viscosity", joint,
                     fmt::format("the {}'s film temperature comes from its heat balance ({}.oil."
                                 "temperature_mode = heat_balance), but its oil's viscosity does "
                                 "not depend on temperature ({} = constant): the balance reports "
                                 "the film's temperature and changes nothing in the film; give the "
                                 "oil a temperature law (vogel or grade) for the balance to act",
-                                skirt ? "skirt" : "big end", joint, source));
+                                skirt ? "skirt" : "big end", joint,
+                                engine::JointOilPrefix(oil, joint) + "viscosity_model"));
   }
 }
 
