@@ -162,19 +162,23 @@ class TestCoupledCavitation : public QObject {
       if (deg <= 90.0 || deg > 630.0) low += in;
       interval_mean = std::max(interval_mean, in / (s.bearing.oil.time - before.time));
       sampled = std::max(sampled, s.bearing.supply_flow);
+        qInfo("DBG %.2f sample %.1f mean %.1f prev %.1f", deg, s.bearing.supply_flow * 1e6,
+              in / (s.bearing.oil.time - before.time) * 1e6,
+              r.samples[i - 1].bearing.supply_flow * 1e6);
     }
     qInfo("oil supplied over 180 °CA: %.4g mm^3 at high pressure, %.4g mm^3 at low", high * 1e9,
           low * 1e9);
     QVERIFY(low > 0.0 && high > 1.5 * low);
     // A sample at an output time just after the step in which a turning hole took in a node of
-    // the ruptured film holds that node's void filled at the rate the account booked it over
-    // that step (ReynoldsParams::fill_time): 179 cm^3/s at 12 °CA, where the output interval's
-    // mean is 39 cm^3/s. Filled within the short time since the step's start, as before, the
-    // same sample read 3885 cm^3/s (226 with another step sequence). The node held by a hole
-    // narrower than the mesh takes its void in at once; the account has the same oil.
+    // the ruptured film holds that node's void filled over the time the hole takes to sweep
+    // over the node's cell (ReynoldsParams::fill_time): the largest sample, 15.6 cm^3/s, stays
+    // below the largest mean over an output interval, 39.5 cm^3/s (the account, which books
+    // the void in the step that takes it). Filled at the rate of that step instead, the sample
+    // at 12 °CA read 179 or 582 cm^3/s, depending on the step sequence; filled within the short
+    // time since the step's start, 3885 cm^3/s.
     qInfo("largest sampled supply flow %.4g cm^3/s, largest mean over an output interval %.4g",
           sampled * 1e6, interval_mean * 1e6);
-    QVERIFY(sampled < 10.0 * interval_mean);
+    QVERIFY(sampled < interval_mean);
   }
 
   // Crank-pin holes passing under a partial shell groove, fed at one pressure: the film takes

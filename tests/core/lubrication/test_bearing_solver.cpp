@@ -102,7 +102,7 @@ class TestBearing : public QObject {
 
   // A transient JFO film whose history holds a void at a node that is fixed now (a supply hole
   // turned onto it): the supply fills that void, booked as the node's flow over the fill time
-  // (ReynoldsParams::fill_time; 0 = the time step). The film itself does not depend on it; the
+  // (ReynoldsParams::fill_time, per node; none = the time step). The film itself does not depend on it; the
   // node's flow changes by exactly A V_old (1/dt - 1/fill).
   void newlyHeldNodeIsFilledOverTheFillTime() {
     TriMesh m = MakeTensorMesh(Linspace(0.0, 0.02, 10), Linspace(0.0, 0.01, 4), false, 0.0);
@@ -122,10 +122,12 @@ class TestBearing : public QObject {
     params.u_diff = 2.0;
     params.time_step = 1e-5;
     const double void_old = 3e-6;
+    Eigen::VectorXd fill(m.NodeCount());
     auto solve = [&](double fill_time) {
       fem.void_history() = Eigen::VectorXd::Zero(m.NodeCount());
       fem.void_history()[hole] = void_old;
-      params.fill_time = fill_time;
+      fill.setConstant(fill_time);
+      params.fill_time = fill_time > 0.0 ? &fill : nullptr;
       return fem.Solve(params);
     };
     const ReynoldsSolution step = solve(0.0), longer = solve(1e-3), same = solve(1e-5);
