@@ -776,8 +776,9 @@ void SetDescriptions(std::vector<CaseField>& fields) {
        "Stabilisation of the joint constraints against drift: how strongly velocity errors are "
        "damped."},
       {"solver.relative_tolerance",
-       "Accuracy of the time integration, relative to each quantity's size; smaller is more "
-       "accurate and slower."},
+       "Accuracy of the time integration of velocities, relative to each velocity's size "
+       "(positions and angles are held at absolute tolerances); smaller is more accurate and "
+       "slower."},
       {"solver.position_tolerance",
        "Accuracy of the time integration for positions, as an absolute length."},
       {"solver.output_interval", "Crank angle between two rows of results."},
@@ -1198,7 +1199,8 @@ std::vector<CaseField> MakeSchema() {
                       "constraint stabilisation; Table II: 1e4"}));
   f.push_back(Scalar("solver.relative_tolerance", sol, &SolverCase::relative_tolerance,
                      {G::kSolver, "Relative tolerance", "-", "–", 1.0, Between(1e-14, 1e-2),
-                      "local error of the implicit integrator, relative"}));
+                      "local error of the implicit integrator's velocities, relative (positions: "
+                      "absolute)"}));
   f.push_back(
       Scalar("solver.position_tolerance", sol, &SolverCase::position_tolerance,
              {G::kSolver, "Absolute position tolerance", "m", "µm", kUm, Between(1e-16, 1e-3),

@@ -11,6 +11,9 @@
 namespace filmdyn::multibody {
 
 struct IntegratorConfig {
+  /// Relative local error of velocities and angular velocities. Positions and angles are held
+  /// at their absolute tolerances alone: their coordinates are measured from the global origin,
+  /// whose distance says nothing about the accuracy a film between two bodies needs.
   double relative_tolerance = 1e-7;
   double position_tolerance = 1e-10;         ///< absolute, [m]
   double angle_tolerance = 1e-9;             ///< absolute, [rad]
