@@ -1,5 +1,6 @@
 #include "core/base/input_error.hpp"
 
+#include <charconv>
 #include <cmath>
 #include <sstream>
 
@@ -84,6 +85,20 @@ std::string FormatValue(double value) {
   return out.str();
 }
 
+std::string FormatValueOutside(double value, double lo, double hi, bool lo_open, bool hi_open) {
+  const std::string shown = FormatValue(value);
+  if (!std::isfinite(value)) return shown;
+  const double read = std::stod(shown);
+  const bool reads_inside =
+      (lo_open ? read > lo : read >= lo) && (hi_open ? read < hi : read <= hi);
+  if (!reads_inside) return shown;
+  char digits[32];
+  const std::to_chars_result r = std::to_chars(digits, digits + sizeof digits, value);
+  const std::ptrdiff_t length = r.ptr - digits;
+  if (r.ec != std::errc() || length <= 0 || length > 31) return shown;
+  return std::string(digits, static_cast<std::size_t>(length));
+}
+
 namespace {
 std::string WithUnit(const std::string& text, const std::string& unit) {
   return unit.empty() ? text : text + " [" + unit + "]";
@@ -115,7 +130,7 @@ void RequireInRange(const std::string& field, double value, double lo, double hi
   if (!std::isfinite(value) || !above || !below) {
     const std::string range = std::string(lo_open ? "(" : "[") + FormatValue(lo) + ", " +
                               FormatValue(hi) + (hi_open ? ")" : "]");
-    throw InputError(field, FormatValue(value),
+    throw InputError(field, FormatValueOutside(value, lo, hi, lo_open, hi_open),
                      WithUnit("must be a finite number in " + range, unit));
   }
 }

@@ -32,6 +32,10 @@ void RequireUtf8(const std::string& field, std::string_view text);
 
 /// Formats a double for error messages with enough digits to be recognised ("nan", "inf" too).
 std::string FormatValue(double value);
+/// A value refused for lying outside [lo, hi] (or an open end): FormatValue's, or every digit it
+/// needs where that would read as inside ("720.0000000000001", not "720", against [0, 720]).
+std::string FormatValueOutside(double value, double lo, double hi, bool lo_open = false,
+                               bool hi_open = false);
 
 /// Throws InputError unless value is finite and > 0. unit is appended to the message, e.g. "m".
 void RequirePositive(const std::string& field, double value, const std::string& unit = "");

@@ -75,7 +75,7 @@ engine::PressureCurve ReadPressureCsv(std::istream& in, const std::string& sourc
                        "must be an absolute pressure >= 0 [Pa]");
     }
     if (angles_deg.back() < 0 || angles_deg.back() > 720) {
-      throw InputError(where + " crank_angle[deg]", FormatValue(angles_deg.back()),
+      throw InputError(where + " crank_angle[deg]", FormatValueOutside(angles_deg.back(), 0, 720),
                        "must lie in [0, 720] °CA");
     }
   }

@@ -67,6 +67,9 @@ class TestPressureCsv : public QObject {
     QVERIFY(Rejects("crank_angle[deg],pressure[Pa]\n0,1e5\n1,nan\n", "curve.csv:3"));
     QVERIFY(Rejects("crank_angle[deg],pressure[Pa]\n0,-5\n", "absolute pressure"));
     QVERIFY(Rejects("crank_angle[deg],pressure[Pa]\n0,1e5\n800,1e5\n", "[0, 720]"));
+    // A value just outside the range is shown with the digits that make it so.
+    QVERIFY(Rejects("crank_angle[deg],pressure[Pa]\n0,1e5\n720.0000000000001,1e5\n",
+                    "= 720.0000000000001: must lie in [0, 720]"));
     QVERIFY(Rejects("crank_angle[deg],pressure[Pa]\n0,1e5,3\n", "two columns"));
     QVERIFY(Rejects("crank_angle[deg],pressure[Pa]\n0,1e5\n0,1e5\n1,2\n2,3\n3,4\n4,5\n5,6\n6,7\n",
                     "increase strictly"));
