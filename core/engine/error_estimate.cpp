@@ -188,7 +188,7 @@ std::vector<HeadlineFigure> HeadlineFigures(const std::vector<CrankTrainSample>&
 
 std::optional<OilPerCycle> AccountedOil(const std::vector<CrankTrainSample>& samples,
                                         bool big_end) {
-  if (samples.size() < 2) return std::nullopt;
+  if (!SamplesSpanACycle(samples)) return std::nullopt;
   auto account = [big_end](const CrankTrainSample& s) -> const coupling::OilAccount& {
     return big_end ? s.bearing.oil : s.skirt.oil;
   };
@@ -198,6 +198,13 @@ std::optional<OilPerCycle> AccountedOil(const std::vector<CrankTrainSample>& sam
   const double span = (samples[1].time - samples[0].time) * static_cast<double>(samples.size());
   const double scale = span / (last.time - first.time);
   return OilPerCycle{(last.supplied - first.supplied) * scale, (last.lost - first.lost) * scale};
+}
+
+bool SamplesSpanACycle(const std::vector<CrankTrainSample>& samples) {
+  if (samples.size() < 2) return false;
+  const double interval = samples[1].crank_angle - samples[0].crank_angle;
+  const double span = interval * static_cast<double>(samples.size());
+  return interval > 0.0 && span > 4.0 * std::numbers::pi - interval;
 }
 
 double NeighbourRatio(double value, double before, double after) {

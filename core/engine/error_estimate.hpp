@@ -49,9 +49,13 @@ struct OilPerCycle {
 /// A mass-conserving film's oil per cycle from the account it books at every integrator step
 /// (coupling::OilAccount): between the first and last of the equally spaced output samples,
 /// scaled to the samples' whole span (their count times their interval: the cycle's duration for
-/// a whole cycle). None when the joint keeps no account (a Reynolds film) or there are fewer
-/// than two samples.
+/// a whole cycle). None when the joint keeps no account (a Reynolds film), there are fewer
+/// than two samples, or they are not a whole cycle (SamplesSpanACycle).
 std::optional<OilPerCycle> AccountedOil(const std::vector<CrankTrainSample>& samples, bool big_end);
+/// Whether equally spaced output samples cover a whole engine cycle (720 °CA; their count times
+/// their interval, to within one interval): a run stopped before its first cycle ended reports
+/// the part it computed, over which a figure "per cycle" would be the oil of that part.
+bool SamplesSpanACycle(const std::vector<CrankTrainSample>& samples);
 /// The figure of a headline key with this value: label, joint and order from the table (an
 /// unknown key keeps itself as label; "bearing_…" keys belong to the big end).
 HeadlineFigure HeadlineFigureFor(const std::string& key, double value);

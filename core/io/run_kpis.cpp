@@ -175,17 +175,24 @@ std::optional<JointKpis> FilmKpisOf(const std::vector<engine::CrankTrainSample>&
       wetted += s->skirt.wetted_fraction;
     }
     const double n = static_cast<double>(with.size());
-    j.oil_in_per_cycle = in / n * span;
-    j.oil_out_per_cycle = out / n * span;
+    // Per cycle only over a whole cycle: a run stopped before its first cycle ended reports the
+    // part it computed (its balance over that part is still given).
+    const bool cycle = engine::SamplesSpanACycle(samples);
+    if (cycle) {
+      j.oil_in_per_cycle = in / n * span;
+      j.oil_out_per_cycle = out / n * span;
+    }
     if (skirt) j.mean_wetted_fraction = wetted / n;
+    const auto account = [skirt](const S* s) -> const coupling::OilAccount& {
+      return skirt ? s->skirt.oil : s->bearing.oil;
+    };
     // A film that keeps its account booked the oil at every integrator step: that, instead of
     // the sampled flows (which miss the spikes between the samples), and its balance.
     if (const auto oil = engine::AccountedOil(samples, !skirt)) {
       j.oil_in_per_cycle = oil->in;
       j.oil_out_per_cycle = oil->out;
-      const auto account = [skirt](const S* s) -> const coupling::OilAccount& {
-        return skirt ? s->skirt.oil : s->bearing.oil;
-      };
+      j.oil_balance = account(with.back()).BalanceSince(account(with.front()));
+    } else if (!cycle && account(with.front()).kept && account(with.back()).kept) {
       j.oil_balance = account(with.back()).BalanceSince(account(with.front()));
     } else if (skirt) {
       // A Reynolds skirt creates the oil it lacks where its film reforms: its inflow is only the

@@ -17,6 +17,7 @@
 #include "core/engine/run_job.hpp"
 #include "core/io/case_file.hpp"
 #include "core/io/results_writer.hpp"
+#include "core/io/run_kpis.hpp"
 #include "core/io/run_summary.hpp"
 #include "core/io/run_warnings.hpp"
 #include "core/lubrication/film_compliance.hpp"
@@ -236,6 +237,36 @@ class TestRunJob : public QObject {
     QVERIFY(std::abs(first_sample.crank_angle - config.engine_case.operating.start_crank_angle) <
             1e-9);
   }
+  // A run stopped before its first cycle ended reports the part it computed: no oil "per cycle"
+  // over that part, only the account's balance; a whole cycle has both.
+  void stoppedRunInReportsNoOilPerCycle() {
+    engine::RunConfig config = DefaultConfig(6000, engine::Model::kOnlyLbrbe);
+    config.engine_case.big_end.mesh_theta = 24;
+    config.engine_case.big_end.mesh_z = 6;
+    config.engine_case.big_end.cavitation = lubrication::CavitationModel::kJfo;
+    config.engine_case.solver.run_in_angle = M_PI;  // 180 °CA
+    int samples = 0;
+    const engine::RunResult stopped = engine::RunJob(
+        config, [&](const engine::RunProgress& p) { return !p.sample || ++samples < 90; });
+    QCOMPARE(engine::StatusName(stopped.status), std::string("cancelled"));
+    QCOMPARE(stopped.samples.size(), std::size_t(90));
+    QVERIFY(!engine::SamplesSpanACycle(stopped.samples));
+    const io::RunKpis part = io::RunKpisOf(config, stopped);
+    QVERIFY(part.big_end.has_value());
+    QVERIFY(!part.big_end->oil_in_per_cycle && !part.big_end->oil_out_per_cycle);
+    QVERIFY(part.big_end->oil_balance && std::abs(*part.big_end->oil_balance) < 1e-9);
+    for (const engine::HeadlineFigure& f : engine::HeadlineFigures(stopped.samples))
+      QVERIFY2(f.key != "bearing_oil_per_cycle[m^3]", "a headline oil per cycle over 90 °CA");
+
+    config.engine_case.solver.max_cycles = 1;
+    const engine::RunResult whole = engine::RunJob(config);
+    QVERIFY(engine::SamplesSpanACycle(whole.samples));
+    const io::RunKpis cycle = io::RunKpisOf(config, whole);
+    QVERIFY(cycle.big_end && cycle.big_end->oil_in_per_cycle &&
+            *cycle.big_end->oil_in_per_cycle > 0.0);
+    QVERIFY(cycle.big_end->oil_balance && std::abs(*cycle.big_end->oil_balance) < 1e-9);
+  }
+
   void motionBetweenOutputStepsIsTheIntegratorsOwnSolution() {
     // Skirt-LBRBE at 6000 rpm on coarse meshes, one cycle after a 90 °CA run-in. The motion
     // samples between the output steps (1/8 °CA) come from CVODE's interpolation inside the
