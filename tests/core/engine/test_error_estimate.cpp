@@ -238,12 +238,14 @@ class TestErrorEstimate : public QObject {
 
   // A mass-conserving film's oil per cycle is its account's: a film booking 2e-6 m³/s in and
   // 1.5e-6 m³/s out at steps that end after each output sample takes in 2e-6 × 8 × 1e-4 m³ over
-  // the 8 samples' span, whatever its sampled flows say; a film without an account has none.
+  // the 8 samples' span (a cycle, 90 °CA apart), whatever its sampled flows say; a film without
+  // an account has none, and samples short of a cycle give no oil "per cycle".
   void oilPerCycleIsTheAccounts() {
     std::vector<engine::CrankTrainSample> samples(8);
     for (int k = 0; k < 8; ++k) {
       engine::CrankTrainSample& s = samples[k];
       s.time = 0.05 + 1e-4 * k;
+      s.crank_angle = 0.5 * std::numbers::pi * k;
       s.bearing.present = true;
       s.bearing.supply_flow = k == 3 ? 1.0 : 0.0;       // a sampled spike the account does not see
       const double step_end = s.time + 3e-6 * (k % 3);  // the accepted step past the sample
@@ -254,6 +256,10 @@ class TestErrorEstimate : public QObject {
     QVERIFY(std::abs(oil->in / (2e-6 * 8e-4) - 1.0) < 1e-12);
     QVERIFY(std::abs(oil->out / (1.5e-6 * 8e-4) - 1.0) < 1e-12);
     QVERIFY(!engine::AccountedOil(samples, false));  // no skirt account
+    auto half = samples;                             // the same samples 45 °CA apart: half a cycle
+    for (int k = 0; k < 8; ++k) half[k].crank_angle = 0.25 * std::numbers::pi * k;
+    QVERIFY(!engine::SamplesSpanACycle(half) && !engine::AccountedOil(half, true));
+    QVERIFY(!Values(engine::HeadlineFigures(half)).count("bearing_oil_per_cycle[m^3]"));
     const auto v = Values(engine::HeadlineFigures(samples));
     QCOMPARE(v.at("bearing_oil_per_cycle[m^3]"), oil->in);
     QCOMPARE(engine::HeadlineFigureFor("bearing_oil_per_cycle[m^3]", 1.0).label,
