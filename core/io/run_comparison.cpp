@@ -154,10 +154,7 @@ ComparisonRow ReadComparisonRow(const std::filesystem::path& folder) {
     } else if (recipe.reduce == Reduce::kOilSkirt || recipe.reduce == Reduce::kOilBearing) {
       const std::optional<JointKpis>& joint =
           recipe.reduce == Reduce::kOilSkirt ? summary.kpis.skirt : summary.kpis.big_end;
-      // Mass-conserving films only (those that keep an oil account, hence a balance): a
-      // Reynolds film creates and loses oil where it cavitates, and a Reynolds skirt's inflow
-      // falls with the mesh (docs/outputs.md).
-      if (joint && joint->oil_balance) value = joint->oil_in_per_cycle;
+      value = ReportedOilPerCycle(joint);
     } else if (recipe.reduce == Reduce::kWettedSkirt) {
       // As the oil: a Reynolds skirt's "wetted" share is its uncavitated share, another quantity.
       if (summary.kpis.skirt && summary.kpis.skirt->oil_balance)

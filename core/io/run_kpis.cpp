@@ -206,6 +206,11 @@ std::optional<JointKpis> FilmKpisOf(const std::vector<engine::CrankTrainSample>&
 
 }  // namespace
 
+std::optional<double> ReportedOilPerCycle(const std::optional<JointKpis>& joint) {
+  if (!joint || !joint->oil_balance) return std::nullopt;
+  return joint->oil_in_per_cycle;
+}
+
 FilmPosition MinFilmPosition(const engine::CrankTrainSample& s, bool skirt) {
   FilmPosition p;
   if (skirt) {

@@ -102,5 +102,10 @@ double FrictionMep(double mean_fpl_w, const engine::CrankTrainGeometry& geometry
 void AddFrictionMep(RunKpis* kpis, const engine::CrankTrainGeometry& geometry, double rpm);
 /// The KPIs of a finished (or stopped) run: what it computed.
 RunKpis RunKpisOf(const engine::RunConfig& config, const engine::RunResult& result);
+/// The oil per cycle a run reports for a joint beside its other figures (comparisons, studies,
+/// the GUI's run table): a mass-conserving film's (one that keeps an oil account, hence a
+/// balance) over a whole reported cycle. None for a Reynolds film, which creates and loses oil
+/// where it cavitates (and a Reynolds skirt's inflow falls with the mesh: docs/outputs.md).
+std::optional<double> ReportedOilPerCycle(const std::optional<JointKpis>& joint);
 
 }  // namespace filmdyn::io

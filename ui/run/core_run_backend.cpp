@@ -29,6 +29,16 @@ void ReportRunCounters(RunSink& sink, const RunCounters& c) {
   sink.Statistic("rejected steps", c.rejected_steps);
   sink.Statistic("max constraint violation", c.max_constraint_violation);
   sink.Statistic("Reynolds solves", c.reynolds_solves);
+  if (std::isfinite(c.skirt_oil_per_cycle))
+    sink.Statistic(kSkirtOilStatistic, c.skirt_oil_per_cycle);
+  if (std::isfinite(c.big_end_oil_per_cycle))
+    sink.Statistic(kBigEndOilStatistic, c.big_end_oil_per_cycle);
+}
+
+RunCounters OilCounters(RunCounters counters, const io::RunKpis& kpis) {
+  counters.skirt_oil_per_cycle = io::ReportedOilPerCycle(kpis.skirt).value_or(std::nan(""));
+  counters.big_end_oil_per_cycle = io::ReportedOilPerCycle(kpis.big_end).value_or(std::nan(""));
+  return counters;
 }
 
 namespace {
@@ -136,10 +146,12 @@ RunBackend CoreRunBackend() {
     sink.SetWriters(std::move(writers));
     if (auto fields = collector.Result(); !cancelled && fields && !fields->empty())
       sink.ReportFields(fields);
-    ReportRunCounters(sink, {double(result.cycles), double(result.cycles_to_steady_state),
-                             result.cycle_change, double(result.stats.steps),
-                             double(result.stats.rejected_steps), result.max_constraint_violation,
-                             double(result.reynolds_solves)});
+    ReportRunCounters(
+        sink, OilCounters({double(result.cycles), double(result.cycles_to_steady_state),
+                           result.cycle_change, double(result.stats.steps),
+                           double(result.stats.rejected_steps), result.max_constraint_violation,
+                           double(result.reynolds_solves)},
+                          io::RunKpisOf(config, result)));
     sink.ReportErrorEstimate(result.error_estimate);
     sink.ReportCycleScatter(io::ReportedCycleScatter(result));
     sink.ReportWarnings(io::RunWarnings(config, result));

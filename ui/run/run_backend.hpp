@@ -5,6 +5,7 @@
 /// core_run_backend.cpp adapts core's run-job API (core/engine/run_job) to it; tests substitute
 /// their own.
 #include <atomic>
+#include <cmath>
 #include <functional>
 #include <memory>
 #include <string>
@@ -12,6 +13,7 @@
 
 #include "core/engine/engine_case.hpp"
 #include "core/engine/error_estimate.hpp"
+#include "core/io/run_kpis.hpp"
 #include "core/io/run_warnings.hpp"
 #include "ui/fields/field_frames.hpp"
 #include "ui/run/result_columns.hpp"
@@ -83,10 +85,17 @@ class RunSink {
 struct RunCounters {
   double cycles = 0, cycles_to_steady_state = 0, cycle_change = 0, steps = 0, rejected_steps = 0,
          max_constraint_violation = 0, reynolds_solves = 0;
+  /// Oil into each mass-conserving film over the reported cycle [m^3] (io::ReportedOilPerCycle);
+  /// NaN where there is none (a Reynolds film, a run stopped before a whole cycle): not reported.
+  double skirt_oil_per_cycle = std::nan(""), big_end_oil_per_cycle = std::nan("");
 };
+/// The statistics' names of the oil per cycle (RunCounters).
+inline constexpr const char* kSkirtOilStatistic = "skirt oil per cycle [m^3]";
+inline constexpr const char* kBigEndOilStatistic = "big-end oil per cycle [m^3]";
 /// Reports them as the sink's statistics: the one list of their names.
 void ReportRunCounters(RunSink& sink, const RunCounters& counters);
-
+/// `counters` with the oil per cycle of the run's KPIs.
+RunCounters OilCounters(RunCounters counters, const io::RunKpis& kpis);
 
 using RunBackend =
     std::function<void(const RunRequest& request, const std::atomic<bool>& cancel, RunSink& sink)>;

@@ -197,10 +197,12 @@ void AddBigEndLoads(const fs::path& results_csv, FieldFrames* frames);
 // the error estimate of summary.json, the film fields, the writers that copy the files; throws
 // std::runtime_error naming the file and the problem.
 void RestoreFolder(RunRecord& run, const fs::path& folder, const io::RunSummary& summary) {
-  ReportRunCounters(run, {double(summary.cycles), double(summary.cycles_to_steady_state),
-                          summary.cycle_to_cycle_change, double(summary.solver.steps),
-                          double(summary.solver.rejected_steps), summary.max_constraint_violation,
-                          double(summary.solver.reynolds_solves)});
+  ReportRunCounters(
+      run, OilCounters({double(summary.cycles), double(summary.cycles_to_steady_state),
+                        summary.cycle_to_cycle_change, double(summary.solver.steps),
+                        double(summary.solver.rejected_steps), summary.max_constraint_violation,
+                        double(summary.solver.reynolds_solves)},
+                       summary.kpis));
   run.ReportErrorEstimate(summary.error_estimate);
   run.ReportCycleScatter(summary.cycle_scatter);
   run.ReportWarnings(summary.warnings);

@@ -131,12 +131,27 @@ void ShowEngineeringWarnings(const std::vector<io::RunWarning>& warnings, QTable
 
 RunTable::RunTable(QWidget* parent) : QTableWidget(0, kColumns, parent) {
   setObjectName("run_table");
-  setHorizontalHeaderLabels(
-      {tr("Show"), tr("Run"), tr("Differences from the base run"), tr("Status"), tr("Warnings"),
-       tr("Cycles"), tr("Wall [s]"), tr("max |e₀| [µm]"), tr("max |γ| [mrad]"),
-       tr("min MOFT skirt [µm]"), tr("min MOFT big end [µm]"), tr("mean FPL skirt [W]"),
-       tr("mean FPL big end [W]"), tr("FMEP skirt [kPa]"), tr("FMEP big end [kPa]"),
-       tr("max |F big end| [kN]"), tr("Discretisation error"), tr("Notes"), tr("Reason")});
+  setHorizontalHeaderLabels({tr("Show"),
+                             tr("Run"),
+                             tr("Differences from the base run"),
+                             tr("Status"),
+                             tr("Warnings"),
+                             tr("Cycles"),
+                             tr("Wall [s]"),
+                             tr("max |e₀| [µm]"),
+                             tr("max |γ| [mrad]"),
+                             tr("min MOFT skirt [µm]"),
+                             tr("min MOFT big end [µm]"),
+                             tr("mean FPL skirt [W]"),
+                             tr("mean FPL big end [W]"),
+                             tr("FMEP skirt [kPa]"),
+                             tr("FMEP big end [kPa]"),
+                             tr("oil skirt [mm³/cycle]"),
+                             tr("oil big end [mm³/cycle]"),
+                             tr("max |F big end| [kN]"),
+                             tr("Discretisation error"),
+                             tr("Notes"),
+                             tr("Reason")});
   setSelectionBehavior(QAbstractItemView::SelectRows);
   setSelectionMode(QAbstractItemView::SingleSelection);
   // Only the name cell is edited in place (its flags); notes open a multi-line editor.
@@ -447,6 +462,13 @@ void RunTable::updateRun(const RunHandle& run) {
   };
   item(row, kSkirtFmep)->setText(Number(fmep(f.mean_skirt_fpl), 1e-3, 2));
   item(row, kBearingFmep)->setText(Number(fmep(f.mean_bearing_fpl), 1e-3, 2));
+  // Oil per cycle: mass-conserving films only, once the run has reported a whole cycle.
+  auto oil = [&stats](const char* name) {
+    const auto it = stats.find(name);
+    return it == stats.end() ? std::nan("") : it->second;
+  };
+  item(row, kSkirtOil)->setText(Number(oil(kSkirtOilStatistic), 1e9, 1));
+  item(row, kBearingOil)->setText(Number(oil(kBigEndOilStatistic), 1e9, 1));
   // A largest force that is an impact between the output samples is marked, and says so.
   item(row, kBigEndForce)
       ->setText((f.big_end_force_spike ? QStringLiteral("⚠ ") : QString()) +

@@ -31,6 +31,8 @@ class RunTable : public QTableWidget {
     kBearingFpl,
     kSkirtFmep,
     kBearingFmep,
+    kSkirtOil,
+    kBearingOil,
     kBigEndForce,
     kError,
     kNotes,

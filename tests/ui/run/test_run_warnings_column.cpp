@@ -87,6 +87,50 @@ class TestRunWarningsColumn : public QObject {
     QVERIFY(!table.item(0, ui::RunTable::kError)->toolTip().contains("over cycles"));
   }
 
+  // The oil per cycle of a mass-conserving big end, in mm³, beside its other figures; none for
+  // the lubricated skirt it does not have, nor for a Reynolds film.
+  void tableShowsTheOilPerCycleOfMassConservingFilms() {
+    ui::RunRequest request;
+    request.engine_case =
+        io::LoadCase({}, {"big_end.cavitation=jfo", "big_end.mesh_theta=24", "big_end.mesh_z=6",
+                          "solver.error_estimate=0", "solver.max_cycles=1",
+                          "solver.output_interval=0.0349065850398866"})
+            .value;
+    request.model = "only-lbrbe";
+    request.rpm = 6000.0;
+    auto run = std::make_shared<ui::RunRecord>(1, request);
+    const std::atomic<bool> cancel{false};
+    ui::CoreRunBackend()(run->request(), cancel, *run);
+    run->finish(ui::RunStatus::kFinished, {});
+    const auto stats = run->statistics();
+    QVERIFY(stats.count(ui::kBigEndOilStatistic) && !stats.count(ui::kSkirtOilStatistic));
+    const double oil = stats.at(ui::kBigEndOilStatistic);
+    QVERIFY(oil > 0.0);
+    ui::RunTable table;
+    table.updateRun(run);
+    QCOMPARE(table.item(0, ui::RunTable::kBearingOil)->text(), QString::number(oil * 1e9, 'f', 1));
+    QCOMPARE(table.item(0, ui::RunTable::kSkirtOil)->text(), QString("–"));
+    QCOMPARE(table.horizontalHeaderItem(ui::RunTable::kBearingOil)->text(),
+             QString("oil big end [mm³/cycle]"));
+    qInfo("big-end oil per cycle: %s mm³",
+          qPrintable(table.item(0, ui::RunTable::kBearingOil)->text()));
+
+    auto reynolds = std::make_shared<ui::RunRecord>(2, RoughBigEnd());
+    ui::CoreRunBackend()(reynolds->request(), cancel, *reynolds);
+    reynolds->finish(ui::RunStatus::kFinished, {});
+    QVERIFY(!reynolds->statistics().count(ui::kBigEndOilStatistic));
+    table.updateRun(reynolds);
+    QCOMPARE(table.item(1, ui::RunTable::kBearingOil)->text(), QString("–"));
+    if (const QString dir = qEnvironmentVariable("FILMDYN_SCREENSHOT_DIR"); !dir.isEmpty()) {
+      table.resize(1500, 120);
+      table.show();
+      table.scrollToItem(table.item(0, ui::RunTable::kBearingOil));
+      QVERIFY(QTest::qWaitForWindowExposed(&table));
+      QDir().mkpath(dir);
+      QVERIFY(table.grab().save(QDir(dir).filePath("run_table_oil.png")));
+    }
+  }
+
   void tableShowsTheRunsWarnings() {
     auto run = std::make_shared<ui::RunRecord>(1, RoughBigEnd());
     const std::atomic<bool> cancel{false};
