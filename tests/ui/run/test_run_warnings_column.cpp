@@ -4,11 +4,15 @@
 // every warning's message; a run without warnings shows "–". Beside it, the discretisation-error
 // cell's tooltip names both crank angles of a minimum film the meshes put at different places.
 #include <QDir>
+#include <QTemporaryDir>
 #include <QtTest>
 #include <atomic>
+#include <cmath>
+#include <filesystem>
 #include <numbers>
 
 #include "core/io/case_file.hpp"
+#include "core/io/run_summary.hpp"
 #include "tests/ui/tooltip_screenshot.hpp"
 #include "ui/run/run_backend.hpp"
 #include "ui/run/run_record.hpp"
@@ -114,6 +118,15 @@ class TestRunWarningsColumn : public QObject {
              QString("oil big end [mm³/cycle]"));
     qInfo("big-end oil per cycle: %s mm³",
           qPrintable(table.item(0, ui::RunTable::kBearingOil)->text()));
+    // A saved project restores it from the run folder's summary.json (its KPIs).
+    QTemporaryDir folder;
+    QString error;
+    QVERIFY2(run->writeRunFolder(folder.path(), &error), qPrintable(error));
+    const io::RunSummary summary =
+        io::ReadSummaryJson(std::filesystem::path(folder.filePath("summary.json").toStdString()));
+    const ui::RunCounters restored = ui::OilCounters({}, summary.kpis);
+    QCOMPARE(restored.big_end_oil_per_cycle, oil);
+    QVERIFY(std::isnan(restored.skirt_oil_per_cycle));
 
     auto reynolds = std::make_shared<ui::RunRecord>(2, RoughBigEnd());
     ui::CoreRunBackend()(reynolds->request(), cancel, *reynolds);
