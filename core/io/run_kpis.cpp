@@ -177,8 +177,7 @@ std::optional<JointKpis> FilmKpisOf(const std::vector<engine::CrankTrainSample>&
     const double n = static_cast<double>(with.size());
     // Per cycle only over a whole cycle: a run stopped before its first cycle ended reports the
     // part it computed (its balance over that part is still given).
-    const bool cycle = engine::SamplesSpanACycle(samples);
-    if (cycle) {
+    if (engine::SamplesSpanACycle(samples)) {
       j.oil_in_per_cycle = in / n * span;
       j.oil_out_per_cycle = out / n * span;
     }
@@ -186,15 +185,15 @@ std::optional<JointKpis> FilmKpisOf(const std::vector<engine::CrankTrainSample>&
     const auto account = [skirt](const S* s) -> const coupling::OilAccount& {
       return skirt ? s->skirt.oil : s->bearing.oil;
     };
-    // A film that keeps its account booked the oil at every integrator step: that, instead of
-    // the sampled flows (which miss the spikes between the samples), and its balance.
+    // A film that keeps its account (a mass-conserving one) booked the oil at every integrator
+    // step: its balance over the samples and, over a whole cycle, its oil instead of the sampled
+    // flows (which miss the spikes between the samples).
+    const bool kept = account(with.front()).kept && account(with.back()).kept;
+    if (kept) j.oil_balance = account(with.back()).BalanceSince(account(with.front()));
     if (const auto oil = engine::AccountedOil(samples, !skirt)) {
       j.oil_in_per_cycle = oil->in;
       j.oil_out_per_cycle = oil->out;
-      j.oil_balance = account(with.back()).BalanceSince(account(with.front()));
-    } else if (!cycle && account(with.front()).kept && account(with.back()).kept) {
-      j.oil_balance = account(with.back()).BalanceSince(account(with.front()));
-    } else if (skirt) {
+    } else if (skirt && !kept) {
       // A Reynolds skirt creates the oil it lacks where its film reforms: its inflow is only the
       // edge cells' share beside a cavitated zone, which falls with the cell (it halves with
       // each refinement of the default case's mesh). No figure rather than a mesh quantity.

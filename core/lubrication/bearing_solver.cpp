@@ -202,16 +202,14 @@ BearingSolver::BearingSolver(BearingConfig config)
     cos_[k] = std::cos(theta_[k]);
     sin_[k] = std::sin(theta_[k]);
   }
-  // Each node's cell around: half the way to each neighbour on its circle (the mesh is periodic).
-  cell_turn_.resize(n);
+  // Each mesh column's cell around: half the way to each neighbour on its circle (periodic).
   const std::vector<double>& xl = m.x_lines;
-  const int nx = static_cast<int>(xl.size());
-  for (int k = 0; k < n; ++k) {
-    const int i = static_cast<int>(
-        std::lower_bound(xl.begin(), xl.end(), m.x[k] - 1e-12 * m.x_period) - xl.begin());
+  const int nx = m.nx_nodes();
+  cell_turn_.resize(nx);
+  for (int i = 0; i < nx; ++i) {
     const double next = i + 1 < nx ? xl[i + 1] : xl[0] + m.x_period;
     const double previous = i > 0 ? xl[i - 1] : xl[nx - 1] - m.x_period;
-    cell_turn_[k] = 0.5 * (next - previous) / config_.geometry.radius;
+    cell_turn_[i] = 0.5 * (next - previous) / config_.geometry.radius;
   }
   sweep_rate_ = Eigen::VectorXd::Zero(n);
   if (!config_.mesh.symmetric_half) {
@@ -454,8 +452,8 @@ const BearingResult& BearingSolver::SolveStep(const BearingState& s, double time
     // cell, whichever is longer; only the fixed nodes' flows read it.
     fill_time_.resize(n);
     for (int k = 0; k < n; ++k)
-      fill_time_[k] =
-          std::max(step_length, sweep_rate_[k] > 0.0 ? cell_turn_[k] / sweep_rate_[k] : 0.0);
+      fill_time_[k] = std::max(
+          step_length, sweep_rate_[k] > 0.0 ? cell_turn_[k % m.nx_nodes()] / sweep_rate_[k] : 0.0);
     params.fill_time = &fill_time_;
   }
   params.bulk_modulus = config_.bulk_modulus;

@@ -235,7 +235,7 @@ class BearingSolver {
   ReynoldsFem fem_;
   ElasticFilm elastic_;
   std::vector<double> theta_;
-  Eigen::VectorXd cell_turn_;   // each node's cell around [rad]
+  Eigen::VectorXd cell_turn_;   // each mesh column's cell around [rad] (node k: column k % nx)
   Eigen::VectorXd sweep_rate_;  // how fast the region holding a node turns over the film [rad/s]
   Eigen::VectorXd fill_time_;   // ReynoldsParams::fill_time of an output-time solve [s]
   BearingResult result_;
