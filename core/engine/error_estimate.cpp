@@ -204,7 +204,9 @@ bool SamplesSpanACycle(const std::vector<CrankTrainSample>& samples) {
   if (samples.size() < 2) return false;
   const double interval = samples[1].crank_angle - samples[0].crank_angle;
   const double span = interval * static_cast<double>(samples.size());
-  return interval > 0.0 && span > 4.0 * std::numbers::pi - interval;
+  // One cycle, neither less (a run stopped before its first cycle ended) nor more (a run stopped
+  // late in a run-in longer than a cycle, whose samples are the run-in's).
+  return interval > 0.0 && std::abs(span - 4.0 * std::numbers::pi) < 0.5 * interval;
 }
 
 double NeighbourRatio(double value, double before, double after) {

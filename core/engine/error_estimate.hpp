@@ -52,9 +52,13 @@ struct OilPerCycle {
 /// a whole cycle). None when the joint keeps no account (a Reynolds film), there are fewer
 /// than two samples, or they are not a whole cycle (SamplesSpanACycle).
 std::optional<OilPerCycle> AccountedOil(const std::vector<CrankTrainSample>& samples, bool big_end);
-/// Whether equally spaced output samples cover a whole engine cycle (720 °CA; their count times
-/// their interval, to within one interval): a run stopped before its first cycle ended reports
-/// the part it computed, over which a figure "per cycle" would be the oil of that part.
+/// Whether equally spaced output samples are one whole engine cycle (720 °CA: their count times
+/// their interval, to within half an interval), so that the last is followed by the first. The
+/// one definition of a whole cycle for every figure over the reported samples (oil per cycle,
+/// peaks and ranges wrapped round the cycle, slap): a completed or not-converged run reports
+/// one; a run stopped in its second or later cycle reports the last whole one; a run stopped
+/// before its first cycle ended reports the part it computed (shorter than a cycle, or longer in
+/// a run-in of more than 720 °CA), over which a figure "per cycle" would be that part's.
 bool SamplesSpanACycle(const std::vector<CrankTrainSample>& samples);
 /// The figure of a headline key with this value: label, joint and order from the table (an
 /// unknown key keeps itself as label; "bearing_…" keys belong to the big end).

@@ -5,6 +5,7 @@
 #include <numbers>
 #include <string>
 
+#include "core/engine/error_estimate.hpp"
 #include "core/engine/slider_crank_reference.hpp"
 #include "core/io/results_writer.hpp"
 
@@ -223,11 +224,6 @@ FilmPosition MinFilmPosition(const engine::CrankTrainSample& s, bool skirt) {
   return p;
 }
 
-bool ReportsWholeCycle(const engine::RunResult& result) {
-  return result.status == engine::RunStatus::kCompleted ||
-         result.status == engine::RunStatus::kNotConverged;
-}
-
 RunKpis ComputeRunKpis(const std::vector<engine::CrankTrainSample>& samples,
                        const std::vector<engine::MotionSample>& motion, double piston_mass,
                        double piston_inertia, bool whole_cycle) {
@@ -259,7 +255,7 @@ void AddFrictionMep(RunKpis* kpis, const engine::CrankTrainGeometry& geometry, d
 RunKpis RunKpisOf(const engine::RunConfig& config, const engine::RunResult& result) {
   const engine::CrankTrainGeometry& g = config.engine_case.geometry;
   RunKpis kpis = ComputeRunKpis(result.samples, result.motion, g.piston_mass, g.piston_inertia,
-                                ReportsWholeCycle(result));
+                                engine::SamplesSpanACycle(result.samples));
   AddFrictionMep(&kpis, g, config.rpm);
   return kpis;
 }

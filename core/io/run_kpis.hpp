@@ -23,10 +23,6 @@ struct FilmPosition {
 };
 FilmPosition MinFilmPosition(const engine::CrankTrainSample& sample, bool skirt);
 
-/// Whether a run's reported samples are one whole cycle, so that its last output step is
-/// followed by its first (completed or not converged); a stopped run's are judged as they are.
-bool ReportsWholeCycle(const engine::RunResult& result);
-
 /// One change of thrust side of the piston.
 struct SlapEvent {
   double crank_angle_deg = 0.0;  ///< within the cycle, [0, 720)

@@ -24,7 +24,7 @@ std::optional<engine::CycleScatter> ReportedCycleScatter(const engine::RunResult
       result.status != engine::RunStatus::kCompleted)
     return std::nullopt;
   return engine::ScatterOverCycles(result.cycle_headlines, result.samples,
-                                   ReportsWholeCycle(result));
+                                   engine::SamplesSpanACycle(result.samples));
 }
 
 RunSummary SummarizeRun(const std::string& case_name, const engine::RunConfig& config,
@@ -45,7 +45,7 @@ RunSummary SummarizeRun(const std::string& case_name, const engine::RunConfig& c
   s.wall_time_s = result.wall_time;
   s.max_constraint_violation = result.max_constraint_violation;
   const auto& columns = ResultColumns();
-  const bool whole_cycle = ReportsWholeCycle(result);
+  const bool whole_cycle = engine::SamplesSpanACycle(result.samples);
   const std::size_t n = rows.size();
   for (std::size_t c = 2; c < columns.size(); ++c) {  // crank angle and time have no extremes
     const auto value = [&](std::size_t k) { return rows[k].*(columns[c].member); };

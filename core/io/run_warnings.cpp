@@ -10,6 +10,7 @@
 
 #include "core/base/input_error.hpp"
 #include "core/engine/case_schema.hpp"
+#include "core/engine/error_estimate.hpp"
 #include "core/engine/film_joints.hpp"
 #include "core/io/case_file.hpp"
 #include "core/io/results_writer.hpp"
@@ -398,7 +399,7 @@ std::vector<RunWarning> RunWarnings(const engine::RunConfig& config,
   std::vector<RunWarning> out;
   const engine::EngineCase& c = config.engine_case;
   const auto& samples = result.samples;
-  const bool whole_cycle = ReportsWholeCycle(result);
+  const bool whole_cycle = engine::SamplesSpanACycle(result.samples);
   const bool skirt = c.skirt.model == engine::JointModel::kLubricated;
   const bool big_end = c.big_end.model == engine::JointModel::kLubricated;
   if (skirt) {

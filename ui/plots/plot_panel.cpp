@@ -51,6 +51,17 @@ void SetRoundAxis(QValueAxis* axis, double lo, double hi, double step) {
   axis->setRange(lo, hi);
 }
 
+// A run's samples from its last turn round 720 °CA on: all of a cycle's; of a run stopped late in
+// a run-in longer than a cycle, whose crank angles are taken round 720 °CA, the last 720 °CA, so
+// that no curve is drawn back across the chart and each angle has one value.
+std::vector<RunSample> LastLap(std::vector<RunSample> samples) {
+  std::size_t from = 0;
+  for (std::size_t k = 1; k < samples.size(); ++k)
+    if (samples[k][Column::kCrankAngle] < samples[k - 1][Column::kCrankAngle]) from = k;
+  samples.erase(samples.begin(), samples.begin() + std::ptrdiff_t(from));
+  return samples;
+}
+
 // Linear interpolation of a curve at a crank angle (NaN outside it or across a gap).
 double ValueAtAngle(const CurvePoints& curve, double angle) {
   const auto& a = curve.crank_angle;
@@ -353,6 +364,7 @@ void PlotPanel::updateRun(const PlotRun& run) {
   RunEntry& r = runs_[id];
   r.label = run.label;
   r.clearance_um = run.bearing_clearance * 1e6;
+  const std::vector<RunSample> samples = LastLap(run.samples), motion = LastLap(run.motion);
   for (ChartEntry& entry : charts_) {
     auto& series = entry.run_series[id];
     if (series.empty()) {
@@ -370,7 +382,7 @@ void PlotPanel::updateRun(const PlotRun& run) {
     points.resize(series.size());
     for (size_t k = 0; k < series.size(); ++k) {
       const PlotCurve& curve = entry.spec->curves[k];
-      points[k] = curve.points(curve.from_motion && !run.motion.empty() ? run.motion : run.samples);
+      points[k] = curve.points(curve.from_motion && !motion.empty() ? motion : samples);
       // An orbit or portrait that never leaves one point (an ideal joint's centred journal)
       // shows nothing: it counts as no data.
       if (!entry.spec->crank_angle_axis && !points[k].xy.isEmpty()) {

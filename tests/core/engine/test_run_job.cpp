@@ -238,30 +238,39 @@ class TestRunJob : public QObject {
             1e-9);
   }
   // A run stopped before its first cycle ended reports the part it computed: no oil "per cycle"
-  // over that part, only the account's balance; a whole cycle has both.
+  // over that part, only the account's balance — whether the part is shorter than a cycle or
+  // longer (a run-in of more than 720 °CA). A run stopped in its second cycle reports its first,
+  // a whole cycle, with both.
   void stoppedRunInReportsNoOilPerCycle() {
     engine::RunConfig config = DefaultConfig(6000, engine::Model::kOnlyLbrbe);
     config.engine_case.big_end.mesh_theta = 24;
     config.engine_case.big_end.mesh_z = 6;
     config.engine_case.big_end.cavitation = lubrication::CavitationModel::kJfo;
-    config.engine_case.solver.run_in_angle = M_PI;  // 180 °CA
-    int samples = 0;
-    const engine::RunResult stopped = engine::RunJob(
-        config, [&](const engine::RunProgress& p) { return !p.sample || ++samples < 90; });
-    QCOMPARE(engine::StatusName(stopped.status), std::string("cancelled"));
-    QCOMPARE(stopped.samples.size(), std::size_t(90));
-    QVERIFY(!engine::SamplesSpanACycle(stopped.samples));
-    const io::RunKpis part = io::RunKpisOf(config, stopped);
-    QVERIFY(part.big_end.has_value());
-    QVERIFY(!part.big_end->oil_in_per_cycle && !part.big_end->oil_out_per_cycle);
-    QVERIFY(part.big_end->oil_balance && std::abs(*part.big_end->oil_balance) < 1e-9);
-    for (const engine::HeadlineFigure& f : engine::HeadlineFigures(stopped.samples))
-      QVERIFY2(f.key != "bearing_oil_per_cycle[m^3]", "a headline oil per cycle over 90 °CA");
+    config.engine_case.solver.jfo_run_in_angle = 5 * M_PI;  // 900 °CA, sampled every 1 °CA
+    const auto stopped_after = [&config](int count) {
+      int samples = 0;
+      return engine::RunJob(
+          config, [&](const engine::RunProgress& p) { return !p.sample || ++samples < count; });
+    };
+    for (const int count : {90, 800}) {  // 90 and 800 °CA into the run-in
+      const engine::RunResult stopped = stopped_after(count);
+      QCOMPARE(engine::StatusName(stopped.status), std::string("cancelled"));
+      QCOMPARE(stopped.samples.size(), std::size_t(count));
+      QVERIFY(!engine::SamplesSpanACycle(stopped.samples));
+      const io::RunKpis part = io::RunKpisOf(config, stopped);
+      QVERIFY(part.big_end.has_value());
+      QVERIFY2(!part.big_end->oil_in_per_cycle && !part.big_end->oil_out_per_cycle,
+               std::to_string(count).c_str());
+      QVERIFY(part.big_end->oil_balance && std::abs(*part.big_end->oil_balance) < 1e-9);
+      for (const engine::HeadlineFigure& f : engine::HeadlineFigures(stopped.samples))
+        QVERIFY2(f.key != "bearing_oil_per_cycle[m^3]", "a headline oil per cycle of a run-in");
+    }
 
-    config.engine_case.solver.max_cycles = 1;
-    const engine::RunResult whole = engine::RunJob(config);
-    QVERIFY(engine::SamplesSpanACycle(whole.samples));
-    const io::RunKpis cycle = io::RunKpisOf(config, whole);
+    const engine::RunResult second = stopped_after(900 + 720 + 10);  // 10 °CA into cycle 2
+    QCOMPARE(engine::StatusName(second.status), std::string("cancelled"));
+    QCOMPARE(second.samples.size(), std::size_t(720));  // cycle 1, whole
+    QVERIFY(engine::SamplesSpanACycle(second.samples));
+    const io::RunKpis cycle = io::RunKpisOf(config, second);
     QVERIFY(cycle.big_end && cycle.big_end->oil_in_per_cycle &&
             *cycle.big_end->oil_in_per_cycle > 0.0);
     QVERIFY(cycle.big_end->oil_balance && std::abs(*cycle.big_end->oil_balance) < 1e-9);

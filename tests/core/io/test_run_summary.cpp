@@ -295,6 +295,10 @@ class TestRunSummary : public QObject {
     engine::RunResult result;
     result.status = engine::RunStatus::kCompleted;
     const int n = 40;
+    // The run's samples are one whole cycle (engine::SamplesSpanACycle): 40 of 18 °CA.
+    result.samples.resize(n);
+    for (int k = 0; k < n; ++k)
+      result.samples[size_t(k)].crank_angle = 4 * std::numbers::pi * k / n;
     std::vector<io::OutputRow> rows(n);
     for (int k = 0; k < n; ++k) {
       const double x = k - 20.0;
@@ -331,9 +335,12 @@ class TestRunSummary : public QObject {
     QVERIFY(!io::SummarizeRun("default", config, result, rows)
                  .extremes.at("bigend_force_y[N]")
                  .max_spike);
-    // A run that stopped early: the first sample has only the one after it (5.7e3): still a
-    // spike; the last sample's extreme has only the one before it.
+    // A run that stopped before its first cycle ended (samples short of a cycle): the first
+    // sample has only the one after it (5.7e3): still a spike; the last sample's extreme has only
+    // the one before it.
     result.status = engine::RunStatus::kFailed;
+    for (int k = 0; k < n; ++k)
+      result.samples[size_t(k)].crank_angle = 2 * std::numbers::pi * k / n;
     rows[size_t(n - 1)].bigend_force_x = -9e4;  // beside it 5.7e3 before, nothing after
     s = io::SummarizeRun("default", config, result, rows);
     QCOMPARE(s.extremes.at("bigend_force_x[N]").min, -9e4);

@@ -426,6 +426,45 @@ class TestPlotPanel : public QObject {
           100 * worst / largest);
   }
 
+  void runStoppedLateInALongRunInShowsItsLastLap() {
+    // A run stopped 820 °CA into a run-in longer than a cycle reports its samples with their
+    // crank angles taken round 720 °CA (0 … 719, then 0 … 99): the curves against crank angle
+    // show the last lap only, never a line drawn back across the chart; the portraits alike.
+    PlotRun long_run_in = coupled_;
+    long_run_in.id = 4;
+    const std::size_t n = coupled_.samples.size(), m = coupled_.motion.size();
+    for (std::size_t k = 0; k < 100; ++k) long_run_in.samples.push_back(coupled_.samples[k]);
+    for (std::size_t k = 0; k < 800; ++k) long_run_in.motion.push_back(coupled_.motion[k]);
+    PlotPanel panel;
+    panel.updateRun(long_run_in);
+    int checked = 0;
+    for (const auto& spec : filmdyn::ui::StandardPlots()) {
+      const int i = panel.chartIndex(spec.id);
+      for (QAbstractSeries* s : panel.chart(i)->series()) {
+        auto* line = qobject_cast<QLineSeries*>(s);
+        if (!line || line->count() == 0 || line->name().isEmpty()) continue;  // marks, circles
+        const QList<QPointF> points = line->points();
+        const std::string where = (spec.id + ": " + line->name()).toStdString();
+        if (spec.crank_angle_axis) {
+          QVERIFY2(points.size() <= 100, where.c_str());
+          for (qsizetype k = 1; k < points.size(); ++k)
+            QVERIFY2(points[k].x() > points[k - 1].x(), where.c_str());
+        } else {
+          QVERIFY2(points.size() <= 800, where.c_str());
+        }
+        ++checked;
+      }
+    }
+    QVERIFY(checked > 10);
+    QVERIFY(n >= 700 && m >= 800);
+    PlotPanel cycle;
+    cycle.updateRun(coupled_);
+    QVERIFY2(panel.pointCount(long_run_in.id) < cycle.pointCount(coupled_.id) / 5,
+             qPrintable(QString("%1 points against %2 for the whole cycle")
+                            .arg(panel.pointCount(long_run_in.id))
+                            .arg(cycle.pointCount(coupled_.id))));
+  }
+
   void zoomPanAndReset() {
     PlotPanel panel;
     panel.resize(1400, 1200);
