@@ -361,8 +361,10 @@ void MainWindow::onRunUpdated(const RunHandle& run) {
   const QString eta =
       p.remaining >= 0 ? tr(", about %1 s left").arg(p.remaining, 0, 'f', 0) : QString();
   if (p.run_in) {
-    progress_bar_->setFormat(
-        tr("run-in · %1 °CA before cycle 1%2").arg(-720.0 * p.cycle_fraction, 0, 'f', 0).arg(eta));
+    progress_bar_->setFormat(tr("run-in · %1 °CA, %2 °CA before cycle 1%3")
+                                 .arg(p.crank_angle_deg, 0, 'f', 0)
+                                 .arg(-720.0 * p.cycle_fraction, 0, 'f', 0)
+                                 .arg(eta));
   } else {
     // How far from periodic the last cycle was, once two cycles can be compared.
     const QString change =
@@ -372,7 +374,7 @@ void MainWindow::onRunUpdated(const RunHandle& run) {
     progress_bar_->setFormat(tr("cycle %1 of ≤ %2 · %3 °CA%4%5")
                                  .arg(p.cycle)
                                  .arg(p.max_cycles)
-                                 .arg(720.0 * p.cycle_fraction, 0, 'f', 0)
+                                 .arg(p.crank_angle_deg, 0, 'f', 0)
                                  .arg(change, eta));
   }
   updateRunActions();

@@ -768,7 +768,9 @@ void SetDescriptions(std::vector<CaseField>& fields) {
       {"operating.crankcase_pressure",
        "Absolute gas pressure below the piston; the gas force is the cylinder pressure minus "
        "this, times the bore area."},
-      {"operating.start_crank_angle", "Crank angle at which the simulation starts."},
+      {"operating.start_crank_angle",
+       "Crank angle at which the first monitored cycle starts (a run-in starts that much "
+       "earlier); results, fields and plots label crank angles in [0, 720) whatever it is."},
       {"solver.baumgarte_alpha",
        "Stabilisation of the joint constraints against drift: how strongly position errors are "
        "pulled back."},
@@ -1190,7 +1192,7 @@ std::vector<CaseField> MakeSchema() {
                       GaugePressure(), "acts under the crown: gas force (p − p_cc) π R_l²"}));
   f.push_back(Scalar("operating.start_crank_angle", op, &OperatingCase::start_crank_angle,
                      {G::kOperating, "Start crank angle", "rad", "°CA", kDeg, Between(0.0, 4 * kPi),
-                      "crank angle of the assembled start"}));
+                      "where the first monitored cycle starts (a run-in starts before it)"}));
   f.push_back(Scalar("solver.baumgarte_alpha", sol, &SolverCase::baumgarte_alpha,
                      {G::kSolver, "Baumgarte stabilisation 𝒢", "1/s", "1/s", 1.0, Between(0.0, 1e9),
                       "constraint stabilisation; Table II: 1e4"}));

@@ -162,10 +162,16 @@ Tracked TrackedFor(const EngineCase& c) {
 }
 
 // Where the run stands, for messages: " (cycle 2, 123.0 °CA)"; cycle 0 is the run-in, whose
-// angles count (negative) towards the first cycle.
-std::string AtAngle(int cycle, double crank_deg) {
-  if (cycle < 1) return fmt::format(" (run-in, {:.1f} °CA before the first cycle)", -crank_deg);
-  return fmt::format(" (cycle {}, {:.1f} °CA)", cycle, crank_deg);
+// angles count (negative) towards the first cycle. `crank_deg`: from the first cycle's start
+// (cycle_start, the case's start crank angle [rad]); the message names the crank angle as the
+// results label it (CycleCrankAngleDeg).
+std::string AtAngle(int cycle, double crank_deg, double cycle_start) {
+  const double label = CycleCrankAngleDeg(cycle_start + crank_deg * std::numbers::pi / 180.0);
+  if (cycle < 1) {
+    return fmt::format(" (run-in, at {:.1f} °CA, {:.1f} °CA before the first cycle)", label,
+                       -crank_deg);
+  }
+  return fmt::format(" (cycle {}, {:.1f} °CA)", cycle, label);
 }
 
 // Overall progress and time left for the monitor. Work is counted in cycles (the run-in as its
@@ -403,7 +409,7 @@ RunResult RunSingle(const RunConfig& config, const RunMonitor& monitor,
         current.Add(SampleCrankTrain(train, c, t, integrator.AdvanceTo(t)));
         result.stats = integrator.Stats();
         result.reynolds_solves = solves();
-        const std::string where = AtAngle(cycle, crank_deg);
+        const std::string where = AtAngle(cycle, crank_deg, c.operating.start_crank_angle);
         if (const std::string trouble = FilmTrouble(current.samples.back()); !trouble.empty()) {
           result.status = RunStatus::kFailed;
           result.message = trouble + where;
@@ -441,7 +447,7 @@ RunResult RunSingle(const RunConfig& config, const RunMonitor& monitor,
         result.reynolds_solves = solves();
         if (const std::string trouble = FilmTrouble(sample); !trouble.empty()) {
           result.status = RunStatus::kFailed;
-          result.message = trouble + AtAngle(cycle, crank_deg);
+          result.message = trouble + AtAngle(cycle, crank_deg, c.operating.start_crank_angle);
           result.cycles = cycle;
           keep(std::move(current));
           result.wall_time = elapsed();
@@ -454,7 +460,7 @@ RunResult RunSingle(const RunConfig& config, const RunMonitor& monitor,
           FieldFrame frame;
           frame.cycle = cycle;
           frame.step = k;
-          frame.crank_angle_deg = crank_deg;
+          frame.crank_angle_deg = CycleCrankAngleDeg(sample.crank_angle);  // as results.csv
           frame.time = t;
           frame.sample = &sample;
           frame.skirt = skirt ? &skirt->solver() : nullptr;
@@ -474,7 +480,8 @@ RunResult RunSingle(const RunConfig& config, const RunMonitor& monitor,
         progress.sample = &current.samples.back();
         const double work = run_in_cycles + (cycle - 1) + (k + 1.0) / steps_per_cycle;
         const bool last = cycle_end && (verdict.converged || cycle == max_cycles);
-        if (report(progress, work, last, AtAngle(cycle, crank_deg))) {
+        if (report(progress, work, last,
+                   AtAngle(cycle, crank_deg, c.operating.start_crank_angle))) {
           result.cycles = cycle;
           keep(previous.empty() ? current : previous);
           result.wall_time = elapsed();
@@ -509,13 +516,14 @@ RunResult RunSingle(const RunConfig& config, const RunMonitor& monitor,
   } catch (const StopRequested&) {
     const bool cancelled = cancel && cancel->load();
     result.status = cancelled ? RunStatus::kCancelled : RunStatus::kTimeLimit;
-    result.message =
-        (cancelled ? "cancelled" : "wall-time limit reached") + AtAngle(cycle, crank_deg);
+    result.message = (cancelled ? "cancelled" : "wall-time limit reached") +
+                     AtAngle(cycle, crank_deg, c.operating.start_crank_angle);
     result.cycles = std::max(cycle, 0);
     keep(previous.empty() ? current : previous);
   } catch (const std::exception& error) {
     result.status = RunStatus::kFailed;
-    result.message = std::string("integration failed: ") + error.what() + AtAngle(cycle, crank_deg);
+    result.message = std::string("integration failed: ") + error.what() +
+                     AtAngle(cycle, crank_deg, c.operating.start_crank_angle);
     if (!current.empty()) {  // name the film state where it stopped
       const CrankTrainSample& last = current.samples.back();
       result.message += fmt::format("; last output: eps = {:.4f}, skirt gap {:.3g} um",

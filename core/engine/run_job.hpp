@@ -41,7 +41,9 @@ Model ModelOfCase(const EngineCase& engine_case);
 struct FieldFrame {
   int cycle = 0;                 ///< 1-based cycle the step belongs to
   int step = 0;                  ///< output step within the cycle, 0 … steps_per_cycle − 1
-  double crank_angle_deg = 0.0;  ///< within the cycle [0, 720)
+  /// The step's crank angle in [0, 720) as results.csv labels it (CycleCrankAngleDeg): a cycle
+  /// that starts elsewhere than 0 °CA (operating.start_crank_angle) passes 720 → 0 within it.
+  double crank_angle_deg = 0.0;
   double time = 0.0;             ///< [s] since the start of the run
   const CrankTrainSample* sample = nullptr;
   const lubrication::SkirtSolver* skirt = nullptr;
@@ -96,7 +98,9 @@ struct RunProgress {
   int cycle = 0;  ///< 1-based cycle being computed; 0 during the run-in
   int max_cycles = 0;
   bool run_in = false;            ///< the run-in before the first cycle (SolverCase::run_in_angle)
-  double crank_angle_deg = 0.0;   ///< within the cycle, [0, 720); run-in: to the first cycle, < 0
+  /// From the cycle's start, [0, 720); run-in: to the first cycle, < 0 (the progress, not the
+  /// crank angle's label)
+  double crank_angle_deg = 0.0;
   double cycle_start_time = 0.0;  ///< time of the cycle's first sample [s] (run time, not crank)
   /// Overall progress [0, 1]: never decreases during a run (also from the run-in into cycle 1
   /// and from cycle to cycle when more cycles turn out to be needed), 1 at the last output step

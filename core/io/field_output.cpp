@@ -1,5 +1,6 @@
 #include "core/io/field_output.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -171,9 +172,17 @@ void FieldRecorder::Write(const std::filesystem::path& folder) const {
     series.points = bearing ? BearingPoints(frames_->bearing_theta, frames_->bearing_z,
                                             frames_->bearing_radius, 0.0)
                             : joint->geometry.points;
-    for (const FrameValues& frame : joint->frames) {
+    // In crank-angle order (the time a reader keys frames by): a cycle that starts elsewhere
+    // than 0 °CA passes 720 → 0 within it, and is written from 0 °CA on.
+    std::vector<const FrameValues*> ordered;
+    for (const FrameValues& frame : joint->frames) ordered.push_back(&frame);
+    std::stable_sort(ordered.begin(), ordered.end(),
+                     [](const FrameValues* a, const FrameValues* b) {
+                       return a->crank_angle_deg < b->crank_angle_deg;
+                     });
+    for (const FrameValues* frame : ordered) {
       series.frames.push_back(
-          {frame.crank_angle_deg, bearing ? frame.eccentricity_angle : 0.0, frame.arrays});
+          {frame->crank_angle_deg, bearing ? frame->eccentricity_angle : 0.0, frame->arrays});
     }
     WriteFieldSeries(folder, series);
   }

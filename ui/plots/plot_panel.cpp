@@ -51,15 +51,29 @@ void SetRoundAxis(QValueAxis* axis, double lo, double hi, double step) {
   axis->setRange(lo, hi);
 }
 
-// A run's samples from its last turn round 720 °CA on: all of a cycle's; of a run stopped late in
-// a run-in longer than a cycle, whose crank angles are taken round 720 °CA, the last 720 °CA, so
-// that no curve is drawn back across the chart and each angle has one value.
-std::vector<RunSample> LastLap(std::vector<RunSample> samples) {
-  std::size_t from = 0;
-  for (std::size_t k = 1; k < samples.size(); ++k)
-    if (samples[k][Column::kCrankAngle] < samples[k - 1][Column::kCrankAngle]) from = k;
-  samples.erase(samples.begin(), samples.begin() + std::ptrdiff_t(from));
-  return samples;
+// One lap of a run's samples in crank-angle order, as the plots draw them: the samples of the last
+// 720 °CA the run computed (all of a cycle's; of a run stopped late in a run-in longer than a
+// cycle, whose crank angles are taken round 720 °CA, its last 720 °CA), from the lowest crank
+// angle on — a cycle that starts elsewhere than 0 °CA (operating.start_crank_angle) passes
+// 720 → 0 within it and is drawn from 0 °CA, joined where it started. No curve is drawn back
+// across the chart, and each angle has one value.
+std::vector<RunSample> OneLap(const std::vector<RunSample>& samples) {
+  if (samples.empty()) return {};
+  const auto angle = [&samples](std::size_t k) { return samples[k][Column::kCrankAngle]; };
+  std::size_t from = samples.size() - 1;  // the lap: [from, end), less than 720 °CA long
+  for (double span = 0.0; from > 0; --from) {
+    double step = angle(from) - angle(from - 1);
+    if (step < 0.0) step += 720.0;
+    span += step;
+    if (!(span < 720.0 - 1e-9)) break;
+  }
+  std::size_t wrap = from;  // the first sample after the turn 720 → 0, if there is one
+  for (std::size_t k = from + 1; k < samples.size(); ++k)
+    if (angle(k) < angle(k - 1)) wrap = k;
+  std::vector<RunSample> lap(samples.begin() + std::ptrdiff_t(wrap), samples.end());
+  lap.insert(lap.end(), samples.begin() + std::ptrdiff_t(from),
+             samples.begin() + std::ptrdiff_t(wrap));
+  return lap;
 }
 
 // Linear interpolation of a curve at a crank angle (NaN outside it or across a gap).
@@ -364,7 +378,7 @@ void PlotPanel::updateRun(const PlotRun& run) {
   RunEntry& r = runs_[id];
   r.label = run.label;
   r.clearance_um = run.bearing_clearance * 1e6;
-  const std::vector<RunSample> samples = LastLap(run.samples), motion = LastLap(run.motion);
+  const std::vector<RunSample> samples = OneLap(run.samples), motion = OneLap(run.motion);
   for (ChartEntry& entry : charts_) {
     auto& series = entry.run_series[id];
     if (series.empty()) {

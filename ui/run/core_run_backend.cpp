@@ -96,6 +96,7 @@ RunBackend CoreRunBackend() {
       progress.cycle = p.cycle;
       progress.max_cycles = p.max_cycles;
       progress.cycle_fraction = p.crank_angle_deg / 720.0;  // < 0 in the run-in
+      if (p.sample) progress.crank_angle_deg = engine::CycleCrankAngleDeg(p.sample->crank_angle);
       progress.cycle_change = p.cycle_change;
       progress.fraction = p.fraction;
       progress.remaining = p.remaining;

@@ -16,6 +16,8 @@
 #include "core/engine/film_joints.hpp"
 #include "core/engine/run_job.hpp"
 #include "core/io/case_file.hpp"
+#include "core/io/field_output.hpp"
+#include "core/io/field_series.hpp"
 #include "core/io/results_writer.hpp"
 #include "core/io/run_kpis.hpp"
 #include "core/io/run_summary.hpp"
@@ -213,7 +215,8 @@ class TestRunJob : public QObject {
     QCOMPARE(angles.size(), std::size_t(90));
     QVERIFY(std::abs(angles.front() + 359.0) < 1e-9);
     QVERIFY(std::abs(angles.back() + 270.0) < 1e-9);
-    QVERIFY2(result.message.find("run-in, 270.0 °CA before the first cycle") != std::string::npos,
+    QVERIFY2(result.message.find("run-in, at 450.0 °CA, 270.0 °CA before the first cycle") !=
+                 std::string::npos,
              result.message.c_str());
     QCOMPARE(result.samples.size(), std::size_t(90));
     QVERIFY(result.samples.back().bearing.present && result.samples.back().bearing.eps > 0.0);
@@ -274,6 +277,53 @@ class TestRunJob : public QObject {
     QVERIFY(cycle.big_end && cycle.big_end->oil_in_per_cycle &&
             *cycle.big_end->oil_in_per_cycle > 0.0);
     QVERIFY(cycle.big_end->oil_balance && std::abs(*cycle.big_end->oil_balance) < 1e-9);
+  }
+
+  // A cycle that starts elsewhere than 0 °CA (operating.start_crank_angle = 90 °CA): its film
+  // fields and its messages name each output step's crank angle as results.csv labels it, and
+  // the fields are written in crank-angle order from 0 °CA (the time a reader keys them by).
+  void aCycleStartingAt90DegreesIsLabelledAsItsResults() {
+    engine::RunConfig config = DefaultConfig(3000, engine::Model::kOnlyLbrbe);
+    config.engine_case.big_end.mesh_theta = 24;
+    config.engine_case.big_end.mesh_z = 4;
+    config.engine_case.solver.max_cycles = 1;
+    config.engine_case.operating.start_crank_angle = M_PI / 2;
+    io::FieldRecorder recorder;
+    std::vector<double> frame_angles, sample_angles;
+    config.field_callback = [&, record = recorder.Callback()](const engine::FieldFrame& f) {
+      frame_angles.push_back(f.crank_angle_deg);
+      sample_angles.push_back(engine::CycleCrankAngleDeg(f.sample->crank_angle));
+      record(f);
+    };
+    const engine::RunResult run = engine::RunJob(config);
+    QCOMPARE(run.samples.size(), std::size_t(720));
+    QCOMPARE(frame_angles, sample_angles);
+    QCOMPARE(frame_angles.front(), 90.0);
+    QCOMPARE(frame_angles.back(), 89.0);
+    QTemporaryDir dir;
+    recorder.Write(dir.path().toStdString());
+    const io::FieldSeries series =
+        io::ReadFieldSeries(std::filesystem::path(dir.path().toStdString()) / "bearing.xdmf");
+    QCOMPARE(series.frames.size(), std::size_t(720));
+    for (std::size_t k = 0; k < series.frames.size(); ++k)
+      QCOMPARE(series.frames[k].crank_angle_deg, double(k));
+
+    // A stop names where it stopped as results.csv labels it: 100 output steps into the cycle.
+    config.field_callback = nullptr;
+    int samples = 0;
+    const engine::RunResult stopped = engine::RunJob(config, [&](const engine::RunProgress& p) {
+      return p.run_in || !p.sample || ++samples < 101;
+    });
+    QCOMPARE(engine::CycleCrankAngleDeg(stopped.samples.back().crank_angle), 190.0);
+    QVERIFY2(stopped.message == "cancelled (cycle 1, 190.0 °CA)", stopped.message.c_str());
+    // In the run-in, the crank angle and how far the first cycle still is.
+    samples = 0;
+    const engine::RunResult run_in = engine::RunJob(
+        config, [&](const engine::RunProgress& p) { return !p.sample || ++samples < 101; });
+    QCOMPARE(engine::CycleCrankAngleDeg(run_in.samples.back().crank_angle),
+             90.0 - 360.0 + 101.0 + 720.0);
+    QVERIFY2(run_in.message == "cancelled (run-in, at 551.0 °CA, 259.0 °CA before the first cycle)",
+             run_in.message.c_str());
   }
 
   void motionBetweenOutputStepsIsTheIntegratorsOwnSolution() {
