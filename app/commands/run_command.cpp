@@ -88,9 +88,13 @@ Command MakeRunCommand() {
       const auto now = std::chrono::steady_clock::now();
       if (!quiet && now - last_print > std::chrono::milliseconds(200)) {
         last_print = now;
-        std::string where = p.run_in ? fmt::format("run-in {:5.1f} °CA", p.crank_angle_deg)
-                                     : fmt::format("cycle {}/{}  {:5.1f} °CA", p.cycle,
-                                                   p.max_cycles, p.crank_angle_deg);
+        // The crank angle as results.csv labels it; the run-in also says how far cycle 1 is.
+        const double angle =
+            p.sample ? engine::CycleCrankAngleDeg(p.sample->crank_angle) : p.crank_angle_deg;
+        std::string where =
+            p.run_in ? fmt::format("run-in {:5.1f} °CA ({:.0f} °CA before cycle 1)", angle,
+                                   -p.crank_angle_deg)
+                     : fmt::format("cycle {}/{}  {:5.1f} °CA", p.cycle, p.max_cycles, angle);
         if (p.cycle_change >= 0.0)  // how far from periodic the last cycle was
           where += "  last change " + engine::PercentText(p.cycle_change) + " %";
         streams.err << fmt::format("\r{}  {:3.0f} %  elapsed {:.1f} s  ETA {:.1f} s ", where,
