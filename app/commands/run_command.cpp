@@ -110,7 +110,12 @@ Command MakeRunCommand() {
     }
     if (!quiet) streams.err << "\n";
     io::WriteRunFolder(out, c.name, config, result, [&](const std::vector<io::OutputRow>& rows) {
-      fields.Write(out / "fields");
+      if (fields.Holds(result.samples)) {
+        fields.Write(out / "fields");
+      } else if (fields.skirt_frames() + fields.bearing_frames() > 0) {
+        streams.err << "filmdyn run: fields/ not written: the run reports its last whole cycle, "
+                       "and film fields are kept only for the cycle it stopped in\n";
+      }
       // The same charts the GUI draws, also for an incomplete run (what was computed).
       if (const std::string error = WriteRunPlots(out, config, result, rows); !error.empty()) {
         streams.err << "filmdyn run: plots not written: " << error << "\n";

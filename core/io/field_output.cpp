@@ -25,6 +25,7 @@ struct JointFrames {
 
 struct FieldRecorder::Frames {
   int cycle = 0;
+  double first_time = 0.0;  ///< of the cycle's first frame [s]
   JointFrames skirt, bearing;
   // Bearing nodes in film coordinates (θ from the maximum film, z) and the radius: the points
   // of each frame follow from them and the frame's eccentricity angle.
@@ -41,6 +42,11 @@ engine::FieldCallback FieldRecorder::Callback() {
 
 std::size_t FieldRecorder::skirt_frames() const { return frames_->skirt.frames.size(); }
 std::size_t FieldRecorder::bearing_frames() const { return frames_->bearing.frames.size(); }
+
+bool FieldRecorder::Holds(const std::vector<engine::CrankTrainSample>& samples) const {
+  return skirt_frames() + bearing_frames() > 0 && !samples.empty() &&
+         samples.front().time == frames_->first_time;
+}
 
 namespace {
 
@@ -137,6 +143,7 @@ SurfaceField FieldRecorder::BearingSurface(const lubrication::BearingSolver& bea
 void FieldRecorder::Record(const engine::FieldFrame& frame) {
   if (frame.cycle != frames_->cycle) {  // a new cycle: the previous one is not the reported one
     frames_->cycle = frame.cycle;
+    frames_->first_time = frame.time;
     frames_->skirt.frames.clear();
     frames_->bearing.frames.clear();
   }

@@ -34,6 +34,10 @@ class FieldRecorder {
   /// Number of frames of the newest cycle recorded so far, per joint.
   std::size_t skirt_frames() const;
   std::size_t bearing_frames() const;
+  /// Whether the frames are those of a run's reported samples (the same cycle, from its start).
+  /// A run stopped in its second or later cycle reports the last whole one, whose frames the
+  /// recorder no longer holds (it keeps one cycle: the one it stopped in).
+  bool Holds(const std::vector<engine::CrankTrainSample>& samples) const;
   /// Writes `<folder>/skirt.{h5,xdmf}` and `<folder>/bearing.{h5,xdmf}` for the joints that are
   /// lubricated; nothing for an ideal run. Time values are crank angles [°CA] within the cycle.
   /// Throws std::runtime_error naming the file on I/O failure.

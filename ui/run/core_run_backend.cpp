@@ -115,7 +115,10 @@ RunBackend CoreRunBackend() {
     // cycle of frames, tens of MB on fine meshes) are dropped, so that runs started and cancelled
     // again and again do not pile up memory.
     const bool cancelled = result.status == engine::RunStatus::kCancelled;
-    if (cancelled) recorder = std::make_shared<io::FieldRecorder>();
+    // Fields only of the reported cycle: a run stopped in its second or later cycle reports the
+    // last whole one, whose frames are gone (one cycle is kept: the one it stopped in).
+    const bool fields_reported = recorder->Holds(result.samples);
+    if (cancelled || !fields_reported) recorder = std::make_shared<io::FieldRecorder>();
     auto shared_config = std::make_shared<engine::RunConfig>(config);
     shared_config->field_callback = nullptr;  // refers to this call's collector
     auto shared_result = std::make_shared<engine::RunResult>(result);
@@ -128,10 +131,13 @@ RunBackend CoreRunBackend() {
                              recorder->Write(std::filesystem::path(dir) / "fields");
                          });
     };
-    writers.fields = [recorder, cancelled](const std::string& dir) {
+    writers.fields = [recorder, cancelled, model](const std::string& dir) {
       if (recorder->skirt_frames() + recorder->bearing_frames() == 0) {
         throw std::runtime_error(cancelled ? "a cancelled run keeps no film fields"
-                                           : "this run has no film fields (ideal joints)");
+                                 : model == engine::Model::kIdeal
+                                     ? "this run has no film fields (ideal joints)"
+                                     : "this run kept no film fields of its reported "
+                                       "output steps");
       }
       recorder->Write(dir);
     };

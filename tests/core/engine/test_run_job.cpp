@@ -269,7 +269,12 @@ class TestRunJob : public QObject {
         QVERIFY2(f.key != "bearing_oil_per_cycle[m^3]", "a headline oil per cycle of a run-in");
     }
 
+    io::FieldRecorder recorder;
+    config.field_callback = recorder.Callback();
     const engine::RunResult second = stopped_after(900 + 720 + 10);  // 10 °CA into cycle 2
+    // Its film fields are those of cycle 2, the one it stopped in: not the reported cycle's.
+    QCOMPARE(recorder.bearing_frames(), std::size_t(11));
+    QVERIFY(!recorder.Holds(second.samples));
     QCOMPARE(engine::StatusName(second.status), std::string("cancelled"));
     QCOMPARE(second.samples.size(), std::size_t(720));  // cycle 1, whole
     QVERIFY(engine::SamplesSpanACycle(second.samples));
@@ -300,6 +305,7 @@ class TestRunJob : public QObject {
     QCOMPARE(frame_angles, sample_angles);
     QCOMPARE(frame_angles.front(), 90.0);
     QCOMPARE(frame_angles.back(), 89.0);
+    QVERIFY(recorder.Holds(run.samples));
     QTemporaryDir dir;
     recorder.Write(dir.path().toStdString());
     const io::FieldSeries series =
