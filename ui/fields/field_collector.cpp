@@ -120,4 +120,26 @@ void FieldCollector::Add(const engine::FieldFrame& frame) {
   }
 }
 
+std::shared_ptr<const FieldFrames> FieldCollector::Result() const {
+  if (!frames_) return frames_;
+  const std::vector<double>& angles = frames_->crank_angle_deg;
+  std::size_t wrap = 0;
+  for (std::size_t k = 1; k < angles.size(); ++k)
+    if (angles[k] < angles[k - 1]) wrap = k;
+  if (wrap == 0) return frames_;
+  auto ordered = std::make_shared<FieldFrames>(*frames_);
+  const auto turn = [wrap](auto& per_frame) {
+    if (per_frame.size() > wrap)
+      std::rotate(per_frame.begin(), per_frame.begin() + std::ptrdiff_t(wrap), per_frame.end());
+  };
+  turn(ordered->crank_angle_deg);
+  turn(ordered->time);
+  for (JointFieldFrames& joint : ordered->joints) {
+    turn(joint.frames);
+    turn(joint.frame_rotation);
+    turn(joint.load);
+  }
+  return ordered;
+}
+
 }  // namespace filmdyn::ui

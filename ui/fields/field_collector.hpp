@@ -23,8 +23,10 @@ class FieldCollector {
 
   /// Records one output step (called from the run's field callback, on the run's thread).
   void Add(const engine::FieldFrame& frame);
-  /// The frames of the newest cycle recorded (nullptr before the first step).
-  std::shared_ptr<const FieldFrames> Result() const { return frames_; }
+  /// The frames of the newest cycle recorded (nullptr before the first step), in crank-angle
+  /// order as the run folder's fields/ are: a cycle that starts elsewhere than 0 °CA passes
+  /// 720 → 0 within it and is given from 0 °CA on.
+  std::shared_ptr<const FieldFrames> Result() const;
 
  private:
   int stride_;

@@ -151,7 +151,8 @@ RunBackend CoreRunBackend() {
       return out.str();
     };
     sink.SetWriters(std::move(writers));
-    if (auto fields = collector.Result(); !cancelled && fields && !fields->empty())
+    if (auto fields = collector.Result();
+        !cancelled && fields_reported && fields && !fields->empty())
       sink.ReportFields(fields);
     ReportRunCounters(
         sink, OilCounters({double(result.cycles), double(result.cycles_to_steady_state),

@@ -558,6 +558,55 @@ class TestFieldView : public QObject {
 
   // Elastic surfaces: the deformation, live and read back from core's files, the film the
   // rigid one plus it, drawn by the view (and pictured); a rigid run says why it has none.
+  // A cycle that starts at 90 °CA (operating.start_crank_angle) passes 720 → 0 within it: the
+  // live frames come in crank-angle order from 0 °CA, each with its own arrays and rotation, as
+  // core's files hold them.
+  void framesOfACycleStartingAt90DegreesAreInCrankAngleOrder() {
+    using namespace filmdyn;
+    const io::LoadedCase loaded = io::LoadCase({});
+    engine::EngineCase c = loaded.value;
+    c.solver.output_interval = 4.0 * M_PI / 180.0;
+    c.solver.max_cycles = 1;
+    c.solver.error_estimate = 0;
+    c.big_end.mesh_theta = 24;
+    c.big_end.mesh_z = 4;
+    c.operating.start_crank_angle = M_PI / 2;
+    engine::ApplyModel(engine::Model::kOnlyLbrbe, &c);
+    engine::RunConfig config = engine::MakeRunConfig(c, engine::Model::kOnlyLbrbe, 3000.0,
+                                                     io::PressureCurveForSpeed(loaded, 3000.0));
+    ui::FieldCollector collector(180);
+    io::FieldRecorder recorder;
+    config.field_callback = [&collector,
+                             record = recorder.Callback()](const engine::FieldFrame& f) {
+      collector.Add(f);
+      record(f);
+    };
+    const engine::RunResult result = engine::RunJob(config);
+    QVERIFY(recorder.Holds(result.samples));
+    const auto live = collector.Result();
+    QVERIFY(live && live->crank_angle_deg.size() == 180);
+    // 90, 94, … 718 °CA, then 2, 6, … 86 °CA: from 2 °CA on, the frame computed last just before.
+    for (std::size_t k = 0; k < 180; ++k) QCOMPARE(live->crank_angle_deg[k], 2.0 + 4.0 * double(k));
+    const double step = live->time[1] - live->time[0];
+    QVERIFY(step > 0.0 && std::abs(live->time.front() - live->time.back() - step) < 1e-9 * step);
+    QTemporaryDir dir;
+    recorder.Write(dir.path().toStdString());
+    const auto stored = ui::ReadFieldFrames(dir.path(), c, 3000.0);
+    QVERIFY(stored && stored->crank_angle_deg.size() == 180);
+    const auto& a = live->joints[0];
+    const auto& b = stored->joints[0];
+    for (std::size_t k = 0; k < 180; k += 7) {
+      QCOMPARE(stored->crank_angle_deg[k], live->crank_angle_deg[k]);
+      QVERIFY(std::abs(std::remainder(a.Rotation(k) - b.Rotation(k), 2 * M_PI)) < 1e-6);
+      const auto& p = *ui::FindFieldArray(a.frames[k], "pressure");
+      const auto& q = *ui::FindFieldArray(b.frames[k], "pressure");
+      QCOMPARE(p.size(), q.size());
+      double peak = 1.0;
+      for (double v : p) peak = std::max(peak, std::abs(v));
+      for (std::size_t n = 0; n < p.size(); ++n) QVERIFY(std::abs(p[n] - q[n]) <= 1e-6 * peak);
+    }
+  }
+
   void deformationOfAnElasticRunLiveAndReadBack() {
     QTemporaryDir dir;
     filmdyn::engine::EngineCase used;
