@@ -36,6 +36,7 @@
 #include <QToolButton>
 #include <QtTest>
 #include <cmath>
+#include <functional>
 #include <memory>
 
 #include "core/engine/run_job.hpp"
@@ -136,32 +137,23 @@ std::shared_ptr<const filmdyn::ui::FieldFrames> RealRunFrames() {
   return collector.Result();
 }
 
-// A real Only-LBRBE run with JFO cavitation on a coarse big-end mesh (6000 rpm, 4 °CA output,
-// one cycle after the run-in): the frames as the GUI collects them live, and core's field files
-// of the same run written to `fields_dir`.
-// One cycle of the big end alone on a coarse mesh, with JFO cavitation (or, `elastic`, with
-// Reynolds cavitation and a soft elastic lining), live frames and core's files.
-std::shared_ptr<const filmdyn::ui::FieldFrames> JfoRunFrames(const QString& fields_dir,
-                                                             filmdyn::engine::EngineCase* used,
-                                                             bool elastic = false) {
+// One cycle of the big end alone (4 °CA output, after the run-in) of the default case adjusted by
+// `adjust`: the frames as the GUI collects them live, and core's field files of the same run
+// written to `fields_dir`; `used` the case as run. nullptr when the recorded frames are not the
+// reported cycle's.
+std::shared_ptr<const filmdyn::ui::FieldFrames> BigEndRunFrames(
+    const QString& fields_dir, filmdyn::engine::EngineCase* used, double rpm,
+    const std::function<void(filmdyn::engine::EngineCase&)>& adjust) {
   using namespace filmdyn;
   const io::LoadedCase loaded = io::LoadCase({});
   engine::EngineCase c = loaded.value;
   c.solver.output_interval = 4.0 * M_PI / 180.0;
   c.solver.max_cycles = 1;
   c.solver.error_estimate = 0;
-  c.big_end.mesh_theta = 48;
-  c.big_end.mesh_z = 6;
-  if (elastic) {
-    c.big_end.compliance = lubrication::ComplianceModel::kElasticLayer;
-    c.big_end.layer_thickness = 1e-3;
-    c.big_end.modulus_bearing = 20e9;
-  } else {
-    c.big_end.cavitation = lubrication::CavitationModel::kJfo;
-  }
+  adjust(c);
   engine::ApplyModel(engine::Model::kOnlyLbrbe, &c);
-  engine::RunConfig config = engine::MakeRunConfig(c, engine::Model::kOnlyLbrbe, 6000.0,
-                                                   io::PressureCurveForSpeed(loaded, 6000.0));
+  engine::RunConfig config = engine::MakeRunConfig(c, engine::Model::kOnlyLbrbe, rpm,
+                                                   io::PressureCurveForSpeed(loaded, rpm));
   ui::FieldCollector collector(180);
   io::FieldRecorder recorder;
   config.field_callback = [&collector, record = recorder.Callback()](const engine::FieldFrame& f) {
@@ -169,11 +161,31 @@ std::shared_ptr<const filmdyn::ui::FieldFrames> JfoRunFrames(const QString& fiel
     record(f);
   };
   const engine::RunResult result = engine::RunJob(config);
-  qInfo("%s run: %s, %zu samples, %.1f s", elastic ? "elastic" : "JFO",
-        engine::StatusName(result.status).c_str(), result.samples.size(), result.wall_time);
+  qInfo("big-end run: %s, %zu samples, %.1f s", engine::StatusName(result.status).c_str(),
+        result.samples.size(), result.wall_time);
+  if (!recorder.Holds(result.samples)) return nullptr;  // not the reported cycle's frames
   recorder.Write(fields_dir.toStdString());
   *used = c;
   return collector.Result();
+}
+
+// One cycle of the big end alone on a coarse mesh at 6000 rpm, with JFO cavitation (or,
+// `elastic`, with Reynolds cavitation and a soft elastic lining), live frames and core's files.
+std::shared_ptr<const filmdyn::ui::FieldFrames> JfoRunFrames(const QString& fields_dir,
+                                                             filmdyn::engine::EngineCase* used,
+                                                             bool elastic = false) {
+  using namespace filmdyn;
+  return BigEndRunFrames(fields_dir, used, 6000.0, [elastic](engine::EngineCase& c) {
+    c.big_end.mesh_theta = 48;
+    c.big_end.mesh_z = 6;
+    if (elastic) {
+      c.big_end.compliance = lubrication::ComplianceModel::kElasticLayer;
+      c.big_end.layer_thickness = 1e-3;
+      c.big_end.modulus_bearing = 20e9;
+    } else {
+      c.big_end.cavitation = lubrication::CavitationModel::kJfo;
+    }
+  });
 }
 
 // A copy of a run's frames with every pressure multiplied by `factor` (a "second run").
@@ -556,41 +568,23 @@ class TestFieldView : public QObject {
     }
   }
 
-  // Elastic surfaces: the deformation, live and read back from core's files, the film the
-  // rigid one plus it, drawn by the view (and pictured); a rigid run says why it has none.
   // A cycle that starts at 90 °CA (operating.start_crank_angle) passes 720 → 0 within it: the
   // live frames come in crank-angle order from 0 °CA, each with its own arrays and rotation, as
   // core's files hold them.
   void framesOfACycleStartingAt90DegreesAreInCrankAngleOrder() {
     using namespace filmdyn;
-    const io::LoadedCase loaded = io::LoadCase({});
-    engine::EngineCase c = loaded.value;
-    c.solver.output_interval = 4.0 * M_PI / 180.0;
-    c.solver.max_cycles = 1;
-    c.solver.error_estimate = 0;
-    c.big_end.mesh_theta = 24;
-    c.big_end.mesh_z = 4;
-    c.operating.start_crank_angle = M_PI / 2;
-    engine::ApplyModel(engine::Model::kOnlyLbrbe, &c);
-    engine::RunConfig config = engine::MakeRunConfig(c, engine::Model::kOnlyLbrbe, 3000.0,
-                                                     io::PressureCurveForSpeed(loaded, 3000.0));
-    ui::FieldCollector collector(180);
-    io::FieldRecorder recorder;
-    config.field_callback = [&collector,
-                             record = recorder.Callback()](const engine::FieldFrame& f) {
-      collector.Add(f);
-      record(f);
-    };
-    const engine::RunResult result = engine::RunJob(config);
-    QVERIFY(recorder.Holds(result.samples));
-    const auto live = collector.Result();
+    QTemporaryDir dir;
+    engine::EngineCase c;
+    const auto live = BigEndRunFrames(dir.path(), &c, 3000.0, [](engine::EngineCase& c) {
+      c.big_end.mesh_theta = 24;
+      c.big_end.mesh_z = 4;
+      c.operating.start_crank_angle = M_PI / 2;
+    });
     QVERIFY(live && live->crank_angle_deg.size() == 180);
     // 90, 94, … 718 °CA, then 2, 6, … 86 °CA: from 2 °CA on, the frame computed last just before.
     for (std::size_t k = 0; k < 180; ++k) QCOMPARE(live->crank_angle_deg[k], 2.0 + 4.0 * double(k));
     const double step = live->time[1] - live->time[0];
     QVERIFY(step > 0.0 && std::abs(live->time.front() - live->time.back() - step) < 1e-9 * step);
-    QTemporaryDir dir;
-    recorder.Write(dir.path().toStdString());
     const auto stored = ui::ReadFieldFrames(dir.path(), c, 3000.0);
     QVERIFY(stored && stored->crank_angle_deg.size() == 180);
     const auto& a = live->joints[0];
@@ -607,6 +601,8 @@ class TestFieldView : public QObject {
     }
   }
 
+  // Elastic surfaces: the deformation, live and read back from core's files, the film the
+  // rigid one plus it, drawn by the view (and pictured); a rigid run says why it has none.
   void deformationOfAnElasticRunLiveAndReadBack() {
     QTemporaryDir dir;
     filmdyn::engine::EngineCase used;
