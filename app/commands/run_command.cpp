@@ -110,9 +110,8 @@ Command MakeRunCommand() {
     }
     if (!quiet) streams.err << "\n";
     io::WriteRunFolder(out, c.name, config, result, [&](const std::vector<io::OutputRow>& rows) {
-      if (fields.Holds(result.samples)) {
-        fields.Write(out / "fields");
-      } else if (fields.skirt_frames() + fields.bearing_frames() > 0) {
+      if (!fields.WriteReported(out / "fields", result.samples) &&
+          fields.skirt_frames() + fields.bearing_frames() > 0) {
         streams.err << "filmdyn run: fields/ not written: the run reports its last whole cycle, "
                        "and film fields are kept only for the cycle it stopped in\n";
       }

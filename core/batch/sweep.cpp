@@ -70,9 +70,11 @@ void SweepRunner::Work() {
           "--out");
       io::MarkRunStarted(job.output_folder, job.case_name, job.config);
       outcome.result = engine::RunJob(config, monitor, cancel_);
-      outcome.rows = io::WriteRunFolder(
-          job.output_folder, job.case_name, job.config, outcome.result,
-          [&](const std::vector<io::OutputRow>&) { fields.Write(job.output_folder / "fields"); });
+      outcome.rows = io::WriteRunFolder(job.output_folder, job.case_name, job.config,
+                                        outcome.result, [&](const std::vector<io::OutputRow>&) {
+                                          fields.WriteReported(job.output_folder / "fields",
+                                                               outcome.result.samples);
+                                        });
       if (!job.keep_results) {
         outcome.rows = {};
         outcome.result.samples = {};

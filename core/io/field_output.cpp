@@ -48,6 +48,13 @@ bool FieldRecorder::Holds(const std::vector<engine::CrankTrainSample>& samples) 
          samples.front().time == frames_->first_time;
 }
 
+bool FieldRecorder::WriteReported(const std::filesystem::path& folder,
+                                  const std::vector<engine::CrankTrainSample>& samples) const {
+  if (!Holds(samples)) return false;
+  Write(folder);
+  return true;
+}
+
 namespace {
 
 // The three nodal fields every joint writes; the fluid fraction only when JFO computed one, the

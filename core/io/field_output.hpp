@@ -38,6 +38,10 @@ class FieldRecorder {
   /// A run stopped in its second or later cycle reports the last whole one, whose frames the
   /// recorder no longer holds (it keeps one cycle: the one it stopped in).
   bool Holds(const std::vector<engine::CrankTrainSample>& samples) const;
+  /// Write() when the frames are those of the reported `samples` (Holds); returns whether it
+  /// wrote. A run folder's fields/ are never of other output steps than its results.csv.
+  bool WriteReported(const std::filesystem::path& folder,
+                     const std::vector<engine::CrankTrainSample>& samples) const;
   /// Writes `<folder>/skirt.{h5,xdmf}` and `<folder>/bearing.{h5,xdmf}` for the joints that are
   /// lubricated; nothing for an ideal run. Time values are crank angles [°CA] within the cycle.
   /// Throws std::runtime_error naming the file on I/O failure.
