@@ -132,6 +132,13 @@ Command MakeRunCommand() {
     PrintRunWarnings(config, result, "filmdyn run", streams.err);
     if (result.status != engine::RunStatus::kCompleted) {
       streams.err << "filmdyn run: incomplete: " << result.message << "\n";
+      // What results.csv holds when it is not the cycle the run was in.
+      if (result.reported_cycle == 0 && !result.samples.empty()) {
+        streams.err << "filmdyn run: the results are the part of the run-in computed\n";
+      } else if (result.reported_cycle != result.cycles) {
+        streams.err << "filmdyn run: the results are cycle " << result.reported_cycle
+                    << ", the last whole one\n";
+      }
       return 1;
     }
     return 0;

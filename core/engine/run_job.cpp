@@ -328,6 +328,7 @@ RunResult RunSingle(const RunConfig& config, const RunMonitor& monitor,
   struct Span {
     std::vector<CrankTrainSample> samples;
     std::vector<MotionSample> motion;
+    int cycle = 0;  ///< the cycle the samples belong to (0: the run-in)
     bool empty() const { return samples.empty(); }
     void clear() {
       samples.clear();
@@ -341,6 +342,7 @@ RunResult RunSingle(const RunConfig& config, const RunMonitor& monitor,
   };
   Span previous, current;
   auto keep = [&result](Span span) {
+    result.reported_cycle = span.cycle;
     result.samples = std::move(span.samples);
     result.motion = std::move(span.motion);
   };
@@ -434,6 +436,7 @@ RunResult RunSingle(const RunConfig& config, const RunMonitor& monitor,
     coupling::CycleVerdict verdict;
     for (cycle = 1; cycle <= max_cycles; ++cycle) {
       current.clear();
+      current.cycle = cycle;
       for (int k = 0; k < steps_per_cycle; ++k) {
         const double t = t_start + (cycle - 1) * cycle_time + k * cycle_time / steps_per_cycle;
         crank_deg = 720.0 * k / steps_per_cycle;

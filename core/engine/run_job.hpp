@@ -143,6 +143,10 @@ struct RunResult {
   /// integrator's first step).
   std::vector<MotionSample> motion;
   int cycles = 0;                         ///< cycles computed
+  /// The cycle `samples` belong to: the last (completed, not converged), the last whole one (a
+  /// run stopped in its second or later cycle), the one it stopped in (its first, or a failure),
+  /// 0 for the part of the run-in computed.
+  int reported_cycle = 0;
   int cycles_to_steady_state = 0;         ///< 0 when not reached
   double cycle_change = 0.0;              ///< last cycle-to-cycle change / range (largest quantity)
   /// cycle_change after every compared cycle, in cycle order (cycles 2, 3, …): how the run

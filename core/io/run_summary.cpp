@@ -38,6 +38,7 @@ RunSummary SummarizeRun(const std::string& case_name, const engine::RunConfig& c
   s.complete = result.status == engine::RunStatus::kCompleted;
   s.message = result.message;
   s.cycles = result.cycles;
+  s.reported_cycle = result.reported_cycle;
   s.cycles_to_steady_state = result.cycles_to_steady_state;
   s.cycle_to_cycle_change = result.cycle_change;
   s.cycle_to_cycle_worst_quantity = result.worst_quantity;
@@ -274,6 +275,7 @@ json SummaryToJson(const RunSummary& s) {
   j["complete"] = s.complete;
   j["message"] = s.message;
   j["cycles"] = s.cycles;
+  j["reported_cycle"] = s.reported_cycle;
   j["cycles_to_steady_state"] = s.cycles_to_steady_state;
   j["cycle_to_cycle_change"] = s.cycle_to_cycle_change;
   j["cycle_to_cycle_worst_quantity"] = s.cycle_to_cycle_worst_quantity;
@@ -418,6 +420,8 @@ RunSummary FromJson(const json& j) {
   Read(j, "complete", "", &s.complete);
   Read(j, "message", "", &s.message);
   Read(j, "cycles", "", &s.cycles);
+  s.reported_cycle = s.cycles;  // a summary written before it existed: the last cycle
+  Read(j, "reported_cycle", "", &s.reported_cycle);
   Read(j, "cycles_to_steady_state", "", &s.cycles_to_steady_state);
   Read(j, "cycle_to_cycle_change", "", &s.cycle_to_cycle_change);
   Read(j, "cycle_to_cycle_worst_quantity", "", &s.cycle_to_cycle_worst_quantity);

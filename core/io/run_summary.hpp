@@ -82,6 +82,7 @@ struct RunSummary {
   bool complete = false;  ///< status is "completed"
   std::string message;
   int cycles = 0;
+  int reported_cycle = 0;  ///< engine::RunResult::reported_cycle
   int cycles_to_steady_state = 0;
   double cycle_to_cycle_change = 0.0;
   std::string cycle_to_cycle_worst_quantity;

@@ -259,6 +259,7 @@ class TestRunJob : public QObject {
       const engine::RunResult stopped = stopped_after(count);
       QCOMPARE(engine::StatusName(stopped.status), std::string("cancelled"));
       QCOMPARE(stopped.samples.size(), std::size_t(count));
+      QCOMPARE(stopped.reported_cycle, 0);  // the run-in's part
       QVERIFY(!engine::SamplesSpanACycle(stopped.samples));
       const io::RunKpis part = io::RunKpisOf(config, stopped);
       QVERIFY(part.big_end.has_value());
@@ -277,6 +278,8 @@ class TestRunJob : public QObject {
     QVERIFY(!recorder.Holds(second.samples));
     QCOMPARE(engine::StatusName(second.status), std::string("cancelled"));
     QCOMPARE(second.samples.size(), std::size_t(720));  // cycle 1, whole
+    QCOMPARE(second.cycles, 2);
+    QCOMPARE(second.reported_cycle, 1);
     QVERIFY(engine::SamplesSpanACycle(second.samples));
     const io::RunKpis cycle = io::RunKpisOf(config, second);
     QVERIFY(cycle.big_end && cycle.big_end->oil_in_per_cycle &&
@@ -302,6 +305,7 @@ class TestRunJob : public QObject {
     };
     const engine::RunResult run = engine::RunJob(config);
     QCOMPARE(run.samples.size(), std::size_t(720));
+    QCOMPARE(run.reported_cycle, 1);
     QCOMPARE(frame_angles, sample_angles);
     QCOMPARE(frame_angles.front(), 90.0);
     QCOMPARE(frame_angles.back(), 89.0);

@@ -27,6 +27,7 @@ io::RunSummary Full() {
       .complete = false,
       .message = "cycle-to-cycle change 0.02 above 0.01",
       .cycles = 7,
+      .reported_cycle = 6,
       .cycles_to_steady_state = 0,
       .cycle_to_cycle_change = 0.02,
       .cycle_to_cycle_worst_quantity = "bearing_moft",
@@ -188,6 +189,7 @@ class TestRunSummary : public QObject {
                             "complete",
                             "message",
                             "cycles",
+                            "reported_cycle",
                             "cycles_to_steady_state",
                             "cycle_to_cycle_change",
                             "cycle_to_cycle_worst_quantity",
@@ -207,8 +209,12 @@ class TestRunSummary : public QObject {
                             "clearance"}) {
       QVERIFY2(j.contains(key), key);
     }
-    QCOMPARE(j.size(), std::size_t(25));
+    QCOMPARE(j.size(), std::size_t(26));
     QCOMPARE(io::SummaryFromJson(j).cycle_to_cycle_changes, s.cycle_to_cycle_changes);
+    QCOMPARE(io::SummaryFromJson(j).reported_cycle, 6);
+    nlohmann::json before_reported = j;  // written before the reported cycle was: the last one
+    before_reported.erase("reported_cycle");
+    QCOMPARE(io::SummaryFromJson(before_reported).reported_cycle, 7);
     nlohmann::json old = j;  // written before the changes per cycle were: none
     old.erase("cycle_to_cycle_changes");
     QVERIFY(io::SummaryFromJson(old).cycle_to_cycle_changes.empty());
