@@ -257,6 +257,13 @@ MotionSample MotionOf(const CrankTrainSample& s) {
   return m;
 }
 
+std::size_t LapStart(const std::vector<double>& crank_angles_deg, std::size_t from) {
+  std::size_t start = from;
+  for (std::size_t k = from + 1; k < crank_angles_deg.size(); ++k)
+    if (crank_angles_deg[k] < crank_angles_deg[k - 1]) start = k;
+  return start;
+}
+
 double CycleCrankAngleDeg(double crank_angle) {
   double deg = std::fmod(crank_angle * (180.0 / std::numbers::pi), 720.0);
   if (deg < 0) deg += 720.0;

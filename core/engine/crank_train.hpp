@@ -7,8 +7,10 @@
 /// the head, +X toward the major thrust side, angles counter-clockwise. Crank angle φ = θ_crank;
 /// crank pin at L_1(−sin φ, cos φ): the crank turns counter-clockwise, and in the power stroke the
 /// rod pushes the piston toward +X. 0 °CA = TDC of intake, 360 °CA = firing TDC.
+#include <cstddef>
 #include <functional>
 #include <memory>
+#include <vector>
 
 #include "core/coupling/film_report.hpp"
 #include "core/engine/engine_case.hpp"
@@ -116,5 +118,10 @@ MotionSample MotionOf(const CrankTrainSample& sample);
 /// The crank angle within the reported cycle [°CA], [0, 720), rounded to 1e-9 °CA, of an
 /// unwrapped crank angle [rad] (results.csv's first column; one rule for every row and figure).
 double CycleCrankAngleDeg(double crank_angle);
+/// Where a lap of such crank angles [°CA] in time order starts from 0 °CA: the index of the first
+/// one after the last pass 720 → 0 at or after `from` (`from` when there is none). A cycle that
+/// starts elsewhere than 0 °CA (operating.start_crank_angle) passes it within; fields and plots
+/// show it from there.
+std::size_t LapStart(const std::vector<double>& crank_angles_deg, std::size_t from = 0);
 
 }  // namespace filmdyn::engine

@@ -366,6 +366,8 @@ RunResult RunSingle(const RunConfig& config, const RunMonitor& monitor,
   };
   double crank_deg = 0.0;
   int cycle = 1;
+  // Where the run stands now, for messages.
+  auto where_now = [&] { return AtAngle(cycle, crank_deg, c.operating.start_crank_angle); };
   // Typical cycle counts (for the progress estimate): 2 for the ideal model and for film models
   // after a run-in of at least 270 °CA (measured: cycle 2 then agrees with cycle 1 to < 1 %),
   // 4 for film models without one. The run-in counts as its share of a cycle.
@@ -411,7 +413,7 @@ RunResult RunSingle(const RunConfig& config, const RunMonitor& monitor,
         current.Add(SampleCrankTrain(train, c, t, integrator.AdvanceTo(t)));
         result.stats = integrator.Stats();
         result.reynolds_solves = solves();
-        const std::string where = AtAngle(cycle, crank_deg, c.operating.start_crank_angle);
+        const std::string where = where_now();
         if (const std::string trouble = FilmTrouble(current.samples.back()); !trouble.empty()) {
           result.status = RunStatus::kFailed;
           result.message = trouble + where;
@@ -450,7 +452,7 @@ RunResult RunSingle(const RunConfig& config, const RunMonitor& monitor,
         result.reynolds_solves = solves();
         if (const std::string trouble = FilmTrouble(sample); !trouble.empty()) {
           result.status = RunStatus::kFailed;
-          result.message = trouble + AtAngle(cycle, crank_deg, c.operating.start_crank_angle);
+          result.message = trouble + where_now();
           result.cycles = cycle;
           keep(std::move(current));
           result.wall_time = elapsed();
@@ -483,8 +485,7 @@ RunResult RunSingle(const RunConfig& config, const RunMonitor& monitor,
         progress.sample = &current.samples.back();
         const double work = run_in_cycles + (cycle - 1) + (k + 1.0) / steps_per_cycle;
         const bool last = cycle_end && (verdict.converged || cycle == max_cycles);
-        if (report(progress, work, last,
-                   AtAngle(cycle, crank_deg, c.operating.start_crank_angle))) {
+        if (report(progress, work, last, where_now())) {
           result.cycles = cycle;
           keep(previous.empty() ? current : previous);
           result.wall_time = elapsed();
@@ -519,14 +520,12 @@ RunResult RunSingle(const RunConfig& config, const RunMonitor& monitor,
   } catch (const StopRequested&) {
     const bool cancelled = cancel && cancel->load();
     result.status = cancelled ? RunStatus::kCancelled : RunStatus::kTimeLimit;
-    result.message = (cancelled ? "cancelled" : "wall-time limit reached") +
-                     AtAngle(cycle, crank_deg, c.operating.start_crank_angle);
+    result.message = (cancelled ? "cancelled" : "wall-time limit reached") + where_now();
     result.cycles = std::max(cycle, 0);
     keep(previous.empty() ? current : previous);
   } catch (const std::exception& error) {
     result.status = RunStatus::kFailed;
-    result.message = std::string("integration failed: ") + error.what() +
-                     AtAngle(cycle, crank_deg, c.operating.start_crank_angle);
+    result.message = std::string("integration failed: ") + error.what() + where_now();
     if (!current.empty()) {  // name the film state where it stopped
       const CrankTrainSample& last = current.samples.back();
       result.message += fmt::format("; last output: eps = {:.4f}, skirt gap {:.3g} um",

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/engine/crank_train.hpp"
 #include "core/io/field_series.hpp"
 #include "core/lubrication/bearing_solver.hpp"
 #include "core/lubrication/skirt_solver.hpp"
@@ -44,6 +45,7 @@ std::size_t FieldRecorder::skirt_frames() const { return frames_->skirt.frames.s
 std::size_t FieldRecorder::bearing_frames() const { return frames_->bearing.frames.size(); }
 
 bool FieldRecorder::Holds(const std::vector<engine::CrankTrainSample>& samples) const {
+  // The run job gives a cycle's first frame and sample the same time t: equal, not close.
   return skirt_frames() + bearing_frames() > 0 && !samples.empty() &&
          samples.front().time == frames_->first_time;
 }
@@ -188,15 +190,13 @@ void FieldRecorder::Write(const std::filesystem::path& folder) const {
                             : joint->geometry.points;
     // In crank-angle order (the time a reader keys frames by): a cycle that starts elsewhere
     // than 0 °CA passes 720 → 0 within it, and is written from 0 °CA on.
-    std::vector<const FrameValues*> ordered;
-    for (const FrameValues& frame : joint->frames) ordered.push_back(&frame);
-    std::stable_sort(ordered.begin(), ordered.end(),
-                     [](const FrameValues* a, const FrameValues* b) {
-                       return a->crank_angle_deg < b->crank_angle_deg;
-                     });
-    for (const FrameValues* frame : ordered) {
+    std::vector<double> angles;
+    for (const FrameValues& frame : joint->frames) angles.push_back(frame.crank_angle_deg);
+    const std::size_t n = angles.size(), start = engine::LapStart(angles);
+    for (std::size_t i = 0; i < n; ++i) {
+      const FrameValues& frame = joint->frames[(start + i) % n];
       series.frames.push_back(
-          {frame->crank_angle_deg, bearing ? frame->eccentricity_angle : 0.0, frame->arrays});
+          {frame.crank_angle_deg, bearing ? frame.eccentricity_angle : 0.0, frame.arrays});
     }
     WriteFieldSeries(folder, series);
   }

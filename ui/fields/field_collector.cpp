@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/engine/crank_train.hpp"
 #include "core/lubrication/bearing_solver.hpp"
 #include "core/lubrication/skirt_solver.hpp"
 
@@ -122,10 +123,7 @@ void FieldCollector::Add(const engine::FieldFrame& frame) {
 
 std::shared_ptr<const FieldFrames> FieldCollector::Result() const {
   if (!frames_) return frames_;
-  const std::vector<double>& angles = frames_->crank_angle_deg;
-  std::size_t wrap = 0;
-  for (std::size_t k = 1; k < angles.size(); ++k)
-    if (angles[k] < angles[k - 1]) wrap = k;
+  const std::size_t wrap = engine::LapStart(frames_->crank_angle_deg);
   if (wrap == 0) return frames_;
   auto ordered = std::make_shared<FieldFrames>(*frames_);
   const auto turn = [wrap](auto& per_frame) {

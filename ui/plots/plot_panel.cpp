@@ -20,6 +20,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/engine/crank_train.hpp"
 #include "core/engine/error_estimate.hpp"
 #include "ui/charts/chart_export.hpp"
 #include "ui/charts/palette.hpp"
@@ -59,17 +60,16 @@ void SetRoundAxis(QValueAxis* axis, double lo, double hi, double step) {
 // across the chart, and each angle has one value.
 std::vector<RunSample> OneLap(const std::vector<RunSample>& samples) {
   if (samples.empty()) return {};
-  const auto angle = [&samples](std::size_t k) { return samples[k][Column::kCrankAngle]; };
+  std::vector<double> angle(samples.size());
+  for (std::size_t k = 0; k < samples.size(); ++k) angle[k] = samples[k][Column::kCrankAngle];
   std::size_t from = samples.size() - 1;  // the lap: [from, end), less than 720 °CA long
   for (double span = 0.0; from > 0; --from) {
-    double step = angle(from) - angle(from - 1);
+    double step = angle[from] - angle[from - 1];
     if (step < 0.0) step += 720.0;
     span += step;
     if (!(span < 720.0 - 1e-9)) break;
   }
-  std::size_t wrap = from;  // the first sample after the turn 720 → 0, if there is one
-  for (std::size_t k = from + 1; k < samples.size(); ++k)
-    if (angle(k) < angle(k - 1)) wrap = k;
+  const std::size_t wrap = engine::LapStart(angle, from);
   std::vector<RunSample> lap(samples.begin() + std::ptrdiff_t(wrap), samples.end());
   lap.insert(lap.end(), samples.begin() + std::ptrdiff_t(from),
              samples.begin() + std::ptrdiff_t(wrap));
