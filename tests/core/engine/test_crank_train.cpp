@@ -117,6 +117,24 @@ Comparison Compare(EngineCase c, double rpm, PressureCurve curve, int cycles = 1
 class TestCrankTrain : public QObject {
   Q_OBJECT
  private slots:
+  // A lap of crank angles in time order starts after the last pass 720 → 0: a cycle from 0 °CA
+  // at its first step; one started at 90 °CA (1 °CA steps) at its 631st, 0 °CA; a run-in's
+  // samples taken round 720 °CA twice at the second pass; `from` bounds the search.
+  void lapStartsAfterTheLastPassRound720() {
+    std::vector<double> from_0, from_90, twice;
+    for (int k = 0; k < 720; ++k) {
+      from_0.push_back(k);
+      from_90.push_back((90 + k) % 720);
+    }
+    for (int k = 0; k < 1000; ++k) twice.push_back((500 + k) % 720);
+    QCOMPARE(engine::LapStart(from_0), std::size_t(0));
+    QCOMPARE(engine::LapStart(from_90), std::size_t(630));
+    QCOMPARE(from_90[630], 0.0);
+    QCOMPARE(engine::LapStart(twice), std::size_t(940));
+    QCOMPARE(engine::LapStart(twice, 950), std::size_t(950));
+    QCOMPARE(engine::LapStart({}), std::size_t(0));
+  }
+
   void kinematicsMatchExactSliderCrank_data() {
     QTest::addColumn<double>("rpm");
     QTest::addColumn<double>("pin_offset");
