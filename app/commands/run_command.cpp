@@ -69,7 +69,7 @@ Command MakeRunCommand() {
       config.threads = static_cast<int>(*threads);
     }
     io::FieldRecorder fields;
-    if (!args.Has("no-fields")) config.field_callback = fields.Callback();
+    if (!args.Has("no-fields")) fields.Attach(&config);
     engine::CheckRunMemory(config);  // before the output folder is touched
     const bool explicit_out = args.Value("out").has_value();
     const std::filesystem::path out = explicit_out ? std::filesystem::path(*args.Value("out"))
@@ -113,7 +113,8 @@ Command MakeRunCommand() {
       if (!fields.WriteReported(out / "fields", result.samples) &&
           fields.skirt_frames() + fields.bearing_frames() > 0) {
         streams.err << "filmdyn run: fields/ not written: the run reports its last whole cycle, "
-                       "and film fields are kept only for the cycle it stopped in\n";
+                       "whose film fields were not kept (two cycles of them would not fit in "
+                       "this machine's memory)\n";
       }
       // The same charts the GUI draws, also for an incomplete run (what was computed).
       if (const std::string error = WriteRunPlots(out, config, result, rows); !error.empty()) {

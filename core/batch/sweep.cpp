@@ -60,7 +60,7 @@ void SweepRunner::Work() {
       const SweepJob& job = jobs_[index];
       io::FieldRecorder fields;
       engine::RunConfig config = job.config;
-      if (job.write_fields) config.field_callback = fields.Callback();
+      if (job.write_fields) fields.Attach(&config);
       // Memory for this run with what the running ones already hold, before its folder is used.
       engine::CheckRunMemory(config);
       // Locked for the run; marked "running" until its summary is written last.

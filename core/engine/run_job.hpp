@@ -75,8 +75,9 @@ struct RunConfig {
   /// companion run). The samples are interpolated by the integrator between the steps it takes
   /// anyway: they cost no film solve and change no result.
   double motion_interval = kMotionInterval;
-  /// Copies of one cycle's film fields the field callback's consumers hold in memory (the run
-  /// folder's recorder: 1; the GUI keeps its own view besides): for the memory check.
+  /// Copies of one cycle's film fields the field callback's consumers hold in memory, for the
+  /// memory check (the run folder's recorder: 1, or 2 where io::FieldRecorder::Attach keeps the
+  /// previous cycle too; the GUI keeps its own view besides).
   double field_copies = 1.0;
   /// Where the case's relative file names (an imported compliance, a pressure-curve file)
   /// resolve: the case file's folder; empty = the working directory.

@@ -5,9 +5,9 @@
 /// The film solvers dominate: per lubricated system of n unknowns (the skirt's two panels, the
 /// big end's width or symmetric half) the sparse LDL^T factor, the matrices and the per-node
 /// arrays take n · (800 + 50 · log2 n) bytes — fitted to peak resident sizes measured for 1.3·10^5
-/// to 8·10^5 unknowns, and above every one of them by up to 11 %. One cycle of film fields is held
-/// until it is written (3 single-precision values per surface node per output step), and the
-/// output samples of two cycles.
+/// to 8·10^5 unknowns, and above every one of them by up to 11 %. The film fields are held until
+/// they are written (3 single-precision values per surface node per output step; one cycle, or
+/// two where they fit: io::FieldRecorder::Attach), and the output samples of two cycles.
 #include <string>
 
 #include "core/engine/engine_case.hpp"
@@ -35,7 +35,7 @@ struct MemoryEstimate {
   double base_bytes = 0.0;       ///< program, libraries, mechanism
   double solver_bytes = 0.0;     ///< the run's film solvers
   double companion_bytes = 0.0;  ///< the error estimate's companion run (solvers, samples)
-  double field_bytes = 0.0;      ///< one cycle of film fields held until written
+  double field_bytes = 0.0;      ///< film fields held until written (field_copies cycles)
   double sample_bytes = 0.0;     ///< output samples (two cycles)
   double total() const {
     return base_bytes + solver_bytes + companion_bytes + field_bytes + sample_bytes;

@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "core/engine/crank_train.hpp"
+#include "core/engine/run_memory.hpp"
 #include "core/io/field_series.hpp"
 #include "core/lubrication/bearing_solver.hpp"
 #include "core/lubrication/skirt_solver.hpp"
@@ -24,10 +25,22 @@ struct JointFrames {
   std::vector<FrameValues> frames;
 };
 
-struct FieldRecorder::Frames {
+// One cycle's frames of both joints.
+struct FieldRecorder::Cycle {
   int cycle = 0;
   double first_time = 0.0;  ///< of the cycle's first frame [s]
   JointFrames skirt, bearing;
+  std::size_t size() const { return skirt.frames.size() + bearing.frames.size(); }
+  bool StartsAt(const std::vector<engine::CrankTrainSample>& samples) const {
+    // The run job gives a cycle's first frame and sample the same time t: equal, not close.
+    return size() > 0 && !samples.empty() && samples.front().time == first_time;
+  }
+};
+
+struct FieldRecorder::Frames {
+  Cycle newest;
+  Cycle previous;  ///< the cycle before the newest, when kept (KeepPreviousCycle)
+  bool keep_previous = false;
   // Bearing nodes in film coordinates (θ from the maximum film, z) and the radius: the points
   // of each frame follow from them and the frame's eccentricity angle.
   std::vector<double> bearing_theta, bearing_z;
@@ -41,20 +54,34 @@ engine::FieldCallback FieldRecorder::Callback() {
   return [this](const engine::FieldFrame& frame) { Record(frame); };
 }
 
-std::size_t FieldRecorder::skirt_frames() const { return frames_->skirt.frames.size(); }
-std::size_t FieldRecorder::bearing_frames() const { return frames_->bearing.frames.size(); }
+std::size_t FieldRecorder::skirt_frames() const { return frames_->newest.skirt.frames.size(); }
+std::size_t FieldRecorder::bearing_frames() const { return frames_->newest.bearing.frames.size(); }
+
+void FieldRecorder::KeepPreviousCycle(bool keep) { frames_->keep_previous = keep; }
+
+bool FieldRecorder::Attach(engine::RunConfig* config) {
+  config->field_callback = Callback();
+  config->field_copies = 2.0;
+  const bool keep = engine::EstimateRunMemory(config->engine_case, config->field_copies).total() <=
+                    engine::AvailableMemoryBytes();
+  if (!keep) config->field_copies = 1.0;
+  KeepPreviousCycle(keep);
+  return keep;
+}
 
 bool FieldRecorder::Holds(const std::vector<engine::CrankTrainSample>& samples) const {
-  // The run job gives a cycle's first frame and sample the same time t: equal, not close.
-  return skirt_frames() + bearing_frames() > 0 && !samples.empty() &&
-         samples.front().time == frames_->first_time;
+  return frames_->newest.StartsAt(samples) || frames_->previous.StartsAt(samples);
 }
 
 bool FieldRecorder::WriteReported(const std::filesystem::path& folder,
                                   const std::vector<engine::CrankTrainSample>& samples) const {
-  if (!Holds(samples)) return false;
-  Write(folder);
-  return true;
+  for (const Cycle* cycle : {&frames_->newest, &frames_->previous}) {
+    if (cycle->StartsAt(samples)) {
+      Write(folder, *cycle);
+      return true;
+    }
+  }
+  return false;
 }
 
 namespace {
@@ -150,14 +177,21 @@ SurfaceField FieldRecorder::BearingSurface(const lubrication::BearingSolver& bea
 }
 
 void FieldRecorder::Record(const engine::FieldFrame& frame) {
-  if (frame.cycle != frames_->cycle) {  // a new cycle: the previous one is not the reported one
-    frames_->cycle = frame.cycle;
-    frames_->first_time = frame.time;
-    frames_->skirt.frames.clear();
-    frames_->bearing.frames.clear();
+  Cycle& newest = frames_->newest;
+  if (frame.cycle != newest.cycle) {
+    // A new cycle. The one before it is what a run stopped in this one reports; older ones are
+    // reported by no run.
+    if (frames_->keep_previous) {
+      frames_->previous = std::move(newest);
+    } else {
+      frames_->previous = {};
+    }
+    newest = {};
+    newest.cycle = frame.cycle;
+    newest.first_time = frame.time;
   }
   if (frame.skirt != nullptr) {
-    Keep(SkirtSurface(*frame.skirt), frame.crank_angle_deg, 0.0, &frames_->skirt);
+    Keep(SkirtSurface(*frame.skirt), frame.crank_angle_deg, 0.0, &newest.skirt);
   }
   if (frame.bearing != nullptr && frame.sample != nullptr) {
     const Eigen::Vector2d e = frame.sample->bearing.journal_ecc_rod;
@@ -167,15 +201,19 @@ void FieldRecorder::Record(const engine::FieldFrame& frame) {
       frames_->bearing_z = frame.bearing->full_width().mesh.y;
       frames_->bearing_radius = frame.bearing->config().geometry.radius;
     }
-    Keep(BearingSurface(*frame.bearing, angle), frame.crank_angle_deg, angle, &frames_->bearing);
+    Keep(BearingSurface(*frame.bearing, angle), frame.crank_angle_deg, angle, &newest.bearing);
   }
 }
 
 void FieldRecorder::Write(const std::filesystem::path& folder) const {
+  Write(folder, frames_->newest);
+}
+
+void FieldRecorder::Write(const std::filesystem::path& folder, const Cycle& cycle) const {
   for (const auto& [name, joint] :
-       {std::pair{"skirt", &frames_->skirt}, std::pair{"bearing", &frames_->bearing}}) {
+       {std::pair{"skirt", &cycle.skirt}, std::pair{"bearing", &cycle.bearing}}) {
     if (joint->frames.empty()) continue;
-    const bool bearing = joint == &frames_->bearing;
+    const bool bearing = joint == &cycle.bearing;
     FieldSeries series;
     series.name = name;
     series.triangles = joint->geometry.triangles;

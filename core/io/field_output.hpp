@@ -5,8 +5,9 @@
 /// nodal arrays `pressure[Pa]`, `contact_pressure[Pa]`, `film_thickness[m]` (and
 /// `fluid_fraction[-]` with mass-conserving cavitation) in single precision, compressed, the time
 /// value of each frame its crank angle [°CA]. ParaView opens the `.xdmf` files with its Xdmf3
-/// reader. Recorded through RunConfig's field callback; only the newest cycle is kept, which is
-/// the cycle the run reports.
+/// reader. Recorded through RunConfig's field callback; the newest cycle is kept, and the one
+/// before it where memory allows (Attach): a run stopped in its second or later cycle reports
+/// the last whole one.
 ///
 /// 3D layout (metres): the bore axis is z, the skirt top at z = 0 and the skirt below it
 /// (z = −y); the skirt is written as solved, α ∈ [0, π] from the thrust side (+x) — the film is
@@ -31,20 +32,27 @@ class FieldRecorder {
   /// The callback to put in RunConfig::field_callback (keeps a reference to this recorder).
   /// Everything needed later is copied: Write() works after the run's solvers are gone.
   engine::FieldCallback Callback();
+  /// Records the run of `config`: sets its field callback and field_copies. Keeps the cycle
+  /// before the newest too — the one a run stopped in its second or later cycle reports — when
+  /// the run's memory estimate (engine::EstimateRunMemory) with two cycles of fields fits in what
+  /// this machine has; otherwise the newest only. Returns whether the previous cycle is kept.
+  bool Attach(engine::RunConfig* config);
+  /// Whether a new cycle's start keeps the cycle before it (Attach decides it; off by default).
+  void KeepPreviousCycle(bool keep);
   /// Number of frames of the newest cycle recorded so far, per joint.
   std::size_t skirt_frames() const;
   std::size_t bearing_frames() const;
-  /// Whether the frames are those of a run's reported samples (the same cycle, from its start).
-  /// A run stopped in its second or later cycle reports the last whole one, whose frames the
-  /// recorder no longer holds (it keeps one cycle: the one it stopped in).
+  /// Whether the recorder holds the frames of a run's reported samples (the same cycle, from its
+  /// start): the newest cycle's, or the previous one's when it is kept. A run stopped in its
+  /// second or later cycle reports the last whole one: without the previous cycle, not held.
   bool Holds(const std::vector<engine::CrankTrainSample>& samples) const;
-  /// Write() when the frames are those of the reported `samples` (Holds); returns whether it
-  /// wrote. A run folder's fields/ are never of other output steps than its results.csv.
+  /// Writes the frames of the reported `samples` when held (Holds); returns whether it wrote. A run
+  /// folder's fields/ are never of other output steps than its results.csv.
   bool WriteReported(const std::filesystem::path& folder,
                      const std::vector<engine::CrankTrainSample>& samples) const;
-  /// Writes `<folder>/skirt.{h5,xdmf}` and `<folder>/bearing.{h5,xdmf}` for the joints that are
-  /// lubricated; nothing for an ideal run. Time values are crank angles [°CA] within the cycle.
-  /// Throws std::runtime_error naming the file on I/O failure.
+  /// Writes the newest cycle: `<folder>/skirt.{h5,xdmf}` and `<folder>/bearing.{h5,xdmf}` for
+  /// the joints that are lubricated; nothing for an ideal run. Time values are crank angles [°CA]
+  /// within the cycle. Throws std::runtime_error naming the file on I/O failure.
   void Write(const std::filesystem::path& folder) const;
 
   /// The surface of one solve (exposed for tests and the GUI's field view).
@@ -53,7 +61,9 @@ class FieldRecorder {
                                      double eccentricity_angle_rod);
 
  private:
+  struct Cycle;
   void Record(const engine::FieldFrame& frame);
+  void Write(const std::filesystem::path& folder, const Cycle& cycle) const;
   struct Frames;
   std::unique_ptr<Frames> frames_;
 };

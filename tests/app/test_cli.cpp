@@ -20,6 +20,7 @@
 #include "app/cli/command.hpp"
 #include "app/cli/dispatcher.hpp"
 #include "core/base/input_error.hpp"
+#include "core/io/field_series.hpp"
 
 #include "run_filmdyn.hpp"
 
@@ -239,6 +240,47 @@ class TestCli : public QObject {
     QVERIFY(!QFileInfo::exists(out + "/fields/bearing.h5"));
     QVERIFY(QFileInfo::exists(out + "/notes.txt"));
     QVERIFY(QFileInfo::exists(out + "/results.csv"));
+  }
+
+  // A run stopped in its third cycle reports its second, the last whole one, with that cycle's
+  // film fields: one frame per results.csv row, at the crank angle the row gives.
+  void aRunStoppedInALaterCycleWritesTheReportedCyclesFields() {
+    QTemporaryDir dir;
+    const QString out = dir.filePath("r");
+    QProcess run;
+    run.start(FILMDYN_EXECUTABLE,
+              {"run", "--out", out, "--model", "only-lbrbe", "--set", "big_end.mesh_theta=24",
+               "--set", "big_end.mesh_z=4", "--set", "solver.error_estimate=0", "--set",
+               "solver.steady_state_tolerance=1e-9", "--set", "solver.max_cycles=60"});
+    QVERIFY(run.waitForStarted());
+    QByteArray progress;
+    for (int k = 0; k < 1200 && !progress.contains("cycle 3/"); ++k) {
+      run.waitForReadyRead(100);
+      progress += run.readAllStandardError();
+    }
+    QVERIFY2(progress.contains("cycle 3/"), progress.right(300).constData());
+    ::kill(static_cast<pid_t>(run.processId()), SIGTERM);
+    QVERIFY(run.waitForFinished(60000));
+    const QByteArray err = progress + run.readAllStandardError();
+    QCOMPARE(run.exitCode(), 1);
+    QVERIFY2(err.contains("the results are cycle 2, the last whole one"), err.right(600).data());
+    QVERIFY2(!err.contains("fields/ not written"), err.right(600).data());
+    QFile summary(out + "/summary.json");
+    QVERIFY(summary.open(QIODevice::ReadOnly));
+    const QJsonObject s = QJsonDocument::fromJson(summary.readAll()).object();
+    QCOMPARE(s.value("status").toString(), QString("cancelled"));
+    QCOMPARE(s.value("reported_cycle").toInt(), 2);
+    QFile csv(out + "/results.csv");
+    QVERIFY(csv.open(QIODevice::ReadOnly));
+    std::vector<double> row_angles;
+    csv.readLine();  // the header; crank_angle[deg] is the first column
+    while (!csv.atEnd()) row_angles.push_back(csv.readLine().split(',').front().toDouble());
+    QCOMPARE(row_angles.size(), std::size_t(720));
+    const filmdyn::io::FieldSeries fields =
+        filmdyn::io::ReadFieldSeries((out + "/fields/bearing.xdmf").toStdString());
+    QCOMPARE(fields.frames.size(), row_angles.size());
+    for (std::size_t k = 0; k < row_angles.size(); ++k)
+      QVERIFY(std::abs(fields.frames[k].crank_angle_deg - row_angles[k]) < 1e-6);
   }
 
   // A running run marks its folder "running" and locks it: a second writer is refused. SIGTERM

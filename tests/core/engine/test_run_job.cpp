@@ -243,7 +243,7 @@ class TestRunJob : public QObject {
   // A run stopped before its first cycle ended reports the part it computed: no oil "per cycle"
   // over that part, only the account's balance — whether the part is shorter than a cycle or
   // longer (a run-in of more than 720 °CA). A run stopped in its second cycle reports its first,
-  // a whole cycle, with both.
+  // a whole cycle, with both, and its film fields.
   void stoppedRunInReportsNoOilPerCycle() {
     engine::RunConfig config = DefaultConfig(6000, engine::Model::kOnlyLbrbe);
     config.engine_case.big_end.mesh_theta = 24;
@@ -270,12 +270,34 @@ class TestRunJob : public QObject {
         QVERIFY2(f.key != "bearing_oil_per_cycle[m^3]", "a headline oil per cycle of a run-in");
     }
 
-    io::FieldRecorder recorder;
-    config.field_callback = recorder.Callback();
+    // Two recorders of the same run: one as runs attach it (keeping the previous cycle, which
+    // this small mesh's memory allows), one keeping the newest cycle only.
+    io::FieldRecorder recorder, newest_only;
+    QVERIFY(recorder.Attach(&config));
+    QCOMPARE(config.field_copies, 2.0);
+    config.field_callback = [both = config.field_callback,
+                             newest = newest_only.Callback()](const engine::FieldFrame& f) {
+      both(f);
+      newest(f);
+    };
     const engine::RunResult second = stopped_after(900 + 720 + 10);  // 10 °CA into cycle 2
-    // Its film fields are those of cycle 2, the one it stopped in: not the reported cycle's.
+    // The newest frames are those of cycle 2, the one it stopped in: not the reported cycle's.
+    QCOMPARE(newest_only.bearing_frames(), std::size_t(11));
     QCOMPARE(recorder.bearing_frames(), std::size_t(11));
-    QVERIFY(!recorder.Holds(second.samples));
+    QVERIFY(!newest_only.Holds(second.samples));
+    // The attached recorder also kept cycle 1's, the reported cycle: its fields/ are written,
+    // one frame per reported output step at the crank angle results.csv gives it.
+    QVERIFY(recorder.Holds(second.samples));
+    QTemporaryDir dir;
+    QVERIFY(!newest_only.WriteReported(dir.path().toStdString(), second.samples));
+    QVERIFY(recorder.WriteReported(dir.path().toStdString(), second.samples));
+    const io::FieldSeries series =
+        io::ReadFieldSeries(std::filesystem::path(dir.path().toStdString()) / "bearing.xdmf");
+    QCOMPARE(series.frames.size(), second.samples.size());
+    for (std::size_t k = 0; k < series.frames.size(); ++k) {
+      QVERIFY(std::abs(series.frames[k].crank_angle_deg -
+                       engine::CycleCrankAngleDeg(second.samples[k].crank_angle)) < 1e-6);
+    }
     QCOMPARE(engine::StatusName(second.status), std::string("cancelled"));
     QCOMPARE(second.samples.size(), std::size_t(720));  // cycle 1, whole
     QCOMPARE(second.cycles, 2);
