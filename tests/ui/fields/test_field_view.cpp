@@ -599,6 +599,20 @@ class TestFieldView : public QObject {
       for (double v : p) peak = std::max(peak, std::abs(v));
       for (std::size_t n = 0; n < p.size(); ++n) QVERIFY(std::abs(p[n] - q[n]) <= 1e-6 * peak);
     }
+    if (const QString shots = qEnvironmentVariable("FILMDYN_SCREENSHOT_DIR"); !shots.isEmpty()) {
+      ui::FieldView view;  // to look at: the crank-angle chart from 0 °CA, the frame at 100 °CA
+      view.resize(1400, 820);
+      view.setFrames(live, "Only-LBRBE 3000 rpm, cycle from 90 °CA");
+      view.setCrankAngle(100.0);
+      view.show();
+      QVERIFY(QTest::qWaitForWindowExposed(&view));
+      QDir().mkpath(shots);
+      for (const int tab : {0, 2}) {
+        view.jointTabs(0)->setCurrentIndex(tab);
+        QTest::qWait(400);
+        view.grab().save(shots + QString("/field_view_start_90_tab%1.png").arg(tab));
+      }
+    }
   }
 
   // Elastic surfaces: the deformation, live and read back from core's files, the film the
