@@ -118,38 +118,53 @@ void UnresolvedPeakWarnings(const std::vector<engine::CrankTrainSample>& samples
         std::min(std::max(peak.Ratio(), peak.StepRatio()), std::numeric_limits<double>::max());
     w.limit = engine::kUnresolvedPeakRatio;
     const bool caught = peak.Ratio() > engine::kUnresolvedPeakRatio;
+    const bool missed = peak.StepRatio() > engine::kUnresolvedPeakRatio;
     const double step_at = CrankAngleDeg(samples[peak.step_index]);
+    const double sample_at = CrankAngleDeg(samples[peak.index]);
+    // Whether the steps' peak lies in an output interval next to the largest sample (ending or
+    // starting at it): the same event, else two (a starved skirt's slap at both reversals).
+    const bool beside_sample =
+        peak.step_index == peak.index || peak.step_index == peak.index + 1 ||
+        (whole_cycle && peak.index + 1 == samples.size() && peak.step_index == 0);
     const std::string steps = fmt::format(
         "the integrator's steps between the samples reached {:.4g} MPa in the output "
         "interval before {:.4g} °CA",
         peak.step_peak * 1e-6, step_at);
+    std::string neighbours;  // of the largest sample
+    for (double v : {peak.before, peak.after}) {
+      if (!std::isfinite(v)) continue;
+      neighbours += fmt::format("{}{:.3g}", neighbours.empty() ? "" : " and ", v * 1e-6);
+    }
     const std::string why = fmt::format(
         "it lasts less than about three output intervals ({:.3g} °CA), so the peak figure is "
         "whatever the samples caught (an impact: a big-end journal or a skirt crossing a "
         "cavitated or starved film onto the full film beyond it); a smaller "
         "solver.output_interval resolves it",
         output_interval * kDeg);
-    if (caught) {
-      // The samples caught the spike in part: it stands out of the samples beside it.
-      w.crank_angle_deg = CrankAngleDeg(samples[peak.index]);
-      std::string beside;
-      for (double v : {peak.before, peak.after}) {
-        if (!std::isfinite(v)) continue;
-        beside += fmt::format("{}{:.3g}", beside.empty() ? "" : " and ", v * 1e-6);
+    if (missed) {
+      // The steps saw more than the samples did: the cycle's highest pressure is there.
+      w.crank_angle_deg = step_at;
+      std::string sample =
+          fmt::format("{:.4g} MPa at {:.4g} °CA", peak.figure.value * 1e-6, sample_at);
+      if (caught) {
+        sample += fmt::format(", {}: the samples beside it show {} MPa",
+                              beside_sample ? "the same spike's edge" : "itself another spike",
+                              neighbours);
       }
+      w.message = fmt::format(
+          "the output samples miss a spike of the {} film pressure: {}, {:.2g} times the largest "
+          "sample ({}); {}",
+          peak.figure.big_end ? "big-end" : "skirt", steps, peak.StepRatio(), sample, why);
+    } else {
+      // The samples caught the spike in part: it stands out of the samples beside it.
+      w.crank_angle_deg = sample_at;
+      std::string seen;
+      if (peak.StepRatio() > 1.0)
+        seen = "; " + std::string(beside_sample ? "" : "elsewhere, ") + steps;
       w.message = fmt::format(
           "{} {:.4g} MPa at {:.4g} °CA is a spike the output samples do not resolve (the samples "
           "beside it show {} MPa{}): {}",
-          peak.figure.label, peak.figure.value * 1e-6, *w.crank_angle_deg, beside,
-          peak.StepRatio() > 1.0 ? "; " + steps : std::string(), why);
-    } else {
-      // The samples missed it: only the steps between them saw it.
-      w.crank_angle_deg = step_at;
-      w.message = fmt::format(
-          "the output samples miss a spike of the {} film pressure: {}, {:.2g} times the largest "
-          "sample ({:.4g} MPa at {:.4g} °CA); {}",
-          peak.figure.big_end ? "big-end" : "skirt", steps, peak.StepRatio(),
-          peak.figure.value * 1e-6, CrankAngleDeg(samples[peak.index]), why);
+          peak.figure.label, peak.figure.value * 1e-6, sample_at, neighbours, seen, why);
     }
     out->push_back(std::move(w));
   }

@@ -412,6 +412,68 @@ class TestRunWarnings : public QObject {
     QVERIFY(!find(groove).has_value());
   }
 
+  // Two impacts of a starved skirt in one cycle (at both reversals), one caught in part by a
+  // sample, one seen only by the integrator's steps between two samples: the warning leads with
+  // the larger (the steps'), at its crank angle, and says the largest sample is another spike;
+  // the steps' peak beside that sample is the same spike's; steps' peaks within 1.5 times the
+  // largest sample leave the caught spike the warning's subject.
+  void unresolvedPeaksAtTwoPlacesAreToldApart() {
+    const engine::RunConfig config = Config(CoarseCase(), engine::Model::kSkirtLbrbe, 6000.0);
+    engine::RunResult result;
+    result.status = engine::RunStatus::kCompleted;
+    const int n = 720;  // a whole cycle, 1 °CA apart
+    result.samples.resize(n);
+    for (int k = 0; k < n; ++k) {
+      engine::CrankTrainSample& s = result.samples[std::size_t(k)];
+      s.crank_angle = 4.0 * M_PI * k / n;
+      s.time = 1e-5 * k;
+      s.skirt.present = true;
+      s.skirt.max_pressure = s.skirt.step_peak_pressure = 7e6;
+    }
+    auto& at = result.samples;
+    at[554].skirt.max_pressure = at[554].skirt.step_peak_pressure = 0.0;
+    at[555].skirt.max_pressure = 147.2e6;  // caught: 13 times the samples beside it
+    at[555].skirt.step_peak_pressure = 180e6;
+    at[556].skirt.max_pressure = 11.2e6;
+    at[556].skirt.step_peak_pressure = 151e6;
+    at[88].skirt.step_peak_pressure = 368e6;  // the steps in (87, 88] °CA: 2.5 times
+    const auto warning = [&]() -> io::RunWarning {
+      for (const io::RunWarning& w : io::RunWarnings(config, result))
+        if (w.code == "unresolved_peak" && w.joint == "skirt") return w;
+      return {};
+    };
+    io::RunWarning w = warning();
+    QCOMPARE(w.code, std::string("unresolved_peak"));
+    QCOMPARE(*w.crank_angle_deg, 88.0);
+    QCOMPARE(w.value, 147.2 / 11.2);  // the larger ratio
+    QString text = QString::fromStdString(w.message);
+    QVERIFY2(text.contains("miss a spike of the skirt film pressure: the integrator's steps "
+                           "between the samples reached 368 MPa in the output interval before "
+                           "88 °CA, 2.5 times the largest sample (147.2 MPa at 555 °CA, itself "
+                           "another spike: the samples beside it show 0 and 11.2 MPa)"),
+             w.message.c_str());
+    // The steps' larger peak right after the caught sample: one spike.
+    at[88].skirt.step_peak_pressure = 7e6;
+    at[556].skirt.step_peak_pressure = 368e6;
+    w = warning();
+    QCOMPARE(*w.crank_angle_deg, 556.0);
+    text = QString::fromStdString(w.message);
+    QVERIFY2(text.contains("(147.2 MPa at 555 °CA, the same spike's edge: the samples beside it "
+                           "show 0 and 11.2 MPa)"),
+             w.message.c_str());
+    // Steps' peaks within 1.5 times the largest sample: the caught spike, the steps' elsewhere.
+    at[556].skirt.step_peak_pressure = 151e6;
+    at[88].skirt.step_peak_pressure = 200e6;
+    w = warning();
+    QCOMPARE(*w.crank_angle_deg, 555.0);
+    text = QString::fromStdString(w.message);
+    QVERIFY2(text.contains("147.2 MPa at 555 °CA is a spike the output samples do not resolve "
+                           "(the samples beside it show 0 and 11.2 MPa; elsewhere, the "
+                           "integrator's steps between the samples reached 200 MPa in the output "
+                           "interval before 88 °CA)"),
+             w.message.c_str());
+  }
+
   void thickFilmsGiveNoFilmWarnings() {
     engine::EngineCase c = CoarseCase();
     c.lubricant.viscosity = 0.08;  // 4 x the default: films far thicker than the roughness
