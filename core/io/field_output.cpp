@@ -5,7 +5,6 @@
 #include <numbers>
 
 #include "core/engine/crank_train.hpp"
-#include "core/engine/run_memory.hpp"
 #include "core/io/field_series.hpp"
 #include "core/lubrication/bearing_solver.hpp"
 #include "core/lubrication/skirt_solver.hpp"
@@ -59,11 +58,11 @@ std::size_t FieldRecorder::bearing_frames() const { return frames_->newest.beari
 
 void FieldRecorder::KeepPreviousCycle(bool keep) { frames_->keep_previous = keep; }
 
-bool FieldRecorder::Attach(engine::RunConfig* config) {
+bool FieldRecorder::Attach(engine::RunConfig* config, double available) {
   config->field_callback = Callback();
   config->field_copies = 2.0;
-  const bool keep = engine::EstimateRunMemory(config->engine_case, config->field_copies).total() <=
-                    engine::AvailableMemoryBytes();
+  const bool keep =
+      engine::EstimateRunMemory(config->engine_case, config->field_copies).total() <= available;
   if (!keep) config->field_copies = 1.0;
   KeepPreviousCycle(keep);
   return keep;

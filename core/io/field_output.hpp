@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "core/engine/run_job.hpp"
+#include "core/engine/run_memory.hpp"
 #include "core/io/surface_field.hpp"
 
 namespace filmdyn::io {
@@ -34,9 +35,10 @@ class FieldRecorder {
   engine::FieldCallback Callback();
   /// Records the run of `config`: sets its field callback and field_copies. Keeps the cycle
   /// before the newest too — the one a run stopped in its second or later cycle reports — when
-  /// the run's memory estimate (engine::EstimateRunMemory) with two cycles of fields fits in what
-  /// this machine has; otherwise the newest only. Returns whether the previous cycle is kept.
-  bool Attach(engine::RunConfig* config);
+  /// the run's memory estimate (engine::EstimateRunMemory) with two cycles of fields fits in
+  /// `available` bytes (what this machine has); otherwise the newest only. Returns whether the
+  /// previous cycle is kept.
+  bool Attach(engine::RunConfig* config, double available = engine::AvailableMemoryBytes());
   /// Whether a new cycle's start keeps the cycle before it (Attach decides it; off by default).
   void KeepPreviousCycle(bool keep);
   /// Number of frames of the newest cycle recorded so far, per joint.

@@ -15,6 +15,7 @@
 #include "core/engine/error_estimate.hpp"
 #include "core/engine/film_joints.hpp"
 #include "core/engine/run_job.hpp"
+#include "core/engine/run_memory.hpp"
 #include "core/io/case_file.hpp"
 #include "core/io/field_output.hpp"
 #include "core/io/field_series.hpp"
@@ -273,8 +274,15 @@ class TestRunJob : public QObject {
     // Two recorders of the same run: one as runs attach it (keeping the previous cycle, which
     // this small mesh's memory allows), one keeping the newest cycle only.
     io::FieldRecorder recorder, newest_only;
-    QVERIFY(recorder.Attach(&config));
+    // Where two cycles of fields do not fit but one does, the newest only.
+    const double one = engine::EstimateRunMemory(config.engine_case, 1.0).total(),
+                 two = engine::EstimateRunMemory(config.engine_case, 2.0).total();
+    QVERIFY(two > one);
+    QVERIFY(!recorder.Attach(&config, 0.5 * (one + two)));
+    QCOMPARE(config.field_copies, 1.0);
+    QVERIFY(recorder.Attach(&config, two));
     QCOMPARE(config.field_copies, 2.0);
+    QVERIFY(recorder.Attach(&config));  // this machine holds two cycles of this small mesh
     config.field_callback = [both = config.field_callback,
                              newest = newest_only.Callback()](const engine::FieldFrame& f) {
       both(f);
