@@ -33,17 +33,30 @@ struct OilAccount {
   double lost = 0.0;         ///< oil out through the edges (big end) / outflow nodes (skirt) [m^3]
   double squeezed = 0.0;     ///< time integral of the full film's storage rate [m^3]
   double void_volume = 0.0;  ///< void (gas) volume of the film at `time` [m^3]
+  /// The last step booked: its start and its supply and loss rates [m^3/s], at which its oil
+  /// passed all the step long (backward Euler).
+  double step_start = 0.0, supply_rate = 0.0, loss_rate = 0.0;
   /// Books an accepted step ending at t, the film content's backward-Euler step of length dt
   /// from the last accepted one: the flows [m^3/s] of the film solved at t, its void volume.
-  void Book(double t, double dt, double supply_rate, double loss_rate, double squeeze_rate,
+  void Book(double t, double dt, double supply_rate_now, double loss_rate_now, double squeeze_rate,
             double void_now, double excess) {
     kept = true;
     fraction_excess = std::max(fraction_excess, excess);
     time = t;
+    step_start = t - dt;
+    supply_rate = supply_rate_now;
+    loss_rate = loss_rate_now;
     supplied += dt * supply_rate;
     lost += dt * loss_rate;
     squeezed += dt * squeeze_rate;
     void_volume = void_now;
+  }
+  /// The oil supplied and lost up to t within the last step booked [m^3] (at its rates).
+  double SuppliedAt(double t) const {
+    return supplied - (time - std::clamp(t, step_start, time)) * supply_rate;
+  }
+  double LostAt(double t) const {
+    return lost - (time - std::clamp(t, step_start, time)) * loss_rate;
   }
   /// The balance between this account and an earlier one, relative to the oil supplied between
   /// them (0 when none was).
@@ -79,6 +92,36 @@ class StepPeaks {
 
  private:
   std::vector<std::pair<double, double>> entries_;  // (time [s], peak film pressure [Pa])
+};
+
+/// The mean flows of a mass-conserving film over each output interval, from its oil account:
+/// the oil supplied and lost between two output times over the time between them (the account
+/// taken at each output time within the step that holds it). Over a cycle of equal output
+/// intervals they add up exactly to the account's oil, spikes between the samples included,
+/// which the flows at the sampled instants do not.
+class IntervalFlows {
+ public:
+  /// At the output time t (within the account's last step): sets `*in` and `*out` [m^3/s] to the
+  /// mean rates since the previous call and returns true; false, leaving them, when the account
+  /// is not kept or at the first call (no interval yet).
+  bool Take(double t, const OilAccount& now, double* in, double* out) {
+    if (!now.kept) return false;
+    const double supplied = now.SuppliedAt(t), lost = now.LostAt(t);
+    const bool interval = have_ && t > last_time_;  // else the first, or a restarted run
+    if (interval) {
+      *in = (supplied - last_supplied_) / (t - last_time_);
+      *out = (lost - last_lost_) / (t - last_time_);
+    }
+    have_ = true;
+    last_time_ = t;
+    last_supplied_ = supplied;
+    last_lost_ = lost;
+    return interval;
+  }
+
+ private:
+  bool have_ = false;
+  double last_time_ = 0.0, last_supplied_ = 0.0, last_lost_ = 0.0;
 };
 
 /// Film quantities of the lubricated skirt at one instant (present = false with an ideal liner).
@@ -117,7 +160,9 @@ struct SkirtFilmSample {
   /// The state the film was solved at (the integrated state; the skirt solver's conventions):
   /// e0 [m], γ = sin of the piston's rotation, their rates, u_p (+ toward the crank) [m/s].
   double e0 = 0.0, tilt = 0.0, e0_rate = 0.0, tilt_rate = 0.0, speed = 0.0;
-  /// Oil entering / leaving the film through its boundary (skirt edges, relief edges) [m^3/s].
+  /// Oil entering / leaving the film through its boundary (skirt edges, relief edges) [m^3/s]:
+  /// at this instant, or, for a mass-conserving film at an output sample, the means over the
+  /// output interval ending here (IntervalFlows).
   double inflow = 0.0, outflow = 0.0;
   double wetted_fraction = 1.0;  ///< oil-covered share of the panels (SkirtResult) [-]
   /// How far the reported film's fraction leaves [0, 1] (ReynoldsStats::fraction_excess); the
@@ -160,7 +205,8 @@ struct BearingFilmSample {
   double friction_torque_bearing = 0.0;                          ///< on the rod [N·m]
   double power = 0.0;  ///< power of the film on crank + rod, F·ė + T_j ω_j + T_b ω_b [W] (≤ 0)
   /// Oil into the film through the feed (or the film-start line) and out through both edges
-  /// (BearingResult::feed_flow, side_flow) [m^3/s].
+  /// (BearingResult::feed_flow, side_flow) [m^3/s]: at this instant, or, for a mass-conserving
+  /// film at an output sample, the means over the output interval ending here (IntervalFlows).
   double supply_flow = 0.0, side_flow = 0.0;
   double fraction_excess = 0.0;  ///< as SkirtFilmSample::fraction_excess
   int capped_nodes = 0;          ///< as SkirtFilmSample::capped_nodes
@@ -186,10 +232,11 @@ class FilmReporter {
  public:
   virtual ~FilmReporter() = default;
   virtual void ReportFilm(SkirtFilmSample* skirt, BearingFilmSample* bearing) const = 0;
-  /// Called once per output sample at time t, after ReportFilm: fills the joint's
-  /// step_peak_pressure from the steps booked up to t (StepPeaks::Take). Default: nothing booked.
-  virtual void TakeStepPeaks(double /*t*/, SkirtFilmSample* /*skirt*/,
-                             BearingFilmSample* /*bearing*/) {}
+  /// Called once per output sample at time t, after ReportFilm: fills what the joint's accepted
+  /// steps since the previous sample give — step_peak_pressure (StepPeaks::Take) and, for a
+  /// mass-conserving film, its flows' means over the interval (IntervalFlows). Default: nothing.
+  virtual void TakeSteps(double /*t*/, SkirtFilmSample* /*skirt*/, BearingFilmSample* /*bearing*/) {
+  }
 };
 
 }  // namespace filmdyn::coupling

@@ -214,9 +214,9 @@ void LubricatedBigEndElement::OnStepAccepted(double t, const multibody::SystemSt
   solver_at_cache_ = false;
 }
 
-void LubricatedBigEndElement::TakeStepPeaks(double t, SkirtFilmSample*,
-                                            BearingFilmSample* bearing) {
+void LubricatedBigEndElement::TakeSteps(double t, SkirtFilmSample*, BearingFilmSample* bearing) {
   bearing->step_peak_pressure = step_peaks_.Take(t);
+  interval_flows_.Take(t, oil_, &bearing->supply_flow, &bearing->side_flow);
 }
 
 void LubricatedBigEndElement::RefreshFields() {

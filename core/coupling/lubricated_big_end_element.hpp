@@ -62,7 +62,7 @@ class LubricatedBigEndElement final : public multibody::JointForceElement,
   }
   void OnStepAccepted(double t, const multibody::SystemState& state) override;
   void ReportFilm(SkirtFilmSample* skirt, BearingFilmSample* bearing) const override;
-  void TakeStepPeaks(double t, SkirtFilmSample* skirt, BearingFilmSample* bearing) override;
+  void TakeSteps(double t, SkirtFilmSample* skirt, BearingFilmSample* bearing) override;
 
   BigEndKinematics Kinematics(const multibody::BodyState& crank,
                               const multibody::BodyState& rod) const;
@@ -112,6 +112,7 @@ class LubricatedBigEndElement final : public multibody::JointForceElement,
   double rod_angle_ = 0.0;
   long solves_ = 0, factorizations_ = 0;
   OilAccount oil_;  ///< kept at accepted steps when the film conserves oil (JFO)
+  IntervalFlows interval_flows_;  ///< the flows of output samples (JFO)
   StepPeaks step_peaks_;  ///< peak film pressure of the accepted steps (JFO)
   PressureLawRamp ramp_;
   double compliance_end_time_ = 0.0;  // elastic surfaces: phased in until then (0: at once)

@@ -172,8 +172,9 @@ void LubricatedSkirtElement::OnStepAccepted(double t, const multibody::SystemSta
   solver_at_cache_ = false;
 }
 
-void LubricatedSkirtElement::TakeStepPeaks(double t, SkirtFilmSample* skirt, BearingFilmSample*) {
+void LubricatedSkirtElement::TakeSteps(double t, SkirtFilmSample* skirt, BearingFilmSample*) {
   skirt->step_peak_pressure = step_peaks_.Take(t);
+  interval_flows_.Take(t, oil_, &skirt->inflow, &skirt->outflow);
 }
 
 void LubricatedSkirtElement::RefreshFields() {

@@ -72,7 +72,7 @@ class LubricatedSkirtElement final : public multibody::JointForceElement,
   }
   void OnStepAccepted(double t, const multibody::SystemState& state) override;
   void ReportFilm(SkirtFilmSample* skirt, BearingFilmSample* bearing) const override;
-  void TakeStepPeaks(double t, SkirtFilmSample* skirt, BearingFilmSample* bearing) override;
+  void TakeSteps(double t, SkirtFilmSample* skirt, BearingFilmSample* bearing) override;
 
   /// e0, γ, rates and u_p of a piston state, with J.
   SkirtKinematics Kinematics(const multibody::BodyState& piston) const;
@@ -107,6 +107,7 @@ class LubricatedSkirtElement final : public multibody::JointForceElement,
   bool cache_valid_ = false, cache_has_jacobian_ = false, solver_at_cache_ = false;
   lubrication::SkirtResult result_;
   OilAccount oil_;  ///< kept at accepted steps when the film conserves oil (JFO)
+  IntervalFlows interval_flows_;  ///< the flows of output samples (JFO)
   StepPeaks step_peaks_;  ///< peak film pressure of the accepted steps (JFO)
   PressureLawRamp ramp_;
   double compliance_end_time_ = 0.0;  // elastic surfaces: phased in until then (0: at once)

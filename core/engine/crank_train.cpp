@@ -198,7 +198,7 @@ CrankTrainSample SampleCrankTrain(CrankTrain& train, const EngineCase& c, double
   for (multibody::JointForceElement* element : {train.skirt_element, train.big_end_element}) {
     if (auto* reporter = dynamic_cast<coupling::FilmReporter*>(element)) {
       reporter->ReportFilm(&s.skirt, &s.bearing);
-      reporter->TakeStepPeaks(t, &s.skirt, &s.bearing);
+      reporter->TakeSteps(t, &s.skirt, &s.bearing);
     }
   }
   if (s.bearing.present) s.big_end_force_on_rod = s.bearing.force_on_rod;
