@@ -85,11 +85,12 @@ bool FieldRecorder::WriteReported(const std::filesystem::path& folder,
 
 namespace {
 
-// The three nodal fields every joint writes; the fluid fraction only when JFO computed one, the
+// The three nodal fields every joint writes; the fluid fraction only of a mass-conserving film
+// (a Reynolds film's solution holds ones, which would show a full film where it cavitates), the
 // surfaces' deformation only when they are elastic (`deformation` not null).
 void AddFilmArrays(const lubrication::ReynoldsSolution& solution, const Eigen::VectorXd& h,
-                   const std::vector<int>& source, SurfaceField* field,
-                   const Eigen::VectorXd* deformation = nullptr) {
+                   const std::vector<int>& source, lubrication::CavitationModel cavitation,
+                   SurfaceField* field, const Eigen::VectorXd* deformation = nullptr) {
   auto gather = [&source](const Eigen::VectorXd& values) {
     std::vector<double> out(source.size());
     for (std::size_t k = 0; k < source.size(); ++k) out[k] = values[source[k]];
@@ -98,7 +99,8 @@ void AddFilmArrays(const lubrication::ReynoldsSolution& solution, const Eigen::V
   field->point_data.emplace_back("pressure[Pa]", gather(solution.pressure));
   field->point_data.emplace_back("contact_pressure[Pa]", gather(solution.contact_pressure));
   field->point_data.emplace_back("film_thickness[m]", gather(h));
-  if (solution.fluid_fraction.size() == h.size()) {
+  if (cavitation == lubrication::CavitationModel::kJfo &&
+      solution.fluid_fraction.size() == h.size()) {
     field->point_data.emplace_back("fluid_fraction[-]", gather(solution.fluid_fraction));
   }
   if (deformation != nullptr && deformation->size() == h.size())
@@ -118,8 +120,8 @@ SurfaceField FieldRecorder::SkirtSurface(const lubrication::SkirtSolver& skirt) 
     source.push_back(k);
   }
   field.triangles = mesh.triangles;
-  AddFilmArrays(skirt.fields(), skirt.film_thickness(), source, &field,
-                skirt.config().compliance.rigid() ? nullptr : &skirt.deformation());
+  AddFilmArrays(skirt.fields(), skirt.film_thickness(), source, skirt.config().solver.cavitation,
+                &field, skirt.config().compliance.rigid() ? nullptr : &skirt.deformation());
   return field;
 }
 
@@ -170,7 +172,8 @@ SurfaceField FieldRecorder::BearingSurface(const lubrication::BearingSolver& bea
   field.points = BearingPoints(NodeAngles(bearing), surface.mesh.y,
                                bearing.config().geometry.radius, eccentricity_angle_rod);
   field.triangles = surface.mesh.triangles;
-  AddFilmArrays(bearing.fields(), bearing.film_thickness(), surface.source, &field,
+  AddFilmArrays(bearing.fields(), bearing.film_thickness(), surface.source,
+                bearing.config().solver.cavitation, &field,
                 bearing.config().compliance.rigid() ? nullptr : &bearing.deformation());
   return field;
 }
