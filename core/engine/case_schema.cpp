@@ -1126,7 +1126,9 @@ std::vector<CaseField> MakeSchema() {
   f.push_back(List("big_end.supply_pressure_angles", be, &B::supply_pressure_angles,
                    {G::kBigEnd, "Supply pressure curve: crank angle", "rad", "°", kDeg,
                     Open(0.0, 4.0 * kPi, false, true),
-                    "crank angles of the supply-pressure curve (empty: constant pressure)"}));
+                    "crank angles of the supply-pressure curve (empty: constant pressure): at "
+                    "least 8, increasing, covering the cycle with gaps of at most 10 °CA "
+                    "(counting the one from the last round to the first)"}));
   f.push_back(List("big_end.supply_pressure_values", be, &B::supply_pressure_values,
                    {G::kBigEnd, "Supply pressure curve: gauge pressure", "Pa", "MPa", kMPa,
                     GaugePressure(), "the supply pressure at each angle"}));
@@ -1367,9 +1369,17 @@ void CheckBigEndSupply(const BigEndCase& b) {
                        "needs as many values as big_end.supply_pressure_angles (" +
                            std::to_string(b.supply_pressure_angles.size()) + ")");
     }
-    // The cylinder-pressure curves' rules: increasing angles, no gap above 10 °CA, finite.
-    PressureCurve(b.supply_pressure_angles, b.supply_pressure_values,
-                  "big_end.supply_pressure_values");
+    // The cylinder-pressure curves' rules (increasing angles, no gap above 10 °CA, finite),
+    // named as the two lists are given.
+    CurveFields fields;
+    fields.curve = "big_end.supply_pressure_angles";
+    fields.point = [](std::size_t k, bool angle) {
+      return std::string(angle ? "big_end.supply_pressure_angles."
+                               : "big_end.supply_pressure_values.") +
+             std::to_string(k);
+    };
+    fields.angles_in_radians = true;
+    PressureCurve(b.supply_pressure_angles, b.supply_pressure_values, fields);
   }
   lubrication::OilFeed feed;
   feed.kind = b.supply;

@@ -13,8 +13,23 @@ constexpr double kCycle = 4.0 * std::numbers::pi;
 constexpr double kDeg = std::numbers::pi / 180.0;
 }  // namespace
 
+CurveFields CurveFields::Points(const std::string& field) {
+  CurveFields f;
+  f.curve = field;
+  f.point = [field](std::size_t k, bool angle) {
+    return field + "[" + std::to_string(k) + "]" + (angle ? ".crank_angle" : ".pressure");
+  };
+  return f;
+}
+
 PressureCurve::PressureCurve(std::vector<double> angles, std::vector<double> pressures,
-                             const std::string& field) {
+                             const CurveFields& fields) {
+  const std::string& field = fields.curve;
+  // An angle as the user gave it.
+  const auto angle_text = [&fields](double a) {
+    return fields.angles_in_radians ? FormatValue(a) + " rad (" + FormatValue(a / kDeg) + " °CA)"
+                                    : FormatValue(a / kDeg) + " °CA";
+  };
   if (angles.size() != pressures.size()) {
     throw InputError(field,
                      std::to_string(angles.size()) + " angles, " +
@@ -23,17 +38,17 @@ PressureCurve::PressureCurve(std::vector<double> angles, std::vector<double> pre
   }
   if (angles.size() < 8) {
     throw InputError(field, std::to_string(angles.size()) + " points",
-                     "needs at least 8 points covering 0–720 °CA");
+                     "needs at least 8 points covering 0–720 °CA, at most 10 °CA apart");
   }
   for (std::size_t k = 0; k < angles.size(); ++k) {
-    const std::string at = field + "[" + std::to_string(k) + "]";
-    RequireInRange(at + ".crank_angle", angles[k], 0.0, kCycle + 1e-9, false, false, "rad");
+    RequireInRange(fields.point(k, true), angles[k], 0.0, kCycle + 1e-9, false, false, "rad");
     // Up to 1 GPa (10 kbar): ~40x the peak of a highly loaded diesel, and far from the
     // double range the gas force is computed in.
-    RequireInRange(at + ".pressure", pressures[k], 0.0, 1e9, false, false, "Pa");
+    RequireInRange(fields.point(k, false), pressures[k], 0.0, 1e9, false, false, "Pa");
     if (k > 0 && angles[k] <= angles[k - 1]) {
-      throw InputError(at + ".crank_angle", FormatValue(angles[k] / kDeg) + " deg",
-                       "crank angles must increase strictly");
+      throw InputError(fields.point(k, true), angle_text(angles[k]),
+                       "crank angles must increase strictly (the one before: " +
+                           angle_text(angles[k - 1]) + ")");
     }
   }
   const double peak = *std::max_element(pressures.begin(), pressures.end());
@@ -48,12 +63,21 @@ PressureCurve::PressureCurve(std::vector<double> angles, std::vector<double> pre
     angles.pop_back();
     pressures.pop_back();
   }
-  double largest_gap = angles.front() + kCycle - angles.back();
+  // The largest gap (angles given to a few decimals in rad may round just above 10 °CA).
+  constexpr double kLargestGap = 10.0 * kDeg + 1e-6;
   for (std::size_t k = 1; k < angles.size(); ++k) {
-    largest_gap = std::max(largest_gap, angles[k] - angles[k - 1]);
+    if (angles[k] - angles[k - 1] > kLargestGap) {
+      throw InputError(fields.point(k, true), angle_text(angles[k]),
+                       FormatValue((angles[k] - angles[k - 1]) / kDeg) +
+                           " °CA after the point before it: the curve must cover 0–720 °CA "
+                           "with gaps of at most 10 °CA");
+    }
   }
-  if (largest_gap > 10.0 * kDeg + 1e-9) {
-    throw InputError(field, "gap of " + FormatValue(largest_gap / kDeg) + " deg",
+  if (const double wrap = angles.front() + kCycle - angles.back(); wrap > kLargestGap) {
+    throw InputError(field,
+                     "from " + angle_text(angles.back()) + " round to " +
+                         angle_text(angles.front()) + ": a gap of " + FormatValue(wrap / kDeg) +
+                         " °CA",
                      "the curve must cover 0–720 °CA with gaps of at most 10 °CA");
   }
   angles_ = std::move(angles);

@@ -544,13 +544,44 @@ class TestCoupledCavitation : public QObject {
     c.big_end.supply_hole_angles = {0.0};
     QVERIFY(ErrorOf([&] { engine::CheckCaseConsistency(c); }).isEmpty());
     c.big_end.supply = lubrication::OilFeedKind::kShellHoles;
+    // The supply-pressure curve: errors name the list and the element the user gave, angles in
+    // rad as given. A 10 °CA grid written to 8 decimals in rad is accepted (its gaps round to
+    // 10.0000003 °CA).
+    const auto curve_error = [&] { return ErrorOf([&] { engine::CheckCaseConsistency(c); }); };
+    c.big_end.supply_pressure_angles.clear();
+    for (int k = 0; k < 72; ++k)
+      c.big_end.supply_pressure_angles.push_back(
+          std::round(k * 10.0 * (std::numbers::pi / 180.0) * 1e8) / 1e8);
+    c.big_end.supply_pressure_values.assign(72, 3e5);
+    QVERIFY2(curve_error().isEmpty(), qPrintable(curve_error()));
+    std::swap(c.big_end.supply_pressure_angles[5], c.big_end.supply_pressure_angles[6]);
+    QVERIFY2(curve_error().startsWith("big_end.supply_pressure_angles.6 = 0.87266463 rad "
+                                      "(50.00000023 °CA): crank angles must increase strictly"),
+             qPrintable(curve_error()));
+    std::swap(c.big_end.supply_pressure_angles[5], c.big_end.supply_pressure_angles[6]);
+    c.big_end.supply_pressure_values[5] = std::nan("");
+    QVERIFY2(curve_error().startsWith("big_end.supply_pressure_values.5"),
+             qPrintable(curve_error()));
+    c.big_end.supply_pressure_values[5] = 3e5;
+    auto angles = c.big_end.supply_pressure_angles;
+    auto values = c.big_end.supply_pressure_values;
+    c.big_end.supply_pressure_angles.erase(c.big_end.supply_pressure_angles.begin() + 10,
+                                           c.big_end.supply_pressure_angles.begin() + 20);
+    c.big_end.supply_pressure_values.resize(62);
+    QVERIFY2(curve_error().startsWith("big_end.supply_pressure_angles.10 = 3.4906585 rad") &&
+                 curve_error().contains("(199.9999998 °CA): 109.9999996 °CA") &&
+                 curve_error().contains("°CA after the point before it: the curve must cover "
+                                        "0–720 °CA with gaps of at most 10 °CA"),
+             qPrintable(curve_error()));
+    c.big_end.supply_pressure_angles.assign(angles.begin(), angles.end() - 5);  // to 660 °CA
+    c.big_end.supply_pressure_values.assign(values.begin(), values.end() - 5);
+    QVERIFY2(curve_error().startsWith("big_end.supply_pressure_angles = from 11.51917306 rad") &&
+                 curve_error().contains("round to 0 rad (0 °CA): a gap of 60"),
+             qPrintable(curve_error()));
     c.big_end.supply_pressure_angles = {0.0, 1.0};
-    c.big_end.supply_pressure_values = {1e5, std::nan("")};
-    QVERIFY(!ErrorOf([&] { engine::CheckCaseConsistency(c); }).isEmpty());
-    c.big_end.supply_pressure_values = {1e5, 2e5};  // a gap of 663 °CA
-    QVERIFY(ErrorOf([&] {
-              engine::CheckCaseConsistency(c);
-            }).contains("big_end.supply_pressure_values"));
+    c.big_end.supply_pressure_values = {1e5, 2e5};
+    QVERIFY2(curve_error().contains("big_end.supply_pressure_angles = 2 points: needs at least 8"),
+             qPrintable(curve_error()));
     c.big_end.supply_pressure_angles.clear();
     c.big_end.supply_pressure_values.clear();
     c.big_end.supply = lubrication::OilFeedKind::kLineOfCentres;
