@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <string>
 
 #include "core/engine/error_estimate.hpp"
@@ -88,31 +89,60 @@ PistonSlap SlapOf(const std::vector<engine::CrankTrainSample>& samples,
     image.time += period;
     track.push_back(image);
   }
-  // Consecutive output steps, and the last with the first one cycle later when the samples are
-  // a whole cycle: that event comes last in time, and its crank angle, within the cycle, reads
-  // small when it falls past the cycle's end.
-  const std::size_t pairs = whole_cycle ? n : n - 1;
-  for (std::size_t k = 0; k < pairs; ++k) {
-    const engine::CrankTrainSample &a = samples[k], &b = samples[(k + 1) % n];
-    const bool wrap = k + 1 == n;
-    const double fa = a.skirt.normal_force, fb = b.skirt.normal_force;
-    if (!a.skirt.present || !b.skirt.present || !std::isfinite(fa) || !std::isfinite(fb)) continue;
-    // Negative = pressed onto the major-thrust wall (results.csv's skirt_normal_force).
-    if ((fa < 0.0) == (fb < 0.0)) continue;
-    const double s = fa / (fa - fb);  // where the linear interpolant of the force is zero
-    const double tb = b.time + (wrap ? period : 0.0);
-    const double phib = b.crank_angle + (wrap ? 4.0 * std::numbers::pi : 0.0);
-    const PistonVelocity v = At(track, a.time + s * (tb - a.time));
-    SlapEvent e;
-    e.crank_angle_deg = CycleCrankAngleDeg(a.crank_angle + s * (phib - a.crank_angle));
-    e.energy = 0.5 * mass * v.lateral * v.lateral + 0.5 * inertia * v.angular * v.angular;
-    e.to_thrust = fb < 0.0;
-    slap.energy_sum += e.energy;
-    if (!slap.energy_max || e.energy > *slap.energy_max) {
-      slap.energy_max = e.energy;
-      slap.energy_max_crank_angle_deg = e.crank_angle_deg;
+  // The side of each output step: -1 pressed onto the major-thrust wall (results.csv's
+  // skirt_normal_force < 0), +1 onto the other, 0 with no side force at all (a starved skirt
+  // off its oil), kUnknown without a finite film force. The piston changes side between two
+  // steps with a side, the later one on the other; the last step and the first one cycle later
+  // are neighbours when the samples are a whole cycle (that event comes last in time, and its
+  // crank angle, within the cycle, reads small when it falls past the cycle's end). The instant
+  // is where the straight line between the two forces crosses zero — between the last step
+  // without a side force and the first on the new side where such steps lie between them (the
+  // force of the new side begins there).
+  constexpr int kUnknown = 2;
+  const auto side = [&samples](std::size_t k) {
+    const engine::CrankTrainSample& s = samples[k];
+    if (!s.skirt.present || !std::isfinite(s.skirt.normal_force)) return kUnknown;
+    return (s.skirt.normal_force > 0.0) - (s.skirt.normal_force < 0.0);
+  };
+  // Positions p run over the steps, and on into the next cycle for a whole one.
+  const auto time_at = [&](std::size_t p) { return samples[p % n].time + (p >= n ? period : 0.0); };
+  const auto angle_at = [&](std::size_t p) {
+    return samples[p % n].crank_angle + (p >= n ? 4.0 * std::numbers::pi : 0.0);
+  };
+  const auto force_at = [&](std::size_t p) { return samples[p % n].skirt.normal_force; };
+  // A whole cycle is scanned from its first step with a side round to that step one cycle on
+  // (a change of side across steps without one at the cycle's start is then seen once).
+  std::size_t first = 0;
+  if (whole_cycle) {
+    while (first + 1 < n && (side(first) == 0 || side(first) == kUnknown)) ++first;
+  }
+  const std::size_t last_end = whole_cycle ? first + n : n - 1;
+  std::optional<std::size_t> sided;  // the last step with a side before p
+  for (std::size_t p = first; p <= last_end; ++p) {
+    const int now = side(p % n);
+    if (now == kUnknown) {
+      sided.reset();  // no change of side is judged across a step without a film force
+      continue;
     }
-    slap.events.push_back(e);
+    if (now == 0) continue;
+    if (sided && side(*sided % n) != now) {
+      const std::size_t a = p - 1;  // the step before: the last with a side, or one without
+      const double fa = a == *sided ? force_at(a) : 0.0, fb = force_at(p);
+      const double s = fa / (fa - fb);
+      const double t = time_at(a) + s * (time_at(p) - time_at(a));
+      const PistonVelocity v = At(track, t);
+      SlapEvent e;
+      e.crank_angle_deg = CycleCrankAngleDeg(angle_at(a) + s * (angle_at(p) - angle_at(a)));
+      e.energy = 0.5 * mass * v.lateral * v.lateral + 0.5 * inertia * v.angular * v.angular;
+      e.to_thrust = fb < 0.0;
+      slap.energy_sum += e.energy;
+      if (!slap.energy_max || e.energy > *slap.energy_max) {
+        slap.energy_max = e.energy;
+        slap.energy_max_crank_angle_deg = e.crank_angle_deg;
+      }
+      slap.events.push_back(e);
+    }
+    sided = p;
   }
   return slap;
 }

@@ -225,6 +225,42 @@ class TestRunKpis : public QObject {
     }
   }
 
+  // A side force of exactly 0 (a starved skirt off its oil) is no side: the piston changes side
+  // only where the force reappears on the other side, at the last step without one; a return to
+  // the same side is no slap. A whole cycle whose first steps have no side force still sees the
+  // change across them once, after its last step.
+  void stepsWithoutSideForceAreNoSide() {
+    const auto events = [](const std::vector<double>& forces, bool whole) {
+      std::vector<engine::CrankTrainSample> samples(forces.size());
+      for (std::size_t k = 0; k < forces.size(); ++k) {
+        engine::CrankTrainSample& s = samples[k];
+        s.time = 1e-3 * double(k);
+        s.crank_angle = 4.0 * kPi * double(k) / double(forces.size());  // 90 °CA apart for 8
+        s.skirt.present = true;
+        s.skirt.normal_force = forces[k];
+        s.piston_com_lateral_velocity = 0.1;  // [m/s]
+      }
+      return io::ComputeRunKpis(samples, {}, 1.0, 0.0, whole).skirt->slap->events;
+    };
+    // −4 N, then no force, then −97 N: the same side, no slap (it counted two before).
+    QCOMPARE(events({-4, 0, -97, -50, -20, -10, -5, -4}, true).size(), std::size_t(0));
+    // Off its oil from 90 to 180 °CA, then onto the anti-thrust wall at 270 °CA: one change, at
+    // 180 °CA (the last step without a force); back onto the thrust wall between 450 and 540.
+    std::vector<io::SlapEvent> e = events({-4, 0, 0, 50, 40, 30, -30, -4}, true);
+    QCOMPARE(e.size(), std::size_t(2));
+    QVERIFY(Near(e[0].crank_angle_deg, 180.0, 0.0, 1e-9) && !e[0].to_thrust);
+    QVERIFY(Near(e[1].crank_angle_deg, 495.0, 0.0, 1e-9) && e[1].to_thrust);
+    QVERIFY(Near(e[0].energy, 0.5 * 0.1 * 0.1, 1e-12));
+    // The same cycle started at the steps without a force: the change across them is seen once,
+    // after the cycle's last step (crank angle past 720, read within the cycle).
+    e = events({0, 0, 50, 40, 30, -30, -4, -4}, true);
+    QCOMPARE(e.size(), std::size_t(2));
+    QVERIFY(Near(e[0].crank_angle_deg, 405.0, 0.0, 1e-9) && e[0].to_thrust);
+    QVERIFY(Near(e[1].crank_angle_deg, 90.0, 0.0, 1e-9) && !e[1].to_thrust);
+    // Not a whole cycle: no look round it.
+    QCOMPARE(events({0, 0, 50, 40, 30, -30, -4, -4}, false).size(), std::size_t(1));
+  }
+
   void partialCycleHasNoWrapEvent() {
     const Synthetic cycle;
     const io::RunKpis kpis = io::ComputeRunKpis(cycle.samples, cycle.motion, Synthetic::kMass,
