@@ -397,7 +397,8 @@ void SupplyHoleMeshWarning(const engine::EngineCase& c, std::vector<RunWarning>*
       "spans {:.1f} elements around (big_end.mesh_z = {}, big_end.mesh_theta = {}); with fewer "
       "than {} rows or {:g} elements the film around the hole is resolved too coarsely: the oil "
       "a mass-conserving film took through a crank-pin hole at 2000 rpm was 7 % below the "
-      "finest meshes' with one row across, 3.6 % below 100 around with 2 elements (the estimate "
+      "finest meshes' with one row across, with 2 elements around the hole (50 around the "
+      "bearing) 3.6 % below 100 around (the estimate "
       "sees the former: docs/validation/errors.md, section 6); {}",
       be.supply_hole_diameter * 1e3, rows, rows == 1 ? "" : "s", spans, be.mesh_z, be.mesh_theta,
       kHoleRowsAcross, kHoleElementsAround,
