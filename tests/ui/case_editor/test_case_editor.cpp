@@ -373,7 +373,7 @@ class TestCaseEditor : public QObject {
     window.document()->undoStack()->undo();  // the curve's set-up
     QCOMPARE(model->rowCount(), 0);
 
-    // Two points 700 °CA apart, made with the table's buttons: core's message names the field,
+    // Two points 700 °CA apart, made with the table's buttons: core's message names the curve,
     // beside the table, in the cells' tooltips and as the run blocker.
     QPushButton* insert = ListButton(window, "big_end.supply_pressure_values", "insert");
     QPushButton* remove = ListButton(window, "big_end.supply_pressure_values", "remove");
@@ -388,13 +388,14 @@ class TestCaseEditor : public QObject {
     QCOMPARE(b.supply_pressure_angles.size(), size_t(2));
     QVERIFY(Near(b.supply_pressure_angles[1], 700 * kDeg, 1e-15));
     QCOMPARE(b.supply_pressure_values[1], 0.3e6);
-    QVERIFY2(issue->text().contains("big_end.supply_pressure_values"), qPrintable(issue->text()));
+    QVERIFY2(issue->text().contains("big_end.supply_pressure_angles = 2 points"),
+             qPrintable(issue->text()));
     QVERIFY(issue->isVisible());
     const QString tip = model->index(1, 0).data(Qt::ToolTipRole).toString();
-    QVERIFY2(tip.contains("big_end.supply_pressure_values"), qPrintable(tip));
+    QVERIFY2(tip.contains("big_end.supply_pressure_angles"), qPrintable(tip));
     QVERIFY(model->index(0, 1).data(Qt::BackgroundRole).isValid());
     QVERIFY(!window.runAction()->isEnabled());
-    QVERIFY(window.findChild<QLabel*>("run_blocker")->text().contains("supply_pressure_values"));
+    QVERIFY(window.findChild<QLabel*>("run_blocker")->text().contains("supply_pressure_angles"));
     if (const QString dir = qEnvironmentVariable("FILMDYN_SCREENSHOT_DIR"); !dir.isEmpty()) {
       QVERIFY(window.grab().save(dir + "/case_big_end_supply_issue.png"));  // for review
     }

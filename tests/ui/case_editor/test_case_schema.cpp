@@ -301,7 +301,18 @@ class TestCaseSchema : public QObject {
     ui::CaseIssues issues = ui::ValidateCase(c);
     QCOMPARE(issues.size(), size_t(1));
     QCOMPARE(issues.begin()->first, std::string("big_end.supply_pressure_angles"));
-    QVERIFY2(issues.begin()->second.find("big_end.supply_pressure_values") != std::string::npos,
+    QVERIFY2(issues.begin()->second.find("big_end.supply_pressure_angles = 2 points") !=
+                 std::string::npos,
+             issues.begin()->second.c_str());
+    // A point's own error names its element, and the table takes it.
+    c.big_end.supply_pressure_angles.clear();
+    for (int k = 0; k < 72; ++k) c.big_end.supply_pressure_angles.push_back(k * 10.0 * M_PI / 180);
+    c.big_end.supply_pressure_values.assign(72, 3e5);
+    std::swap(c.big_end.supply_pressure_angles[5], c.big_end.supply_pressure_angles[6]);
+    issues = ui::ValidateCase(c);
+    QCOMPARE(issues.size(), size_t(1));
+    QCOMPARE(issues.begin()->first, std::string("big_end.supply_pressure_angles"));
+    QVERIFY2(issues.begin()->second.rfind("big_end.supply_pressure_angles.6 = ", 0) == 0,
              issues.begin()->second.c_str());
     c = DefaultCase();
     c.skirt.oil_film_positions = {0.0};
