@@ -38,8 +38,8 @@ struct FieldRecorder::Cycle {
 
 struct FieldRecorder::Frames {
   Cycle newest;
-  Cycle previous;  ///< the cycle before the newest, when kept (KeepPreviousCycle)
-  bool keep_previous = false;
+  Cycle previous;              ///< the cycle before the newest, when kept
+  bool keep_previous = false;  ///< whether a new cycle keeps the one before it (Attach)
   // Bearing nodes in film coordinates (θ from the maximum film, z) and the radius: the points
   // of each frame follow from them and the frame's eccentricity angle.
   std::vector<double> bearing_theta, bearing_z;
@@ -56,31 +56,32 @@ engine::FieldCallback FieldRecorder::Callback() {
 std::size_t FieldRecorder::skirt_frames() const { return frames_->newest.skirt.frames.size(); }
 std::size_t FieldRecorder::bearing_frames() const { return frames_->newest.bearing.frames.size(); }
 
-void FieldRecorder::KeepPreviousCycle(bool keep) { frames_->keep_previous = keep; }
-
 bool FieldRecorder::Attach(engine::RunConfig* config, double available) {
   config->field_callback = Callback();
   config->field_copies = 2.0;
   const bool keep =
       engine::EstimateRunMemory(config->engine_case, config->field_copies).total() <= available;
   if (!keep) config->field_copies = 1.0;
-  KeepPreviousCycle(keep);
+  frames_->keep_previous = keep;
   return keep;
 }
 
+const FieldRecorder::Cycle* FieldRecorder::Reported(
+    const std::vector<engine::CrankTrainSample>& samples) const {
+  for (const Cycle* cycle : {&frames_->newest, &frames_->previous})
+    if (cycle->StartsAt(samples)) return cycle;
+  return nullptr;
+}
+
 bool FieldRecorder::Holds(const std::vector<engine::CrankTrainSample>& samples) const {
-  return frames_->newest.StartsAt(samples) || frames_->previous.StartsAt(samples);
+  return Reported(samples) != nullptr;
 }
 
 bool FieldRecorder::WriteReported(const std::filesystem::path& folder,
                                   const std::vector<engine::CrankTrainSample>& samples) const {
-  for (const Cycle* cycle : {&frames_->newest, &frames_->previous}) {
-    if (cycle->StartsAt(samples)) {
-      Write(folder, *cycle);
-      return true;
-    }
-  }
-  return false;
+  const Cycle* cycle = Reported(samples);
+  if (cycle != nullptr) Write(folder, *cycle);
+  return cycle != nullptr;
 }
 
 namespace {
@@ -183,11 +184,7 @@ void FieldRecorder::Record(const engine::FieldFrame& frame) {
   if (frame.cycle != newest.cycle) {
     // A new cycle. The one before it is what a run stopped in this one reports; older ones are
     // reported by no run.
-    if (frames_->keep_previous) {
-      frames_->previous = std::move(newest);
-    } else {
-      frames_->previous = {};
-    }
+    if (frames_->keep_previous) frames_->previous = std::move(newest);
     newest = {};
     newest.cycle = frame.cycle;
     newest.first_time = frame.time;

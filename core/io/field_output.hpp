@@ -39,8 +39,6 @@ class FieldRecorder {
   /// `available` bytes (what this machine has); otherwise the newest only. Returns whether the
   /// previous cycle is kept.
   bool Attach(engine::RunConfig* config, double available = engine::AvailableMemoryBytes());
-  /// Whether a new cycle's start keeps the cycle before it (Attach decides it; off by default).
-  void KeepPreviousCycle(bool keep);
   /// Number of frames of the newest cycle recorded so far, per joint.
   std::size_t skirt_frames() const;
   std::size_t bearing_frames() const;
@@ -64,6 +62,8 @@ class FieldRecorder {
 
  private:
   struct Cycle;
+  /// The cycle held whose frames are those of the reported `samples`; nullptr when none is.
+  const Cycle* Reported(const std::vector<engine::CrankTrainSample>& samples) const;
   void Record(const engine::FieldFrame& frame);
   void Write(const std::filesystem::path& folder, const Cycle& cycle) const;
   struct Frames;
