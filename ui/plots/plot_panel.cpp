@@ -57,30 +57,59 @@ void SetRoundAxis(QValueAxis* axis, double lo, double hi, double step) {
 // cycle, whose crank angles are taken round 720 °CA, its last 720 °CA), from the lowest crank
 // angle on — a cycle that starts elsewhere than 0 °CA (operating.start_crank_angle) passes
 // 720 → 0 within it and is drawn from 0 °CA, joined where it started. No curve is drawn back
-// across the chart, and each angle has one value.
-std::vector<RunSample> OneLap(const std::vector<RunSample>& samples) {
+// across the chart, and each angle has one value. A run that has passed 720 → 0 but not yet
+// computed a whole cycle (still running, or stopped) lacks the angles from where it is to where it
+// started: its lap is drawn as two lines, apart there (`after_gap`, the index of the sample the
+// second begins with).
+struct Lap {
+  std::vector<RunSample> samples;
+  std::size_t after_gap = 0;  ///< 0: one line
+};
+
+Lap OneLap(const std::vector<RunSample>& samples) {
   if (samples.empty()) return {};
   std::vector<double> angle(samples.size());
   for (std::size_t k = 0; k < samples.size(); ++k) angle[k] = samples[k][Column::kCrankAngle];
   std::size_t from = samples.size() - 1;  // the lap: [from, end), less than 720 °CA long
-  for (double span = 0.0; from > 0; --from) {
+  double span = 0.0, widest = 0.0;        // the lap's crank angles, its widest step
+  for (; from > 0; --from) {
     double step = angle[from] - angle[from - 1];
     if (step < 0.0) step += 720.0;
+    if (!(span + step < 720.0 - 1e-9)) break;
     span += step;
-    if (!(span < 720.0 - 1e-9)) break;
+    widest = std::max(widest, step);
   }
+  // A whole cycle's samples miss one step from the last back to the first.
+  const bool whole = 720.0 - span < 1.5 * widest;
   const std::size_t wrap = engine::LapStart(angle, from);
-  std::vector<RunSample> lap(samples.begin() + std::ptrdiff_t(wrap), samples.end());
-  lap.insert(lap.end(), samples.begin() + std::ptrdiff_t(from),
-             samples.begin() + std::ptrdiff_t(wrap));
+  Lap lap;
+  lap.samples.assign(samples.begin() + std::ptrdiff_t(wrap), samples.end());
+  lap.samples.insert(lap.samples.end(), samples.begin() + std::ptrdiff_t(from),
+                     samples.begin() + std::ptrdiff_t(wrap));
+  if (!whole && wrap > from) lap.after_gap = samples.size() - wrap;
   return lap;
 }
+
+// A curve's points from a lap: apart where the lap has its gap.
+CurvePoints LapCurve(const PlotCurve& curve, const Lap& lap) {
+  if (lap.after_gap == 0) return curve.points(lap.samples);
+  const auto split = lap.samples.begin() + std::ptrdiff_t(lap.after_gap);
+  CurvePoints out = curve.points({lap.samples.begin(), split});
+  const CurvePoints after = curve.points({split, lap.samples.end()});
+  if (!out.xy.isEmpty() && !after.xy.isEmpty()) out.after_gap = out.xy.size();
+  out.xy += after.xy;
+  out.crank_angle.insert(out.crank_angle.end(), after.crank_angle.begin(), after.crank_angle.end());
+  return out;
+}
+
+// Whether the curve's points k and k + 1 are joined.
+bool Joined(const CurvePoints& curve, std::size_t k) { return curve.after_gap != qsizetype(k + 1); }
 
 // Linear interpolation of a curve at a crank angle (NaN outside it or across a gap).
 double ValueAtAngle(const CurvePoints& curve, double angle) {
   const auto& a = curve.crank_angle;
   for (size_t k = 0; k + 1 < a.size(); ++k) {
-    if ((a[k] <= angle && angle <= a[k + 1]) && a[k + 1] > a[k]) {
+    if ((a[k] <= angle && angle <= a[k + 1]) && a[k + 1] > a[k] && Joined(curve, k)) {
       const double t = (angle - a[k]) / (a[k + 1] - a[k]);
       return curve.xy[qsizetype(k)].y() * (1 - t) + curve.xy[qsizetype(k + 1)].y() * t;
     }
@@ -93,7 +122,7 @@ double ValueAtAngle(const CurvePoints& curve, double angle) {
 std::optional<QPointF> PointAtAngle(const CurvePoints& curve, double angle) {
   const auto& a = curve.crank_angle;
   for (size_t k = 0; k + 1 < a.size(); ++k) {
-    if (a[k] <= angle && angle <= a[k + 1] && a[k + 1] > a[k]) {
+    if (a[k] <= angle && angle <= a[k + 1] && a[k + 1] > a[k] && Joined(curve, k)) {
       const double t = (angle - a[k]) / (a[k + 1] - a[k]);
       return curve.xy[qsizetype(k)] * (1 - t) + curve.xy[qsizetype(k + 1)] * t;
     }
@@ -378,25 +407,28 @@ void PlotPanel::updateRun(const PlotRun& run) {
   RunEntry& r = runs_[id];
   r.label = run.label;
   r.clearance_um = run.bearing_clearance * 1e6;
-  const std::vector<RunSample> samples = OneLap(run.samples), motion = OneLap(run.motion);
+  const Lap samples = OneLap(run.samples), motion = OneLap(run.motion);
   for (ChartEntry& entry : charts_) {
     auto& series = entry.run_series[id];
     if (series.empty()) {
       for (size_t k = 0; k < entry.spec->curves.size(); ++k) {
-        auto* s = new QLineSeries;
-        s->setName(entry.spec->curves[k].name);
-        entry.chart->addSeries(s);
-        s->attachAxis(AxisX(entry.chart));
-        s->attachAxis(AxisY(entry.chart));
-        s->setVisible(r.visible);
-        series.push_back(s);
+        std::array<QLineSeries*, 2> lines{};
+        for (QLineSeries*& s : lines) {
+          s = new QLineSeries;
+          s->setName(entry.spec->curves[k].name);
+          entry.chart->addSeries(s);
+          s->attachAxis(AxisX(entry.chart));
+          s->attachAxis(AxisY(entry.chart));
+          s->setVisible(r.visible);
+        }
+        series.push_back(lines);
       }
     }
     auto& points = entry.run_points[id];
     points.resize(series.size());
     for (size_t k = 0; k < series.size(); ++k) {
       const PlotCurve& curve = entry.spec->curves[k];
-      points[k] = curve.points(curve.from_motion && !motion.empty() ? motion : samples);
+      points[k] = LapCurve(curve, curve.from_motion && !motion.samples.empty() ? motion : samples);
       // An orbit or portrait that never leaves one point (an ideal joint's centred journal)
       // shows nothing: it counts as no data.
       if (!entry.spec->crank_angle_axis && !points[k].xy.isEmpty()) {
@@ -405,7 +437,9 @@ void PlotPanel::updateRun(const PlotRun& run) {
                                        [&first](const QPointF& p) { return p == first; });
         if (still) points[k] = CurvePoints{};
       }
-      series[k]->replace(points[k].xy);
+      const qsizetype gap = points[k].after_gap < 0 ? points[k].xy.size() : points[k].after_gap;
+      series[k][0]->replace(points[k].xy.first(gap));
+      series[k][1]->replace(points[k].xy.sliced(gap));
     }
   }
   restyle();
@@ -413,9 +447,11 @@ void PlotPanel::updateRun(const PlotRun& run) {
 
 void PlotPanel::removeRun(int run_id) {
   for (ChartEntry& entry : charts_) {
-    for (QLineSeries* s : entry.run_series.value(run_id)) {
-      entry.chart->removeSeries(s);
-      delete s;
+    for (const auto& lines : entry.run_series.value(run_id)) {
+      for (QLineSeries* s : lines) {
+        entry.chart->removeSeries(s);
+        delete s;
+      }
     }
     entry.run_series.remove(run_id);
     entry.run_points.remove(run_id);
@@ -429,7 +465,8 @@ void PlotPanel::setRunVisible(int run_id, bool visible) {
   if (!runs_.contains(run_id)) return;
   runs_[run_id].visible = visible;
   for (ChartEntry& entry : charts_) {
-    for (QLineSeries* s : entry.run_series.value(run_id)) s->setVisible(visible);
+    for (const auto& lines : entry.run_series.value(run_id))
+      for (QLineSeries* s : lines) s->setVisible(visible);
   }
   restyle();
 }
@@ -461,7 +498,8 @@ void PlotPanel::setRunOrder(const std::vector<int>& run_ids) {
 int PlotPanel::pointCount(int run_id) const {
   int count = 0;
   for (const ChartEntry& entry : charts_) {
-    for (QLineSeries* s : entry.run_series.value(run_id)) count += int(s->count());
+    for (const auto& lines : entry.run_series.value(run_id))
+      for (QLineSeries* s : lines) count += int(s->count());
   }
   return count;
 }
@@ -511,7 +549,7 @@ void PlotPanel::restyle() {
   for (ChartEntry& entry : charts_) {
     for (auto it = entry.run_series.begin(); it != entry.run_series.end(); ++it) {
       for (size_t k = 0; k < it.value().size(); ++k) {
-        it.value()[k]->setPen(seriesPen(it.key(), k));
+        for (QLineSeries* s : it.value()[k]) s->setPen(seriesPen(it.key(), k));
       }
     }
     rescale(entry);

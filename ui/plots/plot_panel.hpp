@@ -16,6 +16,7 @@
 #include <QMap>
 #include <QPen>
 #include <QWidget>
+#include <array>
 #include <limits>
 #include <optional>
 #include <vector>
@@ -133,7 +134,9 @@ class PlotPanel : public QWidget {
     double fitted_aspect = 0;  ///< plot-area aspect the equal-axes ranges were fitted to
     std::optional<QRectF> zoom;  ///< the visible value range when zoomed
     QRectF full;                 ///< the automatic (unzoomed) value range
-    QMap<int, std::vector<QLineSeries*>> run_series;
+    /// Per run, per kind of curve: its line and the line of its part after a gap (a run that
+    /// has not computed a whole cycle yet; empty otherwise).
+    QMap<int, std::vector<std::array<QLineSeries*, 2>>> run_series;
     QMap<int, std::vector<CurvePoints>> run_points;
     std::vector<ClippedSpike> clipped;  ///< spikes outside the shown range (rescale)
   };

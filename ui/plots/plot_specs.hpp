@@ -15,6 +15,9 @@ namespace filmdyn::ui {
 struct CurvePoints {
   QList<QPointF> xy;
   std::vector<double> crank_angle;
+  /// The index of the first point not joined to the one before it (a run that has not yet
+  /// computed the crank angles between them); -1 when the curve is one line.
+  qsizetype after_gap = -1;
 };
 
 /// One kind of series of a plot (e.g. "skirt" or "big end" in the MOFT plot). Every run draws

@@ -411,8 +411,8 @@ class TestPlotPanel : public QObject {
     old.updateRun(saved_before);
     QList<QPointF> old_eps;
     for (QAbstractSeries* s : old.chart(old.chartIndex("phase_eps"))->series()) {
-      if (auto* line = qobject_cast<QLineSeries*>(s); line && line->name() == "ε")
-        old_eps = line->points();
+      auto* line = qobject_cast<QLineSeries*>(s);
+      if (line && line->name() == "ε" && old_eps.isEmpty()) old_eps = line->points();
     }
     QCOMPARE(old_eps.size(), qsizetype(saved_before.samples.size() - 2));
     // Central differences over 2 °CA against the exact rate of the same output step.
@@ -468,6 +468,62 @@ class TestPlotPanel : public QObject {
       }
       QVERIFY(checked > 10);
     }
+
+    // A run from 90 °CA stopped (or still running) at 30 °CA, its first cycle not yet whole
+    // (90 … 719, 0 … 29): nothing is drawn between 29 and 90 °CA. Each curve is the cycle's curve
+    // without the angles missing, in two lines; every line is one unbroken piece of the cycle's.
+    PlotRun stopped = from_90;
+    stopped.samples.resize(630 + 30);
+    std::size_t kept = 0;  // the motion samples up to 29 °CA after 720 → 0
+    for (bool wrapped = false; kept < stopped.motion.size(); ++kept) {
+      const double a = stopped.motion[kept][Column::kCrankAngle];
+      wrapped = wrapped || (kept > 0 && a < stopped.motion[kept - 1][Column::kCrankAngle]);
+      if (wrapped && a > 29.0 + 1e-9) break;
+    }
+    stopped.motion.resize(kept);
+    PlotPanel panel;
+    panel.updateRun(stopped);
+    int split = 0;
+    for (const auto& spec : filmdyn::ui::StandardPlots()) {
+      const int i = panel.chartIndex(spec.id);
+      const QList<QAbstractSeries*> series = panel.chart(i)->series(),
+                                    expected = cycle.chart(i)->series();
+      QCOMPARE(series.size(), expected.size());
+      // The cycle's lines: each kind's whole curve, then its empty part after a gap.
+      for (qsizetype k = 0; k + 1 < series.size(); ++k) {
+        auto* line = qobject_cast<QLineSeries*>(series[k]);
+        const auto kind = [line](const filmdyn::ui::PlotCurve& c) {
+          return c.name == line->name();
+        };
+        if (!line || std::none_of(spec.curves.begin(), spec.curves.end(), kind)) continue;  // marks
+        auto* after = qobject_cast<QLineSeries*>(series[k + 1]);
+        QVERIFY(after && after->name() == line->name());
+        const QList<QPointF> whole = qobject_cast<QLineSeries*>(expected[k])->points();
+        QCOMPARE(qobject_cast<QLineSeries*>(expected[k + 1])->count(), 0);
+        const std::string where = (spec.id + ": " + line->name()).toStdString();
+        if (whole.isEmpty()) {
+          QVERIFY2(line->count() == 0 && after->count() == 0, where.c_str());
+          ++k;
+          continue;
+        }
+        // The samples 0 … 29 °CA, then 90 … 719 °CA: one per degree, or the motion's 8.
+        const qsizetype per = whole.size() == 720 ? 1 : 8;
+        const QList<QPointF> first = line->points(), second = after->points();
+        QVERIFY2(first == whole.first(29 * per + 1), where.c_str());
+        QVERIFY2(second == whole.sliced(90 * per), where.c_str());
+        ++split;
+        ++k;
+      }
+    }
+    QVERIFY(split > 10);
+    // The cursor reads nothing in the gap, values on both sides.
+    const int moft = panel.chartIndex("moft");
+    panel.setCursorAngle(60.0);
+    QVERIFY2(!panel.readoutLines(moft).join(" ").contains("µm"),
+             qPrintable(panel.readoutLines(moft).join(" | ")));
+    panel.setCursorAngle(100.0);
+    QVERIFY2(panel.readoutLines(moft).join(" ").contains("µm"),
+             qPrintable(panel.readoutLines(moft).join(" | ")));
   }
 
   void zoomPanAndReset() {
