@@ -202,16 +202,6 @@ BearingSolver::BearingSolver(BearingConfig config)
     cos_[k] = std::cos(theta_[k]);
     sin_[k] = std::sin(theta_[k]);
   }
-  // Each mesh column's cell around: half the way to each neighbour on its circle (periodic).
-  const std::vector<double>& xl = m.x_lines;
-  const int nx = m.nx_nodes();
-  cell_turn_.resize(nx);
-  for (int i = 0; i < nx; ++i) {
-    const double next = i + 1 < nx ? xl[i + 1] : xl[0] + m.x_period;
-    const double previous = i > 0 ? xl[i - 1] : xl[nx - 1] - m.x_period;
-    cell_turn_[i] = 0.5 * (next - previous) / config_.geometry.radius;
-  }
-  sweep_rate_ = Eigen::VectorXd::Zero(n);
   if (!config_.mesh.symmetric_half) {
     full_width_.mesh = m;
     full_width_.source.resize(static_cast<std::size_t>(n));
@@ -258,15 +248,10 @@ void BearingSolver::MarkSupplyNodes(const BearingState& s) {
   auto frame_angle = [&](double body_angle, double orientation) {
     return WrapTwoPi(orientation + body_angle - (s.line_of_centres_angle + kPi));
   };
-  sweep_rate_.setZero();
-  // A region turns over the film (the line-of-centres frame) with the body it is cut in.
-  const double shell_rate = std::abs(s.omega_bearing - s.line_of_centres_rate);
-  const double pin_rate = std::abs(s.omega_journal - s.line_of_centres_rate);
-  auto mark = [&](int k, double rate) {
+  auto mark = [&](int k) {
     if (m.fixed[k]) return;
     extra[k] = 1;
     pb[k] = pressure;
-    sweep_rate_[k] = std::max(sweep_rate_[k], rate);
   };
   const int nx = m.nx_nodes(), ny = m.ny_nodes();
   // Each region is held on the nodes inside it (a region narrower than the mesh on its nearest
@@ -315,7 +300,7 @@ void BearingSolver::MarkSupplyNodes(const BearingState& s) {
     for (int j = 0; j < ny; ++j) {
       if (j != j_mid && std::abs(m.y_lines[j] - z_mid) > 0.5 * feed.groove_width) continue;
       for (int i = 0; i < nx; ++i)
-        if (groove_around(Ij{i, j}) <= 0.0) mark(m.Node(i, j), shell_rate);
+        if (groove_around(Ij{i, j}) <= 0.0) mark(m.Node(i, j));
     }
   }
   // The holes: a node's position from a hole's centre, around (signed, the short way) and
@@ -340,7 +325,6 @@ void BearingSolver::MarkSupplyNodes(const BearingState& s) {
   std::vector<double> centres;
   if (HasHoles(feed.kind)) {
     const double orientation = HasPinHoles(feed.kind) ? s.journal_angle : s.bearing_angle;
-    const double rate = HasPinHoles(feed.kind) ? pin_rate : shell_rate;
     for (double hole : feed.hole_angles) {
       const double centre = frame_angle(hole, orientation);
       centres.push_back(centre);
@@ -350,11 +334,11 @@ void BearingSolver::MarkSupplyNodes(const BearingState& s) {
         for (int i = 0; i < nx; ++i) {
           const std::array<double, 2> d = hole_offset(centre, Ij{i, j});
           const double d2 = d[0] * d[0] + d[1] * d[1];
-          if (d2 <= r_hole * r_hole) mark(m.Node(i, j), rate);
+          if (d2 <= r_hole * r_hole) mark(m.Node(i, j));
           if (d2 < best) best = d2, nearest = m.Node(i, j);
         }
       }
-      if (nearest >= 0) mark(nearest, rate);
+      if (nearest >= 0) mark(nearest);
     }
   }
   if (HasGroove(feed.kind)) {
@@ -393,7 +377,7 @@ const BearingResult& BearingSolver::SolveAt(const BearingState& state, double t)
     from = history_.Before(t);
   }
   fem_.void_history() = from->void_content.front();
-  return SolveStep(state, t - from->time, history_.StepContaining(t));
+  return SolveStep(state, t - from->time);
 }
 
 void BearingSolver::AcceptStep(double t) {
@@ -422,8 +406,7 @@ Eigen::VectorXd BearingSolver::PredictorInputs(const BearingState& s) const {
   return Eigen::Map<const Eigen::VectorXd>(z.data(), static_cast<Eigen::Index>(z.size()));
 }
 
-const BearingResult& BearingSolver::SolveStep(const BearingState& s, double time_step,
-                                              double step_length) {
+const BearingResult& BearingSolver::SolveStep(const BearingState& s, double time_step) {
   // Elastic surfaces: the journal may pass the rigid wall (eps >= 1) where the deformation keeps
   // the film open (ElasticFilm refuses a film it cannot open).
   s.Validate("bearing_state", config_.compliance.rigid() ? 1.0 : kElasticEpsLimit);
@@ -446,16 +429,6 @@ const BearingResult& BearingSolver::SolveStep(const BearingState& s, double time
   params.u_diff = R * (s.omega_journal - s.omega_bearing);
   params.film = config_.film.get();
   params.time_step = time_step;
-  if (step_length > 0.0) {
-    // A node a supply region has turned onto since the history's state is filled over the
-    // accepted step (what its account booked) or over the region's sweep across the node's
-    // cell, whichever is longer; only the fixed nodes' flows read it.
-    fill_time_.resize(n);
-    for (int k = 0; k < n; ++k)
-      fill_time_[k] = std::max(
-          step_length, sweep_rate_[k] > 0.0 ? cell_turn_[k % m.nx_nodes()] / sweep_rate_[k] : 0.0);
-    params.fill_time = &fill_time_;
-  }
   params.bulk_modulus = config_.bulk_modulus;
   // An imported compliance is fixed in the bearing body: the film's theta = 0 lies at the body
   // angle phi + pi - (bearing orientation).

@@ -221,11 +221,7 @@ class BearingSolver {
   static TriMesh MakeMesh(const BearingGeometry& g, const BearingMeshSpec& spec, bool fix_theta0);
 
  private:
-  /// step_length > 0: the length of the accepted step an output-time solve lies in; a node a
-  /// supply region has turned onto is filled over that or the region's sweep over its cell,
-  /// whichever is longer (ReynoldsParams::fill_time).
-  const BearingResult& SolveStep(const BearingState& state, double time_step,
-                                 double step_length = 0.0);
+  const BearingResult& SolveStep(const BearingState& state, double time_step);
   /// Holds the supply's nodes at the supply pressure (extra fixed nodes of this solve).
   void MarkSupplyNodes(const BearingState& state);
   // The film's inputs for the deformation's predictor (ElasticFilm::Solve).
@@ -235,9 +231,6 @@ class BearingSolver {
   ReynoldsFem fem_;
   ElasticFilm elastic_;
   std::vector<double> theta_;
-  Eigen::VectorXd cell_turn_;   // each mesh column's cell around [rad] (node k: column k % nx)
-  Eigen::VectorXd sweep_rate_;  // how fast the region holding a node turns over the film [rad/s]
-  Eigen::VectorXd fill_time_;   // ReynoldsParams::fill_time of an output-time solve [s]
   BearingResult result_;
   Eigen::VectorXd cos_, sin_;  // load directions of the film integrals
   FullWidthSurface full_width_;

@@ -40,14 +40,6 @@ class FilmHistory {
     while (entries_.size() > kKept) entries_.pop_front();
   }
   const Entry& latest() const { return entries_.back(); }
-  /// The length of the accepted step (t_a, t_b] between two entries that holds t; 0 when t lies
-  /// beyond the latest entry (a step being tried) or at or before the first.
-  double StepContaining(double t) const {
-    for (std::size_t i = entries_.size(); i-- > 1;)
-      if (entries_[i - 1].time < t && t <= entries_[i].time)
-        return entries_[i].time - entries_[i - 1].time;
-    return 0.0;
-  }
   /// The next step that keeps the void content's local error (backward Euler: about
   /// Δt²/2 · |d²V/dt²|, from the last three entries) at `tolerance` [m] in the root mean square
   /// over the nodes; nodes whose void opened or closed within those entries are left out (their

@@ -317,7 +317,6 @@ void ReynoldsFem::Assemble(const ReynoldsParams& params) {
   }
   u_sum_ = params.u_sum;
   time_step_ = jfo ? params.time_step : 0.0;
-  fill_time_ = time_step_ > 0.0 ? params.fill_time : nullptr;
   compressibility_ =
       time_step_ > 0.0 && params.bulk_modulus > 0.0 ? 1.0 / params.bulk_modulus : 0.0;
   // Flow scale for relative tolerances: the Couette and squeeze flows through one cell.

@@ -101,15 +101,6 @@ struct ReynoldsParams {
   /// JFO only: 0 = quasi-static; > 0 = transient, the time [s] since the state whose void
   /// content is in ReynoldsFem::void_history().
   double time_step = 0.0;
-  /// JFO transient only: per node, the time over which the old void of a node that has become
-  /// fixed since the history's state (a supply hole turning onto it) is filled, as the flow
-  /// through that node [s]; nullptr = time_step. A solve at an output time passes at least the
-  /// length of the accepted step it lies in (the rate the step booked the node's oil at, not
-  /// the short time since the step's start), and at least the time the supply takes to sweep
-  /// over the node's cell (BearingSolver): the sampled supply flow is then the rate at which a
-  /// turning hole takes up the void it passes over, not a spike whose height is set by the
-  /// integrator's step. Only the fixed nodes' flows depend on it; the film does not.
-  const Eigen::VectorXd* fill_time = nullptr;
   /// JFO transient only: the oil's bulk modulus beta [Pa] (0 = incompressible). The full film
   /// then stores h_T p / beta more oil than its gap holds at the cavitation pressure
   /// (density rho0 (1 + p / beta)); the fluxes keep the density rho0. Not with a
@@ -315,7 +306,6 @@ class ReynoldsFem {
   /// what its Couette flow carries (h for smooth surfaces and from H = 3 on).
   Eigen::VectorXd h_mean_;
   double u_sum_ = 0, flow_scale_ = 1;
-  const Eigen::VectorXd* fill_time_ = nullptr;
   ReynoldsSolution sol_;
 };
 

@@ -204,12 +204,9 @@ bool ReynoldsFem::SolveJfo() {
   double excess = 0.0;
   for (int k = 0; k < n; ++k) {
     // The old void of every node is filled or carried on: on a node fixed now (a supply hole
-    // that has moved onto it) the supply fills it, which its residual (the supply flow) counts,
-    // over the fill time (ReynoldsParams::fill_time).
-    if (transient) {
-      const double inv_fill = fixed_[k] && fill_time_ ? 1.0 / (*fill_time_)[k] : inv_dt;
-      work_[k] += lumped_area_[k] * void_old_[k] * inv_fill;
-    }
+    // that has moved onto it) the supply fills it within the step, which its residual (the
+    // supply flow) counts.
+    if (transient) work_[k] += lumped_area_[k] * void_old_[k] * inv_dt;
     work_[k] += compress[k] * p[k];
     if (correction[k] != 0.0) {  // the second-order part of the Couette flow from k to d
       work_[k] -= boff[k] * correction[k];

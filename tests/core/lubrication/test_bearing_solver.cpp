@@ -91,57 +91,6 @@ class TestBearing : public QObject {
     }
     const double none = linear.NextStepLimit(1e-10);  // round-off's curvature only
     QVERIFY2(none == 0.0 || none > 1e-3, qPrintable(QString::number(none)));
-    // The accepted step that holds a time (an output time inside it): (2, 4] µs holds 3 µs and
-    // 4 µs; beyond the latest entry (a step being tried) or at the first, none.
-    QCOMPARE(linear.StepContaining(3e-6), 2e-6);
-    QCOMPARE(linear.StepContaining(4e-6), 2e-6);
-    QCOMPARE(linear.StepContaining(1.5e-6), 1e-6);
-    QCOMPARE(linear.StepContaining(5e-6), 0.0);
-    QCOMPARE(linear.StepContaining(1e-6), 0.0);
-  }
-
-  // A transient JFO film whose history holds a void at a node that is fixed now (a supply hole
-  // turned onto it): the supply fills that void, booked as the node's flow over the fill time
-  // (ReynoldsParams::fill_time, per node; none = the time step). The film itself does not depend on it; the
-  // node's flow changes by exactly A V_old (1/dt - 1/fill).
-  void newlyHeldNodeIsFilledOverTheFillTime() {
-    TriMesh m = MakeTensorMesh(Linspace(0.0, 0.02, 10), Linspace(0.0, 0.01, 4), false, 0.0);
-    const int hole = m.Node(5, 2);
-    for (int j = 0; j < m.ny_nodes(); ++j) m.fixed[m.Node(0, j)] = m.fixed[m.Node(10, j)] = 1;
-    m.fixed[hole] = 1;
-    ReynoldsOptions options;
-    options.cavitation = CavitationModel::kJfo;
-    ReynoldsFem fem(m, 0, options);
-    fem.film_thickness().setConstant(10e-6);
-    fem.film_rate().setZero();
-    fem.boundary_pressure().setZero();
-    fem.boundary_pressure()[hole] = 1e5;
-    ReynoldsParams params;
-    params.viscosity = 0.01;
-    params.u_sum = 2.0;
-    params.u_diff = 2.0;
-    params.time_step = 1e-5;
-    const double void_old = 3e-6;
-    Eigen::VectorXd fill(m.NodeCount());
-    auto solve = [&](double fill_time) {
-      fem.void_history() = Eigen::VectorXd::Zero(m.NodeCount());
-      fem.void_history()[hole] = void_old;
-      fill.setConstant(fill_time);
-      params.fill_time = fill_time > 0.0 ? &fill : nullptr;
-      return fem.Solve(params);
-    };
-    const ReynoldsSolution step = solve(0.0), longer = solve(1e-3), same = solve(1e-5);
-    QCOMPARE(step.stats.status, SolveStatus::kConverged);
-    QCOMPARE(longer.pressure, step.pressure);
-    QCOMPARE(longer.fluid_fraction, step.fluid_fraction);
-    const double expected = fem.lumped_area()[hole] * void_old * (1.0 / 1e-5 - 1.0 / 1e-3);
-    QVERIFY2(
-        std::abs(step.residual[hole] - longer.residual[hole] - expected) < 1e-9 * expected,
-        qPrintable(
-            QString("%1 vs %2").arg(step.residual[hole] - longer.residual[hole]).arg(expected)));
-    QCOMPARE(same.residual, step.residual);  // fill time = time step: as without one
-    for (int k = 0; k < m.NodeCount(); ++k)
-      if (k != hole) QCOMPARE(longer.residual[k], step.residual[k]);
   }
 
   void transientJfoStartsFromAFloodedFilm() {
