@@ -974,8 +974,8 @@ std::vector<CaseField> MakeSchema() {
        "starved supply: the oil layer the ring pack leaves on the liner"}));
   f.push_back(List("skirt.oil_film_positions", sk, &S::oil_film_positions,
                    {G::kSkirt, "Liner oil film: position", "m", "mm", kMm, Between(-1.0, 100.0),
-                    "liner positions from the skirt top at top dead centre, + toward the crank "
-                    "(empty: the constant oil_film)"}));
+                    "liner positions from the skirt top at top dead centre, + toward the crank; "
+                    "outside the table its end values hold (empty: the constant oil_film)"}));
   f.push_back(List("skirt.oil_film_values", sk, &S::oil_film_values,
                    {G::kSkirt, "Liner oil film: thickness", "m", "µm", kUm,
                     Open(0.0, 1e-3, true, false), "the oil film at each position"}));
@@ -1239,6 +1239,9 @@ std::vector<CaseField> MakeSchema() {
   return f;
 }
 
+// "1 value", "3 values": a list's length in an error.
+std::string Values(std::size_t n) { return std::to_string(n) + (n == 1 ? " value" : " values"); }
+
 std::string Bound(double value) { return FormatValue(value); }
 
 }  // namespace
@@ -1364,8 +1367,7 @@ void CheckBigEndSupply(const BigEndCase& b) {
   }
   if (curve) {
     if (b.supply_pressure_angles.size() != b.supply_pressure_values.size()) {
-      throw InputError("big_end.supply_pressure_values",
-                       std::to_string(b.supply_pressure_values.size()) + " values",
+      throw InputError("big_end.supply_pressure_values", Values(b.supply_pressure_values.size()),
                        "needs as many values as big_end.supply_pressure_angles (" +
                            std::to_string(b.supply_pressure_angles.size()) + ")");
     }
@@ -1397,8 +1399,11 @@ void CheckBigEndSupply(const BigEndCase& b) {
                                 .width = "big_end.width"});
 }
 
-// A starved skirt needs the film fraction of the mass-conserving model and a proper table.
-void CheckSkirtSupply(const SkirtCase& s) {
+// A starved skirt needs the film fraction of the mass-conserving model and a proper table: one
+// that reaches the liner the skirt's leading edge runs over, from the skirt top at top dead
+// centre (0) to its bottom at bottom dead centre (`liner` [m]); outside the table its end values
+// hold, so a table wholly beside that (a unit slip) would set one constant film.
+void CheckSkirtSupply(const SkirtCase& s, double liner) {
   if (s.supply == lubrication::SkirtSupply::kStarved &&
       s.cavitation != lubrication::CavitationModel::kJfo) {
     throw InputError("skirt.supply", "\"starved\"",
@@ -1407,7 +1412,7 @@ void CheckSkirtSupply(const SkirtCase& s) {
   }
   const auto& x = s.oil_film_positions;
   if (x.size() != s.oil_film_values.size()) {
-    throw InputError("skirt.oil_film_values", std::to_string(s.oil_film_values.size()) + " values",
+    throw InputError("skirt.oil_film_values", Values(s.oil_film_values.size()),
                      "needs as many values as skirt.oil_film_positions (" +
                          std::to_string(x.size()) + "; both empty = the constant oil_film)");
   }
@@ -1416,6 +1421,15 @@ void CheckSkirtSupply(const SkirtCase& s) {
       throw InputError("skirt.oil_film_positions." + std::to_string(k), FormatValue(x[k]),
                        "must increase strictly [m]");
     }
+  }
+  if (!x.empty() && (x.back() < 0.0 || x.front() > liner)) {
+    throw InputError("skirt.oil_film_positions",
+                     fmt::format("{} … {} m", FormatValue(x.front()), FormatValue(x.back())),
+                     fmt::format("must reach the liner the skirt runs over, 0 … {} m from the "
+                                 "skirt top at top dead centre (the stroke 2 × "
+                                 "geometry.crank_radius + skirt.length); outside the table its "
+                                 "end values hold",
+                                 FormatValue(liner)));
   }
 }
 
@@ -1577,7 +1591,7 @@ void CheckCaseConsistency(const EngineCase& c) {
   }
   const auto& y = c.skirt.profile_y;
   if (y.size() != c.skirt.profile_h.size() || y.size() < 2) {
-    throw InputError("skirt.profile_h", std::to_string(c.skirt.profile_h.size()) + " values",
+    throw InputError("skirt.profile_h", Values(c.skirt.profile_h.size()),
                      "needs as many values as skirt.profile_y (at least 2)");
   }
   for (std::size_t k = 1; k < y.size(); ++k) {
@@ -1588,7 +1602,7 @@ void CheckCaseConsistency(const EngineCase& c) {
   }
   const auto& alpha = c.skirt.ovality_alpha;
   if (alpha.size() != c.skirt.ovality_h.size()) {
-    throw InputError("skirt.ovality_h", std::to_string(c.skirt.ovality_h.size()) + " values",
+    throw InputError("skirt.ovality_h", Values(c.skirt.ovality_h.size()),
                      "needs as many values as skirt.ovality_alpha (" +
                          std::to_string(alpha.size()) + "; both empty = no ovality)");
   }
@@ -1614,7 +1628,7 @@ void CheckCaseConsistency(const EngineCase& c) {
                          " m (cold " + FormatValue(fit.cold_clearance) + " m): it must stay > 0");
   }
   CheckBigEndSupply(c.big_end);
-  CheckSkirtSupply(c.skirt);
+  CheckSkirtSupply(c.skirt, 2.0 * c.geometry.crank_radius + c.skirt.length);
   CheckFilmMeshSizes(c);
 }
 

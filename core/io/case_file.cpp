@@ -1,5 +1,6 @@
 #include "core/io/case_file.hpp"
 
+#include <fmt/format.h>
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -381,7 +382,16 @@ void ApplyOverride(json* root, const std::string& assignment) {
       std::size_t index = 0;
       const auto [end, error] = std::from_chars(key.data(), key.data() + key.size(), index);
       if (error != std::errc() || end != key.data() + key.size() || index >= node->size()) {
-        throw InputError("--set " + path, key, "is not an index of the array");
+        const std::string list = path.substr(0, start - 1);  // the root is an object
+        throw InputError(
+            "--set " + path, text,
+            fmt::format("\"{}\" is not an element of {}: {}; a list's length changes only by "
+                        "setting it whole, {}=[a,b,…]",
+                        key, list,
+                        node->empty()
+                            ? std::string("it is empty")
+                            : fmt::format("its elements are {} … {}", 0, node->size() - 1),
+                        list));
       }
       node = &(*node)[index];
     } else if (node->is_object() && node->contains(key)) {

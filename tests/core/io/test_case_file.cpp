@@ -368,6 +368,39 @@ class TestCaseFile : public QObject {
     QCOMPARE(field("geometry=1"), std::string("--set geometry"));
     QCOMPARE(field("geometry.rod_mass=nan"), std::string("geometry.rod_mass"));
     QCOMPARE(field("novalue"), std::string("--set"));
+    // An element beyond a list's end: the error names the value given and the elements there are.
+    for (const auto& [assignment, there] :
+         {std::pair<std::string, std::string>{"skirt.oil_film_positions.5=0.03", "it is empty"},
+          {"pressure_curves.7.rpm=1500", "its elements are 0 … "}}) {
+      try {
+        json k = DefaultJson();
+        io::ApplyOverride(&k, assignment);
+        QFAIL(assignment.c_str());
+      } catch (const InputError& e) {
+        const std::string path = assignment.substr(0, assignment.find('='));
+        QCOMPARE(e.field(), "--set " + path);
+        QCOMPARE(e.value(), assignment.substr(assignment.find('=') + 1));
+        QVERIFY2(std::string(e.allowed()).find(there) != std::string::npos, e.what());
+      }
+    }
+    // A liner oil-film table wholly beside the liner the skirt runs over (here in mm where m are
+    // due) would hold one end value everywhere: refused, naming the liner's span.
+    for (const std::string positions : {"[5,6]", "[-1,-0.5]"}) {
+      try {
+        json k = DefaultJson();
+        io::ApplyOverride(&k, "skirt.oil_film_positions=" + positions);
+        io::ApplyOverride(&k, "skirt.oil_film_values=[5e-6,5e-6]");
+        io::CaseFromJson(k);
+        QFAIL(positions.c_str());
+      } catch (const InputError& e) {
+        QCOMPARE(e.field(), std::string("skirt.oil_film_positions"));
+        QVERIFY2(std::string(e.allowed()).find("0 … 0.10786 m") != std::string::npos, e.what());
+      }
+    }
+    json partly = DefaultJson();  // reaching into it is fine
+    io::ApplyOverride(&partly, "skirt.oil_film_positions=[-0.5,0.01]");
+    io::ApplyOverride(&partly, "skirt.oil_film_values=[5e-6,5e-6]");
+    QCOMPARE(io::CaseFromJson(partly).skirt.oil_film_positions.back(), 0.01);
     // The run model is no case field: the error says where it is chosen.
     try {
       json k = DefaultJson();
