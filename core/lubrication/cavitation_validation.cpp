@@ -503,8 +503,10 @@ std::vector<verification::ValidationRow> CavitationValidationRows() {
     p_peak = std::max(p_peak, std::abs(exact));
     p_err = std::max(p_err, std::abs(jfo.p_mid[i] - exact));
   }
+  // Linear elements reproduce the full film's parabola at the nodes, and the film's exact dh/dt
+  // drives it: the error is the rupture phase's (measured 6.6e-6 on Ausas et al.'s grid).
   rows.push_back({"cavitation", "squeeze: pressure at x=3/4, max error / max pressure", src,
-                  p_err / p_peak, 0.0, 0.01, false});
+                  p_err / p_peak, 0.0, 1e-4, false});
   rows.push_back({"cavitation", "squeeze: oil balance over the run / inflow", "mass conservation",
                   jfo.mass_balance, 0.0, 1e-9, false});
   rows.push_back({"cavitation", "squeeze: fluid fraction excursion outside [0, 1]",
