@@ -31,16 +31,23 @@ std::string AllowedOptions(const std::vector<OptionSpec>& specs) {
 
 Args Args::Parse(const std::string& command, const std::vector<std::string>& argv,
                  const std::vector<OptionSpec>& specs, int max_positional) {
-  // A flag given a value ("--json=1") would be taken by CLI11 as a flag override; FilmDyn's
-  // flags take none.
-  for (const std::string& token : argv) {
-    if (token.rfind("--", 0) != 0) continue;
+  // Before CLI11 sees them: an unknown option is named as such (CLI11 would take its value for
+  // a surplus positional argument and blame that), and a flag given a value ("--json=1") is
+  // refused (CLI11 would take it as a flag override; FilmDyn's flags take none).
+  for (std::size_t k = 0; k < argv.size(); ++k) {
+    const std::string& token = argv[k];
+    if (token.size() <= 2 || token.rfind("--", 0) != 0) continue;
     const auto eq = token.find('=');
-    if (eq == std::string::npos) continue;
-    const OptionSpec* spec = FindSpec(specs, token.substr(2, eq - 2));
-    if (spec != nullptr && spec->value_name.empty()) {
+    const std::string name = token.substr(2, eq == std::string::npos ? eq : eq - 2);
+    const OptionSpec* spec = FindSpec(specs, name);
+    if (spec == nullptr) {
+      throw InputError("option --" + name, "'" + token + "'",
+                       "unknown option for '" + command + "'; " + AllowedOptions(specs));
+    }
+    if (spec->value_name.empty() && eq != std::string::npos) {
       throw InputError("option --" + spec->name, "'" + token + "'", "is a flag and takes no value");
     }
+    if (!spec->value_name.empty() && eq == std::string::npos) ++k;  // its value, whatever it is
   }
   CLI::App app{"", command};
   app.set_help_flag();  // the dispatcher answers --help before parsing

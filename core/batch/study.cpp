@@ -82,7 +82,14 @@ StudyDesign ParseDesign(const Study& s, const json& j) {
 // A number level of `field` at `key`: finite, whole for integers, within the field's range.
 double CheckedLevel(const Study& s, const engine::CaseField& field, const json& j,
                     const std::string& key) {
-  const double v = NumberAt(s, j, key);
+  if (!j.is_number() || !std::isfinite(j.get<double>())) {
+    const std::string range = field.RangeText();
+    Bad(s, key + " (" + field.path + ")", JsonText(j),
+        range.rfind("integer", 0) == 0                 ? "must be an " + range
+        : range.front() == '[' || range.front() == '(' ? "must be a finite number in " + range
+                                                       : "must be a finite number " + range);
+  }
+  const double v = j.get<double>();
   if (field.kind == engine::FieldKind::kInteger && v != std::floor(v)) {
     Bad(s, key, JsonText(j), "must be a whole number (" + field.path + " is an integer)");
   }
@@ -290,7 +297,7 @@ Study ParseStudy(const std::string& text, const fs::path& path) {
   json j;
   try {
     j = json::parse(text);
-  } catch (const json::parse_error& e) {
+  } catch (const json::exception& e) {  // syntax, bad UTF-8, a number beyond a double's range
     throw InputError(path.filename().string(), "(file)",
                      std::string("is not valid JSON: ") + e.what());
   }
@@ -349,8 +356,10 @@ Study ParseStudy(const std::string& text, const fs::path& path) {
                  field->kind == engine::FieldKind::kNumberList) {
         std::string list;
         for (std::size_t k = 0; k < value.size(); ++k) {
-          list += (k ? "," : "") +
-                  Number(NumberAt(s, value[k], set_key + "[" + std::to_string(k) + "]"));
+          const std::string element = set_key + "[" + std::to_string(k) + "]";
+          const double v = NumberAt(s, value[k], element);
+          field->Check(v, s.study_file.filename().string() + ": " + element);
+          list += (k ? "," : "") + Number(v);
         }
         s.base_overrides.push_back(key + "=[" + list + "]");
       } else {
@@ -506,6 +515,19 @@ io::LoadedCase LoadWithOverrides(const Study& study, const std::vector<std::stri
   try {
     return io::LoadCase(study.case_file, overrides);
   } catch (const InputError& e) {
+    // A rule between fields names one of them: when the study file's "set" gives that field (or
+    // the list that element belongs to), the error is the set entry's.
+    std::string named = e.field();
+    if (const auto dot = named.rfind('.');
+        dot != std::string::npos && dot + 1 < named.size() &&
+        named.find_first_not_of("0123456789", dot + 1) == std::string::npos) {
+      named.erase(dot);
+    }
+    if (std::any_of(study.base_overrides.begin(), study.base_overrides.end(),
+                    [&named](const std::string& o) { return o.rfind(named + "=", 0) == 0; })) {
+      throw InputError(study.study_file.filename().string() + ": set." + e.field(), e.value(),
+                       e.allowed());
+    }
     const std::string prefix = "--set";
     if (e.field().rfind(prefix, 0) != 0) throw;
     std::string path = e.field().substr(prefix.size());
@@ -698,6 +720,21 @@ std::size_t DefaultRankFigure(const std::vector<StudyRow>& rows) {
 
 std::vector<MainEffect> MainEffects(const Study& study, const std::vector<StudyRow>& rows) {
   const std::size_t count = io::ComparisonFigures().size();
+  // One at a time: the base point (the design's first) and the points that vary the factor
+  // itself; a point that varies another factor has this one at its base value and would mix
+  // that factor's effect into this one's base level.
+  const StudyPoint* base = nullptr;
+  if (study.design == StudyDesign::kOneAtATime) {
+    for (const StudyRow& r : rows)
+      if (r.point.number == 1) base = &r.point;
+  }
+  const auto on_line = [&](const StudyRow& r, std::size_t f) {
+    if (base == nullptr) return true;
+    for (std::size_t g = 0; g < study.factors.size(); ++g) {
+      if (g != f && g < r.point.values.size() && r.point.values[g] != base->values[g]) return false;
+    }
+    return true;
+  };
   std::vector<MainEffect> effects;
   for (std::size_t f = 0; f < study.factors.size(); ++f) {
     const StudyFactor& factor = study.factors[f];
@@ -713,7 +750,8 @@ std::vector<MainEffect> MainEffects(const Study& study, const std::vector<StudyR
       std::vector<double> sum(count, 0.0);
       std::vector<int> have(count, 0);
       for (const StudyRow& r : rows) {
-        if (r.state != PointState::kDone || r.point.values[f] != level.label) continue;
+        if (r.state != PointState::kDone || r.point.values[f] != level.label || !on_line(r, f))
+          continue;
         ++level.points;
         for (std::size_t k = 0; k < count && k < r.figures.size(); ++k) {
           if (r.figures[k]) {
@@ -762,8 +800,11 @@ std::string StudyMarkdown(const Study& study, const std::vector<StudyRow>& rows,
                                  : study.case_file.filename().string())
      << ".\n\n";
   if (!study.base_overrides.empty()) {  // the study file's "set": every point runs with these
-    md << "Changed in the base case for every point: " << io::OverridesText(study.base_overrides)
-       << ".\n\n";
+    // In the order of their paths: the same whether the study file or the study folder's copy of
+    // it (whose "set" a JSON object keeps sorted) was read.
+    std::vector<std::string> sets = study.base_overrides;
+    std::sort(sets.begin(), sets.end());
+    md << "Changed in the base case for every point: " << io::OverridesText(sets) << ".\n\n";
   }
   md << "| factor | levels (SI) |\n|---|---|\n";
   for (const StudyFactor& f : study.factors) {

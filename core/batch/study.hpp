@@ -151,8 +151,9 @@ struct MainEffect {
 /// range, in a Latin hypercube, has none): for each level, the done points whose value of the
 /// factor is that level and the mean of each figure over them. The other factors are as the
 /// design combines them, so in a full factorial each level's mean averages over the same
-/// combinations of the others. In a one-at-a-time design the base point counts for a level only
-/// where its value is that level.
+/// combinations of the others. In a one-at-a-time design a factor's levels take only its own
+/// points: those that vary it, and the base point at the level equal to its base value (if one
+/// is); the points that vary another factor, which hold this one at its base value, do not count.
 std::vector<MainEffect> MainEffects(const Study& study, const std::vector<StudyRow>& rows);
 /// The done points that have figure `figure` (an index in io::ComparisonFigures()), best first:
 /// smallest first, or largest when `largest_first`; equal values keep the order of `rows`.

@@ -536,8 +536,8 @@ engine::PressureCurve PressureCurveForSpeed(const LoadedCase& loaded, double rpm
   const auto& curves = loaded.value.pressure_curves;
   if (curves.empty()) {
     throw InputError("pressure_curves", "[]",
-                     "the case has no cylinder-pressure curve; "
-                     "add one (command line: --pressure-curve FILE.csv)");
+                     "the case has no cylinder-pressure curve; add one to the case's "
+                     "pressure_curves (for one run: filmdyn run --pressure-curve FILE.csv)");
   }
   std::vector<std::size_t> order(curves.size());
   for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
@@ -561,7 +561,8 @@ engine::PressureCurve PressureCurveForSpeed(const LoadedCase& loaded, double rpm
       "operating.rpm", FormatValue(rpm),
       "must lie within the speeds of pressure_curves [" + FormatValue(curves[order.front()].rpm) +
           ", " + FormatValue(curves[order.back()].rpm) +
-          "] rpm; add a curve for this speed (command line: --pressure-curve FILE.csv)");
+          "] rpm; add a curve for this speed to the case's pressure_curves (for one run: "
+          "filmdyn run --pressure-curve FILE.csv)");
 }
 
 }  // namespace filmdyn::io

@@ -527,6 +527,16 @@ class TestCli : public QObject {
     expect_error({"--rpm", "nan"}, "must be a finite number");
     expect_error({"--rpm", "1", "--rpm", "2"}, "only once");
     expect_error({"extra"}, "takes no positional");
+    // An unknown option with a value is named as unknown, not its value as a surplus argument;
+    // a known option's value may look like an option.
+    expect_error({"--pressure-curve", "p.csv", "--rpm", "1"},
+                 "--pressure-curve = '--pressure-curve': unknown option for 'run'; allowed: --rpm");
+    expect_error({"--rpm", "1", "--pressure-curve=p.csv"}, "unknown option for 'run'");
+    try {
+      (void)filmdyn::cli::Args::Parse("run", {"--rpm", "--5"}, specs, 0);
+    } catch (const filmdyn::InputError& error) {
+      QVERIFY2(!QString(error.what()).contains("unknown option"), error.what());
+    }
     QCOMPARE(filmdyn::cli::ParseDoubleList("--rpm", "1000,2000").size(), std::size_t(2));
   }
 

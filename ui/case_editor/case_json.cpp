@@ -16,7 +16,7 @@ engine::EngineCase CaseFromJsonText(const std::string& text) {
   nlohmann::json json;
   try {
     json = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& e) {
+  } catch (const nlohmann::json::exception& e) {  // syntax, bad UTF-8, a number out of range
     throw InputError("case file", "JSON", std::string("not valid JSON: ") + e.what());
   }
   return io::CaseFromJson(json);

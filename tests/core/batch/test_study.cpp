@@ -80,6 +80,14 @@ class TestStudy : public QObject {
          "s.json: factors[0].levels[1] (lubricant.viscosity)"},
         {R"({"design": "full-factorial", "factors": [{"path": "big_end.mesh_z", "levels": [8.5]}]})",
          "factors[0].levels[0] = 8.5: must be a whole number"},
+        // A level that is no number names the field and its range too.
+        {R"({"design": "full-factorial", "factors": [{"path": "skirt.oil_film", "levels": [1e-5, null]}]})",
+         "s.json: factors[0].levels[1] (skirt.oil_film) = null: must be a finite number in (0, "},
+        {R"({"design": "full-factorial", "factors": [{"path": "big_end.mesh_z", "levels": ["8"]}]})",
+         "s.json: factors[0].levels[0] (big_end.mesh_z) = \"8\": must be an integer in ["},
+        // A number beyond a double's range is bad JSON for us, named with the file.
+        {R"({"design": "full-factorial", "factors": [{"path": "operating.rpm", "levels": [1e999]}]})",
+         "s.json = (file): is not valid JSON"},
         {R"({"design": "full-factorial", "factors": [{"path": "operating.rpm", "range": [1000, 2000]}]})",
          "a range needs \"count\""},
         {R"({"design": "latin-hypercube", "points": 5, "factors": [{"path": "operating.rpm", "range": [1000, 2000], "count": 3}]})",
@@ -234,10 +242,12 @@ class TestStudy : public QObject {
     // study.md says what every point ran with besides its factors.
     const std::string md = batch::StudyMarkdown(s, DoneRows(s), "");
     QVERIFY2(Contains(md,
-                      "Changed in the base case for every point: `big_end.supply = pin_holes`, "
-                      "`big_end.supply_hole_angles = [0,3.1]`, `skirt.model = ideal`, "
-                      "`big_end.model = lubricated`, `skirt.oil_film = 1e-05`."),
+                      "Changed in the base case for every point: `big_end.model = lubricated`, "
+                      "`big_end.supply = pin_holes`, `big_end.supply_hole_angles = [0,3.1]`, "
+                      "`skirt.model = ideal`, `skirt.oil_film = 1e-05`."),
              md.c_str());
+    // The same from the study folder's copy of the file (its "set" a JSON object, in key order).
+    QCOMPARE(batch::StudyMarkdown(ParseStudy(text, "s.json"), DoneRows(s), ""), md);
     QVERIFY(!Contains(batch::StudyMarkdown(ParseStudy(R"({"design": "full-factorial",
         "factors": [{"path": "operating.rpm", "levels": [2000]}]})",
                                                       "s.json"),
@@ -255,6 +265,9 @@ class TestStudy : public QObject {
         {R"({"big_end.supply_hole_angles": [0, "a"]})",
          "s.json: set.big_end.supply_hole_angles[1]"},
         {R"({"skirt.oil_film": [1e-5]})", "s.json: set.skirt.oil_film = [1e-05]: must be a number"},
+        // A list's element out of its field's range, named in the file.
+        {R"({"big_end.supply_hole_angles": [0, 10]})",
+         "s.json: set.big_end.supply_hole_angles[1] = 10: must be a finite number in ["},
     };
     for (const auto& c : refused) {
       const std::string error =
@@ -272,6 +285,18 @@ class TestStudy : public QObject {
     } catch (const InputError& e) {
       QCOMPARE(e.field(), std::string("s.json: set.skirt.nope"));
       QVERIFY2(Contains(e.allowed(), "no such field"), e.what());
+    }
+    // A rule between fields broken by a set entry (a hole wider than the bearing): the set's.
+    const Study wide = ParseStudy(R"({"design": "full-factorial", "set": {"model": "only-lbrbe",
+        "big_end.supply": "pin_holes", "big_end.supply_hole_diameter": 0.03},
+        "factors": [{"path": "operating.rpm", "levels": [2000]}]})",
+                                  "s.json");
+    try {
+      batch::LoadStudyBase(wide);
+      QFAIL("a supply hole wider than the bearing was accepted");
+    } catch (const InputError& e) {
+      QCOMPARE(e.field(), std::string("s.json: set.big_end.supply_hole_diameter"));
+      QVERIFY2(Contains(e.allowed(), "big_end.width"), e.what());
     }
   }
 
@@ -397,6 +422,28 @@ class TestStudy : public QObject {
     QCOMPARE(sampled.size(), std::size_t(1));
     QCOMPARE(sampled[0].factor, std::size_t(1));
     QCOMPARE(sampled[0].levels[1].points, 0);
+
+    // One at a time (base: 6000 rpm, ideal): 1 the base, 2–3 rpm varied, 4 the model varied. The
+    // rpm's 6000 level is the base point alone: point 4 holds 6000 rpm too, but varies the model,
+    // whose effect must not enter the rpm's line (nor points 2–3 the model's).
+    const Study oat = ParseStudy(R"({"design": "one-at-a-time", "factors": [
+        {"path": "operating.rpm", "levels": [2000, 4000, 6000]},
+        {"path": "model", "levels": ["ideal", "only-lbrbe"]}]})",
+                                 "s.json");
+    std::vector<batch::StudyRow> oat_rows = DoneRows(oat);
+    QCOMPARE(oat_rows.size(), std::size_t(4));
+    QCOMPARE(oat_rows[0].point.values, (std::vector<std::string>{"6000", "ideal"}));
+    QCOMPARE(oat_rows[3].point.values, (std::vector<std::string>{"6000", "only-lbrbe"}));
+    for (std::size_t k = 0; k < 4; ++k) oat_rows[k].figures[fpl] = 100.0 * double(k + 1);
+    const std::vector<batch::MainEffect> oat_effects = batch::MainEffects(oat, oat_rows);
+    QCOMPARE(oat_effects.size(), std::size_t(2));
+    QCOMPARE(oat_effects[0].levels[2].label, std::string("6000"));
+    QCOMPARE(oat_effects[0].levels[2].points, 1);
+    QCOMPARE(*oat_effects[0].levels[2].means[fpl], 100.0);  // not (100 + 400) / 2
+    QCOMPARE(*oat_effects[0].levels[0].means[fpl], 200.0);  // 2000 rpm: point 2
+    QCOMPARE(oat_effects[1].levels[0].points, 1);           // ideal: the base alone
+    QCOMPARE(*oat_effects[1].levels[0].means[fpl], 100.0);  // not (100 + 200 + 300) / 3
+    QCOMPARE(*oat_effects[1].levels[1].means[fpl], 400.0);
   }
 
   // A figure a point's run has but the comparison leaves out (a peak film pressure that is a
