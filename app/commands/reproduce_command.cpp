@@ -193,9 +193,14 @@ Command MakeReproduceCommand() {
         out / "figures.md",
         FiguresIndex(models_dir, speeds_dir, skirt_lbrbe_6000) +
             "\nFilm meshes of every run: " + meshes +
-            (args.Has("paper-meshes") ? " (the paper's Table II)" : " (the case's)") +
-            ". Each run's `summary.json` holds the estimated discretisation error of its "
-            "headline figures (`discretisation_error`).\n");
+            (args.Has("paper-meshes") ? " (the paper's Table II)" : " (the case's)") + "." +
+            (args.Values("set").empty() ? std::string()
+                                        : " Changed in the case for every run: " +
+                                              io::OverridesText(args.Values("set")) + ".") +
+            (c.solver.error_estimate != 0
+                 ? " Each run's `summary.json` holds the estimated discretisation error of its "
+                   "headline figures (`discretisation_error`).\n"
+                 : " The discretisation error was not estimated (solver.error_estimate = 0).\n"));
     streams.out << "## The three models at 6000 rpm\n\n"
                 << models_table << "\n## Skirt-LBRBE at four speeds\n\n"
                 << speeds_table;

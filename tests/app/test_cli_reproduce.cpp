@@ -68,6 +68,11 @@ class TestCliReproduce : public QObject {
     for (int figure = 5; figure <= 15; ++figure) {
       QVERIFY2(text.contains(QString("| Fig. %1 |").arg(figure)), qPrintable(text));
     }
+    // What every run ran with besides the case: the --set changes, and whether errors were
+    // estimated.
+    QVERIFY2(text.contains("Changed in the case for every run: `skirt.mesh_thrust = 10`, "),
+             qPrintable(text));
+    QVERIFY2(text.contains("holds the estimated discretisation error"), qPrintable(text));
     QVERIFY(result.out.contains("## The three models at 6000 rpm"));
   }
 };
