@@ -71,6 +71,7 @@ class TestGeneralMechanisms : public QObject {
     // At half a period the pendulum is at the opposite extreme, at rest.
     QVERIFY2(std::abs(s.q[2] + theta0) < 1e-6,
              qPrintable(QString("theta(T/2) = %1").arg(s.q[2], 0, 'g', 12)));
+    qInfo("pendulum at half a period: angle error %.2g rad", std::abs(s.q[2] + theta0));
     const double omega_max = std::sqrt(2 * p.mass * kG * p.arm * (1 - std::cos(theta0)) /
                                        (p.inertia + p.mass * p.arm * p.arm));
     QVERIFY(std::abs(s.v[2]) < 1e-5 * omega_max);
