@@ -88,21 +88,29 @@ class TestWorkerPool : public QObject {
     }
   }
   void tasksOverlapOnTwoThreads() {
+    // Each task of a batch waits (up to 10 s) until the other has started: a pool that ran them
+    // one after the other would keep the first waiting and fail; on a loaded machine the second
+    // thread only needs to wake within the wait (a fixed pause failed under load: the caller
+    // could finish the first task and take the second before the worker woke).
     WorkerPool pool(2);
     std::mutex mutex;
     std::set<std::thread::id> ids;
-    std::atomic<int> inside{0}, most{0};
+    std::atomic<int> most{0};
     for (int batch = 0; batch < 20; ++batch) {
+      std::atomic<int> started{0}, inside{0};
       pool.Run(2, [&](int) {
-        const int now = ++inside;
-        int seen = most.load();
-        while (now > seen && !most.compare_exchange_weak(seen, now)) {
-        }
+        ++inside;  // before `started`: whoever sees both started sees both inside
+        ++started;
         {
           std::lock_guard lock(mutex);
           ids.insert(std::this_thread::get_id());
         }
-        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+        for (int k = 0; k < 10000 && started.load() < 2; ++k)
+          std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        const int now = inside.load();
+        int seen = most.load();
+        while (now > seen && !most.compare_exchange_weak(seen, now)) {
+        }
         --inside;
       });
     }
