@@ -160,9 +160,10 @@ inline constexpr const char* kMassConservingNote =
     "(order 1.6), and at 4000 rpm and below a mass-conserving big end's figures are not "
     "in the asymptotic range of these meshes (fed only by its film-start line, at 2000 rpm its "
     "minimum film fell by a quarter from 100 to 200 elements around while this estimate gave "
-    "11 %; fed by a crank-pin hole at 4000 rpm, it fell by 1.1 % from 100 x 10 to 200 x 20 "
-    "elements while this estimate gave 0.4 %; its oil per cycle, 7 % below the finest meshes', "
-    "was estimated at 8 %): there this estimate can understate the film's error "
+    "11 %; fed by a crank-pin hole, at 2000 rpm it fell by 17 % from 100 x 10 to 400 x 20 "
+    "elements, not yet converged, while this estimate gave 11 %, and at 4000 rpm by 2.1 % from "
+    "100 x 10 to 200 x 20 while it gave 0.3 %; its oil per cycle, 7 % below the finest meshes', "
+    "was estimated at 8 %): there this estimate can understate the film's error by half or more "
     "(docs/validation/errors.md, section 6)";
 
 struct ErrorEstimate {
