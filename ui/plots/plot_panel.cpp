@@ -410,19 +410,19 @@ void PlotPanel::updateRun(const PlotRun& run) {
   const Lap samples = OneLap(run.samples), motion = OneLap(run.motion);
   for (ChartEntry& entry : charts_) {
     auto& series = entry.run_series[id];
+    const auto new_line = [&](size_t kind) {
+      auto* s = new QLineSeries;
+      s->setName(entry.spec->curves[kind].name);
+      entry.chart->addSeries(s);
+      s->attachAxis(AxisX(entry.chart));
+      s->attachAxis(AxisY(entry.chart));
+      s->setVisible(r.visible);
+      return s;
+    };
     if (series.empty()) {
-      for (size_t k = 0; k < entry.spec->curves.size(); ++k) {
-        std::array<QLineSeries*, 2> lines{};
-        for (QLineSeries*& s : lines) {
-          s = new QLineSeries;
-          s->setName(entry.spec->curves[k].name);
-          entry.chart->addSeries(s);
-          s->attachAxis(AxisX(entry.chart));
-          s->attachAxis(AxisY(entry.chart));
-          s->setVisible(r.visible);
-        }
-        series.push_back(lines);
-      }
+      // The part after a gap only when a run has one (every series costs time to draw).
+      for (size_t k = 0; k < entry.spec->curves.size(); ++k)
+        series.push_back({new_line(k), nullptr});
     }
     auto& points = entry.run_points[id];
     points.resize(series.size());
@@ -439,7 +439,8 @@ void PlotPanel::updateRun(const PlotRun& run) {
       }
       const qsizetype gap = points[k].after_gap < 0 ? points[k].xy.size() : points[k].after_gap;
       series[k][0]->replace(points[k].xy.first(gap));
-      series[k][1]->replace(points[k].xy.sliced(gap));
+      if (points[k].after_gap >= 0 && series[k][1] == nullptr) series[k][1] = new_line(k);
+      if (series[k][1] != nullptr) series[k][1]->replace(points[k].xy.sliced(gap));
     }
   }
   restyle();
@@ -449,6 +450,7 @@ void PlotPanel::removeRun(int run_id) {
   for (ChartEntry& entry : charts_) {
     for (const auto& lines : entry.run_series.value(run_id)) {
       for (QLineSeries* s : lines) {
+        if (s == nullptr) continue;
         entry.chart->removeSeries(s);
         delete s;
       }
@@ -466,7 +468,8 @@ void PlotPanel::setRunVisible(int run_id, bool visible) {
   runs_[run_id].visible = visible;
   for (ChartEntry& entry : charts_) {
     for (const auto& lines : entry.run_series.value(run_id))
-      for (QLineSeries* s : lines) s->setVisible(visible);
+      for (QLineSeries* s : lines)
+        if (s != nullptr) s->setVisible(visible);
   }
   restyle();
 }
@@ -499,7 +502,7 @@ int PlotPanel::pointCount(int run_id) const {
   int count = 0;
   for (const ChartEntry& entry : charts_) {
     for (const auto& lines : entry.run_series.value(run_id))
-      for (QLineSeries* s : lines) count += int(s->count());
+      for (QLineSeries* s : lines) count += s != nullptr ? int(s->count()) : 0;
   }
   return count;
 }
@@ -549,7 +552,8 @@ void PlotPanel::restyle() {
   for (ChartEntry& entry : charts_) {
     for (auto it = entry.run_series.begin(); it != entry.run_series.end(); ++it) {
       for (size_t k = 0; k < it.value().size(); ++k) {
-        for (QLineSeries* s : it.value()[k]) s->setPen(seriesPen(it.key(), k));
+        for (QLineSeries* s : it.value()[k])
+          if (s != nullptr) s->setPen(seriesPen(it.key(), k));
       }
     }
     rescale(entry);

@@ -135,7 +135,7 @@ class PlotPanel : public QWidget {
     std::optional<QRectF> zoom;  ///< the visible value range when zoomed
     QRectF full;                 ///< the automatic (unzoomed) value range
     /// Per run, per kind of curve: its line and the line of its part after a gap (a run that
-    /// has not computed a whole cycle yet; empty otherwise).
+    /// has not computed a whole cycle yet; nullptr until a run has one, empty after).
     QMap<int, std::vector<std::array<QLineSeries*, 2>>> run_series;
     QMap<int, std::vector<CurvePoints>> run_points;
     std::vector<ClippedSpike> clipped;  ///< spikes outside the shown range (rescale)
