@@ -495,12 +495,18 @@ const BearingResult& BearingSolver::SolveStep(const BearingState& s, double time
   }
   r.inlet_flow = r.feed_flow;
   if (config_.feed.kind == OilFeed::Kind::kLineOfCentres) {
-    // Couette flow carried onto the film-start line by the upstream film (dual-cell widths).
+    // Couette flow carried onto the film-start line by the upstream film (dual-cell widths). A
+    // mass-conserving film carries the fluid fraction of the node upstream (a cavity's partial
+    // film) over the face's centred gap, as its transport does; the Reynolds film a full film.
+    const bool partial = Transient() && sol.fluid_fraction.size() == n;
+    const int nx = m.nx_nodes();
     for (int j = 0; j < ny; ++j) {
       double w = 0.0;
       if (j > 0) w += 0.5 * (m.y_lines[j] - m.y_lines[j - 1]);
       if (j + 1 < ny) w += 0.5 * (m.y_lines[j + 1] - m.y_lines[j]);
-      r.inlet_flow += 0.5 * std::abs(params.u_sum) * h[m.Node(0, j)] * w;
+      const int start = m.Node(0, j), up = m.Node(params.u_sum >= 0.0 ? nx - 1 : 1, j);
+      const double carried = partial ? sol.fluid_fraction[up] * 0.5 * (h[up] + h[start]) : h[start];
+      r.inlet_flow += 0.5 * std::abs(params.u_sum) * carried * w;
     }
   }
   r.side_flow *= sym;
