@@ -34,6 +34,7 @@ Args Args::Parse(const std::string& command, const std::vector<std::string>& arg
   // Before CLI11 sees them: an unknown option is named as such (CLI11 would take its value for
   // a surplus positional argument and blame that), and a flag given a value ("--json=1") is
   // refused (CLI11 would take it as a flag override; FilmDyn's flags take none).
+  std::map<std::string, int> given;
   for (std::size_t k = 0; k < argv.size(); ++k) {
     const std::string& token = argv[k];
     if (token.size() <= 2 || token.rfind("--", 0) != 0) continue;
@@ -47,7 +48,19 @@ Args Args::Parse(const std::string& command, const std::vector<std::string>& arg
     if (spec->value_name.empty() && eq != std::string::npos) {
       throw InputError("option --" + spec->name, "'" + token + "'", "is a flag and takes no value");
     }
-    if (!spec->value_name.empty() && eq == std::string::npos) ++k;  // its value, whatever it is
+    std::string value = token;  // a flag's "value" is itself
+    if (!spec->value_name.empty()) {
+      if (eq != std::string::npos)
+        value = token.substr(eq + 1);
+      else if (k + 1 < argv.size())
+        value = argv[++k];  // its value, whatever it is
+      else
+        value.clear();
+    }
+    if (!spec->repeatable && ++given[spec->name] > 1) {
+      throw InputError("option --" + spec->name, "'" + value + "'",
+                       "may be given only once (it was given before)");
+    }
   }
   CLI::App app{"", command};
   app.set_help_flag();  // the dispatcher answers --help before parsing

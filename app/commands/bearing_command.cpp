@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <ostream>
+#include <utility>
 #include <vector>
 
 #include "app/commands/commands.hpp"
@@ -22,8 +23,13 @@ lubrication::BearingMeshSpec ParseMesh(const std::string& text) {
   const auto x = text.find_first_of("xX");
   const std::string allowed = "must be NthetaxNz with integers, e.g. 240x40 (Ntheta >= 8, Nz >= 2)";
   if (x == std::string::npos) throw InputError("--mesh", text, allowed);
-  const double nt = ParseDouble("--mesh", text.substr(0, x));
-  const double nz = ParseDouble("--mesh", text.substr(x + 1));
+  double nt = 0.0, nz = 0.0;
+  try {  // either count not a number ("240x", "240x40x3"): the whole value and the form
+    nt = ParseDouble("--mesh", text.substr(0, x));
+    nz = ParseDouble("--mesh", text.substr(x + 1));
+  } catch (const InputError&) {
+    throw InputError("--mesh", text, allowed);
+  }
   if (nt != std::floor(nt) || nz != std::floor(nz) || nt < 8 || nz < 2 || nt > 20000 || nz > 5000) {
     throw InputError("--mesh", text, allowed);
   }
@@ -238,6 +244,22 @@ Command MakeBearingCommand() {
                                                     .tolerance = "elastic tolerance",
                                                     .max_iterations = "elastic iterations",
                                                     .imported = "--compliance"});
+    // The calculator names its inputs by their own fields; here the options that set them.
+    try {
+      in.Validate();
+    } catch (const InputError& e) {
+      static const std::pair<const char*, const char*> kOptions[] = {
+          {"bearing.radius", "--radius"},
+          {"bearing.length", "--length"},
+          {"bearing.radial_clearance", "--clearance"},
+          {"bearing.viscosity", "--viscosity"},
+          {"bearing.speed_rpm", "--rpm"},
+          {"bearing.eps", "--eps"},
+          {"bearing.load", "--load"}};
+      for (const auto& [field, option] : kOptions)
+        if (e.field() == field) throw InputError(option, e.value(), e.allowed());
+      throw;
+    }
     const lubrication::BearingCalcResult r = lubrication::RunBearingCalculator(in);
     if (args.Has("json")) {
       nlohmann::json j;

@@ -491,6 +491,24 @@ class TestCli : public QObject {
     QVERIFY(!table.out.contains("Raimondi"));
   }
 
+  // The bearing calculator's inputs out of range name the option the user typed (and a malformed
+  // mesh its whole value and form).
+  void bearingErrorsNameTheOption() {
+    for (const auto& [argv, needle] : std::vector<std::pair<QStringList, QString>>{
+             {{"bearing", "--eps", "1"}, "--eps = 1: must be a finite number in [0, 1)"},
+             {{"bearing", "--eps", "0.5", "--clearance", "-1e-6"}, "--clearance = -1e-06"},
+             {{"bearing", "--eps", "0.5", "--rpm", "-3000"}, "--rpm = -3000"},
+             {{"bearing", "--load", "0"}, "--load = 0"},
+             {{"bearing", "--eps", "0.5", "--mesh", "240x"}, "--mesh = 240x: must be NthetaxNz"},
+             {{"bearing", "--eps", "0.5", "--mesh", "240x40x3"},
+              "--mesh = 240x40x3: must be NthetaxNz"}}) {
+      const Result result = Run(argv);
+      QCOMPARE(result.exit_code, 2);
+      QVERIFY2(result.err.contains(needle) && !result.err.contains("bearing."),
+               qPrintable(result.err));
+    }
+  }
+
   void validateRejectsUnknownSuite() {
     const Result result = Run({"validate", "--suite", "nope"});
     QCOMPARE(result.exit_code, 2);
@@ -525,7 +543,7 @@ class TestCli : public QObject {
     expect_error({"--rpm"}, "needs a value");
     expect_error({"--rpm", "fast"}, "--rpm = 'fast': must be a finite number");
     expect_error({"--rpm", "nan"}, "must be a finite number");
-    expect_error({"--rpm", "1", "--rpm", "2"}, "only once");
+    expect_error({"--rpm", "1", "--rpm", "2"}, "--rpm = '2': may be given only once");
     expect_error({"extra"}, "takes no positional");
     // An unknown option with a value is named as unknown, not its value as a surplus argument;
     // a known option's value may look like an option.
