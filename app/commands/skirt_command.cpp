@@ -64,6 +64,9 @@ std::pair<double, double> ParseRange(const std::string& option, const std::strin
 
 const lubrication::SkirtInputNames kOptionNames{
     "--e0", "--tilt", "--speed", "--e0-rate", "--tilt-rate", "--side-force", "--moment"};
+// A map's states come from its e0 range and tilts: errors name those options.
+const lubrication::SkirtInputNames kMapOptionNames{
+    "--e0-range", "--tilts", "--speed", "--e0-rate", "--tilt-rate", "--side-force", "--moment"};
 
 }  // namespace
 
@@ -123,18 +126,25 @@ Command MakeSkirtCommand() {
     if (!speed) throw InputError("--speed", "(missing)", "give the piston speed [m/s]");
     const bool load_mode = args.Has("side-force") || args.Has("moment");
     const bool map_mode = args.Has("map");
-    const bool state_given =
-        args.Has("e0") || args.Has("tilt") || args.Has("e0-rate") || args.Has("tilt-rate");
+    std::string state_option;  // the first state option given, as typed
+    for (const char* name : {"e0", "tilt", "e0-rate", "tilt-rate"})
+      if (state_option.empty() && args.Has(name)) state_option = std::string("--") + name;
+    const bool state_given = !state_option.empty();
     if (load_mode && (state_given || map_mode)) {
-      throw InputError(state_given ? "--e0/--tilt" : "--map", "(given with --side-force)",
+      throw InputError(state_given ? state_option : "--map",
+                       std::string("(given with ") +
+                           (args.Has("side-force") ? "--side-force" : "--moment") + ")",
                        "a load (mode 2) finds e0 and tilt itself: give either a state, a load or "
                        "--map");
     }
     if (map_mode && (args.Has("e0") || args.Has("e0-rate") || args.Has("tilt-rate"))) {
-      throw InputError("--e0", "(given with --map)",
+      throw InputError(args.Has("e0")        ? "--e0"
+                       : args.Has("e0-rate") ? "--e0-rate"
+                                             : "--tilt-rate",
+                       "(given with --map)",
                        "the map sweeps e0 at steady sliding; set its tilts with --tilts");
     }
-    lubrication::SkirtCalculator calc(config, kOptionNames);
+    lubrication::SkirtCalculator calc(config, map_mode ? kMapOptionNames : kOptionNames);
     const bool json = args.Has("json");
 
     if (map_mode) {

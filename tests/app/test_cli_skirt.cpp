@@ -146,9 +146,20 @@ class TestCliSkirt : public QObject {
                               << "give the piston speed";
     QTest::newRow("bad mesh") << QStringList{"--speed", "1", "--mesh", "30x40"} << "--mesh = 30x40"
                               << "T+R+AxN";
-    QTest::newRow("state and load")
-        << QStringList{"--e0", "0", "--side-force", "1", "--speed", "1"} << "--e0/--tilt"
+    QTest::newRow("state and load") << QStringList{"--e0", "0", "--side-force", "1", "--speed", "1"}
+                                    << "--e0 = (given with --side-force)"
+                                    << "either a state, a load or --map";
+    QTest::newRow("a rate and a load")
+        << QStringList{"--e0-rate", "1", "--side-force", "1", "--speed", "1"}
+        << "--e0-rate = (given with --side-force)"
         << "either a state, a load or --map";
+    QTest::newRow("a map point into the liner")
+        << QStringList{"--map",      QDir::tempPath() + "/filmdyn-skirt-map-bad",
+                       "--speed",    "10",
+                       "--e0-range", "-1e-3:1e-3",
+                       "--points",   "3"}
+        << "--e0-range = -0.001"
+        << "at --tilts = 0 rad the film is positive for";
   }
   void badInputNamesTheOption() {
     QFETCH(QStringList, arguments);
