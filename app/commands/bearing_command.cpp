@@ -88,7 +88,7 @@ Command MakeBearingCommand() {
       {"half-space", "",
        "elastic journal and bearing as half-spaces (moduli --E1/--E2, ratios --nu1/--nu2): the "
        "film and the surfaces' deformation solved together"},
-      {"json", "", "print one JSON object"}};
+      {"json", "", "print one JSON object (SI; \"units\" names each dimensional figure's unit)"}};
   command.details =
       "Outputs follow Raimondi & Boyd (1958): S = (mu N / P)(R/c)^2 with N in rev/s and "
       "P = W/(2 R L); friction variable (R/c) f; side_flow_variable = Q_s/(R c N L), Q_s the "
@@ -311,6 +311,23 @@ Command MakeBearingCommand() {
         j["elastic_residual"] = r.elastic.residual;
         j["elastic_tolerance"] = r.elastic.tolerance;
       }
+      // Every dimensional figure's unit (the others are ratios, counts or texts).
+      nlohmann::json units = {{"attitude_deg", "deg"},
+                              {"side_flow", "m^3/s"},
+                              {"inlet_flow", "m^3/s"},
+                              {"moft", "m"},
+                              {"friction_torque", "N*m"},
+                              {"friction_power_loss", "W"},
+                              {"load", "N"},
+                              {"contact_load", "N"},
+                              {"max_pressure", "Pa"},
+                              {"viscosity_used", "Pa*s"},
+                              {"max_deformation", "m"}};
+      if (temperature) units["temperature"] = "degC";
+      if (j.contains("pressure_viscosity_coefficient"))
+        units["pressure_viscosity_coefficient"] = "1/Pa";
+      if (cross.active()) units["cross_critical_rate"] = "1/s";
+      j["units"] = units;
       j["mesh"] = std::to_string(in.mesh.n_theta) + "x" + std::to_string(in.mesh.n_z);
       j["l_over_d"] = in.length / (2.0 * in.radius);
       j["reynolds_solves"] = r.reynolds_solves;

@@ -568,6 +568,19 @@ class TestCli : public QObject {
     QCOMPARE(rigid.exit_code, 0);
     const QJsonObject r = QJsonDocument::fromJson(rigid.out.toUtf8()).object();
     QCOMPARE(r["compliance"].toString(), QString("rigid"));
+    // Every dimensional figure names its unit.
+    const QJsonObject units = r["units"].toObject();
+    for (const auto& [key, unit] :
+         std::vector<std::pair<QString, QString>>{{"load", "N"},
+                                                  {"moft", "m"},
+                                                  {"friction_torque", "N*m"},
+                                                  {"friction_power_loss", "W"},
+                                                  {"max_pressure", "Pa"},
+                                                  {"inlet_flow", "m^3/s"},
+                                                  {"side_flow", "m^3/s"},
+                                                  {"max_deformation", "m"}}) {
+      QVERIFY2(r.contains(key) && units[key].toString() == unit, qPrintable(key));
+    }
     QCOMPARE(r["max_deformation"].toDouble(), 0.0);
     const Result layer = Run({"bearing", "--eps", "0.8", "--mesh", "96x16", "--elastic-layer",
                               "2e-3,3e9,0.3", "--json"});
