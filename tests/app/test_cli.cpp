@@ -8,6 +8,7 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
+#include <QRegularExpression>
 #include <QSet>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -242,8 +243,9 @@ class TestCli : public QObject {
     QVERIFY(QFileInfo::exists(out + "/results.csv"));
   }
 
-  // A run stopped in its third cycle reports its second, the last whole one, with that cycle's
-  // film fields: one frame per results.csv row, at the crank angle the row gives.
+  // A run stopped in its third (or, on a loaded machine, a later) cycle reports the one before,
+  // the last whole one, with that cycle's film fields: one frame per results.csv row, at the crank
+  // angle the row gives.
   void aRunStoppedInALaterCycleWritesTheReportedCyclesFields() {
     QTemporaryDir dir;
     const QString out = dir.filePath("r");
@@ -263,13 +265,22 @@ class TestCli : public QObject {
     QVERIFY(run.waitForFinished(60000));
     const QByteArray err = progress + run.readAllStandardError();
     QCOMPARE(run.exitCode(), 1);
-    QVERIFY2(err.contains("the results are cycle 2, the last whole one"), err.right(600).data());
+    // The cycle it stopped in: the signal is sent on reading "cycle 3/", which a loaded machine
+    // may deliver late.
+    const QRegularExpressionMatch stopped =
+        QRegularExpression("cancelled \\(cycle (\\d+),").match(QString::fromUtf8(err));
+    QVERIFY2(stopped.hasMatch(), err.right(600).data());
+    const int reported = stopped.captured(1).toInt() - 1;
+    QVERIFY2(reported >= 2, err.right(600).data());
+    QVERIFY2(err.contains(
+                 QString("the results are cycle %1, the last whole one").arg(reported).toUtf8()),
+             err.right(600).data());
     QVERIFY2(!err.contains("fields/ not written"), err.right(600).data());
     QFile summary(out + "/summary.json");
     QVERIFY(summary.open(QIODevice::ReadOnly));
     const QJsonObject s = QJsonDocument::fromJson(summary.readAll()).object();
     QCOMPARE(s.value("status").toString(), QString("cancelled"));
-    QCOMPARE(s.value("reported_cycle").toInt(), 2);
+    QCOMPARE(s.value("reported_cycle").toInt(), reported);
     QFile csv(out + "/results.csv");
     QVERIFY(csv.open(QIODevice::ReadOnly));
     std::vector<double> row_angles;
