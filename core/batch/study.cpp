@@ -6,6 +6,7 @@
 #include <cmath>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <random>
@@ -83,11 +84,13 @@ StudyDesign ParseDesign(const Study& s, const json& j) {
 double CheckedLevel(const Study& s, const engine::CaseField& field, const json& j,
                     const std::string& key) {
   if (!j.is_number() || !std::isfinite(j.get<double>())) {
-    const std::string range = field.RangeText();
-    Bad(s, key + " (" + field.path + ")", JsonText(j),
-        range.rfind("integer", 0) == 0                 ? "must be an " + range
-        : range.front() == '[' || range.front() == '(' ? "must be a finite number in " + range
-                                                       : "must be a finite number " + range);
+    // What the field allows, in the words its own check uses (which refuses a NaN).
+    try {
+      field.Check(std::numeric_limits<double>::quiet_NaN());
+    } catch (const InputError& e) {
+      Bad(s, key + " (" + field.path + ")", JsonText(j), e.allowed());
+    }
+    Bad(s, key + " (" + field.path + ")", JsonText(j), "must be a finite number");
   }
   const double v = j.get<double>();
   if (field.kind == engine::FieldKind::kInteger && v != std::floor(v)) {
