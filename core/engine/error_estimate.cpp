@@ -283,6 +283,10 @@ CoarseCompanion MakeCoarseCompanion(const EngineCase& engine_case) {
   if (engine_case.skirt.model == JointModel::kLubricated &&
       engine_case.skirt.supply == lubrication::SkirtSupply::kStarved)
     companion.skirt_max_order = 1.0;
+  if (engine_case.big_end.model == JointModel::kLubricated &&
+      engine_case.big_end.cavitation == lubrication::CavitationModel::kJfo &&
+      lubrication::HasHoles(engine_case.big_end.supply))
+    companion.big_end_max_order = 1.0;
   c.solver.error_estimate = 0;
   return companion;
 }
@@ -433,7 +437,11 @@ ErrorEstimate EstimateErrors(const std::vector<CrankTrainSample>& samples,
     }
     FigureError e;
     e.figure = figures[k];
-    if (!e.figure.big_end) e.figure.order = std::min(e.figure.order, companion.skirt_max_order);
+    // (A hole-fed mass-conserving big end's oil keeps its own order: observed 1.7-2.4 there.)
+    if (!e.figure.big_end)
+      e.figure.order = std::min(e.figure.order, companion.skirt_max_order);
+    else if (e.figure.key != kBearingOilKey)
+      e.figure.order = std::min(e.figure.order, companion.big_end_max_order);
     e.coarse_value = coarse[k].value;
     const double factor = 1.0 / (std::pow(r, e.figure.order) - 1.0);
     e.error = (figures[k].value - coarse[k].value) * factor;

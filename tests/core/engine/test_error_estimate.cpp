@@ -130,6 +130,62 @@ class TestErrorEstimate : public QObject {
             1e-15);
   }
 
+  // A mass-conserving big end fed through holes converged below second order from the default
+  // mesh (2000 rpm, crank-pin hole: minimum film and friction at observed orders 0.7-1.7, an
+  // order-2 estimate gave half the film's true error): its figures are estimated at order 1. A
+  // Reynolds big end with the same holes, and a JFO big end fed only at its film-start line
+  // (order 2.2 at 6000 rpm), keep order 2; the skirt's figures are not affected.
+  void holeFedMassConservingBigEndIsEstimatedAtFirstOrder() {
+    engine::EngineCase c = io::LoadCase({}).value;
+    c.skirt.model = c.big_end.model = engine::JointModel::kLubricated;
+    c.big_end.supply = lubrication::OilFeedKind::kPinHoles;
+    QCOMPARE(engine::MakeCoarseCompanion(c).big_end_max_order, 2.0);  // Reynolds
+    c.big_end.cavitation = lubrication::CavitationModel::kJfo;
+    c.big_end.supply = lubrication::OilFeedKind::kLineOfCentres;
+    QCOMPARE(engine::MakeCoarseCompanion(c).big_end_max_order, 2.0);
+    c.big_end.supply = lubrication::OilFeedKind::kGroove;
+    QCOMPARE(engine::MakeCoarseCompanion(c).big_end_max_order, 2.0);
+    for (auto kind : {lubrication::OilFeedKind::kShellHoles, lubrication::OilFeedKind::kPinHoles,
+                      lubrication::OilFeedKind::kPinHolesAndGroove}) {
+      c.big_end.supply = kind;
+      QCOMPARE(engine::MakeCoarseCompanion(c).big_end_max_order, 1.0);
+    }
+    const engine::CoarseCompanion companion = engine::MakeCoarseCompanion(c);
+    QCOMPARE(companion.skirt_max_order, 2.0);
+    std::vector<engine::CrankTrainSample> samples(4);
+    for (int k = 0; k < 4; ++k) {
+      samples[k].skirt.present = samples[k].bearing.present = true;
+      samples[k].skirt.moft = 3e-6;
+      samples[k].skirt.fpl = 16.0;
+      samples[k].bearing.moft = 1e-6 + 1e-7 * k;
+      samples[k].bearing.eps = 0.9;
+      samples[k].bearing.fpl = 28.0;
+    }
+    auto coarse = samples;
+    for (auto& s : coarse) {
+      s.skirt.moft = 2.9e-6;
+      s.bearing.moft -= 0.1e-6;
+      s.bearing.fpl = 26.0;
+    }
+    const engine::ErrorEstimate e = engine::EstimateErrors(samples, coarse, companion);
+    QCOMPARE(e.status, std::string("estimated"));
+    auto find = [&e](const std::string& key) -> const engine::FigureError& {
+      for (const auto& f : e.figures)
+        if (f.figure.key == key) return f;
+      throw std::runtime_error("no figure " + key);
+    };
+    const double r = companion.big_end_ratio;
+    const engine::FigureError& film = find("bearing_moft_min[m]");
+    QCOMPARE(film.figure.order, 1.0);  // what summary.json reports
+    QVERIFY(std::abs(film.error - 0.1e-6 / (r - 1.0)) < 1e-15);
+    const engine::FigureError& friction = find("bearing_fpl_mean[W]");
+    QCOMPARE(friction.figure.order, 1.0);
+    QVERIFY(std::abs(friction.error - 2.0 / (r - 1.0)) < 1e-12);
+    const engine::FigureError& skirt = find("skirt_moft_min[m]");
+    QCOMPARE(skirt.figure.order, 2.0);
+    QVERIFY(std::abs(skirt.error - 0.1e-6 / (std::pow(companion.skirt_ratio, 2.0) - 1.0)) < 1e-15);
+  }
+
   // A film's minimum is the minimum of the curve the two runs extrapolate to, sample by sample,
   // not the extrapolation of the two runs' own minima: where the meshes put the minimum at
   // different places in the cycle, the finer one's trend is what counts. Two dips: at A the fine
@@ -484,10 +540,12 @@ class TestErrorEstimate : public QObject {
   // big end fed by a 4 mm crank-pin hole at 0.3 MPa, 2000 rpm, default meshes (Only-LBRBE). The
   // run has its minimum after firing (0.9285 µm at 392 °CA, the companion 0.8913 µm at 393 °CA);
   // finer meshes have it after the gas-exchange TDC, 0.830 and 0.775 µm on 200 x 20 and 400 x 20,
-  // not yet converged — the default mesh some 20 % too thick (docs/validation/errors.md, section
-  // 6). Comparing the two runs' minima estimated +1.3 %, the wrong sign; the extrapolated curve
-  // must find the thinner film near 50 °CA and an error of at least 5 % (it gives about 11 %:
-  // the right sign and place, half the size).
+  // not yet converged — the default mesh 17 % above 400 x 20's film and some 20-25 % above the
+  // limit (docs/validation/errors.md, section 6). Comparing the two runs' minima estimated +1.3 %,
+  // the wrong sign; the extrapolated curve at order 2 found the thinner film near 50 °CA but only
+  // half the error (about 11 %). At order 1 (a hole-fed mass-conserving big end) the estimate
+  // must cover the 17 % without overstating the 20-25 % by more than about two, and put the
+  // minimum around the gas-exchange TDC, not after firing.
   void crankPinFedMinimumFilmIsEstimatedWhereTheFinerMeshesHaveIt() {
     io::LoadedCase loaded = io::LoadCase({}, {"big_end.cavitation=jfo", "big_end.supply=pin_holes",
                                               "big_end.oil_feed_pressure=3e5"});
@@ -506,11 +564,15 @@ class TestErrorEstimate : public QObject {
           moft->figure.value * 1e6, own, moft->coarse_value * 1e6,
           100.0 * moft->error / moft->figure.value, extrapolated);
     QVERIFY2(own > 360.0 && own < 420.0, "the run's minimum after firing");
-    QVERIFY2(extrapolated > 30.0 && extrapolated < 70.0,
-             "the extrapolated minimum after the gas-exchange TDC");
+    QCOMPARE(moft->figure.order, 1.0);
+    for (const auto& f : r.error_estimate.figures)  // its oil converged at 1.7-2.4: its own order
+      if (f.figure.key == "bearing_oil_per_cycle[m^3]") QCOMPARE(f.figure.order, 1.6);
+    QVERIFY2(extrapolated > 650.0 || extrapolated < 70.0,
+             "the extrapolated minimum around the gas-exchange TDC");
     QVERIFY(moft->extreme_elsewhere);
     QVERIFY(moft->error < 0.0);
-    QVERIFY2(moft->relative >= 0.05, "at least the default mesh's 5 % against the finest meshes");
+    QVERIFY2(moft->relative >= 0.17, "at least the default mesh's 17 % against 400 x 20");
+    QVERIFY2(moft->relative <= 0.5, "not more than about twice the true 20-25 %");
     QVERIFY(r.error_estimate.Summary().find("the meshes disagree on where the min big-end MOFT "
                                             "lies") != std::string::npos);
   }
