@@ -103,11 +103,11 @@ Command MakeRunCommand() {
       }
       return true;
     };
-    engine::RunResult result;
-    {
-      const InterruptGuard interrupt;
-      result = engine::RunJob(config, monitor, interrupt.flag());
-    }
+    // The guard spans the writing too: a stop signal (Ctrl-C, a scheduler's time limit) that
+    // arrives once the computing is over lets the files be finished, not lost half-written.
+    const InterruptGuard interrupt;
+    const engine::RunResult result = engine::RunJob(config, monitor, interrupt.flag());
+    const bool stopped_while_computing = interrupt.flag()->load();
     if (!quiet) streams.err << "\n";
     io::WriteRunFolder(out, c.name, config, result, [&](const std::vector<io::OutputRow>& rows) {
       if (!fields.WriteReported(out / "fields", result.samples) &&
@@ -121,6 +121,10 @@ Command MakeRunCommand() {
         streams.err << "filmdyn run: plots not written: " << error << "\n";
       }
     });
+    if (!stopped_while_computing && interrupt.flag()->load()) {
+      streams.err << "filmdyn run: a stop signal arrived while the results were being written; "
+                     "they were finished first\n";
+    }
     streams.err << "filmdyn run: " << engine::StatusName(result.status) << ", " << result.cycles
                 << " cycles, " << result.stats.steps << " steps, " << result.wall_time
                 << " s; results in " << out.string() << "\n";

@@ -13,8 +13,10 @@
 #include <sstream>
 
 #include "core/base/input_error.hpp"
+#include "core/base/input_file.hpp"
 #include "core/engine/case_schema.hpp"
 #include "core/io/case_file.hpp"
+#include "core/io/json_input.hpp"
 #include "core/io/output_files.hpp"
 #include "core/io/run_comparison.hpp"
 #include "core/io/run_summary.hpp"
@@ -273,7 +275,7 @@ std::pair<std::string, std::optional<double>> BaseValue(const StudyFactor& f,
 }
 
 std::string ReadText(const fs::path& path, const std::string& what) {
-  return io::ReadInputFile(path, what, kMaxStudyFileBytes);
+  return ReadInputFile(path, what, kMaxStudyFileBytes);
 }
 
 std::string FactorHeader(const StudyFactor& f) {
@@ -297,13 +299,9 @@ std::string StudyDesignName(StudyDesign design) {
 Study ParseStudy(const std::string& text, const fs::path& path) {
   Study s;
   s.study_file = path;
-  json j;
-  try {
-    j = json::parse(text);
-  } catch (const json::exception& e) {  // syntax, bad UTF-8, a number beyond a double's range
-    throw InputError(path.filename().string(), "(file)",
-                     std::string("is not valid JSON: ") + e.what());
-  }
+  // A study file is a few levels deep (a factor's levels, a `set` list).
+  const json j = io::ParseInputJson(text, path.filename().string(), 16, "a study file",
+                                    /*bracketed=*/true);
   if (!j.is_object()) Bad(s, "(top level)", JsonText(j), "must be a JSON object");
   static const char* const kKeys[] = {"name", "case",    "set",    "design",      "points",
                                       "seed", "factors", "fields", "time_limit_s"};

@@ -11,7 +11,9 @@
 #include <sstream>
 
 #include "core/base/input_error.hpp"
+#include "core/base/input_file.hpp"
 #include "core/engine/case_schema.hpp"
+#include "core/io/json_input.hpp"
 #include "core/io/output_files.hpp"
 #include "core/io/pressure_csv.hpp"
 #include "core/io/resources.hpp"
@@ -468,20 +470,7 @@ LoadedCase LoadCase(const std::filesystem::path& path, const std::vector<std::st
 engine::EngineCase LoadCaseText(const std::string& text, const std::string& source,
                                 const std::vector<std::string>& overrides,
                                 std::vector<std::string>* notes) {
-  json root;
-  try {
-    // Nesting is bounded while parsing: a case is a few levels deep, and a value nested 10^5
-    // deep would exhaust the stack of every recursive walk of it later.
-    root = json::parse(text, [](int depth, json::parse_event_t, json&) {
-      if (depth > kMaxCaseDepth) {
-        throw InputError("case", "nested deeper than " + std::to_string(kMaxCaseDepth) + " levels",
-                         "a case file is a few levels deep; this is not a case file");
-      }
-      return true;
-    });
-  } catch (const json::exception& error) {  // syntax, bad UTF-8, a number out of range
-    throw InputError(source, "not a valid JSON file", error.what());
-  }
+  json root = ParseInputJson(text, source, kMaxCaseDepth, "a case file");
   for (const std::string& assignment : overrides) ApplyOverride(&root, assignment);
   return CaseFromJson(root, notes);
 }

@@ -174,45 +174,6 @@ OutputFolder::~OutputFolder() {
 
 namespace filmdyn::io {
 
-std::string ReadInputFile(const std::filesystem::path& path, const std::string& field,
-                          std::uintmax_t max_bytes) {
-  std::error_code error;
-  const auto status = std::filesystem::status(path, error);
-  if (error || !std::filesystem::exists(status)) {
-    throw InputError(field, path.string(), "cannot open the file: it does not exist");
-  }
-  if (!std::filesystem::is_regular_file(status)) {
-    throw InputError(field, path.string(),
-                     "is not a regular file (a folder, device or pipe): give a file");
-  }
-  const std::uintmax_t size = std::filesystem::file_size(path, error);
-  auto too_big = [&](std::uintmax_t bytes) {
-    return InputError(field, path.string(),
-                      "is too large (" + std::to_string(bytes) + " bytes; at most " +
-                          std::to_string(max_bytes) + ")");
-  };
-  if (!error && size > max_bytes) throw too_big(size);
-  std::FILE* in = std::fopen(path.c_str(), "rb");
-  if (in == nullptr) {
-    throw InputError(field, path.string(),
-                     std::string("cannot open the file: ") + std::strerror(errno));
-  }
-  std::string text;
-  char buffer[65536];
-  std::size_t got = 0;
-  while ((got = std::fread(buffer, 1, sizeof buffer, in)) > 0) {
-    text.append(buffer, got);
-    if (text.size() > max_bytes) {  // grew while read
-      std::fclose(in);
-      throw too_big(text.size());
-    }
-  }
-  const bool failed = std::ferror(in) != 0;
-  std::fclose(in);
-  if (failed) throw InputError(field, path.string(), "cannot read the file");
-  return text;
-}
-
 std::string SafeFolderName(const std::string& name) {
   std::string safe = IsUtf8(name) ? name : std::string();
   if (safe.empty() && !name.empty()) {  // not UTF-8: keep the ASCII, mark the rest

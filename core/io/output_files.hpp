@@ -85,13 +85,6 @@ class OutputFolder {
 
 namespace filmdyn::io {
 
-/// Reads a whole input file named by `field` (the option or case field that gave the path):
-/// only a regular file (no device, FIFO or folder: "/dev/zero" would never end), at most
-/// `max_bytes` (a clear error naming the field, the file's size and the limit). Throws
-/// InputError.
-std::string ReadInputFile(const std::filesystem::path& path, const std::string& field,
-                          std::uintmax_t max_bytes);
-
 /// A case name as a folder name: path separators, "..", leading dots, control characters and
 /// bytes that are not UTF-8 become '_' (a name can never point outside its parent); empty →
 /// "case".

@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "core/base/input_error.hpp"
+#include "core/base/input_file.hpp"
 
 namespace filmdyn::io {
 

@@ -12,6 +12,7 @@
 #include <stdexcept>
 
 #include "core/base/input_error.hpp"
+#include "core/base/input_file.hpp"
 
 namespace filmdyn::lubrication {
 
@@ -70,7 +71,10 @@ ImportedCompliance ReadImportedCompliance(const std::string& matrix_path,
                                           const std::string& nodes_path) {
   ImportedCompliance c;
   c.source = matrix_path;
-  // Nodes first: they say the size.
+  // Nodes first: they say the size. Regular files only (a FIFO would wait for a writer forever,
+  // /dev/zero never end), bounded.
+  RequireInputFile(nodes_path, "compliance nodes file", kMaxNodesFileBytes);
+  RequireInputFile(matrix_path, "compliance matrix file", kMaxMatrixFileBytes);
   std::ifstream nodes(nodes_path);
   if (!nodes) throw InputError(nodes_path, "(unreadable)", "a readable nodes CSV file");
   std::string line;
@@ -99,6 +103,12 @@ ImportedCompliance ReadImportedCompliance(const std::string& matrix_path,
   if (xs.size() < 4) {
     throw InputError(nodes_path, std::to_string(xs.size()) + " nodes",
                      "at least 4 nodes (a 2 x 2 grid)");
+  }
+  if (xs.size() > kMaxImportedNodes) {
+    throw InputError(nodes_path, std::to_string(xs.size()) + " nodes",
+                     fmt::format("at most {} (the compliance matrix and its factor are dense: "
+                                 "8 m^2 bytes each, 0.8 GB at that size)",
+                                 kMaxImportedNodes));
   }
   c.x_lines = Distinct(xs);
   c.y_lines = Distinct(ys);

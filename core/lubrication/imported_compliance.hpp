@@ -20,6 +20,8 @@
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 #include <array>
+#include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -41,13 +43,22 @@ struct ImportedCompliance {
 /// `.nodes.csv` (housing.mtx -> housing.nodes.csv).
 std::string NodesFileFor(const std::string& matrix_path);
 
+/// The most FE nodes an imported compliance may have: its matrix and the matrix's factor are
+/// dense (8 m^2 bytes each: 0.8 GB at 10 000 nodes).
+inline constexpr std::size_t kMaxImportedNodes = 10000;
+/// The largest files read: a nodes file of that many rows is under 1 MB; a matrix of that size in
+/// the coordinate format about 4 GB.
+inline constexpr std::uintmax_t kMaxNodesFileBytes = std::uintmax_t{64} << 20;
+inline constexpr std::uintmax_t kMaxMatrixFileBytes = std::uintmax_t{8} << 30;
+
 /// Reads the matrix file and its nodes file (NodesFileFor).
 ImportedCompliance ReadImportedCompliance(const std::string& matrix_path);
 
 /// Reads and checks the two files. Throws filmdyn::InputError naming the file, the line and the
-/// value: not Matrix Market, not real, a size that does not match the nodes, entries missing or
-/// not finite, not symmetric, not positive definite; a nodes file without its header, with a row
-/// that is not two finite numbers, nodes that do not form a grid.
+/// value: not a regular file or too large, not Matrix Market, not real, a size that does not match
+/// the nodes, entries missing or not finite, not symmetric, not positive definite; a nodes file
+/// without its header, with a row that is not two finite numbers, nodes that do not form a grid,
+/// more than kMaxImportedNodes nodes.
 ImportedCompliance ReadImportedCompliance(const std::string& matrix_path,
                                           const std::string& nodes_path);
 

@@ -294,6 +294,37 @@ class TestCli : public QObject {
       QVERIFY(std::abs(fields.frames[k].crank_angle_deg - row_angles[k]) < 1e-6);
   }
 
+  // A stop signal that arrives after the computing, while the files are written (a scheduler's
+  // time limit can land there), lets the writing finish: the run is complete, its fields and
+  // plots are there, exit 0. It used to kill the process half-way (exit 143, summary "running",
+  // no plots, fields cut short).
+  void aStopSignalWhileWritingLetsTheFilesFinish() {
+    QTemporaryDir dir;
+    const QString out = dir.filePath("r");
+    QProcess run;
+    run.start(FILMDYN_EXECUTABLE, {"run", "--out", out, "--quiet", "--model", "only-lbrbe", "--set",
+                                   "big_end.mesh_theta=24", "--set", "big_end.mesh_z=4", "--set",
+                                   "solver.error_estimate=0"});
+    QVERIFY(run.waitForStarted());
+    // results.csv is the first file written once the run has computed.
+    for (int k = 0; k < 12000 && !QFile::exists(out + "/results.csv"); ++k) QTest::qWait(5);
+    QVERIFY(QFile::exists(out + "/results.csv"));
+    ::kill(static_cast<pid_t>(run.processId()), SIGTERM);
+    QVERIFY(run.waitForFinished(60000));
+    const QByteArray err = run.readAllStandardError();
+    QCOMPARE(run.exitStatus(), QProcess::NormalExit);
+    QVERIFY2(run.exitCode() == 0, err.right(600).constData());
+    QVERIFY2(err.contains("a stop signal arrived while the results were being written"),
+             err.right(600).constData());
+    QFile summary(out + "/summary.json");
+    QVERIFY(summary.open(QIODevice::ReadOnly));
+    const QJsonObject s = QJsonDocument::fromJson(summary.readAll()).object();
+    QCOMPARE(s.value("status").toString(), QString("completed"));
+    QVERIFY(s.value("complete").toBool());
+    QVERIFY(QFile::exists(out + "/fields/bearing.xdmf"));
+    QVERIFY(QDir(out + "/plots").entryList({"*.png"}).size() > 3);
+  }
+
   // A running run marks its folder "running" and locks it: a second writer is refused. SIGTERM
   // and SIGHUP stop it like Ctrl-C: partial results written, status "cancelled", exit 1 — never
   // an earlier run's "completed" left behind. A time limit on a mesh whose every step takes

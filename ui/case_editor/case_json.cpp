@@ -13,13 +13,7 @@ namespace filmdyn::ui {
 std::string CaseToJsonText(const engine::EngineCase& c) { return io::CaseToJson(c).dump(2) + "\n"; }
 
 engine::EngineCase CaseFromJsonText(const std::string& text) {
-  nlohmann::json json;
-  try {
-    json = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::exception& e) {  // syntax, bad UTF-8, a number out of range
-    throw InputError("case file", "JSON", std::string("not valid JSON: ") + e.what());
-  }
-  return io::CaseFromJson(json);
+  return io::LoadCaseText(text, "case file");
 }
 
 bool SaveCaseFile(const engine::EngineCase& c, const QString& path, QString* error) {

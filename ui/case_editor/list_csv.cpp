@@ -8,6 +8,7 @@
 #include <filesystem>
 
 #include "core/base/input_error.hpp"
+#include "core/base/input_file.hpp"
 #include "core/io/output_files.hpp"
 #include "ui/case_editor/field_tooltip.hpp"
 #include "ui/save_text.hpp"
@@ -151,8 +152,7 @@ bool ReadListCsv(const CaseListTable& table, const QString& path,
                  std::vector<std::vector<double>>* columns, QString* error) {
   try {
     const std::string file = path.toStdString();
-    const std::string text =
-        io::ReadInputFile(std::filesystem::path(file), "CSV file", kMaxCsvBytes);
+    const std::string text = ReadInputFile(std::filesystem::path(file), "CSV file", kMaxCsvBytes);
     *columns = ParseListCsv(table, text, file);
   } catch (const std::exception& e) {
     *error = QString::fromStdString(e.what());

@@ -65,8 +65,17 @@ class TestStudy : public QObject {
       const char* text;
       const char* names;
     };
+    const std::string deep = R"({"design": "full-factorial", "factors": )" + std::string(20, '[') +
+                             std::string(20, ']') + "}";
     const Case cases[] = {
-        {"not json", "s.json = (file): is not valid JSON"},
+        {"not json", "s.json = not a valid JSON file"},
+        // A repeated key would silently keep the last value; nesting is bounded (300 000 levels
+        // crashed the reader's recursion).
+        {R"({"design": "full-factorial", "design": "one-at-a-time", "factors": []})",
+         "s.json: design = given twice: a key appears once in its object"},
+        {R"({"design": "full-factorial", "factors": [{"path": "operating.rpm", "path": "operating.rpm", "levels": [1]}]})",
+         "s.json: factors[0].path = given twice"},
+        {deep.c_str(), "s.json = nested deeper than 16 levels: a study file is a few levels deep"},
         {R"({"design": "full-factorial", "factor": []})", "s.json: factor"},
         {R"({"design": "random", "factors": []})", "s.json: design"},
         {R"({"factors": [{"path": "operating.rpm", "levels": [1]}]})",
@@ -87,7 +96,7 @@ class TestStudy : public QObject {
          "s.json: factors[0].levels[0] (big_end.mesh_z) = \"8\": must be an integer in ["},
         // A number beyond a double's range is bad JSON for us, named with the file.
         {R"({"design": "full-factorial", "factors": [{"path": "operating.rpm", "levels": [1e999]}]})",
-         "s.json = (file): is not valid JSON"},
+         "s.json = not a valid JSON file"},
         {R"({"design": "full-factorial", "factors": [{"path": "operating.rpm", "range": [1000, 2000]}]})",
          "a range needs \"count\""},
         {R"({"design": "latin-hypercube", "points": 5, "factors": [{"path": "operating.rpm", "range": [1000, 2000], "count": 3}]})",

@@ -260,6 +260,28 @@ class TestCaseFile : public QObject {
       QVERIFY(std::string(e.what()).find("(0, 100000]") != std::string::npos);
     }
   }
+  // A key given twice in one object is refused, named by its path: the JSON parser would keep
+  // the last value and silently drop the other (a case once ran with "rod_mass": 99 after a
+  // "rod_mass": 0.345 above it).
+  void aRepeatedKeyIsRefused() {
+    auto error_of = [](const std::string& text) -> std::string {
+      try {
+        io::LoadCaseText(text, "c.json");
+      } catch (const InputError& e) {
+        return e.what();
+      }
+      return "";
+    };
+    QCOMPARE(error_of(R"({"geometry": {"rod_mass": 0.345, "rod_mass": 99.0}})"),
+             std::string("c.json: geometry.rod_mass = given twice: a key appears once in its "
+                         "object (the second value would silently replace the first): keep one"));
+    QVERIFY(error_of(R"({"name": "a", "name": "b"})").starts_with("c.json: name = given twice"));
+    QVERIFY(error_of(R"({"pressure_curves": [{"rpm": 2000}, {"rpm": 3000, "rpm": 4000}]})")
+                .starts_with("c.json: pressure_curves.1.rpm = given twice"));
+    // The same key in two objects is no repetition.
+    QVERIFY(error_of(R"({"skirt": {"model": "ideal"}, "big_end": {"model": "ideal"}})").empty());
+  }
+
   void coldSkirtClearanceIsTheInput() {
     // The default case gives the clearance; the piston radius derived from it is Table I's
     // 36.475 mm to the last bit, and the film's clearance is R_l − R as before.

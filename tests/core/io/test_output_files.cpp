@@ -16,6 +16,7 @@
 #include <string>
 
 #include "core/base/input_error.hpp"
+#include "core/base/input_file.hpp"
 #include "core/io/output_files.hpp"
 #include "core/io/results_writer.hpp"
 
@@ -108,7 +109,7 @@ class TestOutputFiles : public QObject {
   void inputFilesMustBeRegularAndBounded() {
     auto expect = [](const fs::path& path, std::uintmax_t limit, const char* says) {
       try {
-        io::ReadInputFile(path, "--pressure-curve", limit);
+        ReadInputFile(path, "--pressure-curve", limit);
         QFAIL(qPrintable("accepted " + QString::fromStdString(path.string())));
       } catch (const InputError& error) {
         QCOMPARE(QString::fromStdString(error.field()), QString("--pressure-curve"));
@@ -125,7 +126,7 @@ class TestOutputFiles : public QObject {
     expect(root / "nothing.csv", 1 << 20, "does not exist");
     Touch(root / "big.csv", std::string(5000, 'a'));
     expect(root / "big.csv", 4096, "too large (5000 bytes; at most 4096)");
-    QCOMPARE(io::ReadInputFile(root / "big.csv", "--pressure-curve", 5000).size(), 5000u);
+    QCOMPARE(ReadInputFile(root / "big.csv", "--pressure-curve", 5000).size(), 5000u);
   }
 
   void textMustBeUtf8AndEchoesAreCut() {

@@ -7,6 +7,7 @@
 // laws, the mass-conserving film on elastic surfaces against the Reynolds one where no film
 // reforms (second order in the mesh), and a pressure law the rigid film cannot carry, reached
 // from the elastic isoviscous film.
+#include <sys/stat.h>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -880,6 +881,28 @@ class TestElasticFilm : public QObject {
              qPrintable(message()));
     write(csv, "x[m],y[m]\n0,0\n1,0\n0,nan\n1,1\n");
     QVERIFY2(message().contains("c.nodes.csv:4"), qPrintable(message()));
+    // Regular files only: a FIFO would wait for a writer forever (it hung a run that no signal
+    // could stop); a folder, a device likewise.
+    write(csv, nodes);
+    QFile::remove(QString::fromStdString(mtx));
+    QCOMPARE(::mkfifo(mtx.c_str(), 0600), 0);
+    QVERIFY2(message().contains("c.mtx") && message().contains("is not a regular file"),
+             qPrintable(message()));
+    QFile::remove(QString::fromStdString(mtx));
+    write(mtx, good);
+    QFile::remove(QString::fromStdString(csv));
+    QCOMPARE(::mkfifo(csv.c_str(), 0600), 0);
+    QVERIFY2(message().contains("c.nodes.csv") && message().contains("is not a regular file"),
+             qPrintable(message()));
+    QFile::remove(QString::fromStdString(csv));
+    {  // more nodes than a dense matrix should hold
+      std::string many = "x[m],y[m]\n";
+      for (int i = 0; i < 101; ++i)
+        for (int j = 0; j < 100; ++j) many += std::to_string(i) + "," + std::to_string(j) + "\n";
+      write(csv, many);
+      QVERIFY2(message().contains("10100 nodes") && message().contains("at most 10000"),
+               qPrintable(message()));
+    }
     // A film outside the FE surface: a bearing wider than the imported surface (5 mm of 20).
     write(csv, "x[m],y[m]\n0,0\n0.1,0\n0,0.005\n0.1,0.005\n");
     BearingConfig cfg = LayerBearing(1.0, 16, 4);
