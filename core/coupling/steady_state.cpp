@@ -67,6 +67,7 @@ CycleVerdict PeriodicSteadyState::EndCycle() {
       if (q == 0 || relative > verdict.worst_relative_change) {
         verdict.worst_relative_change = relative;
         verdict.worst_quantity = quantities_[q].name;
+        verdict.worst_label = quantities_[q].label;
       }
     }
   }

@@ -13,6 +13,7 @@ namespace filmdyn::coupling {
 struct TrackedQuantity {
   std::string name;           ///< e.g. "piston_lateral[m]"
   double absolute_floor = 0;  ///< smallest range that counts, in the quantity's unit
+  std::string label;          ///< what messages call it, e.g. "piston lateral displacement"
 };
 
 /// The verdict after one complete cycle.
@@ -24,6 +25,7 @@ struct CycleVerdict {
   std::vector<double> relative_change;
   /// Name of the quantity furthest from convergence (for progress messages).
   std::string worst_quantity;
+  std::string worst_label;  ///< its TrackedQuantity::label
   double worst_relative_change = 0;
 };
 

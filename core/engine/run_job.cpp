@@ -127,10 +127,10 @@ Tracked TrackedFor(const EngineCase& c) {
   const bool big_end = c.big_end.model == JointModel::kLubricated;
   Tracked t;
   if (!skirt && !big_end) {
-    t.quantities = {{"liner_force_x[N]", 1.0},
-                    {"bigend_force_x[N]", 1.0},
-                    {"bigend_force_y[N]", 1.0},
-                    {"crank_torque[N*m]", 0.1}};
+    t.quantities = {{"liner_force_x[N]", 1.0, "the liner's lateral force"},
+                    {"bigend_force_x[N]", 1.0, "the big-end force x"},
+                    {"bigend_force_y[N]", 1.0, "the big-end force y"},
+                    {"crank_torque[N*m]", 0.1, "the crank torque"}};
     t.values = [](const CrankTrainSample& s) {
       return std::vector<double>{s.liner_force_on_piston.x(), s.big_end_force_on_rod.x(),
                                  s.big_end_force_on_rod.y(), s.crank_torque};
@@ -140,13 +140,13 @@ Tracked TrackedFor(const EngineCase& c) {
   const double c_p = SkirtFit(c).hot_clearance;
   const double c_b = BigEndFit(c).hot_clearance;
   if (skirt) {
-    t.quantities.push_back({"piston_lateral[m]", 0.01 * c_p});
-    t.quantities.push_back({"piston_tilt[rad]", 0.01 * c_p / c.skirt.length});
-    t.quantities.push_back({"skirt_moft[m]", 0.01 * c_p});
+    t.quantities.push_back({"piston_lateral[m]", 0.01 * c_p, "the piston's lateral displacement"});
+    t.quantities.push_back({"piston_tilt[rad]", 0.01 * c_p / c.skirt.length, "the piston's tilt"});
+    t.quantities.push_back({"skirt_moft[m]", 0.01 * c_p, "the skirt's minimum film"});
   }
   if (big_end) {
-    t.quantities.push_back({"bearing_eps[-]", 0.01});
-    t.quantities.push_back({"bearing_moft[m]", 0.01 * c_b});
+    t.quantities.push_back({"bearing_eps[-]", 0.01, "the big-end eccentricity ratio"});
+    t.quantities.push_back({"bearing_moft[m]", 0.01 * c_b, "the big end's minimum film"});
   }
   t.values = [skirt, big_end](const CrankTrainSample& s) {
     std::vector<double> v;
@@ -502,6 +502,7 @@ RunResult RunSingle(const RunConfig& config, const RunMonitor& monitor,
         result.cycle_change = verdict.worst_relative_change;
         result.cycle_changes.push_back(verdict.worst_relative_change);
         result.worst_quantity = verdict.worst_quantity;
+        result.worst_quantity_label = verdict.worst_label;
       }
       if (verdict.converged) {
         result.cycles_to_steady_state = cycle;
@@ -515,9 +516,16 @@ RunResult RunSingle(const RunConfig& config, const RunMonitor& monitor,
       previous = std::move(current);
     }
     result.status = RunStatus::kNotConverged;
-    result.message = "no periodic steady state after " + std::to_string(max_cycles) +
-                     " cycles (last change " + std::to_string(result.cycle_change) +
-                     " of range, in " + result.worst_quantity + ")";
+    result.message =
+        max_cycles < 2
+            ? fmt::format(
+                  "no periodic steady state: solver.max_cycles = {} allows no second "
+                  "cycle to compare the first with",
+                  max_cycles)
+            : fmt::format(
+                  "no periodic steady state after {} cycles (the last change {} % of "
+                  "the range of {})",
+                  max_cycles, PercentText(result.cycle_change), result.worst_quantity_label);
     keep(std::move(previous));
   } catch (const InputError&) {
     throw;

@@ -154,6 +154,7 @@ struct RunResult {
   /// approaches its periodic state.
   std::vector<double> cycle_changes;
   std::string worst_quantity;             ///< the quantity furthest from periodicity (last cycle)
+  std::string worst_quantity_label;       ///< what messages call it ("the big end's minimum film")
   /// The headline figures of every completed cycle, in cycle order (HeadlineFigures; the last is
   /// the reported cycle's): with no periodic steady state, ScatterOverCycles says how far they
   /// move from cycle to cycle.

@@ -474,7 +474,7 @@ std::vector<RunWarning> RunWarnings(const engine::RunConfig& config,
                   "no periodic steady state after {} cycles (solver.max_cycles): the last "
                   "cycle-to-cycle change is {:.3g} % of the range of {}, above the tolerance of "
                   "{:g} %; the reported cycle is the last one computed",
-                  result.cycles, 100.0 * result.cycle_change, result.worst_quantity,
+                  result.cycles, 100.0 * result.cycle_change, result.worst_quantity_label,
                   100.0 * w.limit);
     if (const std::string trend =
             engine::CycleChangeTrend(result.cycle_changes, c.solver.steady_state_tolerance);

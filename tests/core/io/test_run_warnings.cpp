@@ -516,6 +516,15 @@ class TestRunWarnings : public QObject {
     QVERIFY2(QString::fromStdString(w->message)
                  .contains("the change after each cycle from cycle 2 on: "),
              w->message.c_str());
+    // The status message and the warning name the quantity in words (they showed the results
+    // column's name, "bearing_eps[-]", and the change as a fraction with six decimals).
+    const QRegularExpression status(
+        "^no periodic steady state after 3 cycles \\(the last change [0-9.e+-]+ % of the range "
+        "of (the big end's minimum film|the big-end eccentricity ratio)\\)$");
+    QVERIFY2(status.match(QString::fromStdString(result.message)).hasMatch(),
+             result.message.c_str());
+    QVERIFY2(QString::fromStdString(w->message).contains("of the range of the big"),
+             w->message.c_str());
   }
 
   void idealJointsGiveNoFilmWarnings() {
