@@ -48,11 +48,16 @@ std::string ModelName(Model model) {
   return "?";
 }
 
+bool SkirtLubricated(Model model) {
+  return model == Model::kOnlySkirt || model == Model::kSkirtLbrbe;
+}
+bool BigEndLubricated(Model model) {
+  return model == Model::kOnlyLbrbe || model == Model::kSkirtLbrbe;
+}
+
 void ApplyModel(Model model, EngineCase* c) {
-  const bool skirt = model == Model::kOnlySkirt || model == Model::kSkirtLbrbe;
-  const bool big_end = model == Model::kOnlyLbrbe || model == Model::kSkirtLbrbe;
-  c->skirt.model = skirt ? JointModel::kLubricated : JointModel::kIdeal;
-  c->big_end.model = big_end ? JointModel::kLubricated : JointModel::kIdeal;
+  c->skirt.model = SkirtLubricated(model) ? JointModel::kLubricated : JointModel::kIdeal;
+  c->big_end.model = BigEndLubricated(model) ? JointModel::kLubricated : JointModel::kIdeal;
 }
 
 Model ModelOfCase(const EngineCase& c) {

@@ -27,6 +27,9 @@ namespace filmdyn::engine {
 enum class Model { kIdeal, kOnlySkirt, kOnlyLbrbe, kSkirtLbrbe };
 /// "ideal", "only-skirt", "only-lbrbe", "skirt-lbrbe"; throws InputError("--model", ...).
 Model ParseModel(const std::string& text);
+/// Whether the model's skirt / big end is a lubricated film (the others are ideal joints).
+bool SkirtLubricated(Model model);
+bool BigEndLubricated(Model model);
 std::string ModelName(Model model);
 /// Sets skirt.model / big_end.model of a case for a model.
 void ApplyModel(Model model, EngineCase* engine_case);

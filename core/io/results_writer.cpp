@@ -139,12 +139,8 @@ std::vector<std::string> ResultsHeader() {
 
 namespace {
 
-bool SkirtLubricated(engine::Model model) {
-  return model == engine::Model::kOnlySkirt || model == engine::Model::kSkirtLbrbe;
-}
-bool BigEndLubricated(engine::Model model) {
-  return model == engine::Model::kOnlyLbrbe || model == engine::Model::kSkirtLbrbe;
-}
+using engine::BigEndLubricated;
+using engine::SkirtLubricated;
 
 void WriteCsv(std::ostream& out, const std::vector<OutputRow>& rows,
               const std::vector<ResultColumn>& columns) {

@@ -38,7 +38,7 @@ double Mean(const std::vector<RunSample>& samples, Column column) {
 
 }  // namespace
 
-RunFigures ComputeRunFigures(const std::vector<RunSample>& samples) {
+RunFigures ComputeRunFigures(const std::vector<RunSample>& samples, engine::Model model) {
   RunFigures f;
   auto abs_of = [](Column c) { return [c](const RunSample& s) { return std::abs(s[c]); }; };
   auto of = [](Column c) { return [c](const RunSample& s) { return s[c]; }; };
@@ -65,6 +65,12 @@ RunFigures ComputeRunFigures(const std::vector<RunSample>& samples) {
     break;
   }
   f.max_skirt_normal = Reduce(samples, abs_of(Column::kSkirtNormalForce), true);
+  if (!engine::SkirtLubricated(model)) {
+    f.max_abs_lateral = f.max_abs_tilt = f.min_skirt_moft = f.mean_skirt_fpl = kNaN;
+  }
+  if (!engine::BigEndLubricated(model)) {
+    f.min_bearing_moft = f.max_bearing_eps = f.mean_bearing_fpl = kNaN;
+  }
   return f;
 }
 

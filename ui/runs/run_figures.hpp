@@ -3,6 +3,7 @@
 /// extremes and cycle means over the reported cycle, NaN when the model has no such quantity.
 #include <vector>
 
+#include "core/engine/run_job.hpp"
 #include "ui/run/result_columns.hpp"
 
 namespace filmdyn::ui {
@@ -24,6 +25,8 @@ struct RunFigures {
   double big_end_force_before = 0, big_end_force_after = 0;
 };
 
-RunFigures ComputeRunFigures(const std::vector<RunSample>& samples);
+/// The figures of a run of `model`: those of an ideal joint (no film: no secondary motion,
+/// film or friction) are NaN, shown as "no such figure", not as a measured 0.
+RunFigures ComputeRunFigures(const std::vector<RunSample>& samples, engine::Model model);
 
 }  // namespace filmdyn::ui

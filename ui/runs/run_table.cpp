@@ -441,7 +441,7 @@ void RunTable::updateRun(const RunHandle& run) {
     }
     relabel();  // the new run's differences from the base run
   }
-  const RunFigures f = ComputeRunFigures(run->samples());
+  const RunFigures f = ComputeRunFigures(run->samples(), engine::ParseModel(run->request().model));
   const auto stats = run->statistics();
   const RunProgress progress = run->progress();
   item(row, kStatus)->setText(RunStatusText(run->status()));

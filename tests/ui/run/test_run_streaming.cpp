@@ -264,6 +264,15 @@ class TestRunStreaming : public QObject {
     QVERIFY(window.plotPanel()->pointCount(run->id()) > 0);
     QCOMPARE(window.runTable()->item(0, filmdyn::ui::RunTable::kStatus)->text(),
              QString("cancelled"));
+    // An ideal run has no film, secondary motion or friction: "–" (no such figure), not 0.
+    using filmdyn::ui::RunTable;
+    for (const int column :
+         {RunTable::kLateral, RunTable::kTilt, RunTable::kSkirtMoft, RunTable::kBearingMoft,
+          RunTable::kSkirtFpl, RunTable::kBearingFpl, RunTable::kSkirtFmep, RunTable::kBearingFmep})
+      QCOMPARE(window.runTable()->item(0, column)->text(), QString("–"));
+    bool force_is_a_number = false;  // the joint's reaction force is there
+    window.runTable()->item(0, RunTable::kBigEndForce)->text().toDouble(&force_is_a_number);
+    QVERIFY(force_is_a_number);
   }
 
   // Runs started and cancelled again and again (the default case's meshes, each cancelled in
