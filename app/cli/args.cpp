@@ -1,10 +1,12 @@
 #include <CLI/CLI.hpp>
 
 #include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <cstdlib>
 #include <map>
 #include <sstream>
+#include <string_view>
 
 #include "app/cli/command.hpp"
 #include "core/base/input_error.hpp"
@@ -52,6 +54,13 @@ Args Args::Parse(const std::string& command, const std::vector<std::string>& arg
     if (!spec->value_name.empty()) {
       if (eq != std::string::npos)
         value = token.substr(eq + 1);
+      else if (k + 1 < argv.size() && argv[k + 1].size() > 2 && argv[k + 1].rfind("--", 0) == 0 &&
+               FindSpec(specs, argv[k + 1].substr(2, argv[k + 1].find('=') - 2)) != nullptr)
+        // The next token is one of the command's options: this one's value is missing (taken
+        // as its value, "--out --overwrite" wrote into a folder named "--overwrite").
+        throw InputError("option --" + spec->name, "(missing)",
+                         "needs a value: --" + spec->name + " " + spec->value_name +
+                             " (the next argument, " + argv[k + 1] + ", is an option)");
       else if (k + 1 < argv.size())
         value = argv[++k];  // its value, whatever it is
       else
@@ -172,11 +181,13 @@ std::optional<long> Args::Integer(const std::string& name) const {
 }
 
 double ParseDouble(const std::string& field, const std::string& text) {
-  errno = 0;
-  char* end = nullptr;
-  const double value = std::strtod(text.c_str(), &end);
-  if (text.empty() || end != text.c_str() + text.size() || errno == ERANGE ||
-      !std::isfinite(value)) {
+  // Decimal only (strtod also read "0x1770" as 6000), an optional leading '+'.
+  const bool plus = !text.empty() && text.front() == '+';
+  const std::string_view digits = plus ? std::string_view(text).substr(1) : text;
+  double value = 0.0;
+  const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+  if (digits.empty() || (plus && digits.front() == '-') || error != std::errc() ||
+      end != digits.data() + digits.size() || !std::isfinite(value)) {
     throw InputError(field, "'" + text + "'", "must be a finite number");
   }
   return value;

@@ -255,7 +255,18 @@ Command MakeBearingCommand() {
           {"bearing.viscosity", "--viscosity"},
           {"bearing.speed_rpm", "--rpm"},
           {"bearing.eps", "--eps"},
-          {"bearing.load", "--load"}};
+          {"bearing.load", "--load"},
+          {"bearing.mode", "--eps / --load"},
+          {"bearing.barus_alpha", "--barus"},
+          {"bearing.roelands_z", "--roelands"},
+          {"bearing.surface.sigma1", "--sigma1"},
+          {"bearing.surface.sigma2", "--sigma2"},
+          {"bearing.surface.peklenik", "--peklenik"},
+          {"bearing.surface.boundary_friction", "--boundary-friction"},
+          {"bearing.surface.E1", "--E1"},
+          {"bearing.surface.E2", "--E2"},
+          {"bearing.surface.nu1", "--nu1"},
+          {"bearing.surface.nu2", "--nu2"}};
       for (const auto& [field, option] : kOptions)
         if (e.field() == field) throw InputError(option, e.value(), e.allowed());
       throw;
@@ -283,7 +294,7 @@ Command MakeBearingCommand() {
       j["cavitated_fraction"] = r.cavitated_fraction;
       j["cavitation"] = lubrication::ToString(in.cavitation);
       j["viscosity_used"] = in.viscosity;
-      j["viscosity_used_definition"] = "Pa s, at zero gauge pressure and the temperature used";
+      j["viscosity_used_definition"] = "Pa*s, at zero gauge pressure and the temperature used";
       if (temperature) j["temperature"] = *temperature;
       if (grade != nullptr) {
         j["grade"] = std::string(grade->key);
@@ -327,6 +338,8 @@ Command MakeBearingCommand() {
       if (j.contains("pressure_viscosity_coefficient"))
         units["pressure_viscosity_coefficient"] = "1/Pa";
       if (cross.active()) units["cross_critical_rate"] = "1/s";
+      if (j.contains("elastic_residual"))
+        units["elastic_residual"] = units["elastic_tolerance"] = "m";
       j["units"] = units;
       j["mesh"] = std::to_string(in.mesh.n_theta) + "x" + std::to_string(in.mesh.n_z);
       j["l_over_d"] = in.length / (2.0 * in.radius);

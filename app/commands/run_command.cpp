@@ -115,6 +115,12 @@ Command MakeRunCommand() {
         streams.err << "filmdyn run: fields/ not written: the run reports its last whole cycle, "
                        "whose film fields were not kept (two cycles of them would not fit in "
                        "this machine's memory)\n";
+      } else if (!args.Has("no-fields") && fields.skirt_frames() + fields.bearing_frames() == 0 &&
+                 !result.samples.empty() && result.reported_cycle == 0 &&
+                 (engine::SkirtLubricated(config.model) ||
+                  engine::BigEndLubricated(config.model))) {
+        streams.err << "filmdyn run: fields/ not written: the run stopped in its run-in, whose "
+                       "film fields are not recorded\n";
       }
       // The same charts the GUI draws, also for an incomplete run (what was computed).
       if (const std::string error = WriteRunPlots(out, config, result, rows); !error.empty()) {

@@ -40,10 +40,18 @@ engine::RunConfig BuildRunConfig(const io::LoadedCase& loaded, engine::Model mod
 std::string WriteRunPlots(const std::filesystem::path& folder, const engine::RunConfig& config,
                           const engine::RunResult& result, const std::vector<io::OutputRow>& rows) {
   QString error;
-  ui::ExportStandardPlots(
-      {ui::PlotRunFromRows(1, config.engine_case, engine::ModelName(config.model), config.rpm, rows,
-                           io::MotionRows(result, config.model))},
-      QString::fromStdString((folder / "plots").string()), &error);
+  ui::PlotRun run = ui::PlotRunFromRows(1, config.engine_case, engine::ModelName(config.model),
+                                        config.rpm, rows, io::MotionRows(result, config.model));
+  // A run that did not complete says so in every chart's legend: what is drawn is not a
+  // periodic cycle (or not a whole one).
+  if (result.status == engine::RunStatus::kNotConverged) {
+    run.label += QStringLiteral(" (not periodic)");
+  } else if (result.status != engine::RunStatus::kCompleted) {
+    run.label += QStringLiteral(" (%1: incomplete%2)")
+                     .arg(QString::fromStdString(engine::StatusName(result.status)),
+                          result.reported_cycle == 0 ? QStringLiteral(", run-in only") : QString());
+  }
+  ui::ExportStandardPlots({run}, QString::fromStdString((folder / "plots").string()), &error);
   return error.toStdString();
 }
 

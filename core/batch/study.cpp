@@ -86,13 +86,7 @@ StudyDesign ParseDesign(const Study& s, const json& j) {
 double CheckedLevel(const Study& s, const engine::CaseField& field, const json& j,
                     const std::string& key) {
   if (!j.is_number() || !std::isfinite(j.get<double>())) {
-    // What the field allows, in the words its own check uses (which refuses a NaN).
-    try {
-      field.Check(std::numeric_limits<double>::quiet_NaN());
-    } catch (const InputError& e) {
-      Bad(s, key + " (" + field.path + ")", JsonText(j), e.allowed());
-    }
-    Bad(s, key + " (" + field.path + ")", JsonText(j), "must be a finite number");
+    Bad(s, key + " (" + field.path + ")", JsonText(j), field.AllowedText());
   }
   const double v = j.get<double>();
   if (field.kind == engine::FieldKind::kInteger && v != std::floor(v)) {

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <limits>
 #include <map>
 #include <numbers>
 #include <type_traits>
@@ -1288,6 +1289,15 @@ void CaseField::Check(double value, const std::string& field) const {
   }
 }
 
+std::string CaseField::AllowedText() const {
+  try {
+    Check(std::numeric_limits<double>::quiet_NaN());  // refused by every number field's check
+  } catch (const InputError& e) {
+    return e.allowed();
+  }
+  return "must be a finite number";
+}
+
 std::string CaseField::RangeText() const {
   switch (kind) {
     case FieldKind::kText:
@@ -1564,6 +1574,18 @@ void CheckCaseConsistency(const EngineCase& c) {
   JointBulkModulus(c, c.skirt.oil, "skirt", c.skirt.cavitation);
   JointBulkModulus(c, c.big_end.oil, "big_end", c.big_end.cavitation);
   CheckJointOils(c);
+  // One cylinder-pressure curve per speed: a second one at the same speed would be ignored
+  // (the first is taken), silently.
+  for (std::size_t k = 0; k < c.pressure_curves.size(); ++k) {
+    for (std::size_t i = 0; i < k; ++i) {
+      if (c.pressure_curves[i].rpm == c.pressure_curves[k].rpm) {
+        throw InputError("pressure_curves." + std::to_string(k) + ".rpm",
+                         FormatValue(c.pressure_curves[k].rpm),
+                         "pressure_curves." + std::to_string(i) +
+                             " is at this speed already: one curve per speed [rpm]");
+      }
+    }
+  }
   const auto& g = c.geometry;
   if (g.rod_length <= g.crank_radius + std::abs(g.pin_offset)) {
     throw InputError("geometry.rod_length", FormatValue(g.rod_length),

@@ -83,6 +83,9 @@ struct CaseField {
   void Check(double si_value, const std::string& field = {}) const;
   /// "> 0 [m]", "[1e-14, 0.01] [-]", "integer in [8, 5000]", ... (docs and tooltips).
   std::string RangeText() const;
+  /// What Check says a number or integer field allows ("must be a finite number in (0, 100]
+  /// [m]"), for errors about a value that is no number at all.
+  std::string AllowedText() const;
 };
 
 /// Every field, in case-file order.

@@ -17,7 +17,7 @@ struct CurveFields {
   std::function<std::string(std::size_t k, bool angle)> point;
   bool angles_in_radians = false;  ///< the user gives the angles in rad (else in °CA)
   /// Points named `field[k].crank_angle` and `field[k].pressure`, angles in °CA (a case file's
-  /// inline curve, a CSV file).
+  /// inline curve; a CSV file names its lines instead).
   static CurveFields Points(const std::string& field);
 };
 

@@ -72,6 +72,7 @@ std::string Dump(const json& j) { return j.dump(); }
 struct Reader {
   const json& root;
   std::set<std::string> seen;
+  std::string prefix;  ///< what errors put before a path: the reader's place in the file
   const json* Get(const std::string& path) {
     seen.insert(path);
     return Find(root, path);
@@ -114,13 +115,14 @@ struct Reader {
   template <class Check>
   void Vector(const std::string& path, std::vector<double>& value, const Check& check) {
     if (const json* j = Get(path)) {
-      if (!j->is_array()) throw InputError(path, Dump(*j), "must be an array of numbers");
+      if (!j->is_array()) throw InputError(prefix + path, Dump(*j), "must be an array of numbers");
       value.clear();
       for (std::size_t k = 0; k < j->size(); ++k) {
-        value.push_back(ToNumber(path + "." + std::to_string(k), (*j)[k]));
+        value.push_back(ToNumber(prefix + path + "." + std::to_string(k), (*j)[k]));
       }
     }
-    for (std::size_t k = 0; k < value.size(); ++k) check(path + "." + std::to_string(k), value[k]);
+    for (std::size_t k = 0; k < value.size(); ++k)
+      check(prefix + path + "." + std::to_string(k), value[k]);
   }
 };
 
@@ -167,7 +169,7 @@ void LeafPaths(const json& node, const std::string& prefix, std::vector<std::str
 engine::PressureCurveSource CurveFromJson(const json& j, const std::string& path) {
   if (!j.is_object()) throw InputError(path, Dump(j), "must be an object {rpm, file | table}");
   engine::PressureCurveSource source;
-  Reader r{j, {}};
+  Reader r{j, {}, {}};
   for (auto it = j.begin(); it != j.end(); ++it) {
     if (it.key() != "rpm" && it.key() != "file" && it.key() != "crank_angle_deg" &&
         it.key() != "pressure") {
@@ -183,7 +185,7 @@ engine::PressureCurveSource CurveFromJson(const json& j, const std::string& path
       throw InputError(path + ".file", Dump(j["file"]), "must be a string");
     source.file = j["file"].get<std::string>();
   } else {
-    Reader inner{j, {}};
+    Reader inner{j, {}, path + "."};
     inner.Vector("crank_angle_deg", source.crank_angle_deg, [](const std::string& f, double x) {
       RequireInRange(f, x, 0.0, 720.0, false, false, "deg");
     });
@@ -241,7 +243,7 @@ EngineCase CaseFromJson(const json& root, std::vector<std::string>* notes) {
   if (!root.is_object())
     throw InputError("case", Dump(root).substr(0, 40), "must be a JSON object");
   EngineCase c;
-  Reader reader{root, {}};
+  Reader reader{root, {}, {}};
   VisitCase(reader, c);
   ReadOldPistonRadius(root, reader, c, notes);
   // Before the supply kinds, a feed pressure meant one hole through the shell on the rod axis.
@@ -326,7 +328,13 @@ json OverrideNumber(const std::string& path, std::string_view text) {
   const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
   if (text.empty() || error != std::errc() || end != text.data() + text.size()) {
     if (text == "nan" || text == "inf" || text == "-inf") return std::string(text);
-    throw InputError("--set " + path, std::string(text), "must be a number");
+    // A number with a unit ("130mm") is the usual slip: say the unit the field takes (SI).
+    const engine::CaseField* field = engine::FindCaseField(path);
+    throw InputError("--set " + path, std::string(text),
+                     field != nullptr && (field->kind == engine::FieldKind::kNumber ||
+                                          field->kind == engine::FieldKind::kInteger)
+                         ? "must be a number without a unit (SI): " + field->AllowedText()
+                         : "must be a number");
   }
   return value;
 }

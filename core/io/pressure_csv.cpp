@@ -48,8 +48,11 @@ engine::PressureCurve ReadPressureCsv(std::istream& in, const std::string& sourc
   int line_number = 0;
   bool header_seen = false;
   std::vector<double> angles_deg, pressures;
+  std::vector<int> lines;  // each point's line in the file
   while (std::getline(in, line)) {
     ++line_number;
+    // A UTF-8 byte-order mark (spreadsheets write one) is no part of the header.
+    if (line_number == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);
     const std::string text = Trim(line);
     if (text.empty() || text[0] == '#') continue;
     const std::string where = source + ":" + std::to_string(line_number);
@@ -69,6 +72,7 @@ engine::PressureCurve ReadPressureCsv(std::istream& in, const std::string& sourc
     if (comma == std::string::npos || text.find(',', comma + 1) != std::string::npos) {
       throw InputError(where, "\"" + text + "\"", "must have exactly two columns: angle, pressure");
     }
+    lines.push_back(line_number);
     angles_deg.push_back(ParseCell(text.substr(0, comma), where, "crank_angle[deg]"));
     pressures.push_back(ParseCell(text.substr(comma + 1), where, "pressure[Pa]"));
     if (pressures.back() < 0) {
@@ -84,7 +88,14 @@ engine::PressureCurve ReadPressureCsv(std::istream& in, const std::string& sourc
   std::vector<double> angles(angles_deg.size());
   std::transform(angles_deg.begin(), angles_deg.end(), angles.begin(),
                  [](double d) { return d * std::numbers::pi / 180.0; });
-  return engine::PressureCurve(std::move(angles), std::move(pressures), source);
+  // A point's error names its line, as the cells' errors above do.
+  engine::CurveFields fields;
+  fields.curve = source;
+  fields.point = [source, lines](std::size_t k, bool angle) {
+    return source + ":" + std::to_string(lines[k]) +
+           (angle ? " crank_angle[deg]" : " pressure[Pa]");
+  };
+  return engine::PressureCurve(std::move(angles), std::move(pressures), fields);
 }
 
 engine::PressureCurve ReadPressureCsvFile(const std::filesystem::path& path,

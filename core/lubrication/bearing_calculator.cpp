@@ -18,7 +18,7 @@ void BearingCalcInput::Validate() const {
   RequirePositive("bearing.speed_rpm", speed_rpm, "rev/min");
   if (eps.has_value() == load.has_value()) {
     throw InputError("bearing.mode", eps ? "both --eps and --load" : "neither --eps nor --load",
-                     "give exactly one of eps (mode 1) or load (mode 2)");
+                     "give exactly one of --eps (mode 1) or --load (mode 2)");
   }
   if (eps) RequireInRange("bearing.eps", *eps, 0.0, 1.0, false, true);
   if (load) RequirePositive("bearing.load", *load, "N");

@@ -373,6 +373,10 @@ class TestCli : public QObject {
       QFile csv(out + "/results.csv");
       QVERIFY(csv.open(QIODevice::ReadOnly));
       QVERIFY(csv.readAll().count('\n') >= 2);  // the header and the cycle's rows so far
+      // The plots say in their legend that what they draw is incomplete.
+      QFile chart(out + "/plots/moft.svg");
+      QVERIFY(chart.open(QIODevice::ReadOnly));
+      QVERIFY(chart.readAll().contains("(cancelled: incomplete)"));
     }
     QTemporaryDir dir;
     QElapsedTimer timer;
@@ -461,7 +465,7 @@ class TestCli : public QObject {
     result = Run({"run", "--model", "ideal", "--pressure-curve", huge_pressure, "--out",
                   dir.filePath("b3")});
     QCOMPARE(result.exit_code, 2);
-    QVERIFY2(result.err.contains(".pressure = 1e+300"), qPrintable(result.err));
+    QVERIFY2(result.err.contains("huge.csv:8 pressure[Pa] = 1e+300"), qPrintable(result.err));
     result = Run(
         {"run", "--model", "ideal", "--pressure-curve", "/dev/zero", "--out", dir.filePath("c")});
     QCOMPARE(result.exit_code, 2);
@@ -543,7 +547,15 @@ class TestCli : public QObject {
              {{"bearing", "--load", "0"}, "--load = 0"},
              {{"bearing", "--eps", "0.5", "--mesh", "240x"}, "--mesh = 240x: must be NthetaxNz"},
              {{"bearing", "--eps", "0.5", "--mesh", "240x40x3"},
-              "--mesh = 240x40x3: must be NthetaxNz"}}) {
+              "--mesh = 240x40x3: must be NthetaxNz"},
+             {{"bearing", "--eps", "0.5", "--load", "5"},
+              "--eps / --load = both --eps and --load: give exactly one of --eps"},
+             {{"bearing", "--eps", "0.5", "--roelands", "-1"}, "--roelands = -1"},
+             {{"bearing", "--eps", "0.5", "--sigma1", "-1e-6"}, "--sigma1 = -1e-06"},
+             {{"bearing", "--eps", "0.5", "--sigma1", "1e-6", "--E1", "0"}, "--E1 = 0"},
+             {{"bearing", "--eps", "0.5", "--sigma1", "1e-6", "--peklenik", "20"},
+              "--peklenik = 20"},
+             {{"bearing", "--eps", "0.5", "--sigma1", "1e-6", "--nu2", "0.7"}, "--nu2 = 0.7"}}) {
       const Result result = Run(argv);
       QCOMPARE(result.exit_code, 2);
       QVERIFY2(result.err.contains(needle) && !result.err.contains("bearing."),
@@ -583,6 +595,13 @@ class TestCli : public QObject {
       QFAIL("no InputError thrown");
     };
     expect_error({"--rpm"}, "needs a value");
+    // An option's value missing before the next option: that option is not taken as the value
+    // ("--out --overwrite" wrote into a folder named "--overwrite").
+    expect_error({"--rpm", "--rpm", "1"},
+                 "--rpm = (missing): needs a value: --rpm N (the next argument, --rpm, is an "
+                 "option)");
+    expect_error({"--rpm", "0x1770"}, "--rpm = '0x1770': must be a finite number");
+    expect_error({"--rpm", "+-5"}, "must be a finite number");
     expect_error({"--rpm", "fast"}, "--rpm = 'fast': must be a finite number");
     expect_error({"--rpm", "nan"}, "must be a finite number");
     expect_error({"--rpm", "1", "--rpm", "2"}, "--rpm = '2': may be given only once");
@@ -706,7 +725,7 @@ class TestCli : public QObject {
         {{"--vogel", "6.9e-5,1050"}, "--vogel"},
         {{"--vogel", "-1,1050,165", "--temperature", "90"}, "--vogel.a"},
         {{"--viscosity", "0.01", "--temperature", "90"}, "--temperature"},
-        {{"--barus", "-2e-8"}, "barus_alpha"},
+        {{"--barus", "-2e-8"}, "--barus = -2e-08"},
         {{"--barus", "2e-8", "--roelands", "0.6"}, "--barus"},
         {{"--cross", "0.7,1"}, "--cross"},
         {{"--cross", "1.5,1,1e6"}, "--cross"},

@@ -248,6 +248,18 @@ class TestCaseFile : public QObject {
              std::string("big_end.journal_radius"));
     QCOMPARE(ErrorField(with("solver", "max_cycles", 2.5)), std::string("solver.max_cycles"));
     QCOMPARE(ErrorField(with("geometry", "rod_lenght", 0.13)), std::string("geometry.rod_lenght"));
+    // An inline curve's point is named with its curve's path; a second curve at one speed is
+    // refused (the first was taken, silently).
+    json inline_curve = DefaultJson();
+    inline_curve["pressure_curves"] = json::array(
+        {{{"rpm", 6000}, {"crank_angle_deg", {0, 90, 180}}, {"pressure", {1e5, 2e5, -1}}}});
+    QCOMPARE(ErrorField(inline_curve), std::string("pressure_curves.0.pressure.2"));
+    inline_curve["pressure_curves"][0]["crank_angle_deg"] = {0, 90, 900};
+    QCOMPARE(ErrorField(inline_curve), std::string("pressure_curves.0.crank_angle_deg.2"));
+    json twice = DefaultJson();
+    twice["pressure_curves"].push_back(twice["pressure_curves"][0]);
+    QCOMPARE(ErrorField(twice),
+             "pressure_curves." + std::to_string(twice["pressure_curves"].size() - 1) + ".rpm");
     json bad_note = DefaultJson();
     bad_note["assumed"]["geometry.nothing"] = "x";
     QCOMPARE(ErrorField(bad_note), std::string("assumed.geometry.nothing"));
@@ -386,6 +398,17 @@ class TestCaseFile : public QObject {
       return std::string();
     };
     QCOMPARE(field("geometry.rod_length=abc"), std::string("--set geometry.rod_length"));
+    // A number with a unit: the error says the field takes SI and its range.
+    try {
+      json k = DefaultJson();
+      io::ApplyOverride(&k, "geometry.rod_length=130mm");
+      QFAIL("130mm accepted");
+    } catch (const InputError& e) {
+      QCOMPARE(std::string(e.what()),
+               "--set geometry.rod_length = 130mm: must be a number without a unit (SI): " +
+                   engine::FindCaseField("geometry.rod_length")->AllowedText());
+      QVERIFY2(std::string(e.what()).find("[m]") != std::string::npos, e.what());
+    }
     QCOMPARE(field("geometry.no_such=1"), std::string("--set geometry.no_such"));
     QCOMPARE(field("geometry=1"), std::string("--set geometry"));
     QCOMPARE(field("geometry.rod_mass=nan"), std::string("geometry.rod_mass"));

@@ -71,9 +71,19 @@ class TestPressureCsv : public QObject {
     QVERIFY(Rejects("crank_angle[deg],pressure[Pa]\n0,1e5\n720.0000000000001,1e5\n",
                     "= 720.0000000000001: must lie in [0, 720]"));
     QVERIFY(Rejects("crank_angle[deg],pressure[Pa]\n0,1e5,3\n", "two columns"));
-    QVERIFY(Rejects("crank_angle[deg],pressure[Pa]\n0,1e5\n0,1e5\n1,2\n2,3\n3,4\n4,5\n5,6\n6,7\n",
-                    "increase strictly"));
+    // A point's error names its line in the file (comments and the header counted): it named
+    // the point's index, "curve.csv[1].crank_angle", one less than the data row.
+    QVERIFY(Rejects(
+        "# a comment\ncrank_angle[deg],pressure[Pa]\n0,1e5\n0,1e5\n1,2\n2,3\n3,4\n4,5\n5,6\n6,7\n",
+        "curve.csv:4 crank_angle[deg] = 0 °CA: crank angles must increase strictly"));
+    std::string gap = Table(2.0, 720.0, Smooth);
+    const auto cut = gap.find("\n40,");  // 40 … 56 °CA left out: a gap of 20 °CA
+    gap.erase(cut, gap.find("\n58,") - cut);
+    QVERIFY(Rejects(gap, "curve.csv:22 crank_angle[deg] = 58 °CA: 20 °CA after the point before"));
     QVERIFY(Rejects("", "header"));
+    // A UTF-8 byte-order mark before the header (spreadsheets write one) is read past.
+    const auto with_mark = Read("\xEF\xBB\xBF" + Table(2.0, 720.0, Smooth));
+    QVERIFY(std::abs(with_mark.Pressure(0.0) - Smooth(0)) < 1e-9 * Smooth(0));
     // p(720) must repeat p(0).
     std::string text = Table(5.0, 715.0, Smooth) + "720,9e6\n";
     QVERIFY(Rejects(text, "must repeat"));

@@ -141,9 +141,15 @@ class TestSkirtCalculatorPanel : public QObject {
     panel->mapSelector()->setCurrentIndex(0);
 
     if (const QString dir = qEnvironmentVariable("FILMDYN_SCREENSHOT_DIR"); !dir.isEmpty()) {
-      Type(panel, "e0", "15");
-      Type(panel, "tilt", "0.4");
+      // The calculator's main use, the equilibrium under a side force and a moment (not the
+      // 5 MN left from the capacity check above), with no input's text selected.
+      panel->modeSelector()->setCurrentIndex(1);
+      Type(panel, "side_force", QString::number(-direct.film.lateral_force, 'f', 1));
+      Type(panel, "moment", QString::number(-direct.film.moment_about_pin, 'f', 3));
       WaitForResult(panel);
+      QVERIFY2(panel->last()->ok, qPrintable(panel->statusLabel()->text()));
+      panel->statusLabel()->setFocus();
+      for (QLineEdit* edit : panel->findChildren<QLineEdit*>()) edit->deselect();
       QTest::qWait(100);
       QVERIFY(window.grab().save(dir + "/case_skirt_calculator.png"));
     }

@@ -315,6 +315,11 @@ class TestMainWindowAfterRun : public QObject {
                                 filmdyn::ui::ParameterTableModel::kValue),
                    "15.2", Qt::EditRole);
     QVERIFY(!window.runAction()->isEnabled());
+    // The red cell in view (the table was left scrolled to the compliance rows above).
+    window.caseEditor()
+        ->parameterTable(filmdyn::ui::CaseGroup::kBigEnd)
+        ->scrollTo(model->index(model->rowOf("big_end.journal_radius"), 0),
+                   QAbstractItemView::PositionAtCenter);
     QTest::qWait(100);
     Save(&window, "case_validation.png");
   }
