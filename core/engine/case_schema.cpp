@@ -1457,6 +1457,13 @@ std::string DerivedNote(const EngineCase& c, const std::string& path) {
   if (path == "big_end.journal_radius" || path == "big_end.journal_temperature" ||
       path == "big_end.bearing_temperature")
     return note(BigEndFit(c));
+  // Values that stand for a choice rather than a quantity.
+  const CaseField* field = FindCaseField(path);
+  if (field != nullptr && field->get) {
+    const double value = field->get(c);
+    if (path.ends_with("bulk_modulus") && value == 0.0) return "0: an incompressible oil";
+    if (path == "solver.error_estimate") return value != 0.0 ? "on" : "off";
+  }
   return {};
 }
 

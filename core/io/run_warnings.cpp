@@ -260,10 +260,30 @@ void SyntheticPressureWarning(const engine::RunConfig& config, std::vector<RunWa
   w.value = config.pressure.PeakPressure();
   w.crank_angle_deg = config.pressure.PeakAngle() * kDeg;
   w.message = fmt::format(
-      "the cylinder pressure is the synthetic single-zone curve at {:g} rpm (peak {:.1f} bar at "
-      "{:.0f} °CA), not a measured one (docs/pressure-model.md); give a measured curve with "
-      "--pressure-curve or the case's pressure_curves",
-      config.rpm, w.value * 1e-5, *w.crank_angle_deg);
+      "the cylinder pressure is the synthetic single-zone curve at {:g} rpm (peak {:.2f} MPa, "
+      "{:.1f} bar, at {:.0f} °CA), not a measured one (docs/pressure-model.md); give a measured "
+      "curve with --pressure-curve or the case's pressure_curves",
+      config.rpm, w.value * 1e-6, w.value * 1e-5, *w.crank_angle_deg);
+  out->push_back(std::move(w));
+}
+
+// A cylinder pressure whose peak is below what any running engine compresses to: most likely a
+// curve in bar or MPa read as Pa, or a gauge pressure (the curve is absolute, in Pa).
+void LowCylinderPressureWarning(const engine::RunConfig& config, std::vector<RunWarning>* out) {
+  if (config.pressure.Empty()) return;
+  const double peak = config.pressure.PeakPressure();
+  if (peak >= kLowestPeakCylinderPressure) return;
+  RunWarning w;
+  w.code = "low_cylinder_pressure";
+  w.value = peak;
+  w.limit = kLowestPeakCylinderPressure;
+  w.crank_angle_deg = config.pressure.PeakAngle() * kDeg;
+  w.message = fmt::format(
+      "the cylinder pressure peaks at {:.4g} Pa ({:.3g} bar) at {:.0f} °CA, below the {:g} bar "
+      "any running engine compresses to (the crankcase is at {:.3g} bar): is the curve in bar or "
+      "MPa, or a gauge pressure? It is read as an absolute pressure in Pa",
+      peak, peak * 1e-5, *w.crank_angle_deg, kLowestPeakCylinderPressure * 1e-5,
+      config.engine_case.operating.crankcase_pressure * 1e-5);
   out->push_back(std::move(w));
 }
 
@@ -521,6 +541,7 @@ std::vector<RunWarning> RunWarnings(const engine::RunConfig& config,
   }
   AssumedInputsWarning(c, &out);
   SyntheticPressureWarning(config, &out);
+  LowCylinderPressureWarning(config, &out);
   FilmStartSupplyWarning(c, &out);
   SupplyHoleMeshWarning(c, &out);
   HalfSpaceBigEndWarning(c, &out);

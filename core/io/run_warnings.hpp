@@ -20,6 +20,10 @@ inline constexpr double kMixedLubricationRatio = 3.0;
 inline constexpr double kAsperityContactRatio = 1.0;
 /// Big-end eccentricity ratio above which the journal runs close to the bearing wall.
 inline constexpr double kHighEccentricity = 0.95;
+/// The lowest peak cylinder pressure [Pa, absolute] a running engine has: a motored engine of
+/// compression ratio 8 compresses 1 bar to some 15 bar; below 5 bar the curve is more likely in
+/// bar or MPa, or gauge, than a real cylinder's.
+inline constexpr double kLowestPeakCylinderPressure = 5.0e5;
 
 /// A supply hole of a mass-conserving big end is resolved when the film's node rows within 0.9
 /// of its radius across the width number at least kHoleRowsAcross and the hole spans at least

@@ -1108,12 +1108,24 @@ void PlotPanel::paintOverlay(const ChartEntry& entry, QPainter* painter) const {
   if (!readout.empty()) {
     const double left = area.right() + kLegendGap;
     double top = legend_bottom + (legend_bottom > area.top() ? 6 : 0);
-    const double h = metrics.lineSpacing() * double(readout.size()) + 6;
+    // As many lines as fit above the plot area's bottom (many runs overlaid ran past the card
+    // and over the axis); the rest summed up in a last line.
+    const std::size_t fit = static_cast<std::size_t>(
+        std::max(1.0, std::floor((area.bottom() - top - 6) / metrics.lineSpacing())));
+    const std::size_t shown = readout.size() <= fit ? readout.size() : fit - 1;
+    const std::size_t lines = shown < readout.size() ? shown + 1 : shown;
+    const double h = metrics.lineSpacing() * double(lines) + 6;
     const QRectF box(left, top, entry.chart->size().width() - left - 4, h);
     painter->setPen(QPen(QColor(190, 190, 190), 0.8));
     painter->setBrush(QColor(248, 248, 248));
     painter->drawRect(box);
-    for (size_t i = 0; i < readout.size(); ++i) {
+    if (shown < readout.size()) {
+      painter->setPen(Qt::black);
+      painter->drawText(QPointF(box.left() + 4, box.top() + 3 + metrics.ascent() +
+                                                    double(shown) * metrics.lineSpacing()),
+                        tr("… %n more", "", int(readout.size() - shown)));
+    }
+    for (size_t i = 0; i < shown; ++i) {
       const double baseline = box.top() + 3 + metrics.ascent() + double(i) * metrics.lineSpacing();
       double x = box.left() + 4;
       if (readout[i].pen.style() != Qt::NoPen) {

@@ -116,7 +116,12 @@ ScalarFieldView::ScalarFieldView(QWidget* parent)
   arrow_->GetProperty()->SetLineWidth(3.0);
   arrow_->VisibilityOff();
   StyleText(arrow_label_->GetTextProperty(), 13, true);
-  arrow_label_->GetTextProperty()->SetColor(1.0, 0.55, 0.45);
+  // White on a dark box: readable over any colour of the field (salmon on the fluid fraction's
+  // yellow was not), and clear of the shaft drawn under it.
+  arrow_label_->GetTextProperty()->SetColor(1.0, 1.0, 1.0);
+  arrow_label_->GetTextProperty()->SetShadow(false);
+  arrow_label_->GetTextProperty()->SetBackgroundColor(0.35, 0.08, 0.05);
+  arrow_label_->GetTextProperty()->SetBackgroundOpacity(0.85);
   arrow_label_->GetTextProperty()->SetJustificationToCentered();
   arrow_label_->GetTextProperty()->SetVerticalJustificationToCentered();
   arrow_label_->GetPositionCoordinate()->SetCoordinateSystemToWorld();

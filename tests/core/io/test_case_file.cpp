@@ -664,6 +664,17 @@ class TestCaseFile : public QObject {
     QVERIFY(std::abs(hot.geometry.radial_clearance - 6.4e-6) < 0.05e-6);  // 25 − 30.6 + 12.0 µm
     QCOMPARE(engine::DerivedNote(c, "skirt.cold_clearance"),
              std::string("hot: 6.41 µm (cold 25.00 µm)"));
+    // Values that stand for a choice say which (the editor showed a bare "0 GPa", "1 –").
+    engine::EngineCase choices = c;
+    choices.lubricant.bulk_modulus = 0.0;
+    QCOMPARE(engine::DerivedNote(choices, "lubricant.bulk_modulus"),
+             std::string("0: an incompressible oil"));
+    choices.lubricant.bulk_modulus = 1.7e9;
+    QCOMPARE(engine::DerivedNote(choices, "lubricant.bulk_modulus"), std::string());
+    choices.solver.error_estimate = 1;
+    QCOMPARE(engine::DerivedNote(choices, "solver.error_estimate"), std::string("on"));
+    choices.solver.error_estimate = 0;
+    QCOMPARE(engine::DerivedNote(choices, "solver.error_estimate"), std::string("off"));
     c.big_end.journal_temperature = 393.15;
     c.big_end.bearing_temperature = 373.15;
     const double hot_big_end = 15.00e-3 * (1.0 + 12e-6 * 80.0) - 14.95e-3 * (1.0 + 12e-6 * 100.0);

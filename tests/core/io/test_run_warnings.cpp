@@ -19,6 +19,7 @@
 #include <cmath>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <numbers>
 #include <optional>
 
 #include "core/engine/run_job.hpp"
@@ -294,6 +295,31 @@ class TestRunWarnings : public QObject {
         QVERIFY(QString::fromStdString(x.message).contains("big_end.supply"));
         QCOMPARE(QString::fromStdString(io::WarningShortText(x)), QString("film-start supply"));
       }
+  }
+
+  // A cylinder pressure that never rises above a few bar is a curve in the wrong unit (bar read
+  // as Pa: a 51 bar peak became 51 Pa and ran without a word), or a gauge pressure.
+  void aCylinderPressureInTheWrongUnitWarns() {
+    const engine::RunResult none;
+    const engine::EngineCase c = CoarseCase();
+    engine::RunConfig config = Config(c, engine::Model::kOnlyLbrbe, 6000.0);
+    auto low = [&]() -> std::optional<io::RunWarning> {
+      for (const io::RunWarning& w : io::RunWarnings(config, none))
+        if (w.code == "low_cylinder_pressure") return w;
+      return std::nullopt;
+    };
+    QVERIFY(!low());  // the synthetic curve, 6 MPa
+    std::vector<double> angles, in_bar;
+    for (int k = 0; k < 720; k += 5) {
+      angles.push_back(k * std::numbers::pi / 180.0);
+      in_bar.push_back(config.pressure.Pressure(angles.back()) * 1e-5);
+    }
+    config.pressure = engine::PressureCurve(angles, in_bar, "bar.csv");
+    const std::optional<io::RunWarning> w = low();
+    QVERIFY(w.has_value());
+    QVERIFY(w->value < 100.0 && w->limit == io::kLowestPeakCylinderPressure);
+    QVERIFY2(QString::fromStdString(w->message).contains("is the curve in bar or MPa"),
+             w->message.c_str());
   }
 
   void halfSpaceBigEndWarns() {
