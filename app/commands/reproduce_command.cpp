@@ -156,7 +156,7 @@ Command MakeReproduceCommand() {
     const std::string meshes = engine::DescribeMeshes(c);
     if (!args.Has("quiet")) streams.err << "reproduce: meshes: " << meshes << "\n";
     const int jobs = JobsOption(args);
-    const double time_limit = args.Double("time-limit").value_or(0.0);
+    const double time_limit = TimeLimitOption(args);
     const std::filesystem::path out =
         args.Value("out") ? std::filesystem::path(*args.Value("out"))
                           : std::filesystem::path("results") / ("reproduce-" + io::SafeFolderName(c.name));

@@ -59,8 +59,8 @@ Command MakeRunCommand() {
     const engine::Model model =
         args.Value("model") ? engine::ParseModel(*args.Value("model")) : engine::ModelOfCase(c);
     const double rpm = args.Double("rpm").value_or(c.operating.rpm);
-    engine::RunConfig config = BuildRunConfig(loaded, model, rpm, args.Value("pressure-curve"),
-                                              args.Double("time-limit").value_or(0.0));
+    engine::RunConfig config =
+        BuildRunConfig(loaded, model, rpm, args.Value("pressure-curve"), TimeLimitOption(args));
     if (const auto threads = args.Integer("threads")) {
       if (*threads < 1 || *threads > 2) {
         throw InputError("--threads", std::to_string(*threads),

@@ -22,6 +22,13 @@ std::atomic<bool> g_interrupted{false};
 extern "C" void OnInterrupt(int) { g_interrupted = true; }
 }  // namespace
 
+double TimeLimitOption(const Args& args) {
+  const std::optional<double> limit = args.Double("time-limit");
+  if (!limit) return 0.0;
+  RequirePositive("--time-limit", *limit, "s (leave the option out for no limit)");
+  return *limit;
+}
+
 engine::RunConfig BuildRunConfig(const io::LoadedCase& loaded, engine::Model model, double rpm,
                                  const std::optional<std::string>& pressure_csv,
                                  double time_limit) {

@@ -23,6 +23,10 @@ namespace filmdyn::cli {
 
 /// A run configuration: the cylinder pressure from `pressure_csv` when given, else the case's
 /// curve for `rpm`; `time_limit` [s] (0 = none). Throws InputError naming the option/field.
+/// The --time-limit option [s]: 0 when not given (no limit); given, it must be > 0 (a 0 would
+/// silently mean no limit).
+double TimeLimitOption(const Args& args);
+
 engine::RunConfig BuildRunConfig(const io::LoadedCase& loaded, engine::Model model, double rpm,
                                  const std::optional<std::string>& pressure_csv, double time_limit);
 

@@ -61,7 +61,7 @@ Command MakeSweepCommand() {
       models.push_back(engine::ModelOfCase(c));
     }
     const int jobs = JobsOption(args);
-    const double time_limit = args.Double("time-limit").value_or(0.0);
+    const double time_limit = TimeLimitOption(args);
     const std::filesystem::path out = args.Value("out")
                                           ? std::filesystem::path(*args.Value("out"))
                                           : std::filesystem::path("results") / ("sweep-" + io::SafeFolderName(c.name));

@@ -663,7 +663,8 @@ std::vector<StudyRow> CollectStudy(const fs::path& dir, const Study& study) {
       try {
         const io::ComparisonRow figures = io::ReadComparisonRow(folder);
         row.status = figures.status;
-        row.wall_time_s = figures.wall_time_s;
+        // A point stopped before it wrote its results (killed) left no wall time: empty, not 0.
+        if (figures.status != "running") row.wall_time_s = figures.wall_time_s;
         row.figures = figures.figures;
         row.notes = figures.notes;
       } catch (const std::exception& e) {

@@ -270,6 +270,15 @@ EngineCase CaseFromJson(const json& root, std::vector<std::string>* notes) {
                          "modulus_liner, poisson_liner; big_end.modulus_journal, "
                          "poisson_journal, modulus_bearing, poisson_bearing; docs/case-file.md)");
       }
+      // A section given as something else than an object ("geometry": [1, 2]).
+      const std::string section = path + ".";
+      const auto& schema = engine::CaseSchema();
+      if (std::any_of(schema.begin(), schema.end(), [&section](const engine::CaseField& f) {
+            return f.path.rfind(section, 0) == 0;
+          })) {
+        throw InputError(path, node ? Dump(*node).substr(0, 60) : "?",
+                         "must be an object of the section's fields (see docs/case-file.md)");
+      }
       throw InputError(path, node ? Dump(*node).substr(0, 60) : "?",
                        "unknown field (see docs/case-file.md)");
     }

@@ -466,6 +466,11 @@ class TestCli : public QObject {
                   dir.filePath("b3")});
     QCOMPARE(result.exit_code, 2);
     QVERIFY2(result.err.contains("huge.csv:8 pressure[Pa] = 1e+300"), qPrintable(result.err));
+    // A time limit of 0 is refused (it meant no limit, silently).
+    result = Run({"run", "--model", "ideal", "--time-limit", "0", "--out", dir.filePath("t0")});
+    QCOMPARE(result.exit_code, 2);
+    QVERIFY2(result.err.contains("--time-limit = 0: must be a finite number > 0"),
+             qPrintable(result.err));
     result = Run(
         {"run", "--model", "ideal", "--pressure-curve", "/dev/zero", "--out", dir.filePath("c")});
     QCOMPARE(result.exit_code, 2);

@@ -177,6 +177,15 @@ class TestCliStudy : public QObject {
     QVERIFY2(status.out.startsWith("4 points, 3 done, 1 incomplete\npoint-0004: incomplete"),
              qPrintable(status.out));
     QVERIFY(!QDir(out + "/plots").exists());  // status reads, never writes
+    // A point killed before it wrote its results (its summary still "running", no lock held)
+    // has no wall time: the cell is empty, not 0.
+    Write(summary,
+          QByteArray(text).replace("\"status\": \"cancelled\"", "\"status\": \"running\""));
+    QCOMPARE(Run({"study", "collect", out}).exit_code, 0);
+    for (const QByteArray& line : Read(out + "/study.csv").split('\n'))
+      if (line.contains("point-0004"))
+        QVERIFY2(line.contains(",incomplete,running,,"), line.constData());
+    Write(summary, text);
     const Result resumed = Run({"study", file, "--out", out});
     QCOMPARE(resumed.exit_code, 0);
     QVERIFY2(resumed.err.contains("3 already done, 1 to run"), qPrintable(resumed.err));

@@ -260,6 +260,16 @@ class TestCaseFile : public QObject {
     twice["pressure_curves"].push_back(twice["pressure_curves"][0]);
     QCOMPARE(ErrorField(twice),
              "pressure_curves." + std::to_string(twice["pressure_curves"].size() - 1) + ".rpm");
+    json not_a_section = DefaultJson();
+    not_a_section["geometry"] = json::array({1, 2});
+    try {
+      io::CaseFromJson(not_a_section);
+      QFAIL("a section given as a list was accepted");
+    } catch (const InputError& e) {
+      QCOMPARE(std::string(e.what()),
+               std::string("geometry = [1,2]: must be an object of the section's fields (see "
+                           "docs/case-file.md)"));
+    }
     json bad_note = DefaultJson();
     bad_note["assumed"]["geometry.nothing"] = "x";
     QCOMPARE(ErrorField(bad_note), std::string("assumed.geometry.nothing"));
