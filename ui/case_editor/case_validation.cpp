@@ -1,7 +1,11 @@
 #include "ui/case_editor/case_validation.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
+#include <cstdlib>
 #include <numbers>
+#include <regex>
 
 #include "core/base/input_error.hpp"
 #include "core/engine/case_schema.hpp"
@@ -33,7 +37,58 @@ std::string EditorKey(std::string key) {
   return key;
 }
 
+// The field an error names: its own path, or a list's for an element ("x.3").
+const engine::CaseField* FieldOf(const std::string& name) {
+  if (const engine::CaseField* f = engine::FindCaseField(name)) return f;
+  const size_t dot = name.find_last_of('.');
+  if (dot != std::string::npos &&
+      name.find_first_not_of("0123456789", dot + 1) == std::string::npos)
+    return engine::FindCaseField(name.substr(0, dot));
+  return nullptr;
+}
+
 }  // namespace
+
+std::string InDisplayUnits(const InputError& e) {
+  const engine::CaseField* f = FieldOf(e.field());
+  if (f == nullptr || f->display_unit.empty() || f->display_unit == f->unit ||
+      (f->display_scale == 1.0 && f->display_offset == 0.0))
+    return e.what();
+  const char* begin = e.value().c_str();
+  char* end = nullptr;
+  const double si = std::strtod(begin, &end);
+  if (end == begin || *end != '\0' || !std::isfinite(si)) return e.what();
+  auto shown = [f](const std::string& number) {
+    return fmt::format("{:.6g}", f->ToDisplay(std::strtod(number.c_str(), nullptr)));
+  };
+  const std::string value = fmt::format("{:.6g}", f->ToDisplay(si)) + " " + f->display_unit;
+  // Every quantity "<number> [<SI unit>]" of the rule, and an interval's two ends before it
+  // (not for a unit with a shifted zero: a rule's temperature may be a difference).
+  const std::string allowed = e.allowed();
+  if (f->display_offset != 0.0) return e.field() + " = " + value + ": " + allowed;
+  const std::string unit =
+      std::regex_replace(f->unit, std::regex(R"([.^$|()\[\]{}*+?\\])"), R"(\$&)");
+  const std::string number = R"(([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?))";
+  const std::regex interval(R"(([\(\[])\s*)" + number + R"(,\s*)" + number + R"(\s*([\)\]])\s*\[)" +
+                            unit + R"(\])");
+  const std::regex single(number + R"(\s*\[)" + unit + R"(\])");
+  std::string out;
+  std::smatch m;
+  std::string rest = allowed;
+  while (std::regex_search(rest, m, interval)) {
+    out += m.prefix().str() + m[1].str() + shown(m[2].str()) + ", " + shown(m[3].str()) +
+           m[4].str() + " " + f->display_unit;
+    rest = m.suffix().str();
+  }
+  rest = out + rest;
+  out.clear();
+  while (std::regex_search(rest, m, single)) {
+    out += m.prefix().str() + shown(m[1].str()) + " " + f->display_unit;
+    rest = m.suffix().str();
+  }
+  out += rest;
+  return e.field() + " = " + value + ": " + out;
+}
 
 CaseIssues ValidateCase(const engine::EngineCase& c) {
   CaseIssues issues;
@@ -55,14 +110,14 @@ CaseIssues ValidateCase(const engine::EngineCase& c) {
         }
       }
     } catch (const InputError& e) {
-      issues.emplace(EditorKey(field.path), e.what());
+      issues.emplace(EditorKey(field.path), InDisplayUnits(e));
     }
   }
   // The rules that tie fields together: core's one function.
   try {
     engine::CheckCaseConsistency(c);
   } catch (const InputError& e) {
-    issues.emplace(EditorKey(e.field()), e.what());
+    issues.emplace(EditorKey(e.field()), InDisplayUnits(e));
   }
   // Pressure curves: core's own checks (PressureCurve constructor), one speed once.
   for (size_t i = 0; i < c.pressure_curves.size(); ++i) {
@@ -70,11 +125,6 @@ CaseIssues ValidateCase(const engine::EngineCase& c) {
     const std::string key = PressureCurveKey(i);
     try {
       RequirePositive(key + ".rpm", curve.rpm, "rpm");
-      for (size_t j = 0; j < i; ++j) {
-        if (c.pressure_curves[j].rpm == curve.rpm) {
-          throw InputError(key + ".rpm", FormatValue(curve.rpm), "a curve for this speed exists");
-        }
-      }
       if (curve.file.empty()) {
         std::vector<double> angles;
         angles.reserve(curve.crank_angle_deg.size());
@@ -90,7 +140,7 @@ CaseIssues ValidateCase(const engine::EngineCase& c) {
     try {
       io::CaseFromJson(io::CaseToJson(c));
     } catch (const InputError& e) {
-      issues[EditorKey(e.field())] = e.what();
+      issues[EditorKey(e.field())] = InDisplayUnits(e);
     } catch (const std::exception& e) {
       issues["case"] = e.what();
     }

@@ -8,6 +8,7 @@
 #include <map>
 #include <string>
 
+#include "core/base/input_error.hpp"
 #include "core/engine/engine_case.hpp"
 
 namespace filmdyn::ui {
@@ -18,6 +19,12 @@ namespace filmdyn::ui {
 using CaseIssues = std::map<std::string, std::string>;
 
 CaseIssues ValidateCase(const engine::EngineCase& engine_case);
+
+/// Core's message for a case field as the editor shows the field: its value and every
+/// "<number> [<SI unit>]" quantity of the rule in the field's display unit, e.g.
+/// "big_end.journal_radius = 15.2 mm: must be smaller than big_end.bearing_radius = 15 mm"
+/// (core says 0.0152 and 0.015 [m]). Other messages as they are.
+std::string InDisplayUnits(const InputError& error);
 
 /// Why the case cannot run (first issue, or "no pressure curve ..."), empty when it can.
 std::string RunBlocker(const engine::EngineCase& engine_case, const CaseIssues& issues);

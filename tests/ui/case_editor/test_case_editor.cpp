@@ -717,12 +717,13 @@ class TestCaseEditor : public QObject {
     QVERIFY2(h_tip.contains("In the case file: skirt.profile_h") && h_tip.contains("Unit: µm"),
              qPrintable(h_tip));
     QCOMPARE(profile->index(0, 1).data(Qt::ToolTipRole).toString(), h_tip);
-    // A bad value: the tooltip is core's reason instead (field, value, allowed values).
+    // A bad value: the tooltip is core's reason instead (field, value, allowed values), in the
+    // cell's unit.
     auto c = window.document()->engineCase();
     c.skirt.cold_clearance = 0.04;  // more than the bore radius
     window.document()->edit(c, "clearance too large");
     const QString reason = clearance.data(Qt::ToolTipRole).toString();
-    QVERIFY2(reason.contains("skirt.cold_clearance") && reason.contains("0.04"),
+    QVERIFY2(reason.startsWith("skirt.cold_clearance = 40000 µm: must be a finite number in (0, "),
              qPrintable(reason));
     QVERIFY(!window.runAction()->isEnabled());
   }

@@ -322,6 +322,23 @@ class TestCaseSchema : public QObject {
     QCOMPARE(issues.begin()->first, std::string("skirt.oil_film_positions"));
     QVERIFY2(issues.begin()->second.find("skirt.oil_film_values.0") != std::string::npos,
              issues.begin()->second.c_str());
+    // The editor's messages quote the values in the cells' units (core's are SI).
+    c = DefaultCase();
+    c.big_end.journal_radius = 15.2e-3;
+    issues = ui::ValidateCase(c);
+    QCOMPARE(issues.size(), size_t(1));
+    QCOMPARE(issues.begin()->second,
+             std::string("big_end.journal_radius = 15.2 mm: must be smaller than "
+                         "big_end.bearing_radius = 15 mm"));
+    QCOMPARE(ui::InDisplayUnits(InputError("geometry.rod_length", "-0.001",
+                                           "must be a finite number in (0, 100] [m]")),
+             std::string("geometry.rod_length = -1 mm: must be a finite number in (0, 100000] mm"));
+    QCOMPARE(ui::InDisplayUnits(InputError("skirt.profile_h.2", "5e-05", "must be >= 0 [m]")),
+             std::string("skirt.profile_h.2 = 50 µm: must be >= 0 µm"));
+    // Not a case field, or no number: as core says it.
+    QCOMPARE(ui::InDisplayUnits(InputError("case", "x", "y")), std::string("case = x: y"));
+    QCOMPARE(ui::InDisplayUnits(InputError("big_end.journal_radius", "abc", "must be a number")),
+             std::string("big_end.journal_radius = abc: must be a number"));
     // An oil the film cannot use at its temperature is found while editing, not by the run.
     c = DefaultCase();
     c.lubricant.model = lubrication::ViscosityModel::kVogel;
