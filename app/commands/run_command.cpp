@@ -59,8 +59,17 @@ Command MakeRunCommand() {
     const engine::Model model =
         args.Value("model") ? engine::ParseModel(*args.Value("model")) : engine::ModelOfCase(c);
     const double rpm = args.Double("rpm").value_or(c.operating.rpm);
-    engine::RunConfig config =
-        BuildRunConfig(loaded, model, rpm, args.Value("pressure-curve"), TimeLimitOption(args));
+    engine::RunConfig config = [&] {
+      try {
+        return BuildRunConfig(loaded, model, rpm, args.Value("pressure-curve"),
+                              TimeLimitOption(args));
+      } catch (const InputError& e) {
+        // A speed the case's curves do not cover, given as --rpm: name the option typed.
+        if (e.field() == "operating.rpm" && args.Value("rpm"))
+          throw InputError("--rpm", e.value(), e.allowed());
+        throw;
+      }
+    }();
     if (const auto threads = args.Integer("threads")) {
       if (*threads < 1 || *threads > 2) {
         throw InputError("--threads", std::to_string(*threads),

@@ -466,6 +466,11 @@ class TestCli : public QObject {
                   dir.filePath("b3")});
     QCOMPARE(result.exit_code, 2);
     QVERIFY2(result.err.contains("huge.csv:8 pressure[Pa] = 1e+300"), qPrintable(result.err));
+    // A speed outside the case's curves, given as --rpm, names --rpm (it named operating.rpm).
+    result = Run({"run", "--model", "ideal", "--rpm", "500", "--out", dir.filePath("r500")});
+    QCOMPARE(result.exit_code, 2);
+    QVERIFY2(result.err.contains("--rpm = 500: must lie within the speeds of pressure_curves"),
+             qPrintable(result.err));
     // A time limit of 0 is refused (it meant no limit, silently).
     result = Run({"run", "--model", "ideal", "--time-limit", "0", "--out", dir.filePath("t0")});
     QCOMPARE(result.exit_code, 2);
