@@ -66,7 +66,8 @@ std::string GlobalUsage() {
     out << left << command.summary << "\n";
   }
   out << "\nExit status: 0 on success, 2 for bad input (the reason on stderr), 1 when a run\n"
-         "cannot complete (partial results kept).\n";
+         "cannot complete (partial results kept), 3 when the skirt or bearing calculator finds\n"
+         "no equilibrium (the reason on stderr).\n";
   return out.str();
 }
 

@@ -43,6 +43,9 @@ class TestCli : public QObject {
     QCOMPARE(result.exit_code, 0);
     QVERIFY(result.out.contains("Usage:"));
     QVERIFY(result.out.contains("versions"));
+    // Every exit status the commands use is named (the calculators' 3 was not).
+    for (const char* status : {"0 on success", "2 for bad input", "1 when a run", "3 when the"})
+      QVERIFY2(result.out.contains(status), status);
   }
 
   void versionPrintsProjectVersion() {
