@@ -22,6 +22,13 @@ const OptionSpec* FindSpec(const std::vector<OptionSpec>& specs, const std::stri
   return nullptr;
 }
 
+// Whether a token is an option ("--name" or "--name=value"), and its name.
+bool IsOption(const std::string& token) { return token.size() > 2 && token.rfind("--", 0) == 0; }
+std::string OptionName(const std::string& token) {
+  const auto eq = token.find('=');
+  return token.substr(2, eq == std::string::npos ? eq : eq - 2);
+}
+
 std::string AllowedOptions(const std::vector<OptionSpec>& specs) {
   if (specs.empty()) return "this command takes no options";
   std::string list = "allowed:";
@@ -39,9 +46,9 @@ Args Args::Parse(const std::string& command, const std::vector<std::string>& arg
   std::map<std::string, int> given;
   for (std::size_t k = 0; k < argv.size(); ++k) {
     const std::string& token = argv[k];
-    if (token.size() <= 2 || token.rfind("--", 0) != 0) continue;
+    if (!IsOption(token)) continue;
     const auto eq = token.find('=');
-    const std::string name = token.substr(2, eq == std::string::npos ? eq : eq - 2);
+    const std::string name = OptionName(token);
     const OptionSpec* spec = FindSpec(specs, name);
     if (spec == nullptr) {
       throw InputError("option --" + name, "'" + token + "'",
@@ -54,8 +61,8 @@ Args Args::Parse(const std::string& command, const std::vector<std::string>& arg
     if (!spec->value_name.empty()) {
       if (eq != std::string::npos)
         value = token.substr(eq + 1);
-      else if (k + 1 < argv.size() && argv[k + 1].size() > 2 && argv[k + 1].rfind("--", 0) == 0 &&
-               FindSpec(specs, argv[k + 1].substr(2, argv[k + 1].find('=') - 2)) != nullptr)
+      else if (k + 1 < argv.size() && IsOption(argv[k + 1]) &&
+               FindSpec(specs, OptionName(argv[k + 1])) != nullptr)
         // The next token is one of the command's options: this one's value is missing (taken
         // as its value, "--out --overwrite" wrote into a folder named "--overwrite").
         throw InputError("option --" + spec->name, "(missing)",
@@ -112,8 +119,8 @@ Args Args::Parse(const std::string& command, const std::vector<std::string>& arg
     throw InputError("command line", "'" + command + "'", error.what());
   }
   for (const std::string& extra : app.remaining()) {
-    if (extra.size() > 2 && extra.rfind("--", 0) == 0) {
-      const std::string name = extra.substr(2, extra.find('=') - 2);
+    if (IsOption(extra)) {
+      const std::string name = OptionName(extra);
       throw InputError("option --" + name, "'" + extra + "'",
                        "unknown option for '" + command + "'; " + AllowedOptions(specs));
     }

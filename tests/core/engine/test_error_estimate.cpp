@@ -48,6 +48,13 @@ std::map<std::string, double> Values(const std::vector<engine::HeadlineFigure>& 
   return v;
 }
 
+// The estimate's figure with this key (a test failure if there is none).
+const engine::FigureError& FigureOf(const engine::ErrorEstimate& e, const std::string& key) {
+  for (const auto& f : e.figures)
+    if (f.figure.key == key) return f;
+  throw std::runtime_error("no figure " + key);
+}
+
 }  // namespace
 
 class TestErrorEstimate : public QObject {
@@ -112,19 +119,14 @@ class TestErrorEstimate : public QObject {
     }
     const engine::ErrorEstimate e = engine::EstimateErrors(samples, coarse, companion);
     QCOMPARE(e.status, std::string("estimated"));
-    auto find = [&e](const std::string& key) -> const engine::FigureError& {
-      for (const auto& f : e.figures)
-        if (f.figure.key == key) return f;
-      throw std::runtime_error("no figure " + key);
-    };
     const double r = companion.skirt_ratio;
-    const engine::FigureError& film = find("skirt_moft_min[m]");
+    const engine::FigureError& film = FigureOf(e, "skirt_moft_min[m]");
     QCOMPARE(film.figure.order, 1.0);  // what summary.json reports
     QVERIFY(std::abs(film.error - 0.8e-6 / (r - 1.0)) < 1e-15);
-    const engine::FigureError& friction = find("skirt_fpl_mean[W]");
+    const engine::FigureError& friction = FigureOf(e, "skirt_fpl_mean[W]");
     QCOMPARE(friction.figure.order, 1.0);
     QVERIFY(std::abs(friction.error - (-1.0 / (r - 1.0))) < 1e-12);
-    const engine::FigureError& bearing = find("bearing_moft_min[m]");
+    const engine::FigureError& bearing = FigureOf(e, "bearing_moft_min[m]");
     QCOMPARE(bearing.figure.order, 2.0);
     QVERIFY(std::abs(bearing.error - 0.3e-6 / (std::pow(companion.big_end_ratio, 2.0) - 1.0)) <
             1e-15);
@@ -169,19 +171,14 @@ class TestErrorEstimate : public QObject {
     }
     const engine::ErrorEstimate e = engine::EstimateErrors(samples, coarse, companion);
     QCOMPARE(e.status, std::string("estimated"));
-    auto find = [&e](const std::string& key) -> const engine::FigureError& {
-      for (const auto& f : e.figures)
-        if (f.figure.key == key) return f;
-      throw std::runtime_error("no figure " + key);
-    };
     const double r = companion.big_end_ratio;
-    const engine::FigureError& film = find("bearing_moft_min[m]");
+    const engine::FigureError& film = FigureOf(e, "bearing_moft_min[m]");
     QCOMPARE(film.figure.order, 1.0);  // what summary.json reports
     QVERIFY(std::abs(film.error - 0.1e-6 / (r - 1.0)) < 1e-15);
-    const engine::FigureError& friction = find("bearing_fpl_mean[W]");
+    const engine::FigureError& friction = FigureOf(e, "bearing_fpl_mean[W]");
     QCOMPARE(friction.figure.order, 1.0);
     QVERIFY(std::abs(friction.error - 2.0 / (r - 1.0)) < 1e-12);
-    const engine::FigureError& skirt = find("skirt_moft_min[m]");
+    const engine::FigureError& skirt = FigureOf(e, "skirt_moft_min[m]");
     QCOMPARE(skirt.figure.order, 2.0);
     QVERIFY(std::abs(skirt.error - 0.1e-6 / (std::pow(companion.skirt_ratio, 2.0) - 1.0)) < 1e-15);
   }

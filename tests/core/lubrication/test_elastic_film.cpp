@@ -16,6 +16,7 @@
 #include <fstream>
 #include <functional>
 #include <numbers>
+#include <tuple>
 #include <vector>
 
 #include "core/base/input_error.hpp"
@@ -884,16 +885,15 @@ class TestElasticFilm : public QObject {
     // Regular files only: a FIFO would wait for a writer forever (it hung a run that no signal
     // could stop); a folder, a device likewise.
     write(csv, nodes);
-    QFile::remove(QString::fromStdString(mtx));
-    QCOMPARE(::mkfifo(mtx.c_str(), 0600), 0);
-    QVERIFY2(message().contains("c.mtx") && message().contains("is not a regular file"),
-             qPrintable(message()));
-    QFile::remove(QString::fromStdString(mtx));
-    write(mtx, good);
-    QFile::remove(QString::fromStdString(csv));
-    QCOMPARE(::mkfifo(csv.c_str(), 0600), 0);
-    QVERIFY2(message().contains("c.nodes.csv") && message().contains("is not a regular file"),
-             qPrintable(message()));
+    for (const auto& [pipe, name, text] :
+         {std::tuple{mtx, "c.mtx", good}, std::tuple{csv, "c.nodes.csv", nodes}}) {
+      QFile::remove(QString::fromStdString(pipe));
+      QCOMPARE(::mkfifo(pipe.c_str(), 0600), 0);
+      QVERIFY2(message().contains(name) && message().contains("is not a regular file"),
+               qPrintable(message()));
+      QFile::remove(QString::fromStdString(pipe));
+      write(pipe, text);
+    }
     QFile::remove(QString::fromStdString(csv));
     {  // more nodes than a dense matrix should hold
       std::string many = "x[m],y[m]\n";
