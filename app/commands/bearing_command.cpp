@@ -44,7 +44,7 @@ Command MakeBearingCommand() {
   command.summary =
       "steady journal-bearing calculator: Sommerfeld number, attitude, friction, side flow";
   command.options = {
-      {"ld", "L/D", "length-to-diameter ratio (default 0.5; ignored when --length is given)"},
+      {"ld", "L/D", "length-to-diameter ratio (default 0.5; not with --length)"},
       {"eps", "E", "mode 1: eccentricity ratio in [0, 1)"},
       {"load", "N", "mode 2: radial load [N] (with --rpm): finds the equilibrium eccentricity"},
       {"rpm", "R", "journal speed [rev/min] (default 3000; bearing at rest)"},
@@ -98,9 +98,15 @@ Command MakeBearingCommand() {
     lubrication::BearingCalcInput in;
     if (auto v = args.Double("radius")) in.radius = *v;
     RequirePositive("--radius", in.radius, "m");
-    const double ld = args.Double("ld").value_or(0.5);
-    RequirePositive("--ld", ld);
-    in.length = args.Double("length").value_or(2.0 * in.radius * ld);
+    if (args.Has("ld") && args.Has("length"))
+      throw InputError("--ld", *args.Value("ld"), "either --ld or --length, not both");
+    if (auto v = args.Double("length")) {
+      in.length = *v;
+    } else {
+      const double ld = args.Double("ld").value_or(0.5);
+      RequirePositive("--ld", ld);
+      in.length = 2.0 * in.radius * ld;
+    }
     if (auto v = args.Double("clearance")) in.radial_clearance = *v;
     if (auto v = args.Double("viscosity")) in.viscosity = *v;
     // The oil, resolved by its own rules (OilSpec::At), so that the calculator and an engine run
@@ -196,6 +202,24 @@ Command MakeBearingCommand() {
     else
       throw InputError("--cavitation", cav, "must be reynolds or jfo");
     in.mesh = ParseMesh(args.Value("mesh").value_or("240x40"));
+    // Options that describe the asperity contact or the surfaces' deformation mean nothing without
+    // it: refused rather than ignored (a forgotten --sigma1 would silently compute smooth
+    // surfaces).
+    const bool rough = args.Has("sigma1") || args.Has("sigma2");
+    for (const char* option : {"peklenik", "boundary-friction"}) {
+      if (args.Has(option) && !rough) {
+        throw InputError(
+            std::string("--") + option, *args.Value(option),
+            "only with a roughness (--sigma1, --sigma2): it sets the asperity contact");
+      }
+    }
+    for (const char* option : {"E1", "E2", "nu1", "nu2"}) {
+      if (args.Has(option) && !rough && !args.Has("half-space")) {
+        throw InputError(std::string("--") + option, *args.Value(option),
+                         "only with a roughness (--sigma1, --sigma2: the asperity contact) or "
+                         "--half-space (the deformation)");
+      }
+    }
     if (args.Has("sigma1") || args.Has("sigma2")) {
       lubrication::SurfacePair pair;
       pair.sigma1 = args.Double("sigma1").value_or(0.0);
@@ -272,13 +296,24 @@ Command MakeBearingCommand() {
       throw;
     }
     const lubrication::BearingCalcResult r = lubrication::RunBearingCalculator(in);
+    // A centred journal (--eps 0) carries no load: no direction to measure the attitude from,
+    // and S and (R/c) f, both per unit load, are unbounded. Its friction (Petroff's) and flows
+    // are what it reports.
+    const bool unloaded = !(r.load > 0.0);
+    static constexpr const char* kUnloaded = "no load: the journal is centred";
     if (args.Has("json")) {
       nlohmann::json j;
       j["mode"] = in.eps ? "eccentricity" : "load";
       j["eps"] = r.eps;
-      j["attitude_deg"] = r.attitude_deg;
-      j["sommerfeld"] = r.sommerfeld;
-      j["friction_variable"] = r.friction_variable;
+      if (unloaded) {
+        j["attitude_deg"] = j["sommerfeld"] = j["friction_variable"] = nullptr;
+        j["undefined"] = {"attitude_deg", "sommerfeld", "friction_variable"};
+        j["undefined_reason"] = kUnloaded;
+      } else {
+        j["attitude_deg"] = r.attitude_deg;
+        j["sommerfeld"] = r.sommerfeld;
+        j["friction_variable"] = r.friction_variable;
+      }
       j["side_flow"] = r.side_flow;
       j["side_flow_unit"] = "m^3/s, both edges";
       j["side_flow_variable"] = r.side_flow_variable;
@@ -355,9 +390,15 @@ Command MakeBearingCommand() {
       o << "L/D                      " << in.length / (2.0 * in.radius) << "\n";
       o << "viscosity used [Pa s]    " << in.viscosity << "\n";
       o << "eccentricity ratio       " << r.eps << "\n";
-      o << "attitude angle [deg]     " << r.attitude_deg << "\n";
-      o << "Sommerfeld number S      " << r.sommerfeld << "\n";
-      o << "friction variable (R/c)f " << r.friction_variable << "\n";
+      if (unloaded) {
+        o << "attitude angle [deg]     undefined (" << kUnloaded << ")\n";
+        o << "Sommerfeld number S      infinite (" << kUnloaded << ")\n";
+        o << "friction variable (R/c)f infinite (" << kUnloaded << ")\n";
+      } else {
+        o << "attitude angle [deg]     " << r.attitude_deg << "\n";
+        o << "Sommerfeld number S      " << r.sommerfeld << "\n";
+        o << "friction variable (R/c)f " << r.friction_variable << "\n";
+      }
       o << "side flow Qs/(R c N L)   " << r.side_flow_variable << "\n";
       o << "side flow [m^3/s]        " << r.side_flow << "\n";
       o << "inlet flow Q/(R c N L)   " << r.inlet_flow_variable << "\n";

@@ -5,6 +5,7 @@
 #include <iomanip>
 #include <sstream>
 
+#include "core/engine/run_job.hpp"
 #include "core/io/output_files.hpp"
 #include "core/io/run_summary.hpp"
 
@@ -28,10 +29,15 @@ enum class Reduce {
   kWorstError
 };
 
+/// The film joint a figure describes: none where that joint is ideal (a pin joint's journal does
+/// not move off centre, an ideal piston has no secondary motion — not a zero of the quantity).
+enum class Film { kAny, kSkirt, kBigEnd };
+
 struct FigureRecipe {
   ComparisonFigure figure;
   const char* column;  ///< results.csv column in the summary's extremes
   Reduce reduce;
+  Film film = Film::kAny;
   /// A peak film pressure: the joint ("skirt", "big_end") whose unresolved_peak warning leaves it
   /// out (a spike between output samples, which the steps between them saw even where the
   /// samples missed it). Any extreme the summary marks a spike is left out too.
@@ -40,15 +46,27 @@ struct FigureRecipe {
 
 const std::vector<FigureRecipe>& Recipes() {
   static const std::vector<FigureRecipe> recipes = {
-      {{"max_abs_piston_lateral[m]", "max abs e0 [µm]", 1e6}, "piston_lateral[m]", Reduce::kMaxAbs},
-      {{"max_abs_piston_tilt[rad]", "max abs γ [mrad]", 1e3}, "piston_tilt[rad]", Reduce::kMaxAbs},
-      {{"min_skirt_moft[m]", "min skirt MOFT [µm]", 1e6}, "skirt_moft[m]", Reduce::kMin},
+      {{"max_abs_piston_lateral[m]", "max abs e0 [µm]", 1e6},
+       "piston_lateral[m]",
+       Reduce::kMaxAbs,
+       Film::kSkirt},
+      {{"max_abs_piston_tilt[rad]", "max abs γ [mrad]", 1e3},
+       "piston_tilt[rad]",
+       Reduce::kMaxAbs,
+       Film::kSkirt},
+      {{"min_skirt_moft[m]", "min skirt MOFT [µm]", 1e6},
+       "skirt_moft[m]",
+       Reduce::kMin,
+       Film::kSkirt},
       {{"max_abs_skirt_normal_force[N]", "max abs skirt F_n [N]", 1.0},
        "skirt_normal_force[N]",
        Reduce::kMaxAbs},
       {{"mean_skirt_fpl[W]", "mean skirt FPL [W]", 1.0}, "", Reduce::kMeanFplSkirt},
-      {{"max_bearing_eps[-]", "max ε [-]", 1.0}, "bearing_eps[-]", Reduce::kMax},
-      {{"min_bearing_moft[m]", "min bearing MOFT [µm]", 1e6}, "bearing_moft[m]", Reduce::kMin},
+      {{"max_bearing_eps[-]", "max ε [-]", 1.0}, "bearing_eps[-]", Reduce::kMax, Film::kBigEnd},
+      {{"min_bearing_moft[m]", "min bearing MOFT [µm]", 1e6},
+       "bearing_moft[m]",
+       Reduce::kMin,
+       Film::kBigEnd},
       {{"mean_bearing_fpl[W]", "mean bearing FPL [W]", 1.0}, "", Reduce::kMeanFplBearing},
       // Friction mean effective pressure of each joint (summary.json's kpis).
       {{"skirt_fmep[Pa]", "skirt FMEP [kPa]", 1e-3}, "", Reduce::kFmepSkirt},
@@ -62,17 +80,21 @@ const std::vector<FigureRecipe>& Recipes() {
       {{"max_skirt_peak_pressure[Pa]", "peak skirt film pressure [MPa]", 1e-6},
        "skirt_peak_pressure[Pa]",
        Reduce::kMax,
+       Film::kSkirt,
        "skirt"},
       {{"max_skirt_contact_pressure[Pa]", "peak skirt contact pressure [MPa]", 1e-6},
        "skirt_peak_contact_pressure[Pa]",
-       Reduce::kMax},
+       Reduce::kMax,
+       Film::kSkirt},
       {{"max_bearing_peak_pressure[Pa]", "peak big-end film pressure [MPa]", 1e-6},
        "bearing_peak_pressure[Pa]",
        Reduce::kMax,
+       Film::kBigEnd,
        "big_end"},
       {{"max_bearing_contact_pressure[Pa]", "peak big-end contact pressure [MPa]", 1e-6},
        "bearing_peak_contact_pressure[Pa]",
-       Reduce::kMax},
+       Reduce::kMax,
+       Film::kBigEnd},
       // Piston slap (summary.json's kpis): the largest lateral kinetic energy at a change of
       // thrust side, and their sum over the cycle.
       {{"max_slap_energy[J]", "max slap energy [mJ]", 1e3}, "", Reduce::kSlapEnergyMax},
@@ -134,8 +156,21 @@ ComparisonRow ReadComparisonRow(const std::filesystem::path& folder) {
   row.status = summary.status;
   row.cycles = summary.cycles;
   row.wall_time_s = summary.wall_time_s;
+  // A summary of an unknown model (none so far) keeps every figure it has.
+  bool skirt_film = true, big_end_film = true;
+  try {
+    const engine::Model model = engine::ParseModel(summary.model);
+    skirt_film = engine::SkirtLubricated(model);
+    big_end_film = engine::BigEndLubricated(model);
+  } catch (const std::exception&) {
+  }
   for (const auto& recipe : Recipes()) {
     std::optional<double> value;
+    if ((recipe.film == Film::kSkirt && !skirt_film) ||
+        (recipe.film == Film::kBigEnd && !big_end_film)) {
+      row.figures.push_back(value);
+      continue;
+    }
     bool spike = false;  // the extreme is a spike between the output samples
     if (recipe.reduce == Reduce::kMeanFplSkirt) {
       value = summary.mean_fpl_skirt_w;

@@ -572,12 +572,53 @@ class TestCli : public QObject {
              {{"bearing", "--eps", "0.5", "--sigma1", "1e-6", "--E1", "0"}, "--E1 = 0"},
              {{"bearing", "--eps", "0.5", "--sigma1", "1e-6", "--peklenik", "20"},
               "--peklenik = 20"},
-             {{"bearing", "--eps", "0.5", "--sigma1", "1e-6", "--nu2", "0.7"}, "--nu2 = 0.7"}}) {
+             {{"bearing", "--eps", "0.5", "--sigma1", "1e-6", "--nu2", "0.7"}, "--nu2 = 0.7"},
+             // Options that would be ignored are refused: the width set twice, contact or
+             // elasticity data without a roughness or an elastic model.
+             {{"bearing", "--eps", "0.5", "--ld", "1", "--length", "0.03"},
+              "--ld = 1: either --ld or --length, not both"},
+             {{"bearing", "--eps", "0.5", "--peklenik", "3"},
+              "--peklenik = 3: only with a roughness (--sigma1, --sigma2)"},
+             {{"bearing", "--eps", "0.5", "--boundary-friction", "0.1"},
+              "--boundary-friction = 0.1: only with a roughness"},
+             {{"bearing", "--eps", "0.5", "--E1", "100e9"},
+              "--E1 = 100e9: only with a roughness (--sigma1, --sigma2: the asperity contact) or "
+              "--half-space"}}) {
       const Result result = Run(argv);
       QCOMPARE(result.exit_code, 2);
       QVERIFY2(result.err.contains(needle) && !result.err.contains("bearing."),
                qPrintable(result.err));
     }
+  }
+
+  // A centred journal carries no load: its attitude is undefined and S, (R/c) f unbounded — said
+  // in words (text) and as null with the reason (JSON), not "180°" and a bare "inf"; its Petroff
+  // friction is still reported: T = 2π μ ω R³ L / c (independent formula).
+  void bearingAtZeroEccentricitySaysTheLoadFiguresAreUndefined() {
+    const Result text = Run({"bearing", "--eps", "0"});
+    QCOMPARE(text.exit_code, 0);
+    QVERIFY2(text.out.contains("attitude angle [deg]     undefined (no load: the journal is "
+                               "centred)"),
+             qPrintable(text.out));
+    QVERIFY(text.out.contains("Sommerfeld number S      infinite (no load"));
+    QVERIFY(!text.out.contains("180"));
+    const Result json = Run({"bearing", "--eps", "0", "--json"});
+    QCOMPARE(json.exit_code, 0);
+    const QJsonObject j = QJsonDocument::fromJson(json.out.toUtf8()).object();
+    QVERIFY(j["attitude_deg"].isNull() && j["sommerfeld"].isNull() &&
+            j["friction_variable"].isNull());
+    QCOMPARE(j["undefined"].toArray().size(), 3);
+    QCOMPARE(j["undefined_reason"].toString(), QString("no load: the journal is centred"));
+    QCOMPARE(j["load"].toDouble(), 0.0);
+    // Defaults: μ 0.01 Pa s, 3000 rpm, R 0.025 m, L = 0.025 m (L/D 0.5), c 25 µm.
+    const double omega = 3000.0 * 2.0 * M_PI / 60.0;
+    const double petroff = 2.0 * M_PI * 0.01 * omega * std::pow(0.025, 3) * 0.025 / 25e-6;
+    QVERIFY2(std::abs(j["friction_torque"].toDouble() / petroff - 1.0) < 1e-6,
+             qPrintable(QString::number(j["friction_torque"].toDouble())));
+    // A loaded bearing keeps its figures.
+    const QJsonObject loaded =
+        QJsonDocument::fromJson(Run({"bearing", "--eps", "0.6", "--json"}).out.toUtf8()).object();
+    QVERIFY(loaded["attitude_deg"].isDouble() && !loaded.contains("undefined"));
   }
 
   void validateRejectsUnknownSuite() {

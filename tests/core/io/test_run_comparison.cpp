@@ -3,6 +3,7 @@
 #include <QtTest>
 #include <fstream>
 #include <sstream>
+#include <tuple>
 
 #include "core/io/run_comparison.hpp"
 
@@ -69,6 +70,40 @@ class TestRunComparison : public QObject {
     // Every row of the Markdown table has the same number of cells.
     const auto lines = markdown.trimmed().split('\n');
     for (const auto& line : lines) QCOMPARE(line.count('|'), lines.first().count('|'));
+  }
+
+  // An ideal joint's clearance motion and film figures are not zeros to compare but absent: an
+  // ideal run's results.csv carries 0 in those columns (a centred journal, no piston motion).
+  void idealJointsHaveNoFilmFigures() {
+    QTemporaryDir dir;
+    const std::string extremes = R"("extremes": {
+        "piston_lateral[m]": {"min": 0, "max": 0}, "piston_tilt[rad]": {"min": 0, "max": 0},
+        "skirt_moft[m]": {"min": 0, "max": 0}, "bearing_eps[-]": {"min": 0, "max": 0},
+        "bearing_moft[m]": {"min": 0, "max": 0},
+        "skirt_normal_force[N]": {"min": -1800, "max": 1879},
+        "bigend_force_x[N]": {"min": -5758, "max": 10}})";
+    for (const auto& [model, skirt_film, big_end_film] :
+         std::vector<std::tuple<std::string, bool, bool>>{
+             {"ideal", false, false}, {"only-skirt", true, false}, {"only-lbrbe", false, true}}) {
+      const std::filesystem::path folder =
+          dir.filePath(QString::fromStdString(model)).toStdString();
+      WriteSummary(folder, R"({"model": ")" + model +
+                               R"(", "rpm": 6000, "status": "completed", "cycles": 2, )" +
+                               extremes + "}");
+      const auto row = filmdyn::io::ReadComparisonRow(folder);
+      for (const char* key :
+           {"max_abs_piston_lateral[m]", "max_abs_piston_tilt[rad]", "min_skirt_moft[m]"}) {
+        QVERIFY2(row.figures[FigureIndex(key)].has_value() == skirt_film,
+                 qPrintable(QString::fromStdString(model + " " + key)));
+      }
+      for (const char* key : {"max_bearing_eps[-]", "min_bearing_moft[m]"}) {
+        QVERIFY2(row.figures[FigureIndex(key)].has_value() == big_end_film,
+                 qPrintable(QString::fromStdString(model + " " + key)));
+      }
+      // The joints' reactions exist for ideal joints too.
+      QCOMPARE(*row.figures[FigureIndex("max_abs_skirt_normal_force[N]")], 1879.0);
+      QCOMPARE(*row.figures[FigureIndex("max_abs_bigend_force_x[N]")], 5758.0);
+    }
   }
 
   // A mass-conserving film's oil per cycle (its KPI, kept with an oil account) is compared; a
