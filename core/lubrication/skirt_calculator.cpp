@@ -86,6 +86,22 @@ std::pair<double, double> SkirtCalculator::TiltRange(double e0, double margin) c
   return {range.lo, range.hi};
 }
 
+std::string SkirtCalculator::Value(const std::string& name, double si) const {
+  return names_.show ? names_.show(name, si) : FormatValue(si);
+}
+
+std::string SkirtCalculator::WithUnit(const std::string& name, double si,
+                                      const char* si_unit) const {
+  return names_.show ? names_.show(name, si) : FormatValue(si) + " " + si_unit;
+}
+
+std::string SkirtCalculator::Between(const std::string& name, const char* symbol, double lo,
+                                     double hi, const char* si_unit) const {
+  if (names_.show)
+    return fmt::format("{} < {} < {}", names_.show(name, lo), symbol, names_.show(name, hi));
+  return fmt::format("{:.4g} < {} < {:.4g} [{}]", lo, symbol, hi, si_unit);
+}
+
 void SkirtCalculator::CheckState(const SkirtState& s) const {
   RequireFinite(names_.e0, s.e0, "m");
   RequireFinite(names_.tilt, s.gamma, "rad");
@@ -100,16 +116,16 @@ void SkirtCalculator::CheckState(const SkirtState& s) const {
       gap.alpha * kDeg, gap.y * 1e3, gap.gap * 1e6);
   const auto [lo, hi] = E0Range(s.gamma);
   if (lo < hi) {
-    throw InputError(names_.e0, FormatValue(s.e0),
-                     fmt::format("{}; at {} = {} rad the film is positive for {:.4g} < e0 < "
-                                 "{:.4g} [m]",
-                                 where, names_.tilt, FormatValue(s.gamma), lo, hi));
+    throw InputError(
+        names_.e0, Value(names_.e0, s.e0),
+        fmt::format("{}; at {} = {} the film is positive for {}", where, names_.tilt,
+                    WithUnit(names_.tilt, s.gamma, "rad"), Between(names_.e0, "e0", lo, hi, "m")));
   }
   const auto [tlo, thi] = TiltRange(0.0);
-  throw InputError(names_.tilt, FormatValue(s.gamma),
+  throw InputError(names_.tilt, Value(names_.tilt, s.gamma),
                    fmt::format("{}; no e0 keeps the film positive at this tilt, which must lie "
-                               "within {:.4g} < tilt < {:.4g} [rad]",
-                               where, tlo, thi));
+                               "within {}",
+                               where, Between(names_.tilt, "tilt", tlo, thi, "rad")));
 }
 
 SkirtPoint SkirtCalculator::Evaluate(const SkirtState& state) {
@@ -432,18 +448,21 @@ SkirtEquilibrium SkirtCalculator::AtLoad(const SkirtLoad& load) {
     return eq;
   }
   const bool force_named = load.side_force != 0.0;
-  const std::string with_other = force_named && load.moment != 0.0
-                                     ? fmt::format(" with {} = {} N*m (both scaled alike)",
-                                                   names_.moment, FormatValue(load.moment))
-                                     : "";
+  const std::string with_other =
+      force_named && load.moment != 0.0
+          ? fmt::format(" with {} = {} (both scaled alike)", names_.moment,
+                        WithUnit(names_.moment, load.moment, "N*m"))
+          : "";
   const double limit = carried * (force_named ? std::abs(load.side_force) : std::abs(load.moment));
+  const std::string& named = force_named ? names_.side_force : names_.moment;
+  const std::string most = names_.show ? names_.show(named, limit)
+                                       : fmt::format("{:.4g} {}", limit, force_named ? "N" : "N*m");
   throw InputError(
-      force_named ? names_.side_force : names_.moment,
-      FormatValue(force_named ? load.side_force : load.moment),
-      fmt::format("beyond what the skirt carries at {} = {} m/s{}: at most about {:.4g} {} (the "
-                  "film would have to be thinner than {:.3g} µm; {} skirt solves)",
-                  names_.speed, FormatValue(load.piston_velocity), with_other, limit,
-                  force_named ? "N" : "N*m", floor * 1e6, solves));
+      named, Value(named, force_named ? load.side_force : load.moment),
+      fmt::format("beyond what the skirt carries at {} = {}{}: at most about {} (the film would "
+                  "have to be thinner than {:.3g} µm; {} skirt solves)",
+                  names_.speed, WithUnit(names_.speed, load.piston_velocity, "m/s"), with_other,
+                  most, floor * 1e6, solves));
 }
 
 }  // namespace filmdyn::lubrication

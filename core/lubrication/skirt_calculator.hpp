@@ -20,6 +20,7 @@
 /// reported in the InputError. Where Newton's method fails with the film well above the floor
 /// (a mass-conserving film's force is only piecewise smooth), two nested bracketed roots take
 /// over (docs/skirt-calculator.md).
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -32,6 +33,10 @@ namespace filmdyn::lubrication {
 struct SkirtInputNames {
   std::string e0 = "e0", tilt = "tilt", speed = "speed", e0_rate = "e0_rate",
               tilt_rate = "tilt_rate", side_force = "side_force", moment = "moment";
+  /// How an input's value reads in a message, with its unit (the GUI's display units: "40 µm"),
+  /// given the input's name above and its SI value. Empty: the SI number, with its SI unit where
+  /// the message gives one ("e0 = 4e-05", "at tilt = 0.001 rad", "… < e0 < 2e-05 [m]").
+  std::function<std::string(const std::string& name, double si)> show;
 };
 
 /// Mode 2's load: what the rest of the engine applies to the piston.
@@ -103,6 +108,12 @@ class SkirtCalculator {
  private:
   SkirtPoint Evaluate(const SkirtState& state);
   void CheckState(const SkirtState& state) const;
+  // An input's value in a message (SkirtInputNames::show): alone, with its unit, and an interval
+  // "lo < symbol < hi" of it.
+  std::string Value(const std::string& name, double si) const;
+  std::string WithUnit(const std::string& name, double si, const char* si_unit) const;
+  std::string Between(const std::string& name, const char* symbol, double lo, double hi,
+                      const char* si_unit) const;
   // Newton's method from x0 = (e0, γ); returns converged and leaves the best point in *eq.
   bool Newton(const SkirtLoad& load, double e0, double tilt, SkirtEquilibrium* eq);
   // The fallback where Newton's method fails on a film whose force is only piecewise smooth:

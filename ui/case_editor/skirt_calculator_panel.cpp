@@ -57,8 +57,22 @@ const std::vector<InputSpec>& InputSpecs() {
 }
 
 // The inputs' names in messages: the labels the user sees.
+// The calculator's messages name the inputs by their labels and quote values in the units the
+// inputs are typed in ("e0 = 40 µm", not "4e-05").
 lubrication::SkirtInputNames LabelNames() {
-  return {"e0", "Tilt", "Speed", "de0/dt", "Tilt rate", "Side force", "Moment"};
+  lubrication::SkirtInputNames names{"e0",        "Tilt",       "Speed", "de0/dt",
+                                     "Tilt rate", "Side force", "Moment"};
+  names.show = [](const std::string& name, double si) {
+    for (const InputSpec& spec : InputSpecs()) {
+      const QString label = spec.label;
+      const int bracket = label.lastIndexOf(" [");
+      if (label.left(bracket).toStdString() != name) continue;
+      const QString unit = label.mid(bracket + 2).chopped(1);
+      return QString("%1 %2").arg(si / spec.scale, 0, 'g', 4).arg(unit).toStdString();
+    }
+    return FormatValue(si);
+  };
+  return names;
 }
 
 // `case_directory`: the case file's folder (files the case names relative to it).

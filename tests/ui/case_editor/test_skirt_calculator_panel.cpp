@@ -8,6 +8,7 @@
 #include <QDoubleSpinBox>
 #include <QLabel>
 #include <QLineEdit>
+#include <QRegularExpression>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QTabWidget>
@@ -106,7 +107,8 @@ class TestSkirtCalculatorPanel : public QObject {
     Type(panel, "side_force", "5000000");
     WaitForResult(panel);
     QVERIFY(!panel->last()->ok);
-    QVERIFY2(panel->statusLabel()->text().startsWith("Side force = 5000000: beyond what the skirt"),
+    QVERIFY2(panel->statusLabel()->text().startsWith("Side force = 5e+06 N: beyond what the skirt "
+                                                     "carries at Speed = -9 m/s"),
              qPrintable(panel->statusLabel()->text()));
 
     // A state into the liner.
@@ -114,8 +116,14 @@ class TestSkirtCalculatorPanel : public QObject {
     Type(panel, "e0", "40");
     WaitForResult(panel);
     QVERIFY(!panel->last()->ok);
-    QVERIFY2(panel->statusLabel()->text().startsWith("e0 = 4e-05: puts the skirt into the liner"),
-             qPrintable(panel->statusLabel()->text()));
+    // Values in the units the inputs are typed in (µm, mrad), not SI.
+    const QString into = panel->statusLabel()->text();
+    QVERIFY2(into.startsWith("e0 = 40 µm: puts the skirt into the liner"), qPrintable(into));
+    QVERIFY2(QRegularExpression("at Tilt = -?[0-9.]+ mrad the film is positive for -?[0-9.]+ µm < "
+                                "e0 < [0-9.]+ µm$")
+                 .match(into)
+                 .hasMatch(),
+             qPrintable(into));
 
     // Editing the case recomputes: twice the viscosity, twice the hydrodynamic force.
     Type(panel, "e0", "10");
