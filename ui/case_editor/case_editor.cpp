@@ -73,6 +73,13 @@ QChart* MakeChart(const QString& x_title, const QString& y_title) {
   auto* y = new QValueAxis;
   x->setTitleText(x_title);
   y->setTitleText(y_title);
+  // Titles a point smaller than the chart's default: a short chart's y title ("radial drop h
+  // [µm]") fits its height whole.
+  for (QValueAxis* axis : {x, y}) {
+    QFont font = axis->titleFont();
+    font.setPointSizeF(std::max(7.0, font.pointSizeF() - 1.0));
+    axis->setTitleFont(font);
+  }
   x->setLabelFormat("%g");  // "135", not "135.0": room in a narrow chart
   chart->addAxis(x, Qt::AlignBottom);
   chart->addAxis(y, Qt::AlignLeft);
@@ -457,11 +464,24 @@ QWidget* CaseEditor::makeProfilePage() {
   lower->addWidget(makeListBlock(*FindCaseListTable("skirt.ovality_alpha"), lower));
   if (QWidget* others = makeListRow(CaseGroup::kSkirt, lower)) lower->addWidget(others);
   right->addWidget(lower);
-  splitter->addWidget(makeParameterPage(CaseGroup::kSkirt));
+  QWidget* parameters = makeParameterPage(CaseGroup::kSkirt);
+  splitter->addWidget(parameters);
   splitter->addWidget(right);
   splitter->setStretchFactor(0, 2);
   splitter->setStretchFactor(1, 3);
-  splitter->setSizes({530, 1070});
+  splitter->setSizes({600, 1000});
+  // The pane is narrower than a page of its own: the quantity column at most 210 px (a longer
+  // label elides; its tooltip has it whole), so that the notes ("assumed: …", "not used: …") keep
+  // a readable width rather than sitting past a horizontal scroll bar.
+  if (auto* table = parameters->findChild<QTableView*>(
+          QString("parameters_%1").arg(int(CaseGroup::kSkirt)))) {
+    QHeaderView* header = table->horizontalHeader();
+    header->setSectionResizeMode(ParameterTableModel::kQuantity, QHeaderView::Interactive);
+    table->resizeColumnToContents(ParameterTableModel::kQuantity);
+    header->resizeSection(ParameterTableModel::kQuantity,
+                          std::min(210, header->sectionSize(ParameterTableModel::kQuantity)));
+    table->setTextElideMode(Qt::ElideRight);
+  }
   skirt_calculator_ = new SkirtCalculatorPanel(document_, page);
   page->addWidget(skirt_calculator_);
   page->setStretchFactor(0, 1);

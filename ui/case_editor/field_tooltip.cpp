@@ -93,7 +93,7 @@ QString DisplayDefaultText(const engine::CaseField& field) {
   return {};
 }
 
-QString FieldToolTip(const engine::CaseField& field) {
+QString FieldToolTip(const engine::CaseField& field, const QString& first) {
   QStringList facts;
   const QString unit = QString::fromStdString(field.display_unit);
   if (!unit.isEmpty()) facts << Tr("Unit: %1").arg(unit.toHtmlEscaped());
@@ -101,7 +101,9 @@ QString FieldToolTip(const engine::CaseField& field) {
   if (const QString value = DisplayDefaultText(field); !value.isEmpty()) {
     facts << Tr("Default: %1").arg(value.toHtmlEscaped());
   }
-  QString tip = "<qt><b>" + QString::fromStdString(field.label).toHtmlEscaped() + "</b>";
+  QString tip = "<qt>";
+  if (!first.isEmpty()) tip += "<p>" + first.toHtmlEscaped() + "</p>";
+  tip += "<b>" + QString::fromStdString(field.label).toHtmlEscaped() + "</b>";
   if (!field.description.empty()) {
     tip += "<p>" + QString::fromStdString(field.description).toHtmlEscaped() + "</p>";
   }

@@ -16,7 +16,8 @@ QString DisplayRangeText(const engine::CaseField& field);
 /// "0, 7, 14, 21, 28 mm", "lubricated"; empty for long text.
 QString DisplayDefaultText(const engine::CaseField& field);
 /// Rich-text tooltip: the label, the plain-words description, "Unit · Allowed · Default", the
-/// schema's note (source of the default), and "In the case file: <path>" in grey.
-QString FieldToolTip(const engine::CaseField& field);
+/// schema's note (source of the default), and "In the case file: <path>" in grey. `first`, if
+/// given, leads as a paragraph of its own (a cell's whole text where the cell may elide it).
+QString FieldToolTip(const engine::CaseField& field, const QString& first = {});
 
 }  // namespace filmdyn::ui

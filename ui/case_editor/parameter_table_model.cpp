@@ -96,10 +96,12 @@ QVariant ParameterTableModel::data(const QModelIndex& index, int role) const {
     case Qt::ToolTipRole:
       // A bad cell: core's reason (also shown in the status bar); otherwise what the input is.
       if (bad) return QString::fromStdString(issue->second);
-      if (p.text && index.column() == kValue) {  // the whole text first (the cell may elide it)
-        const std::string text = TextOf(p, document_->engineCase());
-        if (!text.empty()) return QString::fromStdString(text) + "\n\n" + FieldToolTip(*p.field);
-      }
+      // The cell's whole text first where the cell may elide it: a text value, a note (a narrow
+      // table).
+      if (p.text && index.column() == kValue)
+        return FieldToolTip(*p.field, QString::fromStdString(TextOf(p, document_->engineCase())));
+      if (index.column() == kNote)
+        return FieldToolTip(*p.field, data(index, Qt::DisplayRole).toString());
       return FieldToolTip(*p.field);
     case Qt::BackgroundRole:
       if (bad) return QBrush(QColor(255, 205, 205));

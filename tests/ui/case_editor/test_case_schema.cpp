@@ -133,7 +133,13 @@ class TestCaseSchema : public QObject {
     QCOMPARE(document.engineCase().skirt.compliance_file, std::string("fe/skirt.mtx"));
     QCOMPARE(model.data(cell, Qt::DisplayRole).toString(), QString("fe/skirt.mtx"));
     // The whole name in the tooltip (the narrow cell elides it on the left).
-    QVERIFY(model.data(cell, Qt::ToolTipRole).toString().startsWith("fe/skirt.mtx\n"));
+    QVERIFY(model.data(cell, Qt::ToolTipRole).toString().startsWith("<qt><p>fe/skirt.mtx</p>"));
+    // A note too (a narrow table elides it), as rich text like the rest of the tooltip.
+    const QString note_tip =
+        model.data(cell.siblingAtColumn(ui::ParameterTableModel::kNote), Qt::ToolTipRole)
+            .toString();
+    QVERIFY2(note_tip.startsWith("<qt><p>not used: ") && note_tip.contains("skirt.compliance_file"),
+             qPrintable(note_tip));
     QVERIFY(document.setChoice("skirt.compliance", "imported"));
     QVERIFY(!model.data(cell.siblingAtColumn(ui::ParameterTableModel::kNote), Qt::DisplayRole)
                  .toString()
