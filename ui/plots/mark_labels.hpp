@@ -1,6 +1,7 @@
 #pragma once
 
 #include <QPointF>
+#include <QPolygonF>
 #include <QRectF>
 #include <QSizeF>
 #include <vector>
@@ -16,10 +17,12 @@ struct MarkLabel {
 /// Places the labels of an orbit's or a load diagram's crank-angle marks, in order: each goes
 /// outward from the diagram's origin (the bearing centre, the zero load) or, where an earlier
 /// label took that place (the curve passes a spot twice, e.g. 270° and 630°), to the nearest
-/// free place around its mark, a little farther out if none is free beside it. Where none is
-/// free within `area` (marks crowded in a small diagram) the label is left out: its rectangle is
-/// null. The placed rectangles lie within `area` and never overlap one another.
+/// free place around its mark, a little farther out if none is free beside it. A place the
+/// `curves` (the diagram's polylines [px]) pass through is taken only where no place clear of
+/// them is near. Where none is free within `area` (marks crowded in a small diagram) the label is
+/// left out: its rectangle is null. The placed rectangles lie within `area` and never overlap one
+/// another.
 std::vector<QRectF> PlaceMarkLabels(const std::vector<MarkLabel>& marks, QPointF origin,
-                                    const QRectF& area);
+                                    const QRectF& area, const std::vector<QPolygonF>& curves = {});
 
 }  // namespace filmdyn::ui

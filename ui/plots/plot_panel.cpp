@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 #include "core/engine/crank_train.hpp"
 #include "core/engine/error_estimate.hpp"
@@ -971,7 +972,19 @@ void PlotPanel::paintOverlay(const ChartEntry& entry, QPainter* painter) const {
     std::vector<MarkLabel> marks;
     for (const PendingLabel& label : pending)
       marks.push_back({label.at, metrics.size(0, QString("%1°").arg(label.mark))});
-    const std::vector<QRectF> placed = PlaceMarkLabels(marks, origin, area);
+    // Every shown run's curves, in pixels: the labels keep off them where they can.
+    std::vector<QPolygonF> curves;
+    for (int id : runs) {
+      for (const CurvePoints& curve : entry.run_points.value(id)) {
+        QPolygonF line;
+        for (qsizetype i = 0; i < curve.xy.size(); ++i) {
+          if (i == curve.after_gap && !line.isEmpty()) curves.push_back(std::exchange(line, {}));
+          line << to_pos(curve.xy[i]);
+        }
+        if (!line.isEmpty()) curves.push_back(line);
+      }
+    }
+    const std::vector<QRectF> placed = PlaceMarkLabels(marks, origin, area, curves);
     for (std::size_t i = 0; i < pending.size(); ++i) {
       if (placed[i].isNull()) continue;
       painter->setPen(pending[i].colour);

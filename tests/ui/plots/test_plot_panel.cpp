@@ -179,6 +179,30 @@ class TestPlotPanel : public QObject {
     QVERIFY(!panel.runLegendText().contains(ideal_.label));
   }
 
+  // A label keeps off the diagram's curves where a place clear of them is near: a curve across
+  // the outward place sends the label beside its mark instead; with no free place it still shows.
+  void crankAngleLabelsKeepOffTheCurves() {
+    const QSizeF size(34.0, 14.0);
+    const QRectF area(0.0, 0.0, 400.0, 400.0);
+    const QPointF origin(100.0, 200.0);
+    const std::vector<filmdyn::ui::MarkLabel> mark = {{QPointF(200.0, 200.0), size}};
+    const QRectF outward = filmdyn::ui::PlaceMarkLabels(mark, origin, area).front();
+    QVERIFY(outward.left() > 200.0);  // outward: to the right of the mark
+    // A vertical curve through that place (two polylines, one of a single segment).
+    const QPolygonF wall({QPointF(220.0, 0.0), QPointF(220.0, 150.0), QPointF(220.0, 400.0)});
+    const QRectF beside = filmdyn::ui::PlaceMarkLabels(mark, origin, area, {wall}).front();
+    QVERIFY(!beside.isNull());
+    QVERIFY2(beside.right() < 220.0 || beside.left() > 220.0,
+             qPrintable(QString("label at %1..%2").arg(beside.left()).arg(beside.right())));
+    QVERIFY(std::hypot(beside.center().x() - 200.0, beside.center().y() - 200.0) <
+            16.0 + size.width());
+    // Curves everywhere near (a dense grid): the label still shows, where it would without them.
+    std::vector<QPolygonF> grid;
+    for (double x = 150.0; x <= 260.0; x += 4.0)
+      grid.push_back(QPolygonF({QPointF(x, 140.0), QPointF(x, 260.0)}));
+    QCOMPARE(filmdyn::ui::PlaceMarkLabels(mark, origin, area, grid).front(), outward);
+  }
+
   void crankAngleLabelsNeverOverlap() {
     // The marks of an orbit every 90 °CA (eight per cycle) on a ring of radius 20-120 px around
     // the origin, two cycles' marks close together (the curve passes a spot twice), in a small
