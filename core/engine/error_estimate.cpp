@@ -166,8 +166,12 @@ std::vector<HeadlineFigure> HeadlineFigures(const std::vector<CrankTrainSample>&
   std::vector<HeadlineFigure> figures;
   if (samples.empty()) return figures;
   const bool skirt = HasJoint(samples, false), big_end = HasJoint(samples, true);
+  const bool whole_cycle = SamplesSpanACycle(samples);
   for (const HeadlineDefinition& d : Definitions()) {
     if (d.big_end ? !big_end : !skirt) continue;
+    // A mean over part of a cycle is not the cycle's mean (a run stopped in its run-in: the
+    // part computed, at the run-in's looser tolerances).
+    if (d.reduction == Reduction::kMean && !whole_cycle) continue;
     if (d.reduction == Reduction::kAccount) {
       if (const std::optional<OilPerCycle> oil = AccountedOil(samples, d.big_end))
         figures.push_back({d.key, d.label, oil->in, d.big_end, d.order});

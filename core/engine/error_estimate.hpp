@@ -37,8 +37,9 @@ struct HeadlineFigure {
 /// skirt peak pressure, skirt mean FPL, skirt oil per cycle, big-end MOFT min, max ε, big-end
 /// peak pressure, big-end mean FPL, big-end oil per cycle. Means are plain means over the
 /// cycle's equally spaced output samples (the periodic trapezoidal rule); the oil per cycle is
-/// AccountedOil's, present for mass-conserving films only. Empty when no sample has a lubricated
-/// joint.
+/// AccountedOil's, present for mass-conserving films only. Means and the oil per cycle are
+/// figures of a whole cycle: absent when the samples are not one (SamplesSpanACycle: a run
+/// stopped before its first cycle ended). Empty when no sample has a lubricated joint.
 std::vector<HeadlineFigure> HeadlineFigures(const std::vector<CrankTrainSample>& samples);
 
 /// Oil into and out of a joint's film over a cycle [m^3].

@@ -132,7 +132,7 @@ Tracked TrackedFor(const EngineCase& c) {
   const bool big_end = c.big_end.model == JointModel::kLubricated;
   Tracked t;
   if (!skirt && !big_end) {
-    t.quantities = {{"liner_force_x[N]", 1.0, "the liner's lateral force"},
+    t.quantities = {{"skirt_normal_force[N]", 1.0, "the liner's lateral force"},
                     {"bigend_force_x[N]", 1.0, "the big-end force x"},
                     {"bigend_force_y[N]", 1.0, "the big-end force y"},
                     {"crank_torque[N*m]", 0.1, "the crank torque"}};

@@ -183,7 +183,7 @@ ComparisonRow ReadComparisonRow(const std::filesystem::path& folder) {
     } else if (recipe.reduce == Reduce::kSlapEnergyMax || recipe.reduce == Reduce::kSlapEnergySum) {
       if (summary.kpis.skirt && summary.kpis.skirt->slap) {
         const PistonSlap& slap = *summary.kpis.skirt->slap;
-        value = recipe.reduce == Reduce::kSlapEnergySum ? std::optional<double>(slap.energy_sum)
+        value = recipe.reduce == Reduce::kSlapEnergySum ? slap.energy_sum
                                                         : slap.energy_max.value_or(0.0);
       }
     } else if (recipe.reduce == Reduce::kOilSkirt || recipe.reduce == Reduce::kOilBearing) {

@@ -65,6 +65,7 @@ PistonSlap SlapOf(const std::vector<engine::CrankTrainSample>& samples,
                   bool whole_cycle) {
   PistonSlap slap;
   const std::size_t n = samples.size();
+  if (whole_cycle) slap.energy_sum = 0.0;
   if (n < 2) return slap;
   // The velocities from the motion samples (every output step and the integrator's own
   // interpolation between them); a run without motion samples (data from before they existed)
@@ -135,7 +136,7 @@ PistonSlap SlapOf(const std::vector<engine::CrankTrainSample>& samples,
       e.crank_angle_deg = CycleCrankAngleDeg(angle_at(a) + s * (angle_at(p) - angle_at(a)));
       e.energy = 0.5 * mass * v.lateral * v.lateral + 0.5 * inertia * v.angular * v.angular;
       e.to_thrust = fb < 0.0;
-      slap.energy_sum += e.energy;
+      if (slap.energy_sum) *slap.energy_sum += e.energy;
       if (!slap.energy_max || e.energy > *slap.energy_max) {
         slap.energy_max = e.energy;
         slap.energy_max_crank_angle_deg = e.crank_angle_deg;

@@ -31,12 +31,13 @@ struct SlapEvent {
 };
 
 /// The piston slap of a cycle: every change of thrust side in time order, the largest energy
-/// (with its crank angle; none without an event) and the sum.
+/// (with its crank angle; none without an event) and the sum (a whole cycle's only: none for the
+/// part of a cycle a run stopped in its run-in computed).
 struct PistonSlap {
   std::vector<SlapEvent> events;
   std::optional<double> energy_max;  ///< [J]
   std::optional<double> energy_max_crank_angle_deg;
-  double energy_sum = 0.0;  ///< [J]
+  std::optional<double> energy_sum;  ///< [J]
 };
 
 /// The KPIs of one lubricated joint over the reported cycle. Crank angles [°CA] are within the

@@ -206,7 +206,7 @@ json JointKpisToJson(const JointKpis& k) {
     o["slap_events"] = events;
     o["slap_energy_max[J]"] = Optional(k.slap->energy_max);
     o["slap_energy_max_crank_angle[deg]"] = Optional(k.slap->energy_max_crank_angle_deg);
-    o["slap_energy_sum[J]"] = k.slap->energy_sum;
+    o["slap_energy_sum[J]"] = Optional(k.slap->energy_sum);
   }
   return o;
 }
@@ -255,7 +255,7 @@ JointKpis JointKpisFromJson(const json& o, const std::string& at) {
     }
     slap.energy_max = GetOptional(o, "slap_energy_max[J]", at);
     slap.energy_max_crank_angle_deg = GetOptional(o, "slap_energy_max_crank_angle[deg]", at);
-    Read(o, "slap_energy_sum[J]", at, &slap.energy_sum);
+    slap.energy_sum = GetOptional(o, "slap_energy_sum[J]", at);
     k.slap = std::move(slap);
   }
   return k;
@@ -277,8 +277,12 @@ json SummaryToJson(const RunSummary& s) {
   j["cycles"] = s.cycles;
   j["reported_cycle"] = s.reported_cycle;
   j["cycles_to_steady_state"] = s.cycles_to_steady_state;
-  j["cycle_to_cycle_change"] = s.cycle_to_cycle_change;
-  j["cycle_to_cycle_worst_quantity"] = s.cycle_to_cycle_worst_quantity;
+  // No cycle compared yet (a run stopped in its first cycle or its run-in): no change, null —
+  // a 0 would read as perfectly periodic.
+  const bool compared = !s.cycle_to_cycle_changes.empty();
+  j["cycle_to_cycle_change"] = compared ? json(s.cycle_to_cycle_change) : json(nullptr);
+  j["cycle_to_cycle_worst_quantity"] =
+      compared ? json(s.cycle_to_cycle_worst_quantity) : json(nullptr);
   json changes = json::array();  // a diverging (non-finite) change as the largest double
   for (double c : s.cycle_to_cycle_changes)
     changes.push_back(std::isfinite(c) ? c : std::numeric_limits<double>::max());
@@ -423,8 +427,10 @@ RunSummary FromJson(const json& j) {
   s.reported_cycle = s.cycles;  // a summary written before it existed: the last cycle
   Read(j, "reported_cycle", "", &s.reported_cycle);
   Read(j, "cycles_to_steady_state", "", &s.cycles_to_steady_state);
-  Read(j, "cycle_to_cycle_change", "", &s.cycle_to_cycle_change);
-  Read(j, "cycle_to_cycle_worst_quantity", "", &s.cycle_to_cycle_worst_quantity);
+  s.cycle_to_cycle_change = GetOptional(j, "cycle_to_cycle_change", "").value_or(0.0);
+  if (j.contains("cycle_to_cycle_worst_quantity") &&
+      !j.at("cycle_to_cycle_worst_quantity").is_null())
+    Read(j, "cycle_to_cycle_worst_quantity", "", &s.cycle_to_cycle_worst_quantity);
   Read(j, "cycle_to_cycle_changes", "", &s.cycle_to_cycle_changes);  // absent before: empty
   Read(j, "wall_time_s", "", &s.wall_time_s);
   Read(j, "max_constraint_violation", "", &s.max_constraint_violation);

@@ -205,7 +205,9 @@ bool SameValue(const engine::CaseField& f, engine::EngineCase& a, engine::Engine
     case engine::FieldKind::kText:
       return f.text && f.text(a) == f.text(b);
     case engine::FieldKind::kChoice:
-      return false;  // models are chosen per run, never an assumption
+      // A choice the default case marks assumed (its big end's oil supply: none given) is one
+      // like a number; the others (the joints' models) are not in its assumed list.
+      return f.choice && f.choice(a) == f.choice(b);
   }
   return false;
 }

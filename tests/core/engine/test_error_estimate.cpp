@@ -104,6 +104,7 @@ class TestErrorEstimate : public QObject {
     QCOMPARE(companion.skirt_max_order, 1.0);
     std::vector<engine::CrankTrainSample> samples(4);
     for (int k = 0; k < 4; ++k) {
+      samples[k].crank_angle = k * M_PI;  // a whole cycle: 4 samples 180 °CA apart
       samples[k].skirt.present = samples[k].bearing.present = true;
       samples[k].skirt.moft = 3e-6 + 1e-7 * k;
       samples[k].skirt.fpl = 16.0;
@@ -156,6 +157,7 @@ class TestErrorEstimate : public QObject {
     QCOMPARE(companion.skirt_max_order, 2.0);
     std::vector<engine::CrankTrainSample> samples(4);
     for (int k = 0; k < 4; ++k) {
+      samples[k].crank_angle = k * M_PI;  // a whole cycle: 4 samples 180 °CA apart
       samples[k].skirt.present = samples[k].bearing.present = true;
       samples[k].skirt.moft = 3e-6;
       samples[k].skirt.fpl = 16.0;
@@ -256,6 +258,7 @@ class TestErrorEstimate : public QObject {
     std::vector<engine::CrankTrainSample> samples(4);
     const double moft[] = {3e-6, 1e-6, 2e-6, 4e-6}, fpl[] = {10, 20, 30, 60};
     for (int k = 0; k < 4; ++k) {
+      samples[k].crank_angle = k * M_PI;  // a whole cycle: 4 samples 180 °CA apart
       samples[k].bearing.present = true;
       samples[k].bearing.moft = moft[k];
       samples[k].bearing.eps = 0.5 + 0.1 * k;
@@ -268,6 +271,13 @@ class TestErrorEstimate : public QObject {
     QCOMPARE(v.at("bearing_eps_max[-]"), 0.8);
     QCOMPARE(v.at("bearing_peak_pressure[Pa]"), 9e6);
     QCOMPARE(v.at("bearing_fpl_mean[W]"), 30.0);
+    // Part of a cycle (a run stopped in its run-in): its extremes, but no cycle mean.
+    auto part = samples;
+    for (int k = 0; k < 4; ++k) part[k].crank_angle = k * 0.25 * M_PI;
+    const auto in_part = Values(engine::HeadlineFigures(part));
+    QCOMPARE(in_part.size(), std::size_t(3));
+    QVERIFY(!in_part.count("bearing_fpl_mean[W]"));
+    QCOMPARE(in_part.at("bearing_moft_min[m]"), 1e-6);
     // Richardson: converged ≈ f + (f − f_coarse) / (r² − 1).
     auto coarse = samples;
     for (auto& s : coarse) s.bearing.moft *= 0.7;

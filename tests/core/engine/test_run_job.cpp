@@ -142,6 +142,9 @@ class TestRunJob : public QObject {
     QCOMPARE(summary["cycles_to_steady_state"].get<int>(), 2);
     QVERIFY(summary["solver"]["steps"].get<long>() > 0);
     QVERIFY(summary["extremes"].contains("bigend_force_y[N]"));
+    // The quantity the cycle-to-cycle change is of names a results.csv column.
+    const std::string worst = summary["cycle_to_cycle_worst_quantity"].get<std::string>();
+    QVERIFY2(header.find(worst) != std::string::npos, worst.c_str());
   }
   void monitorCanStop() {
     const engine::RunConfig config = DefaultConfig(2000);
@@ -151,6 +154,15 @@ class TestRunJob : public QObject {
     QCOMPARE(engine::StatusName(result.status), std::string("cancelled"));
     QCOMPARE(calls, 100);
     QVERIFY(!result.samples.empty());
+    // Stopped in its first cycle: no cycle compared, no change to report (null, not a 0 that
+    // would read as perfectly periodic).
+    QTemporaryDir dir;
+    io::WriteRunFolder(dir.path().toStdString(), "default", config, result);
+    std::ifstream summary_file(dir.path().toStdString() + "/summary.json");
+    const auto summary = nlohmann::json::parse(summary_file);
+    QVERIFY(summary["cycle_to_cycle_change"].is_null());
+    QVERIFY(summary["cycle_to_cycle_worst_quantity"].is_null());
+    QVERIFY(summary["cycle_to_cycle_changes"].empty());
   }
   void cancelFlagStops() {
     const engine::RunConfig config = DefaultConfig(4000);
@@ -242,9 +254,9 @@ class TestRunJob : public QObject {
             1e-9);
   }
   // A run stopped before its first cycle ended reports the part it computed: no oil "per cycle"
-  // over that part, only the account's balance — whether the part is shorter than a cycle or
-  // longer (a run-in of more than 720 °CA). A run stopped in its second cycle reports its first,
-  // a whole cycle, with both, and its film fields.
+  // (nor mean friction power, FMEP) over that part, only the account's balance — whether the part
+  // is shorter than a cycle or longer (a run-in of more than 720 °CA). A run stopped in its second
+  // cycle reports its first, a whole cycle, with both, and its film fields.
   void stoppedRunInReportsNoOilPerCycle() {
     engine::RunConfig config = DefaultConfig(6000, engine::Model::kOnlyLbrbe);
     config.engine_case.big_end.mesh_theta = 24;
@@ -267,8 +279,12 @@ class TestRunJob : public QObject {
       QVERIFY2(!part.big_end->oil_in_per_cycle && !part.big_end->oil_out_per_cycle,
                std::to_string(count).c_str());
       QVERIFY(part.big_end->oil_balance && std::abs(*part.big_end->oil_balance) < 1e-9);
-      for (const engine::HeadlineFigure& f : engine::HeadlineFigures(stopped.samples))
+      for (const engine::HeadlineFigure& f : engine::HeadlineFigures(stopped.samples)) {
         QVERIFY2(f.key != "bearing_oil_per_cycle[m^3]", "a headline oil per cycle of a run-in");
+        // Nor a cycle's mean (friction power) over the part, nor its FMEP.
+        QVERIFY2(f.key != "bearing_fpl_mean[W]", "a headline mean FPL of a run-in");
+      }
+      QVERIFY(!part.big_end->mean_fpl && !part.big_end->fmep);
     }
 
     // Two recorders of the same run: one as runs attach it (keeping the previous cycle, which
@@ -315,6 +331,7 @@ class TestRunJob : public QObject {
     QVERIFY(cycle.big_end && cycle.big_end->oil_in_per_cycle &&
             *cycle.big_end->oil_in_per_cycle > 0.0);
     QVERIFY(cycle.big_end->oil_balance && std::abs(*cycle.big_end->oil_balance) < 1e-9);
+    QVERIFY(cycle.big_end->mean_fpl && *cycle.big_end->mean_fpl > 0.0 && cycle.big_end->fmep);
   }
 
   // A cycle that starts elsewhere than 0 °CA (operating.start_crank_angle = 90 °CA): its film

@@ -251,6 +251,8 @@ class TestRunWarnings : public QObject {
     QVERIFY(assumed != warnings.end());
     QVERIFY(std::count(assumed->fields.begin(), assumed->fields.end(), "big_end.modulus_bearing"));
     QVERIFY(!std::count(assumed->fields.begin(), assumed->fields.end(), "solver.max_cycles"));
+    // A choice the default case assumes (no oil supply given) counts like a number.
+    QVERIFY(std::count(assumed->fields.begin(), assumed->fields.end(), "big_end.supply"));
     QVERIFY(find("not_periodic", "") == warnings.end());
     // The Reynolds films' peaks are broad: resolved by the 2 °CA samples.
     QVERIFY(find("unresolved_peak", "skirt") == warnings.end());
