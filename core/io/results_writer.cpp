@@ -150,7 +150,7 @@ void WriteCsv(std::ostream& out, const std::vector<OutputRow>& rows,
     for (std::size_t c = 0; c < columns.size(); ++c) {
       if (c) out << ",";
       if (const auto& value = row.*(columns[c].member)) {
-        out << fmt::format("{:.10g}", *value);
+        out << fmt::format("{:.10g}", *value + 0.0);  // + 0.0: a signed zero reads "0", not "-0"
       }
     }
     out << "\n";

@@ -70,7 +70,8 @@ RunSummary SummarizeRun(const std::string& case_name, const engine::RunConfig& c
       return engine::NeighbourRatio(std::abs(*value(at)), beside(false), beside(true)) >
              engine::kUnresolvedPeakRatio;
     };
-    s.extremes[columns[c].header] = {*value(*lo), *value(*hi), spike(*lo), spike(*hi)};
+    // + 0.0: a signed zero (e.g. a friction power of -0) reads 0.
+    s.extremes[columns[c].header] = {*value(*lo) + 0.0, *value(*hi) + 0.0, spike(*lo), spike(*hi)};
   }
   s.headline = engine::HeadlineFigures(result.samples);
   for (const engine::HeadlineFigure& f : s.headline) {
@@ -330,13 +331,16 @@ json SummaryToJson(const RunSummary& s) {
   const engine::ErrorEstimate& e = s.error_estimate;
   json figures = json::object();
   for (const engine::FigureError& f : e.figures) {
-    figures[f.figure.key] = {{"value", f.figure.value},
-                             {"coarse_value", f.coarse_value},
-                             {"error", f.error},
-                             {"relative", f.relative},
-                             {"order", f.figure.order},
-                             {"extrapolated", f.figure.value + f.error},
-                             {"resolved_in_time", f.resolved_in_time}};
+    figures[f.figure.key] = {
+        {"value", f.figure.value},
+        {"coarse_value", f.coarse_value},
+        {"error", f.error},
+        {"relative", f.relative},
+        {"order", f.figure.order},
+        // No best estimate from two samples of a spike that neither
+        // resolves (it gave a negative pressure): null.
+        {"extrapolated", f.resolved_in_time ? json(f.figure.value + f.error) : json(nullptr)},
+        {"resolved_in_time", f.resolved_in_time}};
     if (f.crank_angle && f.extrapolated_crank_angle) {
       json& o = figures[f.figure.key];
       o["crank_angle[deg]"] = engine::CycleCrankAngleDeg(*f.crank_angle);

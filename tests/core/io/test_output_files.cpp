@@ -13,6 +13,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 
 #include "core/base/input_error.hpp"
@@ -159,6 +160,23 @@ class TestOutputFiles : public QObject {
       QCOMPARE(folder.lexically_normal().begin()->string(), std::string("results"));
       QVERIFY(std::distance(folder.begin(), folder.end()) == 2);
     }
+  }
+
+  // A signed zero (a friction power of -0, from a product with a negative zero velocity) is
+  // written "0": the CSV's readers see no negative power.
+  void resultsWriteNoNegativeZero() {
+    namespace io = filmdyn::io;
+    io::OutputRow row;
+    row.crank_angle_deg = 0.0;
+    row.skirt_fpl = -0.0;
+    row.gas_force = -1500.0;
+    std::ostringstream out;
+    io::WriteResultsCsv(out, {row});
+    const std::string text = out.str();
+    const std::string line = text.substr(text.find('\n') + 1);
+    QVERIFY2(line.find("-0") == std::string::npos || line.find("-0") == line.find("-1500"),
+             line.c_str());
+    QVERIFY(line.find(",0,") != std::string::npos);
   }
 
   void resultsConvertToDisplayUnitsOrNameTheBadCell() {

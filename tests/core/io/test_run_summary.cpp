@@ -230,6 +230,11 @@ class TestRunSummary : public QObject {
     // A peak the samples do not resolve in time stays marked; older summaries read it resolved.
     QVERIFY(back.error_estimate.figures.at(0).resolved_in_time);
     QVERIFY(!back.error_estimate.figures.at(1).resolved_in_time);
+    // No best estimate from a spike neither run resolves; the resolved figure has one.
+    QVERIFY(j["discretisation_error"]["figures"]["bearing_peak_pressure[Pa]"]["extrapolated"]
+                .is_null());
+    QVERIFY(
+        j["discretisation_error"]["figures"]["bearing_moft_min[m]"]["extrapolated"].is_number());
     nlohmann::json before_marks = j;
     before_marks["discretisation_error"]["figures"]["bearing_peak_pressure[Pa]"].erase(
         "resolved_in_time");
