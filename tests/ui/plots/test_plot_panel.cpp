@@ -652,6 +652,18 @@ class TestPlotPanel : public QObject {
     QVERIFY(resolved.clippedSpikes(forces).empty());
     QVERIFY(Axis(resolved.chart(forces), Qt::Vertical)->min() <= spike_kn);
 
+    // An impact caught by two samples (the second a third of the first, still far above the
+    // curve: a mass-conserving big end's step peaks): both are the spike, the range the curve's.
+    PlotRun twin = spiking;
+    twin.id = 10;
+    twin.samples[at + 1][Column::kBigEndForceX] = spike_kn * 1e3 / 3.0;
+    PlotPanel two;
+    two.resize(1400, 1200);
+    two.updateRun(twin);
+    QCOMPARE(two.clippedSpikes(forces).size(), std::size_t(2));
+    QVERIFY2(Axis(two.chart(forces), Qt::Vertical)->min() > spike_kn / 3.0,
+             qPrintable(QString::number(Axis(two.chart(forces), Qt::Vertical)->min())));
+
     // A spike of little height is drawn whole (it widens the range by less than half).
     PlotRun small = coupled_;
     small.id = 9;
