@@ -206,8 +206,12 @@ std::optional<OilPerCycle> AccountedOil(const std::vector<CrankTrainSample>& sam
 
 bool SamplesSpanACycle(const std::vector<CrankTrainSample>& samples) {
   if (samples.size() < 2) return false;
-  const double interval = samples[1].crank_angle - samples[0].crank_angle;
-  const double span = interval * static_cast<double>(samples.size());
+  return SpanIsACycle(samples.size(), samples[1].crank_angle - samples[0].crank_angle);
+}
+
+bool SpanIsACycle(std::size_t count, double interval) {
+  if (count < 2) return false;
+  const double span = interval * static_cast<double>(count);
   // One cycle, neither less (a run stopped before its first cycle ended) nor more (a run stopped
   // late in a run-in longer than a cycle, whose samples are the run-in's).
   return interval > 0.0 && std::abs(span - 4.0 * std::numbers::pi) < 0.5 * interval;

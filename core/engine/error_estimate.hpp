@@ -61,6 +61,9 @@ std::optional<OilPerCycle> AccountedOil(const std::vector<CrankTrainSample>& sam
 /// before its first cycle ended reports the part it computed (shorter than a cycle, or longer in
 /// a run-in of more than 720 °CA), over which a figure "per cycle" would be that part's.
 bool SamplesSpanACycle(const std::vector<CrankTrainSample>& samples);
+/// The same rule for `count` equally spaced samples `interval` [rad] apart (samples held in
+/// another form, e.g. the GUI's).
+bool SpanIsACycle(std::size_t count, double interval);
 /// The figure of a headline key with this value: label, joint and order from the table (an
 /// unknown key keeps itself as label; "bearing_…" keys belong to the big end).
 HeadlineFigure HeadlineFigureFor(const std::string& key, double value);

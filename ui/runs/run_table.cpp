@@ -8,8 +8,11 @@
 #include <QSet>
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <numbers>
 
 #include "core/engine/case_diff.hpp"
+#include "core/engine/error_estimate.hpp"
 #include "core/io/run_kpis.hpp"
 #include "ui/runs/run_figures.hpp"
 
@@ -441,7 +444,19 @@ void RunTable::updateRun(const RunHandle& run) {
     }
     relabel();  // the new run's differences from the base run
   }
-  const RunFigures f = ComputeRunFigures(run->samples(), engine::ParseModel(run->request().model));
+  const std::vector<RunSample> samples = run->samples();
+  RunFigures f = ComputeRunFigures(samples, engine::ParseModel(run->request().model));
+  // A run that ended before its first cycle did (stopped in its run-in) has no cycle means, as
+  // its summary.json has none: the part computed is not a cycle. A running run shows the cycle
+  // in progress.
+  const bool whole_cycle =
+      samples.size() >= 2 &&
+      engine::SpanIsACycle(samples.size(), std::fmod(samples[1][Column::kCrankAngle] -
+                                                         samples[0][Column::kCrankAngle] + 720.0,
+                                                     720.0) *
+                                               std::numbers::pi / 180.0);
+  if (run->status() != RunStatus::kRunning && !whole_cycle)
+    f.mean_skirt_fpl = f.mean_bearing_fpl = std::numeric_limits<double>::quiet_NaN();
   const auto stats = run->statistics();
   const RunProgress progress = run->progress();
   item(row, kStatus)->setText(RunStatusText(run->status()));

@@ -307,6 +307,18 @@ class TestRunStreaming : public QObject {
       const RunHandle run = finished.takeFirst().first().value<RunHandle>();
       QCOMPARE(run->status(), RunStatus::kCancelled);
       QVERIFY(window.plotPanel()->pointCount(run->id()) >= 150);  // the curves stay
+      // Stopped before its first cycle ended: no cycle means (mean FPL, FMEP), as its
+      // summary.json has none — the films' minima of the part computed are still shown.
+      {
+        using filmdyn::ui::RunTable;
+        const int row = window.runTable()->rowCount() - 1;
+        for (const int column : {RunTable::kSkirtFpl, RunTable::kBearingFpl, RunTable::kSkirtFmep,
+                                 RunTable::kBearingFmep})
+          QCOMPARE(window.runTable()->item(row, column)->text(), QString("–"));
+        bool moft_is_a_number = false;
+        window.runTable()->item(row, RunTable::kBearingMoft)->text().toDouble(&moft_is_a_number);
+        QVERIFY(moft_is_a_number);
+      }
       QVERIFY(run->fields() == nullptr);                          // the frames do not
       QString error;
       QVERIFY(!run->writeFields(QDir::tempPath() + "/filmdyn-cancelled-fields", &error));
