@@ -2,11 +2,14 @@
 // --eps given (dimensionless results need only --ld). Mode 2: --load and --rpm given, the
 // equilibrium eccentricity is found (mixed lubrication when a roughness is given). The numbers
 // come from core/lubrication/bearing_calculator.hpp; this file only maps options and prints.
+#include <fmt/format.h>
+
 #include <cmath>
 #include <iomanip>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <ostream>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -301,6 +304,20 @@ Command MakeBearingCommand() {
     // are what it reports.
     const bool unloaded = !(r.load > 0.0);
     static constexpr const char* kUnloaded = "no load: the journal is centred";
+    // Smooth surfaces carry any load on a thin enough film (its load grows without bound as
+    // eps -> 1): a film thinner than real bearing surfaces are rough is an answer of the model,
+    // not of a bearing. 0.1 um: the composite roughness of finely finished journal and shell
+    // (the default case's skirt 0.615 um and liner 0.815 um are rougher still).
+    static constexpr double kSmoothFilmFloor = 0.1e-6;  // [m]
+    std::vector<std::string> warnings;
+    if (!in.surfaces && r.moft < kSmoothFilmFloor) {
+      warnings.push_back(fmt::format(
+          "the minimum film {:.3g} um is thinner than the roughness of real bearing surfaces "
+          "(0.1 um and more): smooth surfaces carry any load on a thin enough film; give "
+          "--sigma1/--sigma2 for the asperity contact (mixed lubrication)",
+          r.moft * 1e6));
+    }
+    for (const std::string& w : warnings) streams.err << "filmdyn bearing: warning: " << w << "\n";
     if (args.Has("json")) {
       nlohmann::json j;
       j["mode"] = in.eps ? "eccentricity" : "load";
@@ -383,6 +400,7 @@ Command MakeBearingCommand() {
       j["complementarity_residual"] = r.last_stats.complementarity_residual;
       j["converged"] = r.converged;
       j["status"] = r.status;
+      j["warnings"] = warnings;
       streams.out << j.dump(2) << "\n";
     } else {
       auto& o = streams.out;

@@ -619,6 +619,24 @@ class TestCli : public QObject {
     const QJsonObject loaded =
         QJsonDocument::fromJson(Run({"bearing", "--eps", "0.6", "--json"}).out.toUtf8()).object();
     QVERIFY(loaded["attitude_deg"].isDouble() && !loaded.contains("undefined"));
+    QVERIFY(loaded["warnings"].toArray().isEmpty());
+  }
+
+  // Smooth surfaces carry any load on a thin enough film: a film below real surfaces' roughness
+  // (0.1 µm) is answered with a warning that says so (stderr and JSON), not silently; rough
+  // surfaces (asperity contact) have no such warning.
+  void bearingWarnsOfAFilmThinnerThanRealRoughness() {
+    const Result huge = Run({"bearing", "--load", "1e7", "--json"});
+    QCOMPARE(huge.exit_code, 0);
+    const QJsonObject j = QJsonDocument::fromJson(huge.out.toUtf8()).object();
+    QVERIFY(j["moft"].toDouble() < 0.1e-6);
+    QCOMPARE(j["warnings"].toArray().size(), 1);
+    QVERIFY2(j["warnings"][0].toString().contains("thinner than the roughness of real bearing"),
+             qPrintable(j["warnings"][0].toString()));
+    QVERIFY2(huge.err.contains("filmdyn bearing: warning: the minimum film"), qPrintable(huge.err));
+    const Result rough = Run({"bearing", "--load", "1e5", "--sigma1", "0.3e-6", "--json"});
+    QVERIFY(QJsonDocument::fromJson(rough.out.toUtf8()).object()["warnings"].toArray().isEmpty());
+    QVERIFY(!rough.err.contains("warning"));
   }
 
   void validateRejectsUnknownSuite() {
