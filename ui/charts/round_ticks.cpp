@@ -62,6 +62,21 @@ std::pair<double, double> RoundedRange(double lo, double hi, int target) {
   return {std::floor(lo / step + 1e-9) * step, std::ceil(hi / step - 1e-9) * step};
 }
 
+QString FormatReadoutPair(double x, double y, const QString& unit) {
+  const double larger = std::max(std::abs(x), std::abs(y));
+  if (!std::isfinite(x) || !std::isfinite(y) || !(larger > 0.0) || larger >= 1e6 ||
+      larger < 1e-4)  // "–", zeros and magnitudes better read in 'g' form: each as it is
+    return FormatReadout(x) + ", " + FormatReadout(y, unit);
+  const int decimals = std::clamp(3 - int(std::floor(std::log10(larger))), 0, 6);
+  auto text = [decimals](double v) {
+    const QString t = QString::number(v, 'f', decimals);
+    const QString zero = QString::number(0.0, 'f', decimals);
+    return t == "-" + zero ? zero : t;  // a value that rounds to zero reads without a sign
+  };
+  const QString pair = text(x) + ", " + text(y);
+  return unit.isEmpty() ? pair : pair + QChar(0x202F) + unit;
+}
+
 QString FormatReadout(double value, const QString& unit) {
   if (!std::isfinite(value)) return QStringLiteral("–");
   QString text = QString::number(value, 'g', 4);

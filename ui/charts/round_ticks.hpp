@@ -33,5 +33,8 @@ std::pair<double, double> RoundedRange(double lo, double hi, int target = 5);
 /// A value for a readout, with about 4 significant digits and no trailing zeros ("12.35", "0.5",
 /// "1.2e-05"), followed by the unit when one is given.
 QString FormatReadout(double value, const QString& unit = {});
+/// A point of two values in one unit ("0.02, -11.22 kN", not "0.02296, -11.22 kN"): both with
+/// the decimals that give the larger magnitude about 4 significant digits, then the unit.
+QString FormatReadoutPair(double x, double y, const QString& unit = {});
 
 }  // namespace filmdyn::ui

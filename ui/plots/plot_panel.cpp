@@ -911,8 +911,7 @@ std::vector<PlotPanel::ReadoutEntry> PlotPanel::readoutEntries(int index) const 
         value = FormatReadout(ValueAtAngle(points[k], angle), entry.spec->y_unit);
       } else if (const auto p = PointAtAngle(points[k], angle)) {
         value = entry.spec->x_unit == entry.spec->y_unit
-                    ? QString("%1, %2").arg(FormatReadout(p->x()),
-                                            FormatReadout(p->y(), entry.spec->y_unit))
+                    ? FormatReadoutPair(p->x(), p->y(), entry.spec->y_unit)
                     : QString("%1, %2").arg(FormatReadout(p->x(), entry.spec->x_unit),
                                             FormatReadout(p->y(), entry.spec->y_unit));
       } else {
@@ -1042,8 +1041,7 @@ void PlotPanel::paintOverlay(const ChartEntry& entry, QPainter* painter) const {
       const QString value =
           entry.spec->crank_angle_axis
               ? FormatReadout(spike.value.y(), entry.spec->y_unit)
-              : QString("%1, %2").arg(FormatReadout(spike.value.x()),
-                                      FormatReadout(spike.value.y(), entry.spec->y_unit));
+              : FormatReadoutPair(spike.value.x(), spike.value.y(), entry.spec->y_unit);
       const QString text =
           tr("%1 at %2 °CA").arg(value, QString::number(spike.crank_angle, 'f', 1));
       const QSizeF size = metrics.size(0, text) + QSizeF(6, 2);

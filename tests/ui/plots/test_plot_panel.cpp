@@ -303,6 +303,13 @@ class TestPlotPanel : public QObject {
     QVERIFY2(lines.join("\n").contains(skirt) && lines.join("\n").contains(big_end),
              qPrintable(lines.join(" | ") + " lacks " + skirt + " / " + big_end));
     QVERIFY(lines.join("\n").contains(coupled_.label));
+    // A point of two forces in one unit reads with common decimals: 23 N beside 11.2 kN is
+    // "0.02, -11.22 kN", not "0.02296, -11.22 kN".
+    QCOMPARE(filmdyn::ui::FormatReadoutPair(0.02296, -11.22, "kN"),
+             QString("0.02, -11.22") + QChar(0x202F) + "kN");
+    QCOMPARE(filmdyn::ui::FormatReadoutPair(-4.303, -45.36), QString("-4.30, -45.36"));
+    QCOMPARE(filmdyn::ui::FormatReadoutPair(-0.001, 250.0), QString("0.0, 250.0"));
+    QCOMPARE(filmdyn::ui::FormatReadoutPair(0.0, 0.0), QString("0, 0"));
     // Every crank-angle plot shows values at the same angle; the orbit shows its point there.
     for (int i = 0; i < panel.chartCount(); ++i) {
       QVERIFY2(!panel.readoutLines(i).isEmpty() || panel.chart(i)->title().contains("no data"),
