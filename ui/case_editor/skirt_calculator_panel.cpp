@@ -56,19 +56,29 @@ const std::vector<InputSpec>& InputSpecs() {
   return specs;
 }
 
-// The inputs' names in messages: the labels the user sees.
-// The calculator's messages name the inputs by their labels and quote values in the units the
-// inputs are typed in ("e0 = 40 µm", not "4e-05").
+// An input's label without its unit ("Tilt" of "Tilt [mrad]"), and the unit ("mrad").
+std::string NameOf(const InputSpec& spec) {
+  return spec.label.left(spec.label.lastIndexOf(" [")).toStdString();
+}
+QString UnitOf(const InputSpec& spec) {
+  return spec.label.mid(spec.label.lastIndexOf(" [") + 2).chopped(1);
+}
+
+// The calculator's messages name the inputs by the labels the user sees and quote values in the
+// units the inputs are typed in ("e0 = 40 µm", not "4e-05").
 lubrication::SkirtInputNames LabelNames() {
-  lubrication::SkirtInputNames names{"e0",        "Tilt",       "Speed", "de0/dt",
-                                     "Tilt rate", "Side force", "Moment"};
-  names.show = [](const std::string& name, double si) {
+  auto name = [](const std::string& key) {
+    for (const InputSpec& spec : InputSpecs())
+      if (spec.key == key) return NameOf(spec);
+    return key;
+  };
+  lubrication::SkirtInputNames names{name("e0"),      name("tilt"),      name("speed"),
+                                     name("e0_rate"), name("tilt_rate"), name("side_force"),
+                                     name("moment")};
+  names.show = [](const std::string& input, double si) {
     for (const InputSpec& spec : InputSpecs()) {
-      const QString label = spec.label;
-      const int bracket = label.lastIndexOf(" [");
-      if (label.left(bracket).toStdString() != name) continue;
-      const QString unit = label.mid(bracket + 2).chopped(1);
-      return QString("%1 %2").arg(si / spec.scale, 0, 'g', 4).arg(unit).toStdString();
+      if (NameOf(spec) == input)
+        return QString("%1 %2").arg(si / spec.scale, 0, 'g', 4).arg(UnitOf(spec)).toStdString();
     }
     return FormatValue(si);
   };
