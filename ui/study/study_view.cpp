@@ -21,6 +21,7 @@
 #include <QtConcurrent/QtConcurrentRun>
 #include <cmath>
 
+#include "core/engine/case_schema.hpp"
 #include "core/io/run_comparison.hpp"
 #include "ui/plots/study_charts.hpp"
 
@@ -64,8 +65,23 @@ class StudyTableModel : public QAbstractTableModel {
   }
 
   QVariant headerData(int section, Qt::Orientation orientation, int role) const override {
-    if (orientation != Qt::Horizontal || role != Qt::DisplayRole) return {};
+    if (orientation != Qt::Horizontal) return {};
     const int f = int(factors_.size());
+    if (role == Qt::ToolTipRole) {
+      // A factor's header is its case path, as the study file and study.csv name it: the tooltip
+      // says what it is in the case editor's words; a figure's names its study.csv column.
+      if (section >= 1 && section <= f) {
+        const std::string& path = study_->factors[size_t(section - 1)].path;
+        const engine::CaseField* field = engine::FindCaseField(path);
+        return field ? QString::fromStdString(field->label + " (" + path + ")")
+                     : QString::fromStdString(path);
+      }
+      if (section >= f + 3 && section < f + 3 + int(figures_->size()))
+        return QString::fromStdString(
+            io::ComparisonFigures()[size_t((*figures_)[size_t(section - f - 3)])].key);
+      return {};
+    }
+    if (role != Qt::DisplayRole) return {};
     if (section == 0) return tr("point");
     if (section <= f) return factors_[size_t(section - 1)].title;
     if (section == f + 1) return tr("state");

@@ -150,6 +150,13 @@ class TestStudyView : public QObject {
     const int state = ColumnNamed(table, "state");
     const int moft = ColumnNamed(table, "min bearing MOFT [µm]");
     QVERIFY(model > 0 && rpm > model && state > rpm && moft > state);
+    // Headers name the case path and the figure as the study file and study.csv do; their
+    // tooltips say what they are.
+    const QString rpm_tip =
+        table->model()->headerData(rpm, Qt::Horizontal, Qt::ToolTipRole).toString();
+    QVERIFY2(rpm_tip.endsWith("(operating.rpm)") && rpm_tip.size() > 20, qPrintable(rpm_tip));
+    QCOMPARE(table->model()->headerData(moft, Qt::Horizontal, Qt::ToolTipRole).toString(),
+             QString("min_bearing_moft[m]"));
     QCOMPARE(Cell(table, 0, model), QString("ideal"));
     QCOMPARE(Cell(table, 4, rpm), QString("4000"));
     QCOMPARE(Cell(table, 1, state), QString("pending"));
