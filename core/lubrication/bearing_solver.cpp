@@ -299,8 +299,17 @@ void BearingSolver::MarkSupplyNodes(const BearingState& s) {
   if (HasGroove(feed.kind)) {
     for (int j = 0; j < ny; ++j) {
       if (j != j_mid && std::abs(m.y_lines[j] - z_mid) > 0.5 * feed.groove_width) continue;
-      for (int i = 0; i < nx; ++i)
-        if (groove_around(Ij{i, j}) <= 0.0) mark(m.Node(i, j));
+      // A groove shorter around than the mesh's spacing there holds no node of the row: its
+      // nearest node then, as a hole's (a 1° groove fed nothing while no node lay in it).
+      int nearest = -1;
+      double best = 1e300;
+      bool any = false;
+      for (int i = 0; i < nx; ++i) {
+        const double around = groove_around(Ij{i, j});
+        if (around <= 0.0) mark(m.Node(i, j)), any = true;
+        if (around < best) best = around, nearest = m.Node(i, j);
+      }
+      if (!any && nearest >= 0) mark(nearest);
     }
   }
   // The holes: a node's position from a hole's centre, around (signed, the short way) and
