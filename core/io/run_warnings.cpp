@@ -242,6 +242,35 @@ void AssumedInputsWarning(const engine::EngineCase& c, std::vector<RunWarning>* 
   out->push_back(std::move(w));
 }
 
+// Inputs given a value other than the default case's that this run does not read, because the
+// case's choices leave them unused (a constant supply pressure beside a supply-pressure curve,
+// Vogel constants of a constant-viscosity oil, a compliance file of rigid surfaces): a value set
+// on purpose and silently ignored. Fields of a joint that is ideal in this run do not count (a
+// case keeps its films' data when a model switches them off).
+void UnusedInputsWarning(const engine::EngineCase& c, std::vector<RunWarning>* out) {
+  const LoadedCase* reference = DefaultCase();
+  if (!reference) return;
+  const bool skirt = c.skirt.model == engine::JointModel::kLubricated;
+  const bool big_end = c.big_end.model == engine::JointModel::kLubricated;
+  engine::EngineCase run_case = c, default_case = reference->value;
+  RunWarning w;
+  std::string list;
+  for (const engine::CaseField& f : engine::CaseSchema()) {
+    if (!skirt && f.path.rfind("skirt.", 0) == 0) continue;
+    if (!big_end && f.path.rfind("big_end.", 0) == 0) continue;
+    const std::string why = engine::UnusedReason(run_case, f.path);
+    if (why.empty() || SameValue(f, run_case, default_case)) continue;
+    w.fields.push_back(f.path);
+    list += (list.empty() ? "" : "; ") + f.path + " (" + why + ")";
+  }
+  if (w.fields.empty()) return;
+  w.code = "unused_inputs";
+  w.value = static_cast<double>(w.fields.size());
+  w.message = fmt::format("{} input{} set but not read by this run: {}", w.fields.size(),
+                          w.fields.size() == 1 ? " is" : "s are", list);
+  out->push_back(std::move(w));
+}
+
 // The run's cylinder pressure is the default case's synthetic curve at this speed.
 void SyntheticPressureWarning(const engine::RunConfig& config, std::vector<RunWarning>* out) {
   const LoadedCase* reference = DefaultCase();
@@ -542,6 +571,7 @@ std::vector<RunWarning> RunWarnings(const engine::RunConfig& config,
     out.push_back(std::move(w));
   }
   AssumedInputsWarning(c, &out);
+  UnusedInputsWarning(c, &out);
   SyntheticPressureWarning(config, &out);
   LowCylinderPressureWarning(config, &out);
   FilmStartSupplyWarning(c, &out);
@@ -559,6 +589,7 @@ std::string WarningShortText(const RunWarning& w) {
   if (w.code == "high_eccentricity") return fmt::format("ε {:.3f} > {:g}", w.value, w.limit);
   if (w.code == "not_periodic") return fmt::format("not periodic ({:.2g} %)", 100.0 * w.value);
   if (w.code == "assumed_inputs") return fmt::format("{:.0f} assumed inputs", w.value);
+  if (w.code == "unused_inputs") return fmt::format("{:.0f} unused inputs", w.value);
   if (w.code == "synthetic_pressure") return "synthetic pressure";
   if (w.code == "film_start_supply") return "film-start supply";
   if (w.code == "supply_hole_mesh") return "supply hole on a coarse mesh";

@@ -274,6 +274,37 @@ class TestRunWarnings : public QObject {
     }
   }
 
+  // A value given to an input the run does not read (a constant supply pressure beside a
+  // supply-pressure curve, which sets the pressure) is named, with why; the default case and a
+  // case that reads what it sets have no such warning; an ideal joint's data do not count.
+  void inputsSetButNotReadAreNamed() {
+    const engine::RunResult none;
+    auto unused = [&](const engine::EngineCase& c, engine::Model model) {
+      const auto w = io::RunWarnings(Config(c, model, 2000.0), none);
+      const auto it = std::find_if(
+          w.begin(), w.end(), [](const io::RunWarning& x) { return x.code == "unused_inputs"; });
+      return it == w.end() ? io::RunWarning{} : *it;
+    };
+    engine::EngineCase c = CoarseCase();
+    QVERIFY(unused(c, engine::Model::kOnlyLbrbe).code.empty());
+    c.big_end.supply = lubrication::OilFeedKind::kPinHoles;
+    c.big_end.oil_feed_pressure = 5e5;
+    QVERIFY(unused(c, engine::Model::kOnlyLbrbe).code.empty());  // read: a constant pressure
+    c.big_end.supply_pressure_angles.clear();
+    c.big_end.supply_pressure_values.clear();
+    for (int k = 0; k < 72; ++k) {
+      c.big_end.supply_pressure_angles.push_back(k * 4.0 * std::numbers::pi / 72.0);
+      c.big_end.supply_pressure_values.push_back(3e5);
+    }
+    const io::RunWarning w = unused(c, engine::Model::kOnlyLbrbe);
+    QCOMPARE(w.code, std::string("unused_inputs"));
+    QCOMPARE(w.fields, std::vector<std::string>{"big_end.oil_feed_pressure"});
+    QVERIFY2(QString::fromStdString(w.message).contains("curve"), w.message.c_str());
+    QCOMPARE(io::WarningShortText(w), std::string("1 unused inputs"));
+    // The same big end switched off (an ideal pin joint): its data are not the run's concern.
+    QVERIFY(unused(c, engine::Model::kIdeal).code.empty());
+  }
+
   void massConservingBigEndOnTheFilmStartLineWarns() {
     // The supply warning is the configuration's: judged without a run.
     const engine::RunResult none;
