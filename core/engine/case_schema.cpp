@@ -1138,9 +1138,10 @@ std::vector<CaseField> MakeSchema() {
            {G::kBigEnd, "Supply holes: angles", "rad", "°", kDeg, Between(-2.0 * kPi, 2.0 * kPi),
             "shell holes from the rod axis toward the small end, pin holes from the crank "
             "web axis, counter-clockwise"}));
-  f.push_back(Scalar("big_end.supply_hole_diameter", be, &B::supply_hole_diameter,
-                     {G::kBigEnd, "Supply holes: diameter", "m", "mm", kMm,
-                      Open(0.0, 1.0, true, false), "of each hole; less than the bearing width"}));
+  f.push_back(
+      Scalar("big_end.supply_hole_diameter", be, &B::supply_hole_diameter,
+             {G::kBigEnd, "Supply holes: diameter", "m", "mm", kMm, Open(0.0, 1.0, true, false),
+              "of each hole; less than the bearing width and than half its circumference"}));
   f.push_back(
       Scalar("big_end.groove_start_angle", be, &B::groove_start_angle,
              {G::kBigEnd, "Groove: start angle", "rad", "°", kDeg, Between(-2.0 * kPi, 2.0 * kPi),

@@ -66,6 +66,12 @@ void ValidateOilFeed(const OilFeed& feed, double radius, double width, const Oil
       throw InputError(names.hole_diameter, FormatValue(feed.hole_diameter),
                        "must lie in (0, " + names.width + " = " + FormatValue(width) + ") [m]");
     }
+    // Around, a hole wider than half the circumference would overlap itself.
+    if (!(feed.hole_diameter < kPi * radius)) {
+      throw InputError(names.hole_diameter, FormatValue(feed.hole_diameter),
+                       "must be less than half the bearing's circumference, π R = " +
+                           FormatValue(kPi * radius) + " [m]");
+    }
     // Holes whose circles overlap are one hole given twice: refused.
     const double d = feed.hole_diameter / radius;  // angular diameter
     for (std::size_t a = 0; a < feed.hole_angles.size(); ++a) {

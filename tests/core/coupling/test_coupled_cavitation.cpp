@@ -522,6 +522,14 @@ class TestCoupledCavitation : public QObject {
     c.big_end.supply_hole_diameter = c.big_end.width;  // a hole as wide as the bearing
     QVERIFY(
         ErrorOf([&] { engine::CheckCaseConsistency(c); }).contains("big_end.supply_hole_diameter"));
+    // A hole narrower than a very wide bearing but wider than half its circumference: it would
+    // overlap itself around.
+    c.big_end.width = 10.0 * c.big_end.bearing_radius;
+    c.big_end.supply_hole_diameter = 4.0 * c.big_end.bearing_radius;
+    const QString around = ErrorOf([&] { engine::CheckCaseConsistency(c); });
+    QVERIFY2(around.contains("big_end.supply_hole_diameter") && around.contains("circumference"),
+             qPrintable(around));
+    c.big_end.width = CoarseCase().big_end.width;
     c.big_end.supply_hole_diameter = 4e-3;
     // The groove's rules, shared with the bearing solver's own validation.
     c.big_end.supply = lubrication::OilFeedKind::kGroove;
