@@ -119,6 +119,23 @@ RunConfig MakeRunConfig(const EngineCase& engine_case, Model model, double rpm,
 
 namespace {
 
+// A starved skirt's film trouble (touching the liner, a fraction failure) can come from
+// the little oil the liner leaves it as well as from its mesh or clearance: said with the trouble.
+std::string WithSupplyHint(std::string trouble, const EngineCase& c) {
+  const bool skirt_trouble =
+      trouble.rfind("piston skirt", 0) == 0 || trouble.rfind("skirt", 0) == 0;
+  if (!skirt_trouble || c.skirt.supply != lubrication::SkirtSupply::kStarved) return trouble;
+  const std::string film = c.skirt.oil_film_values.empty()
+                               ? fmt::format("skirt.oil_film = {:.3g} um", c.skirt.oil_film * 1e6)
+                               : "the table skirt.oil_film_values";
+  return trouble + "; the skirt runs starved on the liner's oil film (" + film +
+         "): a thicker film may carry it";
+}
+
+}  // namespace
+
+namespace {
+
 // The periodic-steady-state quantities of a model: e0, γ and the skirt MOFT for
 // a lubricated skirt, ε and the bearing MOFT for a lubricated big end; the ideal model tracks
 // the forces it has. Floors: 1 % of the clearance scales, so a flat trace cannot block.
@@ -425,7 +442,7 @@ RunResult RunSingle(const RunConfig& config, const RunMonitor& monitor,
         const std::string where = where_now();
         if (const std::string trouble = FilmTrouble(current.samples.back()); !trouble.empty()) {
           result.status = RunStatus::kFailed;
-          result.message = trouble + where;
+          result.message = WithSupplyHint(trouble, c) + where;
           keep(std::move(current));
           result.wall_time = elapsed();
           return result;
@@ -461,7 +478,7 @@ RunResult RunSingle(const RunConfig& config, const RunMonitor& monitor,
         result.reynolds_solves = solves();
         if (const std::string trouble = FilmTrouble(sample); !trouble.empty()) {
           result.status = RunStatus::kFailed;
-          result.message = trouble + where_now();
+          result.message = WithSupplyHint(trouble, c) + where_now();
           result.cycles = cycle;
           keep(std::move(current));
           result.wall_time = elapsed();

@@ -146,6 +146,23 @@ class TestRunJob : public QObject {
     const std::string worst = summary["cycle_to_cycle_worst_quantity"].get<std::string>();
     QVERIFY2(header.find(worst) != std::string::npos, worst.c_str());
   }
+  // A starved skirt on a liner film far too thin to carry it (0.1 µm) fails; the message says
+  // it runs starved and names the liner's film, not only the clearance or the mesh.
+  void aStarvedSkirtsFailureNamesTheLinersOilFilm() {
+    engine::RunConfig config = DefaultConfig(6000, engine::Model::kOnlySkirt);
+    engine::EngineCase& c = config.engine_case;
+    c.skirt.cavitation = lubrication::CavitationModel::kJfo;
+    c.skirt.supply = lubrication::SkirtSupply::kStarved;
+    c.skirt.oil_film = 1e-7;
+    c.skirt.mesh_thrust = c.skirt.mesh_anti = 6;
+    c.skirt.mesh_relief = 1;
+    c.skirt.mesh_axial = 8;
+    const engine::RunResult result = engine::RunJob(config);
+    QCOMPARE(engine::StatusName(result.status), std::string("failed"));
+    QVERIFY2(result.message.find("skirt.oil_film = 0.1 um") != std::string::npos &&
+                 result.message.find("starved") != std::string::npos,
+             result.message.c_str());
+  }
   void monitorCanStop() {
     const engine::RunConfig config = DefaultConfig(2000);
     int calls = 0;
