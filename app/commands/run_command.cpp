@@ -151,7 +151,9 @@ Command MakeRunCommand() {
     }
     PrintRunWarnings(config, result, "filmdyn run", streams.err);
     if (result.status != engine::RunStatus::kCompleted) {
-      streams.err << "filmdyn run: incomplete: " << result.message << "\n";
+      // "incomplete (failed)", "(time-limit)", …: the status of the first line, with its reason.
+      streams.err << "filmdyn run: incomplete (" << engine::StatusName(result.status)
+                  << "): " << result.message << "\n";
       // What results.csv holds when it is not the cycle the run was in.
       if (result.reported_cycle == 0 && !result.samples.empty()) {
         streams.err << "filmdyn run: the results are the part of the run-in computed\n";

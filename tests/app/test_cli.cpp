@@ -206,6 +206,9 @@ class TestCli : public QObject {
     r = Run({"run", dir.filePath("engine/case.json"), "--model", "only-lbrbe", "--time-limit",
              "0.2", "--no-fields", "--out", stopped, "--quiet"});
     QVERIFY2(r.exit_code == 1, qPrintable(r.err));  // incomplete: the time limit
+    // The reason line repeats the status of the first line.
+    QVERIFY2(r.err.contains("filmdyn run: incomplete (time-limit): wall-time limit reached"),
+             qPrintable(r.err));
     QFile kept(stopped + "/case-as-run.json");
     QVERIFY(kept.open(QIODevice::ReadOnly));
     const QString named = QJsonDocument::fromJson(kept.readAll())
