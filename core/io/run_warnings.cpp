@@ -212,21 +212,24 @@ bool SameValue(const engine::CaseField& f, engine::EngineCase& a, engine::Engine
   return false;
 }
 
+// Whether `path` is a field of a joint that is ideal in this case (a case keeps its films' data
+// when a model switches them off: not the run's inputs).
+bool OfAnIdealJoint(const std::string& path, const engine::EngineCase& c) {
+  return (c.skirt.model != engine::JointModel::kLubricated && path.rfind("skirt.", 0) == 0) ||
+         (c.big_end.model != engine::JointModel::kLubricated && path.rfind("big_end.", 0) == 0);
+}
+
 // The physical inputs the default case marks as assumed and this run still uses at that value.
 // Numerical settings (solver group: meshes, tolerances) are left out: the discretisation-error
 // estimate judges those. Fields of a joint that is ideal in this run do not count.
 void AssumedInputsWarning(const engine::EngineCase& c, std::vector<RunWarning>* out) {
   const LoadedCase* reference = DefaultCase();
   if (!reference) return;
-  const bool skirt = c.skirt.model == engine::JointModel::kLubricated;
-  const bool big_end = c.big_end.model == engine::JointModel::kLubricated;
   engine::EngineCase run_case = c, assumed_case = reference->value;
   RunWarning w;
   for (const auto& [path, reason] : assumed_case.assumed) {
     const engine::CaseField* f = engine::FindCaseField(path);
-    if (!f || f->group == engine::FieldGroup::kSolver) continue;
-    if (!skirt && path.rfind("skirt.", 0) == 0) continue;
-    if (!big_end && path.rfind("big_end.", 0) == 0) continue;
+    if (!f || f->group == engine::FieldGroup::kSolver || OfAnIdealJoint(path, c)) continue;
     if (!engine::UnusedReason(run_case, path).empty()) continue;  // the run does not read it
     if (SameValue(*f, run_case, assumed_case)) w.fields.push_back(path);
   }
@@ -250,14 +253,11 @@ void AssumedInputsWarning(const engine::EngineCase& c, std::vector<RunWarning>* 
 void UnusedInputsWarning(const engine::EngineCase& c, std::vector<RunWarning>* out) {
   const LoadedCase* reference = DefaultCase();
   if (!reference) return;
-  const bool skirt = c.skirt.model == engine::JointModel::kLubricated;
-  const bool big_end = c.big_end.model == engine::JointModel::kLubricated;
   engine::EngineCase run_case = c, default_case = reference->value;
   RunWarning w;
   std::string list;
   for (const engine::CaseField& f : engine::CaseSchema()) {
-    if (!skirt && f.path.rfind("skirt.", 0) == 0) continue;
-    if (!big_end && f.path.rfind("big_end.", 0) == 0) continue;
+    if (OfAnIdealJoint(f.path, c)) continue;
     const std::string why = engine::UnusedReason(run_case, f.path);
     if (why.empty() || SameValue(f, run_case, default_case)) continue;
     w.fields.push_back(f.path);
