@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <string>
 
 #include "core/base/input_error.hpp"
 
@@ -11,6 +12,9 @@ namespace filmdyn::engine {
 namespace {
 constexpr double kCycle = 4.0 * std::numbers::pi;
 constexpr double kDeg = std::numbers::pi / 180.0;
+// An angle in crank degrees for a message, to 1e-4 °CA: angles typed in rad to a few decimals
+// convert to degrees with float noise ("50.00000023 °CA") the user never wrote.
+std::string Degrees(double rad) { return FormatValue(std::round(rad / kDeg * 1e4) / 1e4); }
 }  // namespace
 
 CurveFields CurveFields::Points(const std::string& field) {
@@ -27,8 +31,8 @@ PressureCurve::PressureCurve(std::vector<double> angles, std::vector<double> pre
   const std::string& field = fields.curve;
   // An angle as the user gave it.
   const auto angle_text = [&fields](double a) {
-    return fields.angles_in_radians ? FormatValue(a) + " rad (" + FormatValue(a / kDeg) + " °CA)"
-                                    : FormatValue(a / kDeg) + " °CA";
+    return fields.angles_in_radians ? FormatValue(a) + " rad (" + Degrees(a) + " °CA)"
+                                    : Degrees(a) + " °CA";
   };
   if (angles.size() != pressures.size()) {
     throw InputError(field,
@@ -63,12 +67,14 @@ PressureCurve::PressureCurve(std::vector<double> angles, std::vector<double> pre
     angles.pop_back();
     pressures.pop_back();
   }
-  // The largest gap (angles given to a few decimals in rad may round just above 10 °CA).
-  constexpr double kLargestGap = 10.0 * kDeg + 1e-6;
+  // The largest gap. Angles typed in rad to four decimals (a 10 °CA grid as 0.1745, 0.3491, …)
+  // are each off by up to 5e-5 rad, so their gaps by up to 1e-4 rad (0.006 °CA): such a grid is
+  // accepted as the 10 °CA grid it stands for.
+  constexpr double kLargestGap = 10.0 * kDeg + 1.01e-4;
   for (std::size_t k = 1; k < angles.size(); ++k) {
     if (angles[k] - angles[k - 1] > kLargestGap) {
       throw InputError(fields.point(k, true), angle_text(angles[k]),
-                       FormatValue((angles[k] - angles[k - 1]) / kDeg) +
+                       Degrees(angles[k] - angles[k - 1]) +
                            " °CA after the point before it: the curve must cover 0–720 °CA "
                            "with gaps of at most 10 °CA");
     }
@@ -76,8 +82,7 @@ PressureCurve::PressureCurve(std::vector<double> angles, std::vector<double> pre
   if (const double wrap = angles.front() + kCycle - angles.back(); wrap > kLargestGap) {
     throw InputError(field,
                      "from " + angle_text(angles.back()) + " round to " +
-                         angle_text(angles.front()) + ": a gap of " + FormatValue(wrap / kDeg) +
-                         " °CA",
+                         angle_text(angles.front()) + ": a gap of " + Degrees(wrap) + " °CA",
                      "the curve must cover 0–720 °CA with gaps of at most 10 °CA");
   }
   angles_ = std::move(angles);

@@ -553,18 +553,28 @@ class TestCoupledCavitation : public QObject {
     QVERIFY(ErrorOf([&] { engine::CheckCaseConsistency(c); }).isEmpty());
     c.big_end.supply = lubrication::OilFeedKind::kShellHoles;
     // The supply-pressure curve: errors name the list and the element the user gave, angles in
-    // rad as given. A 10 °CA grid written to 8 decimals in rad is accepted (its gaps round to
-    // 10.0000003 °CA).
+    // rad as given and in °CA to 1e-4 (not "50.00000023 °CA"). A 10 °CA grid written in rad to
+    // 4 decimals is accepted (its gaps round up to 10.0057 °CA); a gap of 10.02 °CA is not.
     const auto curve_error = [&] { return ErrorOf([&] { engine::CheckCaseConsistency(c); }); };
-    c.big_end.supply_pressure_angles.clear();
-    for (int k = 0; k < 72; ++k)
-      c.big_end.supply_pressure_angles.push_back(
-          std::round(k * 10.0 * (std::numbers::pi / 180.0) * 1e8) / 1e8);
-    c.big_end.supply_pressure_values.assign(72, 3e5);
+    const auto grid_in_rad = [&](double decimals) {
+      c.big_end.supply_pressure_angles.clear();
+      for (int k = 0; k < 72; ++k)
+        c.big_end.supply_pressure_angles.push_back(
+            std::round(k * 10.0 * (std::numbers::pi / 180.0) * decimals) / decimals);
+      c.big_end.supply_pressure_values.assign(72, 3e5);
+    };
+    grid_in_rad(1e4);
+    QVERIFY2(curve_error().isEmpty(), qPrintable(curve_error()));
+    c.big_end.supply_pressure_angles[20] =
+        c.big_end.supply_pressure_angles[19] + 10.02 * std::numbers::pi / 180.0;
+    QVERIFY2(curve_error().startsWith("big_end.supply_pressure_angles.20 = ") &&
+                 curve_error().contains(" °CA): 10.02 °CA after the point before it"),
+             qPrintable(curve_error()));
+    grid_in_rad(1e8);
     QVERIFY2(curve_error().isEmpty(), qPrintable(curve_error()));
     std::swap(c.big_end.supply_pressure_angles[5], c.big_end.supply_pressure_angles[6]);
     QVERIFY2(curve_error().startsWith("big_end.supply_pressure_angles.6 = 0.87266463 rad "
-                                      "(50.00000023 °CA): crank angles must increase strictly"),
+                                      "(50 °CA): crank angles must increase strictly"),
              qPrintable(curve_error()));
     std::swap(c.big_end.supply_pressure_angles[5], c.big_end.supply_pressure_angles[6]);
     c.big_end.supply_pressure_values[5] = std::nan("");
@@ -577,7 +587,7 @@ class TestCoupledCavitation : public QObject {
                                            c.big_end.supply_pressure_angles.begin() + 20);
     c.big_end.supply_pressure_values.resize(62);
     QVERIFY2(curve_error().startsWith("big_end.supply_pressure_angles.10 = 3.4906585 rad") &&
-                 curve_error().contains("(199.9999998 °CA): 109.9999996 °CA") &&
+                 curve_error().contains("(200 °CA): 110 °CA") &&
                  curve_error().contains("°CA after the point before it: the curve must cover "
                                         "0–720 °CA with gaps of at most 10 °CA"),
              qPrintable(curve_error()));
