@@ -25,6 +25,12 @@ inline constexpr double kHighEccentricity = 0.95;
 /// bar or MPa, or gauge, than a real cylinder's.
 inline constexpr double kLowestPeakCylinderPressure = 5.0e5;
 
+/// The highest oil-supply pressure [Pa, gauge] an engine's oil system delivers: galleries run at
+/// 0.2–0.7 MPa, relief valves open below 1 MPa; above 2 MPa the value is more likely in the
+/// wrong unit (kPa or bar typed as Pa are the low side, MPa typed as bar the high) than a real
+/// feed, and the supply then carries load as a hydrostatic bearing would.
+inline constexpr double kHighestSupplyPressure = 2.0e6;
+
 /// A supply hole of a mass-conserving big end is resolved when the film's node rows within 0.9
 /// of its radius across the width number at least kHoleRowsAcross and the hole spans at least
 /// kHoleElementsAround mean elements around (docs/validation/errors.md, section 6: with one row
@@ -41,7 +47,9 @@ inline constexpr double kHoleElementsAround = 4.0;
 /// mass-conserving big end fed only by its film-start line at ambient pressure),
 /// "supply_hole_mesh" (its supply holes on a mesh too coarse for them; value: the node rows
 /// inside a hole across the width, limit: kHoleRowsAcross), "half_space_big_end" (a big end on
-/// elastic half-spaces, a model engine runs outgrow).
+/// elastic half-spaces, a model engine runs outgrow), "high_supply_pressure" (the big end's
+/// supply pressure above kHighestSupplyPressure; value: its peak [Pa], with the crank angle of a
+/// curve's peak).
 struct RunWarning {
   std::string code;
   std::string joint;    ///< "skirt", "big_end", or empty (the whole run)

@@ -353,6 +353,8 @@ class TestRunWarnings : public QObject {
     QVERIFY(w->value < 100.0 && w->limit == io::kLowestPeakCylinderPressure);
     QVERIFY2(QString::fromStdString(w->message).contains("is the curve in bar or MPa"),
              w->message.c_str());
+    QVERIFY2(io::WarningShortText(*w).starts_with("cylinder peak 0."),
+             io::WarningShortText(*w).c_str());
   }
 
   void halfSpaceBigEndWarns() {
@@ -381,6 +383,54 @@ class TestRunWarnings : public QObject {
         QVERIFY(QString::fromStdString(x.message).contains("big_end.compliance = elastic_layer"));
         QCOMPARE(QString::fromStdString(io::WarningShortText(x)), QString("half-space big end"));
       }
+  }
+
+  void anImplausibleSupplyPressureWarns() {
+    // Judged from the case: the supply pressure the run reads, the constant or a curve's peak,
+    // above what engine oil systems deliver (a value in the wrong unit otherwise "completes");
+    // not a real gallery pressure, not a constant the curve leaves unused, not an ideal big end.
+    const engine::RunResult none;
+    auto found = [&](const engine::EngineCase& c,
+                     engine::Model model =
+                         engine::Model::kSkirtLbrbe) -> std::optional<io::RunWarning> {
+      for (const io::RunWarning& x : io::RunWarnings(Config(c, model, 6000.0), none)) {
+        if (x.code == "high_supply_pressure") return x;
+      }
+      return std::nullopt;
+    };
+    engine::EngineCase c = CoarseCase();
+    c.big_end.supply = lubrication::OilFeedKind::kPinHoles;
+    c.big_end.oil_feed_pressure = 0.5e6;
+    QVERIFY(!found(c));
+    c.big_end.oil_feed_pressure = 1e9;
+    std::optional<io::RunWarning> w = found(c);
+    QVERIFY(w.has_value());
+    QCOMPARE(w->joint, std::string("big_end"));
+    QCOMPARE(w->value, 1e9);
+    QCOMPARE(w->limit, io::kHighestSupplyPressure);
+    QVERIFY(!w->crank_angle_deg);
+    QVERIFY2(QString::fromStdString(w->message)
+                 .startsWith("the big end's oil-supply pressure (big_end.oil_feed_pressure) is "
+                             "1000 MPa, above the 2 MPa"),
+             w->message.c_str());
+    QCOMPARE(io::WarningShortText(*w), std::string("supply 1e+03 MPa"));
+    // A curve: its peak and where; the constant beside it is unused and not judged.
+    for (int k = 0; k < 72; ++k) {
+      c.big_end.supply_pressure_angles.push_back(k * 10.0 * std::numbers::pi / 180.0);
+      c.big_end.supply_pressure_values.push_back(k == 36 ? 3e6 : 0.4e6);
+    }
+    w = found(c);
+    QVERIFY(w.has_value());
+    QCOMPARE(w->value, 3e6);
+    QVERIFY(w->crank_angle_deg && std::abs(*w->crank_angle_deg - 360.0) < 1e-9);
+    QVERIFY2(QString::fromStdString(w->message)
+                 .contains("(big_end.supply_pressure_values, its "
+                           "peak at 360 °CA) is 3 MPa"),
+             w->message.c_str());
+    c.big_end.supply_pressure_values[36] = 0.4e6;
+    QVERIFY(!found(c));  // 1 GPa constant, unused beside the curve
+    c.big_end.supply_pressure_values[36] = 3e6;
+    QVERIFY(!found(c, engine::Model::kOnlySkirt));
   }
 
   void heatBalanceOfAConstantViscosityWarns() {
