@@ -37,6 +37,9 @@ FieldRange Gap() { return {0.0, 0.01, false, false}; }       // profile/ovality 
 // cross-field rule adds < liner radius.
 FieldRange Clearance() { return {0.0, 0.01, true, false}; }
 FieldRange GaugePressure() { return {0.0, 1e9, false, false}; }  // [Pa], as the pressure curves
+// The oil layer left on the liner [m]: at least 1 nm (a molecular layer of oil; below it the
+// starved skirt would run on nothing the film model describes), at most 1 mm.
+FieldRange LinerOilFilm() { return {1e-9, 1e-3, false, false}; }
 FieldRange Viscosity() { return {0.0, 1e3, true, false}; }  // [Pa·s]; cold engine oil ~10 Pa·s
 FieldRange Between(double lo, double hi) { return {lo, hi, false, false}; }
 FieldRange Open(double lo, double hi, bool lo_open, bool hi_open) {
@@ -969,17 +972,16 @@ std::vector<CaseField> MakeSchema() {
        {},
        "\"flooded\" (the paper's) or \"starved\" (from the liner's oil film; "
        "needs cavitation \"jfo\")"}));
-  f.push_back(Scalar(
-      "skirt.oil_film", sk, &S::oil_film,
-      {G::kSkirt, "Oil film on the liner h_oil", "m", "µm", kUm, Open(0.0, 1e-3, true, false),
-       "starved supply: the oil layer the ring pack leaves on the liner"}));
+  f.push_back(Scalar("skirt.oil_film", sk, &S::oil_film,
+                     {G::kSkirt, "Oil film on the liner h_oil", "m", "µm", kUm, LinerOilFilm(),
+                      "starved supply: the oil layer the ring pack leaves on the liner"}));
   f.push_back(List("skirt.oil_film_positions", sk, &S::oil_film_positions,
                    {G::kSkirt, "Liner oil film: position", "m", "mm", kMm, Between(-1.0, 100.0),
                     "liner positions from the skirt top at top dead centre, + toward the crank; "
                     "outside the table its end values hold (empty: the constant oil_film)"}));
   f.push_back(List("skirt.oil_film_values", sk, &S::oil_film_values,
-                   {G::kSkirt, "Liner oil film: thickness", "m", "µm", kUm,
-                    Open(0.0, 1e-3, true, false), "the oil film at each position"}));
+                   {G::kSkirt, "Liner oil film: thickness", "m", "µm", kUm, LinerOilFilm(),
+                    "the oil film at each position"}));
   AddJointOilFields(f, "skirt", sk, G::kSkirt, SkirtOil);
   AddTemperatureField(f, "skirt.piston_temperature", sk, &S::piston_temperature, G::kSkirt,
                       "Piston skirt temperature", "skirt piston T",

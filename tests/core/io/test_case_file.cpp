@@ -248,6 +248,9 @@ class TestCaseFile : public QObject {
              std::string("big_end.journal_radius"));
     QCOMPARE(ErrorField(with("solver", "max_cycles", 2.5)), std::string("solver.max_cycles"));
     QCOMPARE(ErrorField(with("geometry", "rod_lenght", 0.13)), std::string("geometry.rod_lenght"));
+    // A liner oil film below a molecular layer (1 nm) is no film to run a starved skirt on.
+    QCOMPARE(ErrorField(with("skirt", "oil_film", 1e-15)), std::string("skirt.oil_film"));
+    QCOMPARE(ErrorField(with("skirt", "oil_film", 1e-9)), std::string());
     // An inline curve's point is named with its curve's path; a second curve at one speed is
     // refused (the first was taken, silently).
     json inline_curve = DefaultJson();
