@@ -531,7 +531,7 @@ void SetSymbols(std::vector<CaseField>& fields) {
       {"operating.rpm", ""},
       {"operating.crankcase_pressure", "p_cc"},
       {"operating.start_crank_angle", "start angle"},
-      {"solver.baumgarte_alpha", "𝒢"},
+      {"solver.baumgarte_alpha", "G"},  // the paper's script G (𝒢), which many fonts lack
       {"solver.baumgarte_beta", "ζ"},
       {"solver.relative_tolerance", "rel. tolerance"},
       {"solver.position_tolerance", "position tolerance"},
@@ -1199,12 +1199,15 @@ std::vector<CaseField> MakeSchema() {
   f.push_back(Scalar("operating.start_crank_angle", op, &OperatingCase::start_crank_angle,
                      {G::kOperating, "Start crank angle", "rad", "°CA", kDeg, Between(0.0, 4 * kPi),
                       "where the first monitored cycle starts (a run-in starts before it)"}));
-  f.push_back(Scalar("solver.baumgarte_alpha", sol, &SolverCase::baumgarte_alpha,
-                     {G::kSolver, "Baumgarte stabilisation 𝒢", "1/s", "1/s", 1.0, Between(0.0, 1e9),
-                      "constraint stabilisation; Table II: 1e4"}));
-  f.push_back(Scalar("solver.baumgarte_beta", sol, &SolverCase::baumgarte_beta,
-                     {G::kSolver, "Baumgarte stabilisation ζ", "1/s", "1/s", 1.0, Between(0.0, 1e9),
-                      "constraint stabilisation; Table II: 1e4"}));
+  f.push_back(
+      Scalar("solver.baumgarte_alpha", sol, &SolverCase::baumgarte_alpha,
+             {G::kSolver, "Baumgarte velocity feedback G", "1/s", "1/s", 1.0, Between(0.0, 1e9),
+              "constraint stabilisation, the term −2G·Φ̇ of eq. 39 (the paper's script "
+              "G); Table II: 1e4"}));
+  f.push_back(
+      Scalar("solver.baumgarte_beta", sol, &SolverCase::baumgarte_beta,
+             {G::kSolver, "Baumgarte position feedback ζ", "1/s", "1/s", 1.0, Between(0.0, 1e9),
+              "constraint stabilisation, the term −ζ²·Φ of eq. 39; Table II: 1e4"}));
   f.push_back(Scalar("solver.relative_tolerance", sol, &SolverCase::relative_tolerance,
                      {G::kSolver, "Relative tolerance", "-", "–", 1.0, Between(1e-14, 1e-2),
                       "local error of the implicit integrator's velocities, relative (positions: "
