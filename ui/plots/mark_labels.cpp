@@ -37,9 +37,13 @@ bool CrossesAnyCurve(const QRectF& rect, const std::vector<QPolygonF>& curves) {
 }  // namespace
 
 std::vector<QRectF> PlaceMarkLabels(const std::vector<MarkLabel>& marks, QPointF origin,
-                                    const QRectF& area, const std::vector<QPolygonF>& curves) {
+                                    const QRectF& area, const std::vector<QPolygonF>& curves,
+                                    const std::vector<QPointF>& dots) {
   std::vector<QRectF> placed(marks.size());
   std::vector<QRectF> taken;
+  for (const QPointF& dot : dots)
+    taken.emplace_back(dot - QPointF(kMarkDotHalf, kMarkDotHalf),
+                       QSizeF(2 * kMarkDotHalf, 2 * kMarkDotHalf));
   for (std::size_t m = 0; m < marks.size(); ++m) {
     const QPointF at = marks[m].at;
     const QSizeF size = marks[m].size;

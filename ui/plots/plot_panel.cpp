@@ -947,8 +947,9 @@ void PlotPanel::paintOverlay(const ChartEntry& entry, QPainter* painter) const {
   // Crank-angle marks every 90 °CA and arrows along the direction of travel (orbit, load).
   if (entry.spec->equal_axes) {
     painter->setClipRect(area);
-    // Labels placed by PlaceMarkLabels: outward, else beside their mark, else left out (the
-    // mark's dot stays and the cursor readout names it).
+    // Labels placed by PlaceMarkLabels: outward, else beside their mark, clear of the curves
+    // and of every mark's dot where it can, else on a curve (on a light backing), else left out
+    // (the mark's dot stays and the cursor readout names it).
     const QPointF origin = to_pos(QPointF(0, 0));
     struct PendingLabel {
       QPointF at;
@@ -956,6 +957,7 @@ void PlotPanel::paintOverlay(const ChartEntry& entry, QPainter* painter) const {
       QColor colour;
     };
     std::vector<PendingLabel> pending;
+    std::vector<QPointF> dots;
     for (int id : runs) {
       const auto points = entry.run_points.value(id);
       for (size_t k = 0; k < points.size(); ++k) {
@@ -969,6 +971,7 @@ void PlotPanel::paintOverlay(const ChartEntry& entry, QPainter* painter) const {
             // Labels once (the first run; the others' marks align), drawn over every run's
             // marks and arrows below.
             if (id == runs.front()) pending.push_back({at, mark, colour.darker(130)});
+            dots.push_back(at);
           }
           // An arrowhead half way to the next mark, along the local tangent.
           const auto a = PointAtAngle(points[k], mark + 44.0);
@@ -1007,9 +1010,12 @@ void PlotPanel::paintOverlay(const ChartEntry& entry, QPainter* painter) const {
         if (!line.isEmpty()) curves.push_back(line);
       }
     }
-    const std::vector<QRectF> placed = PlaceMarkLabels(marks, origin, area, curves);
+    const std::vector<QRectF> placed = PlaceMarkLabels(marks, origin, area, curves, dots);
     for (std::size_t i = 0; i < pending.size(); ++i) {
       if (placed[i].isNull()) continue;
+      painter->setPen(Qt::NoPen);
+      painter->setBrush(QColor(255, 255, 255, 215));  // readable where it lies on a curve
+      painter->drawRoundedRect(placed[i], 3.0, 3.0);
       painter->setPen(pending[i].colour);
       painter->drawText(placed[i], Qt::AlignCenter, QString("%1°").arg(pending[i].mark));
     }

@@ -201,6 +201,16 @@ class TestPlotPanel : public QObject {
     for (double x = 150.0; x <= 260.0; x += 4.0)
       grid.push_back(QPolygonF({QPointF(x, 140.0), QPointF(x, 260.0)}));
     QCOMPARE(filmdyn::ui::PlaceMarkLabels(mark, origin, area, grid).front(), outward);
+    // Another mark's dot where the label would go (another run's or cycle's mark): the label
+    // goes elsewhere, clear of that dot and of its own — beside a dot it would read as its label.
+    const QPointF other = outward.center();
+    const QRectF clear =
+        filmdyn::ui::PlaceMarkLabels(mark, origin, area, {}, {other, mark[0].at}).front();
+    QVERIFY(!clear.isNull());
+    const double half = filmdyn::ui::kMarkDotHalf;
+    for (const QPointF& dot : {other, mark[0].at})
+      QVERIFY2(!clear.intersects(QRectF(dot - QPointF(half, half), QSizeF(2 * half, 2 * half))),
+               qPrintable(QString("label at %1,%2").arg(clear.left()).arg(clear.top())));
   }
 
   void crankAngleLabelsNeverOverlap() {
