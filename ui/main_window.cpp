@@ -161,6 +161,7 @@ void MainWindow::createRunPage() {
       plot_panel_->setRunLabel(run->id(), run->label());
       if (run == shown_fields_run_.lock())
         field_view_->setFrames(run->fields(), run->label(), NoFieldsReason(*run));
+      if (run == state_run_.lock()) showRunState(run);
     }
   });
   connect(run_table_, &RunTable::orderChanged, this, [this](const QList<int>& ids) {
@@ -345,8 +346,7 @@ void MainWindow::startRun() {
   request.case_directory = document_->caseDirectory();
   RunHandle run = run_controller_->start(std::move(request));
   if (!run) return;
-  run_state_label_->setStyleSheet({});
-  run_state_label_->setText(tr("Running %1").arg(run->label()));
+  showRunState(run);
   workspace_->setCurrentIndex(1);
   updateRunActions();
 }
@@ -387,22 +387,34 @@ void MainWindow::onRunFinished(const RunHandle& run) {
   progress_bar_->setValue(run->status() == RunStatus::kFinished ? 1000 : progress_bar_->value());
   progress_bar_->setFormat(
       tr("%1 (%2 s)").arg(RunStatusText(run->status())).arg(run->elapsedSeconds(), 0, 'f', 2));
-  const QString reason = run->reason();
+  showRunState(run);
   if (run->status() == RunStatus::kFailed) {
     // Inputs stay as they are and the partial results stay in the plots and the table.
-    run_state_label_->setStyleSheet("color: #a00000");
-    run_state_label_->setText(tr("%1 failed: %2").arg(run->label(), reason));
-    statusBar()->showMessage(tr("Run failed: %1 (inputs and partial results kept)").arg(reason));
+    statusBar()->showMessage(
+        tr("Run failed: %1 (inputs and partial results kept)").arg(run->reason()));
   } else {
-    run_state_label_->setStyleSheet({});
-    run_state_label_->setText(tr("%1 %2").arg(run->label(), RunStatusText(run->status())) +
-                              (reason.isEmpty() ? QString() : QString(": %1").arg(reason)));
     statusBar()->showMessage(run_state_label_->text(), 10000);
   }
-  run_state_label_->setToolTip(reason);
   shown_fields_run_ = run;
   field_view_->setScaleFrames(AllRunFields(run_table_->runs()));
   field_view_->setFrames(run->fields(), run->label(), NoFieldsReason(*run));
+}
+
+// The toolbar's line on the run last started or finished, in the run's label of the moment (the
+// table, the legends and the field view use the same one; relabelling reaches it through
+// RunTable::labelsChanged).
+void MainWindow::showRunState(const RunHandle& run) {
+  state_run_ = run;
+  const QString reason = run->reason();
+  run_state_label_->setStyleSheet(run->status() == RunStatus::kFailed ? "color: #a00000"
+                                                                      : QString());
+  if (run->status() == RunStatus::kRunning) {
+    run_state_label_->setText(tr("Running %1").arg(run->label()));
+  } else {
+    run_state_label_->setText(tr("%1 — %2").arg(run->label(), RunStatusText(run->status())) +
+                              (reason.isEmpty() ? QString() : QString(": %1").arg(reason)));
+  }
+  run_state_label_->setToolTip(reason);
 }
 
 void MainWindow::removeSelectedRun() {

@@ -121,6 +121,7 @@ class MainWindow : public QMainWindow {
   /// a run finished, was removed, renamed, annotated, re-ordered, hidden or made the base.
   bool runs_modified_ = false;
   void onRunFinished(const RunHandle& run);
+  void showRunState(const RunHandle& run);
 
   QTabWidget* workspace_ = nullptr;
   CaseDocument* document_ = nullptr;
@@ -139,6 +140,7 @@ class MainWindow : public QMainWindow {
   QLabel* blocker_label_ = nullptr;
   QTimer* autosave_timer_ = nullptr;
   std::weak_ptr<RunRecord> shown_fields_run_;  ///< the run whose fields the field page shows
+  std::weak_ptr<RunRecord> state_run_;         ///< the run the toolbar's state line speaks of
 };
 
 }  // namespace filmdyn::ui

@@ -9,6 +9,7 @@
 #include <QDir>
 #include <QFile>
 #include <QImage>
+#include <QLabel>
 #include <QLineSeries>
 #include <QSettings>
 #include <QSignalSpy>
@@ -178,9 +179,15 @@ class TestProjectRuns : public QObject {
     // Hidden and base.
     table->setRunVisible(a->id(), false);
     QVERIFY(!window->plotPanel()->isRunVisible(a->id()));
+    const QString c_label = c->label();
+    QVERIFY(window->runStateLabel()->text().startsWith(c_label + " — finished"));
     table->setBaseRun(b->id());
     QCOMPARE(table->baseRunId(), b->id());
     QCOMPARE(a->label(), QString("μ 20 mPa·s"));
+    // The toolbar's line on the last run follows its label (it kept the old one).
+    QVERIFY(c->label() != c_label);
+    QVERIFY2(window->runStateLabel()->text().startsWith(c->label() + " — finished"),
+             qPrintable(window->runStateLabel()->text()));
     QCOMPARE(table->item(2, RunTable::kDifferences)->text(), QString("base run"));
     window->workspace()->setCurrentIndex(1);
     table->selectRow(0);
