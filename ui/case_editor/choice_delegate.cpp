@@ -1,6 +1,8 @@
 #include "ui/case_editor/choice_delegate.hpp"
 
+#include <QBrush>
 #include <QComboBox>
+#include <QPalette>
 #include <QSignalBlocker>
 #include <QStringList>
 #include <QWheelEvent>
@@ -57,6 +59,16 @@ void ChoiceDelegate::setEditorData(QWidget* editor, const QModelIndex& index) co
   QSignalBlocker block(combo);
   combo->setCurrentIndex(combo->findText(index.data(Qt::EditRole).toString()));
   combo->setToolTip(index.data(Qt::ToolTipRole).toString());
+  // The row's text colour: a choice the case leaves unused is greyed like the rest of its row
+  // (it stays editable, as the row's other cells do).
+  QPalette palette = combo->parentWidget() ? combo->parentWidget()->palette() : QPalette();
+  if (const QVariant colour = index.data(Qt::ForegroundRole); colour.canConvert<QBrush>()) {
+    const QColor text = colour.value<QBrush>().color();
+    palette.setColor(QPalette::Text, text);
+    palette.setColor(QPalette::ButtonText, text);
+    palette.setColor(QPalette::WindowText, text);
+  }
+  combo->setPalette(palette);
 }
 
 void ChoiceDelegate::setModelData(QWidget* editor, QAbstractItemModel* model,

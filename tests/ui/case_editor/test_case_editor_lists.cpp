@@ -7,6 +7,7 @@
 // greyed with the reason and enabled again with another choice; editing a table, a choice or a
 // number drops its "assumed" note, and undo brings it back. With FILMDYN_SCREENSHOT_DIR set it
 // saves the big-end tab with its CSV buttons and a greyed block (case_list_csv.png).
+#include <QComboBox>
 #include <QFile>
 #include <QLabel>
 #include <QLineEdit>
@@ -372,6 +373,34 @@ class TestCaseEditorLists : public QObject {
     QVERIFY(!Greyed(window, CaseGroup::kSkirt, "skirt.oil_film"));
     // Tables no choice decides are always enabled.
     QVERIFY(editor->listEnabled("skirt.profile_y") && editor->listEnabled("skirt.ovality_h"));
+  }
+
+  // A choice's combo box in a greyed (unused) row is greyed too (its black text read as live),
+  // and turns black when a choice elsewhere makes the field used.
+  void unusedChoicesAreGreyedLikeTheirRows() {
+    MainWindow window;
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    auto check = [&](int* greyed) {
+      for (QComboBox* combo : window.caseEditor()->findChildren<QComboBox*>()) {
+        const QString path = combo->objectName().mid(QString("choice_").size());
+        if (!combo->objectName().startsWith("choice_")) continue;
+        const filmdyn::engine::CaseField* f = filmdyn::engine::FindCaseField(path.toStdString());
+        QVERIFY2(f, qPrintable(path));
+        const bool unused =
+            !filmdyn::engine::UnusedReason(window.document()->engineCase(), f->path).empty();
+        const QColor text = combo->palette().color(QPalette::Text);
+        QVERIFY2(unused == (text == QColor(150, 150, 150)),
+                 qPrintable(QString("%1: %2, text %3").arg(path).arg(unused).arg(text.name())));
+        *greyed += unused;
+      }
+    };
+    int greyed = 0;
+    check(&greyed);
+    QVERIFY(greyed > 0);  // the default case leaves some choices unused (a joint's own oil)
+    QVERIFY(window.document()->setChoice("skirt.cavitation", "jfo"));
+    greyed = 0;
+    check(&greyed);
   }
 
   void editsDropTheAssumedNoteOfWhatTheyChange() {
