@@ -158,7 +158,7 @@ void AddOilFields(std::vector<CaseField>& f, const std::string& prefix, FieldGro
       {"shear_thinning", "shear thinning"},
       {"cross_ratio", "Cross r"},
       {"cross_exponent", "Cross m"},
-      {"cross_rate", "γ̇c"},
+      {"cross_rate", "Cross rate"},  // γ̇c: the combining dot is lost in many fonts
       {"hths", "HTHS"},
       {"bulk_modulus", "β"}};
   auto number = [&](const char* name, double OilSpec::*member, const Info& info,
@@ -301,7 +301,7 @@ void AddOilFields(std::vector<CaseField>& f, const std::string& prefix, FieldGro
          "Cross' law: the exponent m " + whose);
   number("cross_rate", &OilSpec::cross_rate,
          {group,
-          "Cross: critical shear rate γ̇c at 150 °C",
+          "Cross: critical shear rate at 150 °C",
           "1/s",
           "1/s",
           1.0,

@@ -123,7 +123,7 @@ std::vector<PlotSpec> Make() {
                                {VsAngle("ė₀", Column::kPistonLateralVelocity, 1e3)}));
   plots.push_back(VsCrankAngle("piston_tilt_rate", QObject::tr("Piston tilt rate dγ/dt"),
                                QObject::tr("dγ/dt [rad/s]"), "rad/s",
-                               {VsAngle("γ̇", Column::kPistonTiltRate, 1.0)}));
+                               {VsAngle("dγ/dt", Column::kPistonTiltRate, 1.0)}));
   {
     PlotCurve path = XY("orbit", Column::kJournalEccX, 1e6, Column::kJournalEccY, 1e6);
     path.from_motion = true;
@@ -199,7 +199,7 @@ std::vector<PlotSpec> Make() {
                                {VsAngle("skirt", Column::kSkirtWettedFraction, 1.0)}, true));
   {
     PlotSpec eps =
-        Portrait("phase_eps", QObject::tr("Big-end phase portrait ε / ε̇"),
+        Portrait("phase_eps", QObject::tr("Big-end phase portrait ε / dε/dt"),
                  QObject::tr("eccentricity ratio ε [-]"), "", QObject::tr("rate dε/dt [1/s]"),
                  "1/s", {Phase("ε", Column::kBearingEps, Column::kBearingEpsRate, 1.0, 1.0)});
     eps.x_non_negative = true;
