@@ -91,7 +91,8 @@ class TestStudy : public QObject {
          "factors[0].levels[0] = 8.5: must be a whole number"},
         // A level that is no number names the field and its range too.
         {R"({"design": "full-factorial", "factors": [{"path": "skirt.oil_film", "levels": [1e-5, null]}]})",
-         "s.json: factors[0].levels[1] (skirt.oil_film) = null: must be a finite number in (0, "},
+         "s.json: factors[0].levels[1] (skirt.oil_film) = null: must be a finite number in "
+         "[1e-09, "},
         {R"({"design": "full-factorial", "factors": [{"path": "big_end.mesh_z", "levels": ["8"]}]})",
          "s.json: factors[0].levels[0] (big_end.mesh_z) = \"8\": must be an integer in ["},
         // A number beyond a double's range is bad JSON for us, named with the file.
