@@ -24,7 +24,8 @@ namespace {
 
 lubrication::BearingMeshSpec ParseMesh(const std::string& text) {
   const auto x = text.find_first_of("xX");
-  const std::string allowed = "must be NthetaxNz with integers, e.g. 240x40 (Ntheta >= 8, Nz >= 2)";
+  const std::string allowed =
+      "must be NthetaxNz with integers, e.g. 240x40 (8 <= Ntheta <= 20000, 2 <= Nz <= 5000)";
   if (x == std::string::npos) throw InputError("--mesh", text, allowed);
   double nt = 0.0, nz = 0.0;
   try {  // either count not a number ("240x", "240x40x3"): the whole value and the form
@@ -235,10 +236,14 @@ Command MakeBearingCommand() {
       pair.boundary_friction = args.Double("boundary-friction").value_or(0.13);
       in.surfaces = pair;
     }
-    if (int(args.Has("elastic-layer")) + int(args.Has("half-space")) + int(args.Has("compliance")) >
-        1) {
-      throw InputError("--compliance", args.Value("compliance").value_or(""),
-                       "one of --elastic-layer, --half-space or --compliance");
+    {
+      std::vector<std::string> surfaces;
+      for (const char* option : {"elastic-layer", "half-space", "compliance"})
+        if (args.Has(option)) surfaces.push_back(std::string("--") + option);
+      if (surfaces.size() > 1) {
+        throw InputError(surfaces[1], "given with " + surfaces[0],
+                         "one of --elastic-layer, --half-space or --compliance at a time");
+      }
     }
     if (args.Has("compliance")) {
       in.compliance.model = lubrication::ComplianceModel::kImported;
@@ -271,9 +276,12 @@ Command MakeBearingCommand() {
                                                     .tolerance = "elastic tolerance",
                                                     .max_iterations = "elastic iterations",
                                                     .imported = "--compliance"});
-    // The calculator names its inputs by their own fields; here the options that set them.
+    // The calculator names its inputs by their own fields; here the options that set them (the
+    // checks of the film's own configuration run when it is built, in RunBearingCalculator).
+    lubrication::BearingCalcResult r;
     try {
       in.Validate();
+      r = lubrication::RunBearingCalculator(in);
     } catch (const InputError& e) {
       static const std::pair<const char*, const char*> kOptions[] = {
           {"bearing.radius", "--radius"},
@@ -293,12 +301,22 @@ Command MakeBearingCommand() {
           {"bearing.surface.E1", "--E1"},
           {"bearing.surface.E2", "--E2"},
           {"bearing.surface.nu1", "--nu1"},
-          {"bearing.surface.nu2", "--nu2"}};
+          {"bearing.surface.nu2", "--nu2"},
+          {"bearing.mesh.n_theta", "--mesh"},
+          {"bearing.mesh.n_z", "--mesh"},
+          {"bearing.compliance", "--half-space"}};
+      // The film's own names in the allowed text too ("coarsen bearing.mesh").
+      std::string allowed = e.allowed();
+      for (const auto& [name, option] :
+           {std::pair<std::string, std::string>{"bearing.mesh", "--mesh"},
+            {"\"elastic_layer\"", "--elastic-layer"}}) {
+        for (auto at = allowed.find(name); at != std::string::npos; at = allowed.find(name, at))
+          allowed.replace(at, name.size(), option);
+      }
       for (const auto& [field, option] : kOptions)
-        if (e.field() == field) throw InputError(option, e.value(), e.allowed());
+        if (e.field() == field) throw InputError(option, e.value(), allowed);
       throw;
     }
-    const lubrication::BearingCalcResult r = lubrication::RunBearingCalculator(in);
     // A centred journal (--eps 0) carries no load: no direction to measure the attitude from,
     // and S and (R/c) f, both per unit load, are unbounded. Its friction (Petroff's) and flows
     // are what it reports.

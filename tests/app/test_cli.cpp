@@ -586,7 +586,21 @@ class TestCli : public QObject {
               "--boundary-friction = 0.1: only with a roughness"},
              {{"bearing", "--eps", "0.5", "--E1", "100e9"},
               "--E1 = 100e9: only with a roughness (--sigma1, --sigma2: the asperity contact) or "
-              "--half-space"}}) {
+              "--half-space"},
+             // Checks of the film's own configuration name the options too (they named
+             // bearing.radial_clearance and bearing.mesh), and the mesh's limits are given.
+             {{"bearing", "--eps", "0.5", "--clearance", "0.03"},
+              "--clearance = 0.03: must be smaller than the radius"},
+             {{"bearing", "--eps", "0.5", "--half-space", "--mesh", "240x42"},
+              "--half-space = \"half_space\" on a film of 10320 nodes"},
+             {{"bearing", "--eps", "0.5", "--half-space", "--mesh", "240x42"},
+              "coarsen the mesh (--mesh) or choose --elastic-layer"},
+             {{"bearing", "--eps", "0.5", "--elastic-layer", "1e-3,5e9,0.3", "--half-space"},
+              "--half-space = given with --elastic-layer: one of --elastic-layer, --half-space or "
+              "--compliance at a time"},
+             {{"bearing", "--eps", "0.5", "--mesh", "20001x2"},
+              "--mesh = 20001x2: must be NthetaxNz with integers, e.g. 240x40 (8 <= Ntheta <= "
+              "20000, 2 <= Nz <= 5000)"}}) {
       const Result result = Run(argv);
       QCOMPARE(result.exit_code, 2);
       QVERIFY2(result.err.contains(needle) && !result.err.contains("bearing."),
