@@ -17,8 +17,13 @@ Command MakeValidateCommand() {
   for (const std::string& name : verification::SuiteNames()) {
     suites += (suites.empty() ? "" : ", ") + name;
   }
-  command.options = {{"suite", "NAME", "only this suite (" + suites + ")", true},
-                     {"json", "", "print the rows as one JSON array"}};
+  std::string groups;
+  for (const std::string& name : verification::GroupNames()) {
+    groups += (groups.empty() ? "" : ", ") + name;
+  }
+  command.options = {
+      {"suite", "NAME", "only this suite (" + suites + ") or group of rows (" + groups + ")", true},
+      {"json", "", "print the rows as one JSON array"}};
   command.details =
       "Exit status 0 when every row is within its tolerance, 1 otherwise. 'computed' is FilmDyn's\n"
       "value, 'reference' the published value or closed form it is compared with (in --json:\n"

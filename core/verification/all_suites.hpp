@@ -13,7 +13,12 @@ namespace filmdyn::verification {
 /// Names of the suites, in the order they run.
 std::vector<std::string> SuiteNames();
 
-/// Runs the named suites (all when `suites` is empty). Throws InputError naming an unknown suite.
+/// Names of the groups of rows inside a suite that --suite also takes: each is the suite column
+/// of its rows (e.g. "bearing", "jfo" of the lubrication suite).
+std::vector<std::string> GroupNames();
+
+/// Runs the named suites or groups (all when `suites` is empty). Throws InputError naming an
+/// unknown name.
 std::vector<ValidationRow> RunSuites(const std::vector<std::string>& suites);
 
 }  // namespace filmdyn::verification
