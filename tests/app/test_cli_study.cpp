@@ -117,6 +117,10 @@ class TestCliStudy : public QObject {
              qPrintable(dry.out));
     QCOMPARE(dry.out.count('\n'), 5);
     QVERIFY(!QDir(out).exists());
+    // Without fields an estimate; with them an upper bound, said so.
+    QVERIFY2(dry.err.contains("4 points (full-factorial design), about ") &&
+                 dry.err.contains(" MB on disk; nothing run"),
+             qPrintable(dry.err));
 
     const Result first =
         Run({"study", file, "--out", out, "--jobs", "2", "--rank-by", "mean_bearing_fpl[W]"});
