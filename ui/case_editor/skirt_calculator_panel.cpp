@@ -258,7 +258,13 @@ void SkirtCalculatorPanel::updateModeInputs() {
   }
 }
 
-void SkirtCalculatorPanel::schedule() { debounce_->start(); }
+void SkirtCalculatorPanel::schedule() {
+  // The results shown belong to the inputs before: greyed until new ones replace them (they
+  // stay greyed when the new inputs give no result).
+  table_->setEnabled(false);
+  map_->setEnabled(false);
+  debounce_->start();
+}
 
 void SkirtCalculatorPanel::start() {
   if (watcher_.isRunning()) {  // the running one is outdated: stop it, start again after
@@ -273,6 +279,8 @@ void SkirtCalculatorPanel::start() {
   for (const InputSpec& spec : InputSpecs())
     si[spec.key] = inputs_.at(spec.key)->value() * spec.scale;
   status_->setText(tr("Computing…"));
+  table_->setEnabled(false);  // as schedule() does (start() also runs without it)
+  map_->setEnabled(false);
   watcher_.setFuture(QtConcurrent::run(Calculate, document_->engineCase(),
                                        document_->caseDirectory(),
                                        Mode(mode_->currentData().toInt()), si, cancel_));
@@ -315,6 +323,8 @@ void SkirtCalculatorPanel::finished() {
     }
     last_ = std::move(result);
     showMap();
+    table_->setEnabled(true);
+    map_->setEnabled(true);
   } else {
     last_ = std::move(result);
   }

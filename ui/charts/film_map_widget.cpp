@@ -206,10 +206,12 @@ void FilmMapWidget::paintEvent(QPaintEvent*) {
   }
   painter.save();
   painter.translate(width() - line / 2.0 - 2, bar.center().y());
-  painter.rotate(90);
+  painter.rotate(-90);  // read bottom-up, as the y axis's title
   painter.drawText(QRectF(-bar.height() / 2.0, -line / 2.0, bar.height(), line), Qt::AlignCenter,
                    d.value_title);
   painter.restore();
+  // Disabled: a map of inputs no longer shown (its owner computes a new one, or could not), faded.
+  if (!isEnabled()) painter.fillRect(rect(), QColor(255, 255, 255, 150));
 }
 
 }  // namespace filmdyn::ui

@@ -460,9 +460,14 @@ void RunTable::updateRun(const RunHandle& run) {
   const auto stats = run->statistics();
   const RunProgress progress = run->progress();
   item(row, kStatus)->setText(RunStatusText(run->status()));
+  // A run whose folder could not be read back has no cycle count or wall time to show (not 0).
+  const bool unknown = !run->restoreError().isEmpty();
   item(row, kCycles)
-      ->setText(QString::number(stats.count("cycles") ? int(stats.at("cycles")) : progress.cycle));
-  item(row, kWall)->setText(QString::number(run->elapsedSeconds(), 'f', 2));
+      ->setText(unknown ? QString("–")
+                        : QString::number(stats.count("cycles") ? int(stats.at("cycles"))
+                                                                : progress.cycle));
+  item(row, kWall)
+      ->setText(unknown ? QString("–") : QString::number(run->elapsedSeconds(), 'f', 2));
   item(row, kLateral)->setText(Number(f.max_abs_lateral, 1e6));
   item(row, kTilt)->setText(Number(f.max_abs_tilt, 1e3, 3));
   item(row, kSkirtMoft)->setText(Number(f.min_skirt_moft, 1e6));

@@ -110,6 +110,9 @@ class TestSkirtCalculatorPanel : public QObject {
     QVERIFY2(panel->statusLabel()->text().startsWith("Side force = 5e+06 N: beyond what the skirt "
                                                      "carries at Speed = -9 m/s"),
              qPrintable(panel->statusLabel()->text()));
+    // The results still shown are the state before: greyed, table and map, until inputs give
+    // a result again.
+    QVERIFY(!panel->resultTable()->isEnabled() && !panel->filmMap()->isEnabled());
 
     // A state into the liner.
     panel->modeSelector()->setCurrentIndex(0);
@@ -130,11 +133,13 @@ class TestSkirtCalculatorPanel : public QObject {
     Type(panel, "tilt", "0");
     Type(panel, "speed", "10");
     WaitForResult(panel);
+    QVERIFY(panel->resultTable()->isEnabled() && panel->filmMap()->isEnabled());
     const double before = Shown(panel, "normal_force");
     engine::EngineCase doubled = window.document()->engineCase();
     doubled.lubricant.viscosity *= 2.0;
     window.document()->edit(doubled, "double the viscosity");
     QTRY_VERIFY_WITH_TIMEOUT(panel->busy(), 2000);
+    QVERIFY(!panel->resultTable()->isEnabled());  // the old case's results, while computing
     WaitForResult(panel);
     QVERIFY2(std::abs(Shown(panel, "normal_force") / before - 2.0) < 1e-6,
              qPrintable(QString("%1 vs %2").arg(Shown(panel, "normal_force")).arg(before)));

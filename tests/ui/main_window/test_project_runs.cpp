@@ -324,6 +324,8 @@ class TestProjectRuns : public QObject {
       const RunHandle broken = d->runs()[0];
       QVERIFY(broken->restoreError().contains("summary.json"));
       QCOMPARE(d->item(0, RunTable::kStatus)->text(), QString("not restored"));
+      QCOMPARE(d->item(0, RunTable::kCycles)->text(), QString("–"));  // unknown, not 0
+      QCOMPARE(d->item(0, RunTable::kWall)->text(), QString("–"));
       QVERIFY(d->item(0, RunTable::kReason)->text().contains("summary.json"));
       QVERIFY(damaged.statusBar()->currentMessage().contains("summary.json"));
       QVERIFY(d->runs()[1]->restoreError().isEmpty());
