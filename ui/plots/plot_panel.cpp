@@ -639,8 +639,9 @@ std::vector<std::pair<QString, QPen>> PlotPanel::legendEntries(int index) const 
     }
     return out;
   }
-  // Several runs: kinds by line style (in grey), runs by colour.
-  if (kinds.size() > 1) {
+  // Several runs: kinds by line style (in grey), runs by colour. A plot of several kinds names
+  // the kinds with data even when only one has any (its line style says which it is).
+  if (entry.spec->curves.size() > 1) {
     for (size_t k : kinds) {
       out.emplace_back(entry.spec->curves[k].name,
                        QPen(QColor(70, 70, 70), kLineWidth, kStyles[k % 4]));

@@ -177,6 +177,15 @@ class TestPlotPanel : public QObject {
     QVERIFY(panel.legendEntries(lateral).empty());  // one kind: the shared legend says it all
     panel.setRunVisible(ideal_.id, false);
     QVERIFY(!panel.runLegendText().contains(ideal_.label));
+    // Several runs whose data is of one kind only (an Only-LBRBE run beside an ideal one): that
+    // kind is still named, so the dashed line reads as the big end's (it was unlabelled).
+    panel.setRunVisible(coupled_.id, false);
+    panel.setRunVisible(ideal_.id, true);
+    panel.updateRun(RealRun(3, engine::Model::kOnlyLbrbe, 6000));
+    entries = panel.legendEntries(moft);
+    QCOMPARE(int(entries.size()), 1);
+    QCOMPARE(entries[0].first, QString("big end"));
+    QCOMPARE(entries[0].second.style(), Qt::DashLine);
   }
 
   // A label keeps off the diagram's curves where a place clear of them is near: a curve across
