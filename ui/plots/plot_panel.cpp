@@ -924,6 +924,37 @@ std::vector<PlotPanel::ReadoutEntry> PlotPanel::readoutEntries(int index) const 
   return out;
 }
 
+std::vector<PlotPanel::ReadoutEntry> PlotPanel::compactReadoutEntries(int index) const {
+  const ChartEntry& entry = charts_[size_t(index)];
+  std::vector<ReadoutEntry> out;
+  const double angle = shownAngle();
+  if (!std::isfinite(angle) || !entry.spec->crank_angle_axis || singleRunMode()) return out;
+  const std::vector<size_t> kinds = kindsWithData(entry);
+  const std::vector<int> runs = visibleRunsWithData(entry);
+  if (kinds.size() < 2 || runs.empty()) return out;
+  out.push_back({QPen(Qt::NoPen), QString(), tr("%1 °CA").arg(QString::number(angle, 'f', 1))});
+  // Thin spaces around the slashes: the column is narrow.
+  const QString slash = QString(QChar(0x2009)) + "/" + QChar(0x2009);
+  QStringList names;
+  for (size_t k : kinds) names << entry.spec->curves[k].name;
+  out.push_back(
+      {QPen(Qt::NoPen), QString(),
+       names.join(slash) +
+           (entry.spec->y_unit.isEmpty() ? QString() : QString(" [%1]").arg(entry.spec->y_unit))});
+  for (int id : runs) {
+    const auto points = entry.run_points.value(id);
+    QStringList values;
+    for (size_t k : kinds) {
+      values << (k < points.size() && !points[k].xy.isEmpty()
+                     ? FormatReadout(ValueAtAngle(points[k], angle), QString())
+                     : QString("–"));
+    }
+    out.push_back({QPen(runs_.value(id).colour, 2.4, Qt::SolidLine), runs_.value(id).label,
+                   values.join(slash)});
+  }
+  return out;
+}
+
 QStringList PlotPanel::readoutLines(int index) const {
   QStringList lines;
   for (const ReadoutEntry& e : readoutEntries(index)) {
@@ -1145,15 +1176,20 @@ void PlotPanel::paintOverlay(const ChartEntry& entry, QPainter* painter) const {
   }
   // The cursor readout in the column beside the plot, under the legend: each value after a
   // sample of its series' line (colour = run, style = kind; the legends say which is which).
-  const std::vector<ReadoutEntry> readout =
+  std::vector<ReadoutEntry> readout =
       std::isfinite(angle) ? readoutEntries(index) : std::vector<ReadoutEntry>{};
   if (!readout.empty()) {
     const double left = area.right() + kLegendGap;
     double top = legend_bottom + (legend_bottom > area.top() ? 6 : 0);
     // As many lines as fit above the plot area's bottom (many runs overlaid ran past the card
-    // and over the axis); the rest summed up in a last line.
+    // and over the axis); too many: a line per run, and what still does not fit summed up in a
+    // last line.
     const std::size_t fit = static_cast<std::size_t>(
         std::max(1.0, std::floor((area.bottom() - top - 6) / metrics.lineSpacing())));
+    if (readout.size() > fit) {
+      std::vector<ReadoutEntry> compact = compactReadoutEntries(index);
+      if (!compact.empty() && compact.size() < readout.size()) readout = std::move(compact);
+    }
     const std::size_t shown = readout.size() <= fit ? readout.size() : fit - 1;
     const std::size_t lines = shown < readout.size() ? shown + 1 : shown;
     const double h = metrics.lineSpacing() * double(lines) + 6;
@@ -1182,7 +1218,10 @@ void PlotPanel::paintOverlay(const ChartEntry& entry, QPainter* painter) const {
       f.setBold(readout[i].pen.style() == Qt::NoPen);
       painter->setFont(f);
       painter->setPen(Qt::black);
-      painter->drawText(QPointF(x, baseline), readout[i].value);
+      // Within the box: a line longer than the column (the compact readout's kinds) elided.
+      painter->drawText(QPointF(x, baseline),
+                        QFontMetricsF(f).elidedText(readout[i].value, Qt::ElideRight,
+                                                    std::max(10.0, box.right() - 2 - x)));
       painter->setFont(font);
     }
   }

@@ -86,6 +86,11 @@ class PlotPanel : public QWidget {
     QString value;
   };
   std::vector<ReadoutEntry> readoutEntries(int index) const;
+  /// The same readout with one line per run — its series' values in the order of the plot's
+  /// kinds, named with the unit in a line of their own ("F_x / F_y / gas [kN]") — for a readout of
+  /// several runs and kinds too long for its column (the lines past it were left out, the newest
+  /// run's first). Empty for a plot of one kind or one run.
+  std::vector<ReadoutEntry> compactReadoutEntries(int index) const;
   /// The same as text lines ("who: value"; the first line the crank angle; empty when none).
   QStringList readoutLines(int index) const;
   /// The colour a run's series are drawn in when several runs are shown.

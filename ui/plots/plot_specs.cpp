@@ -148,12 +148,11 @@ std::vector<PlotSpec> Make() {
                                 VsAngle("friction", Column::kSkirtFrictionForce, 1.0)}));
   // The crank pin's force on the rod in the global frame (the load diagram beside it shows the
   // same force in the rod's frame: its curves are named for that frame).
-  plots.push_back(VsCrankAngle("bigend_forces",
-                               QObject::tr("Big-end force (global frame) and gas force"),
-                               QObject::tr("force [kN]"), "kN",
-                               {VsAngle("F_x global", Column::kBigEndForceX, 1e-3),
-                                VsAngle("F_y global", Column::kBigEndForceY, 1e-3),
-                                VsAngle("gas", Column::kGasForce, 1e-3)}));
+  plots.push_back(VsCrankAngle(
+      "bigend_forces", QObject::tr("Big-end force (global frame) and gas force"),
+      QObject::tr("force [kN]"), "kN",
+      {VsAngle("F_x", Column::kBigEndForceX, 1e-3), VsAngle("F_y", Column::kBigEndForceY, 1e-3),
+       VsAngle("gas", Column::kGasForce, 1e-3)}));
   plots.push_back(VsCrankAngle(
       "moft", QObject::tr("Minimum oil-film thickness"), QObject::tr("MOFT [µm]"), "µm",
       {VsAngle("skirt", Column::kSkirtMoft, 1e6), VsAngle("big end", Column::kBearingMoft, 1e6)},

@@ -329,6 +329,26 @@ class TestPlotPanel : public QObject {
     QCOMPARE(filmdyn::ui::FormatReadoutPair(-4.303, -45.36), QString("-4.30, -45.36"));
     QCOMPARE(filmdyn::ui::FormatReadoutPair(-0.001, 250.0), QString("0.0, 250.0"));
     QCOMPARE(filmdyn::ui::FormatReadoutPair(0.0, 0.0), QString("0, 0"));
+    // The compact readout (for a column too short for a line per run and kind): a line naming
+    // the kinds, then a line per run with its values in that order, the same numbers.
+    const int forces = panel.chartIndex("bigend_forces");
+    const auto full = panel.readoutEntries(forces);
+    const auto compact = panel.compactReadoutEntries(forces);
+    QCOMPARE(int(full.size()), 1 + 2 * 3);
+    QCOMPARE(int(compact.size()), 2 + 2);
+    QCOMPARE(compact[0].value, full[0].value);  // the crank angle
+    const QString slash = QString(QChar(0x2009)) + "/" + QChar(0x2009);
+    QCOMPARE(compact[1].value, QString("F_x%1F_y%1gas [kN]").arg(slash));
+    for (int run = 0; run < 2; ++run) {
+      QStringList values;
+      for (int k = 0; k < 3; ++k) {
+        QString v = full[size_t(1 + 3 * run + k)].value;
+        values << v.left(v.indexOf(QChar(0x202F)));
+      }
+      QCOMPARE(compact[size_t(2 + run)].value, values.join(slash));
+      QVERIFY(compact[size_t(2 + run)].pen.color() == full[size_t(1 + 3 * run)].pen.color());
+    }
+    QVERIFY(panel.compactReadoutEntries(panel.chartIndex("piston_lateral")).empty());  // one kind
     // Every crank-angle plot shows values at the same angle; the orbit shows its point there.
     for (int i = 0; i < panel.chartCount(); ++i) {
       QVERIFY2(!panel.readoutLines(i).isEmpty() || panel.chart(i)->title().contains("no data"),
