@@ -336,14 +336,8 @@ void SkirtCalculatorPanel::showMap() {
   FilmMapData d;
   d.x = last_->alpha_deg;
   d.y = last_->y_mm;
-  d.x_title = tr("Angle from the thrust side α [°]");
-  d.y_title = tr("Distance below the skirt top [mm]");
-  d.left = tr("◀ thrust side");
-  d.right = tr("anti-thrust side ▶");
-  d.top = tr("skirt top");
-  d.bottom = tr("toward the crank ▼");
+  SetSkirtMapLabels(&d);
   d.no_film_x = last_->relief_deg;
-  d.no_film_label = tr("pin-boss relief: no film");
   switch (map_quantity_->currentIndex()) {
     case 1:
       d.values = last_->film_um;

@@ -214,4 +214,14 @@ void FilmMapWidget::paintEvent(QPaintEvent*) {
   if (!isEnabled()) painter.fillRect(rect(), QColor(255, 255, 255, 150));
 }
 
+void SetSkirtMapLabels(FilmMapData* d) {
+  d->x_title = QObject::tr("Angle from the thrust side α [°]");
+  d->y_title = QObject::tr("Distance below the skirt top [mm]");
+  d->left = QObject::tr("◀ thrust side");
+  d->right = QObject::tr("anti-thrust side ▶");
+  d->top = QObject::tr("▲ skirt top");
+  d->bottom = QObject::tr("skirt bottom (crank side) ▼");
+  d->no_film_label = QObject::tr("pin-boss relief: no film");
+}
+
 }  // namespace filmdyn::ui

@@ -39,6 +39,10 @@ struct FilmMapData {
   QString points_label;
 };
 
+/// The unrolled skirt's axes and edge labels (thrust side left, the skirt top up, the relief
+/// named), one definition for the field view's and the skirt calculator's maps.
+void SetSkirtMapLabels(FilmMapData* d);
+
 class FilmMapWidget : public QWidget {
   Q_OBJECT
 

@@ -37,10 +37,7 @@ double Periodic(const std::vector<std::pair<double, double>>& samples, double an
 
 void SetLabels(const JointFieldFrames& joint, FilmMapData* d) {
   if (joint.name == "skirt") {
-    d->x_title = QObject::tr("Angle from the thrust side α [°]");
-    d->left = QObject::tr("◀ thrust side");
-    d->right = QObject::tr("anti-thrust side ▶");
-    d->no_film_label = QObject::tr("pin-boss relief: no film");
+    SetSkirtMapLabels(d);
   } else {
     d->x_title = QObject::tr("Angle in the rod frame (bearing-fixed) [°]");
     d->x_marks = {{90.0, QObject::tr("rod side")}, {270.0, QObject::tr("cap side")}};
@@ -115,12 +112,7 @@ FilmMapData UnrolledMap(const JointFieldFrames& joint, size_t frame, const Field
   const size_t nx = joint.angle_lines.size(), ny = joint.axial_lines.size();
   SetLabels(joint, &d);
   d.value_title = QString::fromUtf8(info.title);
-  d.y_title = joint.name == "skirt" ? QObject::tr("Distance below the skirt top [mm]")
-                                    : QObject::tr("Position across the width [mm]");
-  if (joint.name == "skirt") {
-    d.top = QObject::tr("skirt top");
-    d.bottom = QObject::tr("skirt bottom (crank side) ▼");
-  }
+  if (joint.name != "skirt") d.y_title = QObject::tr("Position across the width [mm]");
   for (double y : joint.axial_lines) d.y.push_back(y * 1e3);
 
   // Columns in body-frame order; a periodic joint closes at 0° and 360°.
@@ -198,11 +190,9 @@ FilmMapData CrankAngleMap(const FieldFrames& frames, size_t joint_index,
                            along, QString::fromUtf8(info.unit));
   d.y_title = QObject::tr("Crank angle [°CA]");
   d.y_ticks = {0, 90, 180, 270, 360, 450, 540, 630, 720};  // the strokes' dead centres
-  d.left = d.right = {};
-  if (joint.name == "skirt") {
-    d.left = QObject::tr("◀ thrust side");
-    d.right = QObject::tr("anti-thrust side ▶");
-  }
+  // The sides stay named (thrust, anti-thrust); the map's y is crank angle, not the skirt's
+  // length: no top or bottom edge labels.
+  d.top = d.bottom = {};
 
   // Rows: the frames in crank-angle order (a reported cycle may start anywhere in 0–720 °CA).
   const size_t count = std::min(frames.crank_angle_deg.size(), joint.frames.size());

@@ -410,6 +410,20 @@ class TestFieldView : public QObject {
     QVERIFY(big.x_title.contains("rod frame"));
     // The skirt's relief is named on the map.
     QCOMPARE(int(view.unrolledMap(0)->data().no_film_x.size()), 1);
+    // Its edges as the skirt calculator's map names them (one definition: they differed,
+    // "toward the crank ▼" against "skirt bottom (crank side) ▼"); the crank-angle map keeps
+    // the sides only (its y is crank angle).
+    filmdyn::ui::FilmMapData expected;
+    filmdyn::ui::SetSkirtMapLabels(&expected);
+    const filmdyn::ui::FilmMapData& skirt = view.unrolledMap(0)->data();
+    QCOMPARE(skirt.top, expected.top);
+    QCOMPARE(skirt.bottom, expected.bottom);
+    QCOMPARE(skirt.left, expected.left);
+    QCOMPARE(skirt.y_title, expected.y_title);
+    const filmdyn::ui::FilmMapData& crank = view.crankAngleMap(0)->data();
+    QCOMPARE(crank.left, expected.left);
+    QVERIFY(crank.top.isEmpty() && crank.bottom.isEmpty());
+    QCOMPARE(crank.y_title, QString("Crank angle [°CA]"));
   }
 
   void crankAngleMapRowsAreTheExtremesAlongTheAxis() {
