@@ -5,6 +5,11 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QImage>
+#include <QLabel>
+#include <QPixmap>
+#include <QRegularExpression>
+#include <QScreen>
+#include <QScrollArea>
 #include <QScrollBar>
 #include <QStyle>
 #include <QTextDocument>
@@ -52,7 +57,16 @@ QString IndexMarkdown() {
 QString MarkdownToHtml(const QString& markdown) {
   QTextDocument document;
   document.setMarkdown(markdown);
-  return document.toHtml();
+  // Every picture is a link to itself: a click shows it at full size (on the page it is fitted
+  // to the window, its text too small to read).
+  QString html = document.toHtml();
+  static const QRegularExpression kImage(R"re((<img src="([^"]+)"[^>]*>))re");
+  html.replace(kImage, R"re(<a href="\2">\1</a>)re");
+  return html;
+}
+
+bool IsPicture(const QString& path) {
+  return path.endsWith(".png", Qt::CaseInsensitive) || path.endsWith(".jpg", Qt::CaseInsensitive);
 }
 
 }  // namespace
@@ -90,6 +104,10 @@ QVariant HelpTextBrowser::loadResource(int type, const QUrl& name) {
 
 void HelpTextBrowser::doSetSource(const QUrl& name, QTextDocument::ResourceType type) {
   const QString path = ResourcePath(name);
+  if (IsPicture(path) && QFile::exists(path)) {  // a picture clicked: full size, the page stays
+    showPicture(path);
+    return;
+  }
   const bool bundled =
       path.isEmpty() || QFile::exists(path) || PageOf(name) == HelpBrowser::kIndexPage;
   if (bundled) {
@@ -104,6 +122,26 @@ void HelpTextBrowser::doSetSource(const QUrl& name, QTextDocument::ResourceType 
                  "that comes with FilmDyn (it is part of the source code or its folders).\n\n"
                  "[All documentation](index.md)")
                   .arg(PageOf(name)));
+}
+
+QWidget* HelpTextBrowser::showPicture(const QString& path) {
+  if (!picture_window_) {
+    picture_window_ = new QScrollArea(this);
+    picture_window_->setWindowFlag(Qt::Window);
+    picture_window_->setObjectName("help_picture");
+    picture_window_->setWidget(new QLabel(picture_window_));
+  }
+  auto* label = static_cast<QLabel*>(picture_window_->widget());
+  const QPixmap pixmap(path);
+  label->setPixmap(pixmap);
+  label->resize(pixmap.size());
+  picture_window_->setWindowTitle(QFileInfo(path).fileName());
+  // The picture's size, within the screen.
+  const QSize room = screen() ? screen()->availableSize() * 0.95 : pixmap.size();
+  picture_window_->resize(pixmap.size().boundedTo(room) + QSize(4, 4));
+  picture_window_->show();
+  picture_window_->raise();
+  return picture_window_;
 }
 
 HelpBrowser::HelpBrowser(QWidget* parent) : QWidget(parent, Qt::Window) {

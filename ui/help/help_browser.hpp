@@ -3,6 +3,7 @@
 /// resources under :/docs, so they work offline and match the program) shown in a window with a
 /// QTextBrowser — relative links between pages, pictures from docs/screenshots, back and forward,
 /// and a generated list of every page ("All documentation").
+#include <QScrollArea>
 #include <QString>
 #include <QStringList>
 #include <QTextBrowser>
@@ -22,9 +23,15 @@ class HelpTextBrowser : public QTextBrowser {
  public:
   explicit HelpTextBrowser(QWidget* parent = nullptr);
   QVariant loadResource(int type, const QUrl& name) override;
+  /// Shows a bundled picture (":/docs/screenshots/…png") at full size in a window of its own
+  /// (one, reused); what a click on a page's picture does. Returns that window.
+  QWidget* showPicture(const QString& resource_path);
 
  protected:
   void doSetSource(const QUrl& name, QTextDocument::ResourceType type) override;
+
+ private:
+  QScrollArea* picture_window_ = nullptr;
 };
 
 class HelpBrowser : public QWidget {

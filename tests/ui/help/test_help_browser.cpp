@@ -4,8 +4,10 @@
 // every page, and a link outside the documentation says so instead of showing nothing.
 #include <QAction>
 #include <QImage>
+#include <QLabel>
 #include <QMenu>
 #include <QMenuBar>
+#include <QScrollArea>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QTextBlock>
@@ -135,6 +137,21 @@ class TestHelpBrowser : public QObject {
     QVERIFY(!image.isNull());
     QVERIFY2(image.width() <= browser->viewport()->width(),
              qPrintable(QString::number(image.width())));
+
+    // A picture is a link to itself: a click (QTextBrowser resolves the link and sets it as the
+    // source) shows it at full size in a window of its own, and the page stays.
+    help.showPage("gui.md");
+    const int picture_link =
+        LinkPosition(browser->document(), "screenshots/run_table_identity.png");
+    QVERIFY2(picture_link >= 0, "gui.md's embedded screenshot links to itself");
+    browser->setSource(browser->source().resolved(QUrl("screenshots/run_table_identity.png")));
+    QCOMPARE(help.currentPage(), QString("gui.md"));
+    auto* full_size = help.findChild<QScrollArea*>("help_picture");
+    QVERIFY(full_size != nullptr && full_size->isVisible());
+    const auto* label = qobject_cast<QLabel*>(full_size->widget());
+    QVERIFY(label != nullptr);
+    QCOMPARE(label->pixmap().size(), QImage(":/docs/screenshots/run_table_identity.png").size());
+    full_size->close();
 
     // The list of all pages links every bundled page, subfolders included.
     const QStringList pages = HelpBrowser::pages();
