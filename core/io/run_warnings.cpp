@@ -286,15 +286,31 @@ void SyntheticPressureWarning(const engine::RunConfig& config, std::vector<RunWa
     const double phi = k * std::numbers::pi / 180.0;
     if (std::abs(config.pressure.Pressure(phi) - synthetic.Pressure(phi)) > 1e-9 * peak) return;
   }
+  // Between the speeds of the synthetic curves the run's curve is blended from the two beside
+  // it (PressureCurveForSpeed): said so, not "the curve at 1500 rpm".
+  double below = -1.0, above = -1.0;
+  bool at_a_curve = false;
+  for (const engine::PressureCurveSource& source : reference->value.pressure_curves) {
+    if (std::abs(source.rpm - config.rpm) <= 1e-9 * config.rpm) at_a_curve = true;
+    if (source.rpm < config.rpm && source.rpm > below) below = source.rpm;
+    if (source.rpm > config.rpm && (above < 0.0 || source.rpm < above)) above = source.rpm;
+  }
+  const std::string which =
+      at_a_curve || below < 0.0 || above < 0.0
+          ? fmt::format("the synthetic single-zone curve at {:g} rpm", config.rpm)
+          : fmt::format(
+                "blended linearly for {:g} rpm from the synthetic single-zone curves at {:g} and "
+                "{:g} rpm",
+                config.rpm, below, above);
   RunWarning w;
   w.code = "synthetic_pressure";
   w.value = config.pressure.PeakPressure();
   w.crank_angle_deg = config.pressure.PeakAngle() * kDeg;
   w.message = fmt::format(
-      "the cylinder pressure is the synthetic single-zone curve at {:g} rpm (peak {:.2f} MPa, "
-      "{:.1f} bar, at {:.0f} °CA), not a measured one (docs/pressure-model.md); give a measured "
-      "curve with --pressure-curve or the case's pressure_curves",
-      config.rpm, w.value * 1e-6, w.value * 1e-5, *w.crank_angle_deg);
+      "the cylinder pressure is {} (peak {:.2f} MPa, {:.1f} bar, at {:.0f} °CA), not a measured "
+      "one (docs/pressure-model.md); give a measured curve with --pressure-curve or the case's "
+      "pressure_curves",
+      which, w.value * 1e-6, w.value * 1e-5, *w.crank_angle_deg);
   out->push_back(std::move(w));
 }
 

@@ -357,6 +357,25 @@ class TestRunWarnings : public QObject {
              io::WarningShortText(*w).c_str());
   }
 
+  // The synthetic curve's warning says which curve the run has: at a curve's speed that curve,
+  // between two speeds the blend of the two (it said "the curve at 1500 rpm", which is none).
+  void theSyntheticCurveIsNamedAsUsed() {
+    const engine::RunResult none;
+    auto message = [&](double rpm) -> QString {
+      for (const io::RunWarning& w :
+           io::RunWarnings(Config(CoarseCase(), engine::Model::kOnlyLbrbe, rpm), none))
+        if (w.code == "synthetic_pressure") return QString::fromStdString(w.message);
+      return {};
+    };
+    QVERIFY2(message(6000).startsWith("the cylinder pressure is the synthetic single-zone curve at "
+                                      "6000 rpm (peak "),
+             qPrintable(message(6000)));
+    QVERIFY2(message(1500).startsWith("the cylinder pressure is blended linearly for 1500 rpm "
+                                      "from the synthetic single-zone curves at 1000 and 2000 "
+                                      "rpm (peak "),
+             qPrintable(message(1500)));
+  }
+
   void halfSpaceBigEndWarns() {
     // Judged from the case: a big end on elastic half-spaces, which engine runs outgrow; not the
     // skirt's half-spaces, nor the big end's elastic layer.
