@@ -7,6 +7,7 @@
 #include <limits>
 #include <numbers>
 #include <tuple>
+#include <utility>
 
 #include "core/base/input_error.hpp"
 #include "core/engine/case_schema.hpp"
@@ -475,20 +476,30 @@ void SupplyHoleMeshWarning(const engine::EngineCase& c, std::vector<RunWarning>*
   out->push_back(std::move(w));
 }
 
+// The largest value of a big-end quantity over the samples that have the film, and the sample
+// it is at; (-1, 0) when none has it.
+template <typename Value>
+std::pair<double, std::size_t> BigEndLargest(const std::vector<engine::CrankTrainSample>& samples,
+                                             Value value) {
+  double largest = -1.0;
+  std::size_t at = 0;
+  for (std::size_t k = 0; k < samples.size(); ++k) {
+    if (samples[k].bearing.present && value(samples[k]) > largest) {
+      largest = value(samples[k]);
+      at = k;
+    }
+  }
+  return {largest, at};
+}
+
 // A rigid big end whose film pressure peaks above what engine bearings see
 // (kRigidBigEndPeakPressure): a thin film between rigid surfaces carries its load on a narrow
 // zone; the elastic shell's spreading of it is what the rigid model leaves out (at low speed and
 // thin oil the default case reached 350–700 MPa without a word).
 void RigidBigEndPressureWarning(const std::vector<engine::CrankTrainSample>& samples,
                                 std::vector<RunWarning>* out) {
-  double peak = -1.0;
-  std::size_t at = 0;
-  for (std::size_t k = 0; k < samples.size(); ++k) {
-    if (samples[k].bearing.present && samples[k].bearing.max_pressure > peak) {
-      peak = samples[k].bearing.max_pressure;
-      at = k;
-    }
-  }
+  const auto [peak, at] = BigEndLargest(
+      samples, [](const engine::CrankTrainSample& s) { return s.bearing.max_pressure; });
   if (!(peak > kRigidBigEndPeakPressure)) return;
   RunWarning w;
   w.code = "rigid_big_end_pressure";
@@ -560,14 +571,8 @@ std::vector<RunWarning> RunWarnings(const engine::RunConfig& config,
     FilmRatioWarning(samples, false,
                      std::hypot(c.big_end.roughness_journal, c.big_end.roughness_bearing),
                      whole_cycle, &out);
-    double eps = -1.0;
-    std::size_t at = 0;
-    for (std::size_t k = 0; k < samples.size(); ++k) {
-      if (samples[k].bearing.present && samples[k].bearing.eps > eps) {
-        eps = samples[k].bearing.eps;
-        at = k;
-      }
-    }
+    const auto [eps, at] =
+        BigEndLargest(samples, [](const engine::CrankTrainSample& s) { return s.bearing.eps; });
     if (eps > kHighEccentricity) {
       RunWarning w;
       w.code = "high_eccentricity";
