@@ -45,7 +45,8 @@ QString IndexMarkdown() {
     const QString dir = QFileInfo(page).path();
     if (dir != "." && dir != folder) {
       folder = dir;
-      text += "\n## " + dir.left(1).toUpper() + dir.mid(1) + "\n\n";
+      // "Validation pages": not a second "Validation" under the page of that name.
+      text += "\n## " + QObject::tr("%1 pages").arg(dir.left(1).toUpper() + dir.mid(1)) + "\n\n";
     }
     text += "- [" + HelpBrowser::pageTitle(page) + "](" + page + ")\n";
   }

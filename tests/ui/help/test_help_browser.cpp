@@ -163,6 +163,8 @@ class TestHelpBrowser : public QObject {
       QVERIFY2(LinkPosition(browser->document(), page) >= 0, qPrintable(page));
     }
     QCOMPARE(HelpBrowser::pageTitle("conventions.md"), QString("Conventions"));
+    // A subfolder's heading is not read as a second page of its name ("Validation").
+    QVERIFY(browser->toPlainText().contains("Validation pages"));
     SaveScreenshot(&help, "help_all_documentation");
 
     // A link into the source tree is not a page of the documentation: the window says so.
