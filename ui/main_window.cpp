@@ -8,12 +8,14 @@
 #include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QHeaderView>
 #include <QInputDialog>
 #include <QLabel>
 #include <QLocale>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QProgressBar>
+#include <QScrollBar>
 #include <QSettings>
 #include <QSplitter>
 #include <QStandardPaths>
@@ -151,6 +153,12 @@ void MainWindow::createRunPage() {
   run_splitter_->addWidget(run_table_);
   run_splitter_->setStretchFactor(0, 4);
   run_splitter_->setStretchFactor(1, 1);
+  // The table holds its header, four runs whole and its scroll bar (at a 1000 px window it showed
+  // three and a half, the first cut); the splitter can still fold it away.
+  run_table_->setMinimumHeight(run_table_->horizontalHeader()->sizeHint().height() +
+                               4 * run_table_->verticalHeader()->defaultSectionSize() +
+                               run_table_->horizontalScrollBar()->sizeHint().height() +
+                               2 * run_table_->frameWidth() + 2);
   layout->addWidget(run_splitter_);
   connect(run_table_, &RunTable::visibilityToggled, plot_panel_, &PlotPanel::setRunVisible);
   // One label per run (RunRecord::label) in the table, every legend and the field view.
