@@ -1,5 +1,7 @@
 #include "ui/charts/round_ticks.hpp"
 
+#include <QStringList>
+
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -62,18 +64,30 @@ std::pair<double, double> RoundedRange(double lo, double hi, int target) {
   return {std::floor(lo / step + 1e-9) * step, std::ceil(hi / step - 1e-9) * step};
 }
 
-QString FormatReadoutPair(double x, double y, const QString& unit) {
-  const double larger = std::max(std::abs(x), std::abs(y));
-  if (!std::isfinite(x) || !std::isfinite(y) || !(larger > 0.0) || larger >= 1e6 ||
-      larger < 1e-4)  // "–", zeros and magnitudes better read in 'g' form: each as it is
-    return FormatReadout(x) + ", " + FormatReadout(y, unit);
+QString FormatReadoutValues(const std::vector<double>& values, const QString& separator) {
+  double larger = 0.0;
+  bool finite = true;
+  for (double v : values) {
+    finite = finite && std::isfinite(v);
+    if (std::isfinite(v)) larger = std::max(larger, std::abs(v));
+  }
+  QStringList texts;
+  if (!finite || !(larger > 0.0) || larger >= 1e6 || larger < 1e-4) {
+    // "–", zeros and magnitudes better read in 'g' form: each as it is.
+    for (double v : values) texts << FormatReadout(v);
+    return texts.join(separator);
+  }
   const int decimals = std::clamp(3 - int(std::floor(std::log10(larger))), 0, 6);
-  auto text = [decimals](double v) {
+  const QString zero = QString::number(0.0, 'f', decimals);
+  for (double v : values) {
     const QString t = QString::number(v, 'f', decimals);
-    const QString zero = QString::number(0.0, 'f', decimals);
-    return t == "-" + zero ? zero : t;  // a value that rounds to zero reads without a sign
-  };
-  const QString pair = text(x) + ", " + text(y);
+    texts << (t == "-" + zero ? zero : t);  // a value that rounds to zero reads without a sign
+  }
+  return texts.join(separator);
+}
+
+QString FormatReadoutPair(double x, double y, const QString& unit) {
+  const QString pair = FormatReadoutValues({x, y}, ", ");
   return unit.isEmpty() ? pair : pair + QChar(0x202F) + unit;
 }
 

@@ -36,5 +36,10 @@ QString FormatReadout(double value, const QString& unit = {});
 /// A point of two values in one unit ("0.02, -11.22 kN", not "0.02296, -11.22 kN"): both with
 /// the decimals that give the larger magnitude about 4 significant digits, then the unit.
 QString FormatReadoutPair(double x, double y, const QString& unit = {});
+/// Values in one unit the same way, joined by `separator` ("-0.04 / -11.22 / 22.17"), no unit:
+/// FormatReadoutPair is this for two values and ", " (then its unit). A value that is not finite
+/// reads "–"; zeros alone, or magnitudes of 1e6 and more or below 1e-4, each in FormatReadout's
+/// form.
+QString FormatReadoutValues(const std::vector<double>& values, const QString& separator);
 
 }  // namespace filmdyn::ui

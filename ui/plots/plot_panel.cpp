@@ -943,14 +943,15 @@ std::vector<PlotPanel::ReadoutEntry> PlotPanel::compactReadoutEntries(int index)
            (entry.spec->y_unit.isEmpty() ? QString() : QString(" [%1]").arg(entry.spec->y_unit))});
   for (int id : runs) {
     const auto points = entry.run_points.value(id);
-    QStringList values;
+    std::vector<double> values;
     for (size_t k : kinds) {
-      values << (k < points.size() && !points[k].xy.isEmpty()
-                     ? FormatReadout(ValueAtAngle(points[k], angle), QString())
-                     : QString("–"));
+      values.push_back(k < points.size() && !points[k].xy.isEmpty()
+                           ? ValueAtAngle(points[k], angle)
+                           : std::numeric_limits<double>::quiet_NaN());
     }
+    // One run's values in one unit with common decimals ("-0.04 / -11.22 / 22.17").
     out.push_back({QPen(runs_.value(id).colour, 2.4, Qt::SolidLine), runs_.value(id).label,
-                   values.join(slash)});
+                   FormatReadoutValues(values, slash)});
   }
   return out;
 }

@@ -340,14 +340,25 @@ class TestPlotPanel : public QObject {
     const QString slash = QString(QChar(0x2009)) + "/" + QChar(0x2009);
     QCOMPARE(compact[1].value, QString("F_x%1F_y%1gas [kN]").arg(slash));
     for (int run = 0; run < 2; ++run) {
-      QStringList values;
+      // The same values (each line's with common decimals: within half its last digit of the
+      // full readout's four significant digits).
+      const QStringList shown = compact[size_t(2 + run)].value.split(slash);
+      QCOMPARE(shown.size(), 3);
+      const int decimals =
+          shown[0].contains('.') ? int(shown[0].size() - shown[0].indexOf('.') - 1) : 0;
       for (int k = 0; k < 3; ++k) {
         QString v = full[size_t(1 + 3 * run + k)].value;
-        values << v.left(v.indexOf(QChar(0x202F)));
+        const double reference = v.left(v.indexOf(QChar(0x202F))).toDouble();
+        QVERIFY2(std::abs(shown[k].toDouble() - reference) <=
+                     0.5 * std::pow(10.0, -decimals) + 5e-4 * std::abs(reference) + 1e-12,
+                 qPrintable(shown[k] + " vs " + v));
       }
-      QCOMPARE(compact[size_t(2 + run)].value, values.join(slash));
       QVERIFY(compact[size_t(2 + run)].pen.color() == full[size_t(1 + 3 * run)].pen.color());
     }
+    // Common decimals: the -0.03768, -11.22, 0.0293 kN of one run read as below.
+    QCOMPARE(filmdyn::ui::FormatReadoutValues({-0.03768, -11.22, 0.0293}, " / "),
+             QString("-0.04 / -11.22 / 0.03"));
+    QCOMPARE(filmdyn::ui::FormatReadoutValues({std::nan(""), 2.5}, ", "), QString("–, 2.5"));
     QVERIFY(panel.compactReadoutEntries(panel.chartIndex("piston_lateral")).empty());  // one kind
     // Every crank-angle plot shows values at the same angle; the orbit shows its point there.
     for (int i = 0; i < panel.chartCount(); ++i) {
