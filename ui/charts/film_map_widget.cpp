@@ -128,8 +128,37 @@ void FilmMapWidget::paintEvent(QPaintEvent*) {
     for (const auto& [x, y] : d.points) painter.drawEllipse(QPointF(px(x), py(y)), 2.0, 2.0);
     painter.setClipping(false);
     if (!d.points_label.isEmpty()) {
+      // The legend in the corner where it hides least: the fewest points, then the most uniform
+      // map under it (it sat on the bright band at the end of the cycle, over the load's dots).
       const int w = fm.horizontalAdvance(d.points_label) + 20;
-      const QRectF box(plot.right() - w - 4, plot.bottom() - line - 4, w, line);
+      const QRectF corners[] = {
+          {plot.right() - w - 4.0, plot.bottom() - line - 4.0, double(w), double(line)},
+          {plot.left() + 4.0, plot.bottom() - line - 4.0, double(w), double(line)},
+          {plot.right() - w - 4.0, plot.top() + 4.0, double(w), double(line)},
+          {plot.left() + 4.0, plot.top() + 4.0, double(w), double(line)}};
+      auto hidden = [&](const QRectF& r) {
+        int dots = 0;
+        for (const auto& [x, y] : d.points) dots += r.contains(QPointF(px(x), py(y))) ? 1 : 0;
+        double lo = HUGE_VAL, hi = -HUGE_VAL;
+        for (int i = 0; i <= 6; ++i) {
+          for (int j = 0; j <= 2; ++j) {
+            const double x =
+                x0 + (r.left() + r.width() * i / 6.0 - plot.left()) / plot.width() * (x1 - x0);
+            const double y =
+                y0 + (r.top() + r.height() * j / 2.0 - plot.top()) / plot.height() * (y1 - y0);
+            const double v = ValueAt(x, y);
+            if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
+          }
+        }
+        const double spread = hi >= lo ? (hi - lo) / std::max(1e-300, scale_hi_ - scale_lo_) : 0.0;
+        return dots + spread;  // a dot outweighs any spread (at most 1)
+      };
+      QRectF box = corners[0];
+      double least = hidden(box);
+      for (const QRectF& r : corners) {
+        if (const double h = hidden(r); h < least - 1e-9) least = h, box = r;
+      }
+      points_legend_ = box;
       painter.fillRect(box, QColor(255, 255, 255, 210));
       painter.drawEllipse(QPointF(box.left() + 8, box.center().y()), 2.5, 2.5);
       painter.setPen(Qt::black);

@@ -3,6 +3,7 @@
 /// a colour image (viridis, bilinear between the nodes) with round-numbered axes, a colour bar
 /// beside it and labels on its edges (which side is thrust, which end is the skirt top). Regions
 /// without film (the pin-boss relief) are drawn grey and named.
+#include <QRectF>
 #include <QString>
 #include <QWidget>
 #include <cmath>
@@ -54,6 +55,8 @@ class FilmMapWidget : public QWidget {
   const FilmMapData& data() const { return data_; }
   /// The colour scale's range (after rounding to its ticks).
   std::pair<double, double> scaleRange() const { return {scale_lo_, scale_hi_}; }
+  /// Where the points' legend was last drawn [px] (null before; tests).
+  QRectF pointsLegendRect() const { return points_legend_; }
   QSize sizeHint() const override { return {640, 360}; }
   QSize minimumSizeHint() const override { return {260, 180}; }
 
@@ -64,6 +67,7 @@ class FilmMapWidget : public QWidget {
   double ValueAt(double x, double y) const;
   FilmMapData data_;
   double scale_lo_ = 0.0, scale_hi_ = 1.0;
+  QRectF points_legend_;
 };
 
 }  // namespace filmdyn::ui
