@@ -132,10 +132,6 @@ std::string WithSupplyHint(std::string trouble, const EngineCase& c) {
          "): a thicker film may carry it";
 }
 
-}  // namespace
-
-namespace {
-
 // The periodic-steady-state quantities of a model: e0, γ and the skirt MOFT for
 // a lubricated skirt, ε and the bearing MOFT for a lubricated big end; the ideal model tracks
 // the forces it has. Floors: 1 % of the clearance scales, so a flat trace cannot block.

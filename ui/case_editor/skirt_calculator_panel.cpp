@@ -258,11 +258,15 @@ void SkirtCalculatorPanel::updateModeInputs() {
   }
 }
 
+// The results shown belong to the inputs before: greyed until new ones replace them (they stay
+// greyed when the new inputs give no result).
+void SkirtCalculatorPanel::showResultsCurrent(bool current) {
+  table_->setEnabled(current);
+  map_->setEnabled(current);
+}
+
 void SkirtCalculatorPanel::schedule() {
-  // The results shown belong to the inputs before: greyed until new ones replace them (they
-  // stay greyed when the new inputs give no result).
-  table_->setEnabled(false);
-  map_->setEnabled(false);
+  showResultsCurrent(false);
   debounce_->start();
 }
 
@@ -279,8 +283,7 @@ void SkirtCalculatorPanel::start() {
   for (const InputSpec& spec : InputSpecs())
     si[spec.key] = inputs_.at(spec.key)->value() * spec.scale;
   status_->setText(tr("Computing…"));
-  table_->setEnabled(false);  // as schedule() does (start() also runs without it)
-  map_->setEnabled(false);
+  showResultsCurrent(false);  // as schedule() does (start() also runs without it)
   watcher_.setFuture(QtConcurrent::run(Calculate, document_->engineCase(),
                                        document_->caseDirectory(),
                                        Mode(mode_->currentData().toInt()), si, cancel_));
@@ -323,8 +326,7 @@ void SkirtCalculatorPanel::finished() {
     }
     last_ = std::move(result);
     showMap();
-    table_->setEnabled(true);
-    map_->setEnabled(true);
+    showResultsCurrent(true);
   } else {
     last_ = std::move(result);
   }

@@ -59,6 +59,7 @@ class SkirtCalculatorPanel : public QWidget {
   void updated();
 
  private:
+  void showResultsCurrent(bool current);
   void schedule();
   void start();
   void finished();
