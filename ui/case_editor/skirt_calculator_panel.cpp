@@ -72,16 +72,21 @@ lubrication::SkirtInputNames LabelNames() {
       if (spec.key == key) return NameOf(spec);
     return key;
   };
-  lubrication::SkirtInputNames names{name("e0"),      name("tilt"),      name("speed"),
-                                     name("e0_rate"), name("tilt_rate"), name("side_force"),
-                                     name("moment")};
-  names.show = [](const std::string& input, double si) {
-    for (const InputSpec& spec : InputSpecs()) {
-      if (NameOf(spec) == input)
-        return QString("%1 %2").arg(si / spec.scale, 0, 'g', 4).arg(UnitOf(spec)).toStdString();
-    }
-    return FormatValue(si);
-  };
+  lubrication::SkirtInputNames names{
+      .e0 = name("e0"),
+      .tilt = name("tilt"),
+      .speed = name("speed"),
+      .e0_rate = name("e0_rate"),
+      .tilt_rate = name("tilt_rate"),
+      .side_force = name("side_force"),
+      .moment = name("moment"),
+      .show = [](const std::string& input, double si) {
+        for (const InputSpec& spec : InputSpecs()) {
+          if (NameOf(spec) == input)
+            return QString("%1 %2").arg(si / spec.scale, 0, 'g', 4).arg(UnitOf(spec)).toStdString();
+        }
+        return FormatValue(si);
+      }};
   return names;
 }
 

@@ -64,23 +64,28 @@ std::pair<double, double> RoundedRange(double lo, double hi, int target) {
   return {std::floor(lo / step + 1e-9) * step, std::ceil(hi / step - 1e-9) * step};
 }
 
-QString FormatReadoutValues(const std::vector<double>& values, const QString& separator) {
+std::optional<int> CommonDecimals(const std::vector<double>& values) {
   double larger = 0.0;
-  bool finite = true;
   for (double v : values) {
-    finite = finite && std::isfinite(v);
     if (std::isfinite(v)) larger = std::max(larger, std::abs(v));
   }
+  if (!(larger > 0.0) || larger >= 1e6 || larger < 1e-4) return std::nullopt;
+  return std::clamp(3 - int(std::floor(std::log10(larger))), 0, 6);
+}
+
+QString FormatReadoutValues(const std::vector<double>& values, const QString& separator) {
+  const bool finite =
+      std::all_of(values.begin(), values.end(), [](double v) { return std::isfinite(v); });
+  const std::optional<int> decimals = finite ? CommonDecimals(values) : std::nullopt;
   QStringList texts;
-  if (!finite || !(larger > 0.0) || larger >= 1e6 || larger < 1e-4) {
+  if (!decimals) {
     // "–", zeros and magnitudes better read in 'g' form: each as it is.
     for (double v : values) texts << FormatReadout(v);
     return texts.join(separator);
   }
-  const int decimals = std::clamp(3 - int(std::floor(std::log10(larger))), 0, 6);
-  const QString zero = QString::number(0.0, 'f', decimals);
+  const QString zero = QString::number(0.0, 'f', *decimals);
   for (double v : values) {
-    const QString t = QString::number(v, 'f', decimals);
+    const QString t = QString::number(v, 'f', *decimals);
     texts << (t == "-" + zero ? zero : t);  // a value that rounds to zero reads without a sign
   }
   return texts.join(separator);

@@ -2,6 +2,7 @@
 /// @file Round axis steps: 1, 2, 2.5 or 5 × 10ⁿ, the steps people read without effort. One
 /// definition for the result plots' axes and the film maps' colour bars.
 #include <QString>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -41,5 +42,10 @@ QString FormatReadoutPair(double x, double y, const QString& unit = {});
 /// reads "–"; zeros alone, or magnitudes of 1e6 and more or below 1e-4, each in FormatReadout's
 /// form.
 QString FormatReadoutValues(const std::vector<double>& values, const QString& separator);
+/// The decimals FormatReadoutValues gives values in one unit (about 4 significant digits for the
+/// largest finite magnitude, 0 to 6), or none where they read better each in 'g' form (no finite
+/// value, zeros alone, magnitudes of 1e6 and more or below 1e-4). Values that are not finite are
+/// ignored.
+std::optional<int> CommonDecimals(const std::vector<double>& values);
 
 }  // namespace filmdyn::ui

@@ -21,6 +21,7 @@
 #include <random>
 
 #include "core/base/input_error.hpp"
+#include "core/engine/case_diff.hpp"
 #include "core/engine/case_schema.hpp"
 #include "core/io/run_comparison.hpp"
 #include "ui/charts/chart_export.hpp"
@@ -214,6 +215,8 @@ StudyFactorDisplay FactorDisplay(const batch::StudyFactor& factor) {
 
 QString FactorValueText(const batch::StudyFactor& factor, const std::string& value,
                         std::optional<double> number) {
+  // A run model by its title, as the run page and the case editor name it ("Only-LBRBE").
+  if (factor.path == batch::kModelFactor) return Text(engine::ModelTitle(value));
   if (factor.is_text() || !number) return Text(value);
   return QString::number(*number / FactorDisplay(factor).scale, 'g', 4);
 }
@@ -292,7 +295,8 @@ QChart* MakeStudyScatterChart(const batch::Study& study, const std::vector<batch
     auto* x = new QCategoryAxis;
     x->setLabelsPosition(QCategoryAxis::AxisLabelsPositionCenter);
     x->setStartValue(-0.5);
-    for (std::size_t k = 0; k < categories.size(); ++k) x->append(Text(categories[k]), k + 0.5);
+    for (std::size_t k = 0; k < categories.size(); ++k)
+      x->append(FactorValueText(f, categories[k], std::nullopt), k + 0.5);
     x->setRange(-0.5, double(categories.size()) - 0.5);
     x->setGridLineVisible(false);
     // Four model names side by side fit a small panel a little smaller than the other labels.

@@ -30,7 +30,8 @@ struct StudyFactorDisplay {
   double scale = 1.0;
 };
 StudyFactorDisplay FactorDisplay(const batch::StudyFactor& factor);
-/// A factor's value as shown: "30" (µm) for 3e-05 m, four significant digits; a text level as is.
+/// A factor's value as shown: "30" (µm) for 3e-05 m, four significant digits; a run model by its
+/// title ("Only-LBRBE"); any other text level as is.
 QString FactorValueText(const batch::StudyFactor& factor, const std::string& value,
                         std::optional<double> number);
 

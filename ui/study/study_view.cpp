@@ -5,6 +5,7 @@
 #include <QChartView>
 #include <QComboBox>
 #include <QFileDialog>
+#include <QFont>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
@@ -23,6 +24,7 @@
 
 #include "core/engine/case_schema.hpp"
 #include "core/io/run_comparison.hpp"
+#include "ui/charts/round_ticks.hpp"
 #include "ui/plots/study_charts.hpp"
 
 namespace filmdyn::ui {
@@ -41,6 +43,25 @@ QString StateText(batch::PointState state) {
   return QString::fromStdString(batch::PointStateName(state));
 }
 
+// A point's state with its run's status where that says more: "done", "done (not converged)",
+// "incomplete (time limit)"; not "done (completed)".
+QString StateCellText(const batch::StudyRow& r) {
+  QString text = StateText(r.state);
+  const bool says_more = !r.status.empty() && r.status != batch::PointStateName(r.state) &&
+                         !(r.state == batch::PointState::kDone && r.status == "completed");
+  if (says_more) {
+    QString status = QString::fromStdString(r.status);
+    status.replace('-', ' ').replace('_', ' ');
+    text += " (" + status + ")";
+  }
+  return text;
+}
+
+// Figures of a point that did not reach its run's end cover only the part it computed.
+bool PartialFigures(const batch::StudyRow& r) {
+  return r.state == batch::PointState::kFailed || r.state == batch::PointState::kIncomplete;
+}
+
 // The points as a table: point, the factors, state, wall time, the figures some point has,
 // the reason of a point that failed or stopped and the notes of its figures. Qt::UserRole holds the
 // value the column sorts by (a number, or a text; none for an empty cell).
@@ -54,6 +75,16 @@ class StudyTableModel : public QAbstractTableModel {
     beginResetModel();
     factors_.clear();
     for (const batch::StudyFactor& f : study_->factors) factors_.push_back(FactorDisplay(f));
+    // Each figure's column in common decimals (about 4 significant digits for its largest value).
+    decimals_.clear();
+    for (int k : *figures_) {
+      const double scale = io::ComparisonFigures()[size_t(k)].display_scale;
+      std::vector<double> values;
+      for (const batch::StudyRow& r : *rows_) {
+        if (r.figures[size_t(k)]) values.push_back(*r.figures[size_t(k)] * scale);
+      }
+      decimals_.push_back(CommonDecimals(values));
+    }
     endResetModel();
   }
 
@@ -104,8 +135,23 @@ class StudyTableModel : public QAbstractTableModel {
       if (role == Qt::DisplayRole) return QString::number(*v / scale, 'g', 5);
       return *v / scale;
     };
+    const bool partial = PartialFigures(r) && column > f + 2 && column < figure_end &&
+                         r.figures[size_t((*figures_)[size_t(column - f - 3)])].has_value();
+    if (partial && (role == Qt::ForegroundRole || role == Qt::FontRole)) {
+      if (role == Qt::ForegroundRole) return QColor(130, 130, 130);
+      QFont font;
+      font.setItalic(true);
+      return font;
+    }
     if (role == Qt::ToolTipRole) {
       const QString notes = QString::fromStdString(io::NotesText(r.notes));
+      if (partial) {
+        const std::string reason = ReasonAndNotes(r);
+        return tr("Partial: the run %1 before the end of its cycles; this figure covers only "
+                  "the part it computed")
+                   .arg(r.state == batch::PointState::kFailed ? tr("failed") : tr("stopped")) +
+               (reason.empty() ? QString() : "\n" + QString::fromStdString(reason));
+      }
       if (column > f + 2 && column < figure_end && !notes.isEmpty()) {
         // A figure the run has but the comparison leaves out says why.
         const int k = (*figures_)[size_t(column - f - 3)];
@@ -137,23 +183,24 @@ class StudyTableModel : public QAbstractTableModel {
     if (column <= f) {
       const std::size_t k = size_t(column - 1);
       if (r.point.numbers[k]) return number(r.point.numbers[k], factors_[k].scale);
-      return QString::fromStdString(r.point.values[k]);
+      return FactorValueText(study_->factors[k], r.point.values[k], std::nullopt);
     }
-    if (column == f + 1) {
-      QString text = StateText(r.state);
-      if (role == Qt::DisplayRole && r.status != batch::PointStateName(r.state) &&
-          !r.status.empty())
-        text += " (" + QString::fromStdString(r.status) + ")";
-      return text;
-    }
+    if (column == f + 1) return role == Qt::DisplayRole ? StateCellText(r) : StateText(r.state);
     if (column == f + 2) {
       if (role == Qt::DisplayRole && r.wall_time_s) return QString::number(*r.wall_time_s, 'f', 1);
       return number(r.wall_time_s, 1.0);
     }
     if (column < figure_end) {
-      const int k = (*figures_)[size_t(column - f - 3)];
+      const std::size_t n = size_t(column - f - 3);
+      const int k = (*figures_)[n];
       const io::ComparisonFigure& fig = io::ComparisonFigures()[size_t(k)];
-      return number(r.figures[size_t(k)], 1.0 / fig.display_scale);
+      const std::optional<double>& value = r.figures[size_t(k)];
+      if (role == Qt::DisplayRole && value && std::isfinite(*value) && n < decimals_.size() &&
+          decimals_[n]) {
+        const QString text = QString::number(*value * fig.display_scale, 'f', *decimals_[n]);
+        return text.startsWith('-') && text.toDouble() == 0.0 ? text.mid(1) : text;
+      }
+      return number(value, 1.0 / fig.display_scale);
     }
     // The last column: why a point is not done (or its run's message), and the figures its run
     // has that the comparison leaves out.
@@ -167,6 +214,7 @@ class StudyTableModel : public QAbstractTableModel {
   const std::vector<batch::StudyRow>* rows_;
   const std::vector<int>* figures_;
   std::vector<StudyFactorDisplay> factors_;
+  std::vector<std::optional<int>> decimals_;  ///< per figure column (CommonDecimals)
 };
 
 // Sorts numbers as numbers and puts empty cells last in either order.

@@ -6,11 +6,13 @@
 // selects its row, the selected row is marked in the plot), and opens a point's run in the
 // results view with the values of its results.csv and its film fields; a pending point has no
 // run to open, a folder without study.json is refused naming it.
+#include <QCategoryAxis>
 #include <QChart>
 #include <QChartView>
 #include <QComboBox>
 #include <QDir>
 #include <QFile>
+#include <QFont>
 #include <QHeaderView>
 #include <QLabel>
 #include <QProcess>
@@ -157,13 +159,35 @@ class TestStudyView : public QObject {
     QVERIFY2(rpm_tip.endsWith("(operating.rpm)") && rpm_tip.size() > 20, qPrintable(rpm_tip));
     QCOMPARE(table->model()->headerData(moft, Qt::Horizontal, Qt::ToolTipRole).toString(),
              QString("min_bearing_moft[m]"));
-    QCOMPARE(Cell(table, 0, model), QString("ideal"));
+    // The run model by its title, as the run page names it (the study file's token "ideal").
+    QCOMPARE(Cell(table, 0, model), QString("Ideal"));
+    QCOMPARE(Cell(table, 3, model), QString("Only-LBRBE"));
     QCOMPARE(Cell(table, 4, rpm), QString("4000"));
     QCOMPARE(Cell(table, 1, state), QString("pending"));
     QVERIFY(Cell(table, 2, state).startsWith("failed"));
     QCOMPARE(table->model()->index(2, state).data(Qt::ToolTipRole).toString(),
              QString("test: a broken point"));
-    QCOMPARE(Cell(table, 3, state), QString("done (completed)"));
+    // A completed run is "done", not "done (completed)".
+    QCOMPARE(Cell(table, 3, state), QString("done"));
+    // Forces in kN as the run page plots them, each column in common decimals (about 4
+    // significant digits for its largest value: 2634.1 N → "2.634", not "2634.1" beside "2489").
+    const int fn = ColumnNamed(table, "max abs skirt F_n [kN]");
+    QVERIFY(fn > state);
+    const QString fn_done = Cell(table, 0, fn);
+    QVERIFY2(fn_done.size() > 2 && fn_done.split('.').value(1).size() == 3, qPrintable(fn_done));
+    for (int r : {3, 4, 5}) {
+      QCOMPARE(Cell(table, r, fn).split('.').value(1).size(), 3);
+      const double kn = Cell(table, r, fn).toDouble();
+      QVERIFY2(kn > 0.1 && kn < 100, qPrintable(Cell(table, r, fn)));
+    }
+    // The failed point's figures are the part of the cycle its run computed: greyed, italic, and
+    // the tooltip says so (the charts leave them out).
+    const QModelIndex partial = table->model()->index(2, fn);
+    QVERIFY(partial.data().toString() != "–");
+    QVERIFY(partial.data(Qt::FontRole).value<QFont>().italic());
+    QVERIFY2(partial.data(Qt::ToolTipRole).toString().startsWith("Partial: the run failed"),
+             qPrintable(partial.data(Qt::ToolTipRole).toString()));
+    QVERIFY(!table->model()->index(3, fn).data(Qt::FontRole).value<QFont>().italic());
     // MOFT in µm as study.csv has it in m.
     const double moft4 = Cell(table, 3, moft).toDouble();
     QVERIFY2(moft4 > 0.1 && moft4 < 20, qPrintable(Cell(table, 3, moft)));
@@ -244,6 +268,15 @@ class TestStudyView : public QObject {
     QVERIFY(view.setScatter(0, FigureIndex("max_abs_bigend_force_y[N]")));
     series = qobject_cast<QScatterSeries*>(view.scatterView()->chart()->series().front());
     QCOMPARE(series->count(), 4);  // the done points: Ideal 2000 rpm and the three Only-LBRBE
+    // The categories are the models' titles.
+    QStringList categories;
+    for (QAbstractAxis* axis : view.scatterView()->chart()->axes(Qt::Horizontal)) {
+      if (auto* c = qobject_cast<QCategoryAxis*>(axis)) categories = c->categoriesLabels();
+    }
+    QCOMPARE(categories, QStringList({"Ideal", "Only-LBRBE"}));
+    // Forces in kN (the figure's display unit).
+    QVERIFY2(series->at(0).y() > 1.0 && series->at(0).y() < 100.0,
+             qPrintable(QString::number(series->at(0).y())));
     Save(&view, "study-page.png");
   }
 
