@@ -3,10 +3,12 @@
 #include <QObject>
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <numeric>
 #include <string_view>
 
 #include "core/engine/case_schema.hpp"
+#include "core/engine/error_estimate.hpp"
 
 namespace filmdyn::ui {
 
@@ -226,6 +228,25 @@ FilmMapData CrankAngleMap(const FieldFrames& frames, size_t joint_index,
     } else {
       d.values.insert(d.values.end(), extremes.begin(), extremes.end());
       if (joint.periodic) d.values.push_back(extremes.front());
+    }
+  }
+  // A whole cycle of equally spaced frames wraps round: the map reaches from 0 to 720 °CA (the
+  // row after the last is the first one cycle on, the row before the first the last one cycle
+  // back), as the x lines of a bearing close at 360°.
+  const size_t row = d.x.size(), n = d.y.size();
+  if (n >= 2 && d.values.size() == row * n) {
+    const double step = (d.y.back() - d.y.front()) / double(n - 1);
+    if (engine::SpanIsACycle(n, step * std::numbers::pi / 180.0)) {
+      const std::vector<double> first(d.values.begin(), d.values.begin() + long(row));
+      const std::vector<double> last(d.values.end() - long(row), d.values.end());
+      if (d.y.back() < 720.0 - 1e-9) {
+        d.y.push_back(d.y.front() + 720.0);
+        d.values.insert(d.values.end(), first.begin(), first.end());
+      }
+      if (d.y.front() > 1e-9) {
+        d.y.insert(d.y.begin(), d.y[n - 1] - 720.0);
+        d.values.insert(d.values.begin(), last.begin(), last.end());
+      }
     }
   }
   if (!d.points.empty()) d.points_label = QObject::tr("load direction");

@@ -438,7 +438,18 @@ class TestFieldView : public QObject {
       view.arraySelector()->setCurrentIndex(minimum ? 2 : 0);
       const filmdyn::ui::FilmMapData& d = view.crankAngleMap(0)->data();
       QCOMPARE(d.x.size(), nx);
-      QCOMPARE(d.y.size(), real_->crank_angle_deg.size());
+      // A whole cycle's frames wrap round: the map reaches from 0 to 720 °CA, the row one
+      // cycle on from the first (or back from the last) holding that row's values.
+      const std::vector<double>& angles = real_->crank_angle_deg;
+      const size_t frames = angles.size();
+      const bool ahead = angles.front() > 0.0;
+      QCOMPARE(d.y.size(), frames + 1 + (ahead ? 1 : 0));
+      QVERIFY2(d.y.front() <= 0.0 && d.y.back() >= 720.0,
+               qPrintable(QString("%1 .. %2").arg(d.y.front()).arg(d.y.back())));
+      const size_t first = ahead ? 1 : 0, wrapped = first + frames;
+      QCOMPARE(d.y[wrapped], d.y[first] + 720.0);
+      for (size_t i = 0; i < nx; ++i)
+        QCOMPARE(d.values[i + nx * wrapped], d.values[i + nx * first]);
       QCOMPARE(d.y_line, real_->crank_angle_deg[size_t(view.frameIndex())]);
       for (size_t k : {size_t(0), size_t(17), size_t(95), real_->crank_angle_deg.size() - 1}) {
         const int row = LineIndex(d.y, real_->crank_angle_deg[k]);
@@ -472,13 +483,17 @@ class TestFieldView : public QObject {
           real_->crank_angle_deg[k], frame_max, map_max);
     QVERIFY(map_max <= frame_max * (1 + 1e-12));
     QVERIFY(map_max >= 0.8 * frame_max);
-    // The load's direction is marked on every row: at row k the force's angle in the rod frame.
-    QCOMPARE(d.points.size(), d.y.size());
+    // The load's direction is marked on every frame's row (once: not on the rows wrapped round
+    // the cycle): at frame k the force's angle in the rod frame.
+    QCOMPARE(d.points.size(), real_->crank_angle_deg.size());
     const auto& f = big_end.load[k];
     double load_angle = std::atan2(f[1], f[0]) * 180 / M_PI;
     if (load_angle < 0) load_angle += 360;
-    QCOMPARE(d.points[size_t(row)].first, load_angle);
-    QCOMPARE(d.points[size_t(row)].second, real_->crank_angle_deg[k]);
+    const auto at_k = std::find_if(d.points.begin(), d.points.end(), [&](const auto& p) {
+      return p.second == real_->crank_angle_deg[k];
+    });
+    QVERIFY(at_k != d.points.end());
+    QCOMPARE(at_k->first, load_angle);
   }
 
   void threeDViewsAreViridisUnlitWithTheBarBeside() {
