@@ -3,8 +3,9 @@
 ///
 /// Headline figures: what a designer reads first, over the reported cycle — the minimum film
 /// thickness of each lubricated joint, the big end's largest eccentricity ratio, the peak film
-/// pressure of each joint, the cycle-mean friction power loss of each joint and, for a
-/// mass-conserving film, the oil it takes in over the cycle. This is their
+/// pressure of each joint, the cycle-mean friction power loss of each joint, the piston's largest
+/// lateral displacement and tilt, the largest skirt side force and big-end film force components
+/// and, for a mass-conserving film, the oil it takes in over the cycle. This is their
 /// one definition: summary.json, the CLI, the GUI and the estimate all use it.
 ///
 /// Estimate: a second, coarser run of the whole coupled model — every film mesh with half the
@@ -34,9 +35,11 @@ struct HeadlineFigure {
 };
 
 /// The headline figures present for the samples' joints, in a fixed order: skirt MOFT min,
-/// skirt peak pressure, skirt mean FPL, skirt oil per cycle, big-end MOFT min, max ε, big-end
-/// peak pressure, big-end mean FPL, big-end oil per cycle. Means are plain means over the
-/// cycle's equally spaced output samples (the periodic trapezoidal rule); the oil per cycle is
+/// skirt peak pressure, skirt mean FPL, max |e0|, max |γ|, max |skirt F_n|, skirt oil per cycle,
+/// big-end MOFT min, max ε, big-end peak pressure, big-end mean FPL, max |big-end F_x|, max
+/// |big-end F_y| (the film's force on the rod, global frame), big-end oil per cycle. Means are
+/// plain means over the cycle's equally spaced output samples (the periodic trapezoidal rule);
+/// the oil per cycle is
 /// AccountedOil's, present for mass-conserving films only. Means and the oil per cycle are
 /// figures of a whole cycle: absent when the samples are not one (SamplesSpanACycle: a run
 /// stopped before its first cycle ended). Empty when no sample has a lubricated joint.

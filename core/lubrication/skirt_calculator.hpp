@@ -36,7 +36,7 @@ struct SkirtInputNames {
   /// How an input's value reads in a message, with its unit (the GUI's display units: "40 µm"),
   /// given the input's name above and its SI value. Empty: the SI number, with its SI unit where
   /// the message gives one ("e0 = 4e-05", "at tilt = 0.001 rad", "… < e0 < 2e-05 [m]").
-  std::function<std::string(const std::string& name, double si)> show;
+  std::function<std::string(const std::string& name, double si)> show = {};
 };
 
 /// Mode 2's load: what the rest of the engine applies to the piston.
