@@ -55,9 +55,11 @@ void ShowErrorEstimate(const engine::ErrorEstimate& e,
   for (const engine::FigureError& f : e.figures) {
     const engine::DisplayUnit display = engine::HeadlineDisplayUnit(f.figure.key);
     const double scale = display.scale;
-    const QString unit = QString::fromStdString(display.unit);
+    // "1.3639 µm"; a dimensionless figure without a unit ("0.97272").
+    const QString unit =
+        display.unit.empty() ? QString() : " " + QString::fromStdString(display.unit);
     if (!f.resolved_in_time) {
-      lines << QString("%1: %2 %3, %4")
+      lines << QString("%1: %2%3, %4")
                    .arg(QString::fromStdString(f.figure.label))
                    .arg(QString::number(f.figure.value * scale, 'g', 5))
                    .arg(unit)
@@ -72,7 +74,7 @@ void ShowErrorEstimate(const engine::ErrorEstimate& e,
                   .arg(engine::CycleCrankAngleDeg(*f.crank_angle), 0, 'f', 0)
                   .arg(engine::CycleCrankAngleDeg(*f.extrapolated_crank_angle), 0, 'f', 0)
             : QString();
-    lines << QString("%1: %2 %3, %4%5 % → %6 %3%7")
+    lines << QString("%1: %2%3, %4%5 % → %6%3%7")
                  .arg(QString::fromStdString(f.figure.label))
                  .arg(QString::number(f.figure.value * scale, 'g', 5))
                  .arg(unit)

@@ -286,6 +286,10 @@ class TestMainWindowAfterRun : public QObject {
       QVERIFY(Qt::mightBeRichText(error_cell->toolTip()));
       QVERIFY2(error_cell->toolTip().contains("not in the asymptotic range"),
                qPrintable(error_cell->toolTip()));
+      // One line per figure, a dimensionless one without a unit's gap ("0.97272, −0.075 %").
+      QVERIFY2(error_cell->toolTip().contains("max big-end eccentricity ratio: 0.") &&
+                   !error_cell->toolTip().contains(" ,"),
+               qPrintable(error_cell->toolTip()));
       window.workspace()->setCurrentIndex(1);
       window.runTable()->scrollToItem(force);
       QTest::qWait(300);
