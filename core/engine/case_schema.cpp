@@ -1127,7 +1127,7 @@ std::vector<CaseField> MakeSchema() {
                      {G::kBigEnd, "Oil-supply pressure (gauge)", "Pa", "MPa", kMPa, GaugePressure(),
                       "at the holes or groove (constant; see supply_pressure_* for a curve)"}));
   f.push_back(List("big_end.supply_pressure_angles", be, &B::supply_pressure_angles,
-                   {G::kBigEnd, "Supply pressure curve: crank angle", "rad", "°", kDeg,
+                   {G::kBigEnd, "Supply pressure curve: crank angle", "rad", "°CA", kDeg,
                     Open(0.0, 4.0 * kPi, false, true),
                     "crank angles of the supply-pressure curve (empty: constant pressure): at "
                     "least 8, increasing, covering the cycle with gaps of at most 10 °CA "

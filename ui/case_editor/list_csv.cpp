@@ -46,11 +46,13 @@ std::vector<std::string> SplitCells(const std::string& line) {
 }
 
 // A header cell compared loosely: case and spaces ignored, "deg" for "°", "u" for "µ" (what a
-// file written without those characters has).
+// file written without those characters has), a crank angle's "°CA" as "°" (files exported
+// before the supply curve's crank angles were labelled °CA).
 QString HeaderKey(const std::string& cell) {
   QString key = QString::fromStdString(cell).toLower();
   key.remove(QChar(' ')).remove(QChar('\t'));
   key.replace(QChar(0x00B0), "deg").replace(QChar(0x00B5), "u").replace(QChar(0x03BC), "u");
+  key.replace("[degca]", "[deg]");
   return key;
 }
 

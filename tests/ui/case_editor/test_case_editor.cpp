@@ -326,9 +326,9 @@ class TestCaseEditor : public QObject {
     QVERIFY(table != nullptr && model != nullptr && issue != nullptr);
     QVERIFY(table->isVisible());
     QCOMPARE(TabOf(window, table), 4);
-    // Core's columns: crank angle in °, gauge pressure in MPa; no rows = the constant pressure.
+    // Core's columns: crank angle in °CA, gauge pressure in MPa; no rows = the constant pressure.
     QCOMPARE(model->headerData(0, Qt::Horizontal, Qt::DisplayRole).toString(),
-             QString("crank angle [°]"));
+             QString("crank angle [°CA]"));
     QCOMPARE(model->headerData(1, Qt::Horizontal, Qt::DisplayRole).toString(),
              QString("gauge pressure [MPa]"));
     QCOMPARE(model->rowCount(), 0);

@@ -69,6 +69,7 @@ CurveFile SupplyCurveFile() {
   CurveFile f;
   f.text =
       "# oil gallery pressure measured on the test bench\n"
+      // The header files exported before the crank angle was labelled °CA: still read.
       "crank angle [°],gauge pressure [MPa]\n";
   for (int a = 0; a < 720; a += 10) {
     const QString p = QString::number(0.3 + 0.1 * std::sin(2 * a * kDeg), 'f', 4);
@@ -177,7 +178,7 @@ class TestCaseEditorLists : public QObject {
                  lines[1].contains("big_end.supply_pressure_angles [rad]") &&
                  lines[1].contains("big_end.supply_pressure_values [Pa]"),
              lines[1].constData());
-    QCOMPARE(QString::fromUtf8(lines[2]), QString("crank angle [°],gauge pressure [MPa]"));
+    QCOMPARE(QString::fromUtf8(lines[2]), QString("crank angle [°CA],gauge pressure [MPa]"));
     for (size_t k = 0; k < 72; ++k) {
       const QList<QByteArray> cells = lines[qsizetype(3 + k)].split(',');
       QCOMPARE(cells.size(), 2);
@@ -235,7 +236,7 @@ class TestCaseEditorLists : public QObject {
          {":3 ", "gauge pressure [MPa]", "\"abc\"", "finite number"}},
         // Three cells in a table of two columns.
         {"# comment\ncrank angle [°],gauge pressure [MPa]\n0,0.3,7\n",
-         {":3", "\"0,0.3,7\"", "2 cells: crank angle [°], gauge pressure [MPa]"}},
+         {":3", "\"0,0.3,7\"", "2 cells: crank angle [°CA], gauge pressure [MPa]"}},
         // Not a number by IEEE: NaN, infinity.
         {"crank angle [°],gauge pressure [MPa]\n0,0.3\n10,nan\n",
          {":3 ", "\"nan\"", "finite number"}},
@@ -245,11 +246,11 @@ class TestCaseEditorLists : public QObject {
         {"crank angle [°],gauge pressure [MPa]\n0,0.3\n10,-0.2\n",
          {":3 ", "\"-0.2\"", "allowed values", "MPa"}},
         // Nothing at all, or comments only.
-        {"", {"empty", "crank angle [°],gauge pressure [MPa]"}},
-        {"# only a comment\n\n", {"empty", "crank angle [°],gauge pressure [MPa]"}},
+        {"", {"empty", "crank angle [°CA],gauge pressure [MPa]"}},
+        {"# only a comment\n\n", {"empty", "crank angle [°CA],gauge pressure [MPa]"}},
         // Another table's header (the cylinder-pressure CSV).
         {"crank_angle[deg],pressure[Pa]\n0,1e5\n",
-         {":1 header", "crank_angle[deg],pressure[Pa]", "crank angle [°],gauge pressure [MPa]"}},
+         {":1 header", "crank_angle[deg],pressure[Pa]", "crank angle [°CA],gauge pressure [MPa]"}},
     };
     for (size_t i = 0; i < cases.size(); ++i) {
       const QString path = dir.filePath(QString("bad%1.csv").arg(i));
