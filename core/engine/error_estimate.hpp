@@ -4,9 +4,9 @@
 /// Headline figures: what a designer reads first, over the reported cycle — the minimum film
 /// thickness of each lubricated joint, the big end's largest eccentricity ratio, the peak film
 /// pressure of each joint, the cycle-mean friction power loss of each joint, the piston's largest
-/// lateral displacement and tilt, the largest skirt side force and big-end film force components
-/// and, for a mass-conserving film, the oil it takes in over the cycle. This is their
-/// one definition: summary.json, the CLI, the GUI and the estimate all use it.
+/// lateral displacement and tilt, the largest skirt side force and big-end film force components,
+/// the largest piston-slap energy and, for a mass-conserving film, the oil it takes in over the
+/// cycle. This is their one definition: summary.json, the CLI, the GUI and the estimate all use it.
 ///
 /// Estimate: a second, coarser run of the whole coupled model — every film mesh with half the
 /// elements in each direction (same grading; spacing ratio r ≈ 2), the run's own integrator
@@ -34,16 +34,26 @@ struct HeadlineFigure {
   double order = 2.0;    ///< its observed order of convergence in the element size
 };
 
+/// What the largest piston-slap energy needs besides the output samples (SlapOf): the motion
+/// samples between them and the piston's mass [kg] and inertia about its centre of mass [kg m²].
+/// Without them (mass 0) the headline figures have no slap figure.
+struct SlapInputs {
+  const std::vector<MotionSample>* motion = nullptr;
+  double mass = 0.0, inertia = 0.0;
+};
+
 /// The headline figures present for the samples' joints, in a fixed order: skirt MOFT min,
-/// skirt peak pressure, skirt mean FPL, max |e0|, max |γ|, max |skirt F_n|, skirt oil per cycle,
-/// big-end MOFT min, max ε, big-end peak pressure, big-end mean FPL, max |big-end F_x|, max
-/// |big-end F_y| (the film's force on the rod, global frame), big-end oil per cycle. Means are
-/// plain means over the cycle's equally spaced output samples (the periodic trapezoidal rule);
-/// the oil per cycle is
-/// AccountedOil's, present for mass-conserving films only. Means and the oil per cycle are
-/// figures of a whole cycle: absent when the samples are not one (SamplesSpanACycle: a run
-/// stopped before its first cycle ended). Empty when no sample has a lubricated joint.
-std::vector<HeadlineFigure> HeadlineFigures(const std::vector<CrankTrainSample>& samples);
+/// skirt peak pressure, skirt mean FPL, max |e0|, max |γ|, max |skirt F_n|, the largest
+/// piston-slap energy (with `slap` given; none when the piston never changes side), skirt oil
+/// per cycle, big-end MOFT min, max ε, big-end peak pressure, big-end mean FPL, max |big-end
+/// F_x|, max |big-end F_y| (the film's force on the rod, global frame), big-end oil per cycle.
+/// Means are plain means over the cycle's equally spaced output samples (the periodic
+/// trapezoidal rule); the oil per cycle is AccountedOil's, present for mass-conserving films
+/// only. Means and the oil per cycle are figures of a whole cycle: absent when the samples are
+/// not one (SamplesSpanACycle: a run stopped before its first cycle ended). Empty when no sample
+/// has a lubricated joint.
+std::vector<HeadlineFigure> HeadlineFigures(const std::vector<CrankTrainSample>& samples,
+                                            const SlapInputs& slap = {});
 
 /// Oil into and out of a joint's film over a cycle [m^3].
 struct OilPerCycle {
@@ -259,9 +269,11 @@ std::string CycleChangeTrend(const std::vector<double>& changes, double toleranc
 /// The ratio of two successive cycle-to-cycle changes below which the change counts as falling.
 inline constexpr double kFallingRatio = 0.8;
 
-/// Richardson's estimate from the run's and the coarse run's reported cycles.
+/// Richardson's estimate from the run's and the coarse run's reported cycles (with each run's
+/// SlapInputs, the largest slap energy's too: left out when only one of the runs has it).
 ErrorEstimate EstimateErrors(const std::vector<CrankTrainSample>& samples,
                              const std::vector<CrankTrainSample>& coarse_samples,
-                             const CoarseCompanion& companion);
+                             const CoarseCompanion& companion, const SlapInputs& slap = {},
+                             const SlapInputs& coarse_slap = {});
 
 }  // namespace filmdyn::engine

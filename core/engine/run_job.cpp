@@ -515,7 +515,8 @@ RunResult RunSingle(const RunConfig& config, const RunMonitor& monitor,
         }
       }
       result.cycles = cycle;
-      result.cycle_headlines.push_back(HeadlineFigures(current.samples));
+      result.cycle_headlines.push_back(HeadlineFigures(
+          current.samples, {&current.motion, c.geometry.piston_mass, c.geometry.piston_inertia}));
       if (verdict.compared) {
         result.cycle_change = verdict.worst_relative_change;
         result.cycle_changes.push_back(verdict.worst_relative_change);
@@ -785,7 +786,7 @@ RunResult RunWithEstimate(const RunConfig& config, const RunMonitor& monitor,
   coarse.integrator = config.integrator.ScaledTolerances(companion.tolerance_factor);
   coarse.threads = 1;
   coarse.field_callback = nullptr;
-  coarse.motion_interval = 0.0;
+  // Its motion samples as the run's: the slap energy is taken from them (SlapOf).
   std::atomic<bool> stop_coarse{false};
   RunResult coarse_result;
   std::string coarse_error;
@@ -833,7 +834,11 @@ RunResult RunWithEstimate(const RunConfig& config, const RunMonitor& monitor,
         "meshes are likely too coarse for this operating point",
         StatusName(coarse_result.status), coarse_result.message);
   } else {
-    estimate = EstimateErrors(result.samples, coarse_result.samples, companion);
+    const auto slap = [&c](const RunResult& r) {
+      return SlapInputs{&r.motion, c.geometry.piston_mass, c.geometry.piston_inertia};
+    };
+    estimate = EstimateErrors(result.samples, coarse_result.samples, companion, slap(result),
+                              slap(coarse_result));
   }
   estimate.skirt_ratio = companion.skirt_ratio;
   estimate.big_end_ratio = companion.big_end_ratio;

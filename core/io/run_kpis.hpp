@@ -7,6 +7,7 @@
 #include <optional>
 #include <vector>
 
+#include "core/engine/piston_slap.hpp"
 #include "core/engine/run_job.hpp"
 
 namespace filmdyn::io {
@@ -23,22 +24,9 @@ struct FilmPosition {
 };
 FilmPosition MinFilmPosition(const engine::CrankTrainSample& sample, bool skirt);
 
-/// One change of thrust side of the piston.
-struct SlapEvent {
-  double crank_angle_deg = 0.0;  ///< within the cycle, [0, 720)
-  double energy = 0.0;           ///< ½ m v_x² + ½ I ω² of the piston there [J]
-  bool to_thrust = false;        ///< onto the major-thrust wall (else onto the anti-thrust wall)
-};
-
-/// The piston slap of a cycle: every change of thrust side in time order, the largest energy
-/// (with its crank angle; none without an event) and the sum (a whole cycle's only: none for the
-/// part of a cycle a run stopped in its run-in computed).
-struct PistonSlap {
-  std::vector<SlapEvent> events;
-  std::optional<double> energy_max;  ///< [J]
-  std::optional<double> energy_max_crank_angle_deg;
-  std::optional<double> energy_sum;  ///< [J]
-};
+/// The piston slap (engine/piston_slap.hpp), kept under these names for the KPIs' readers.
+using engine::PistonSlap;
+using engine::SlapEvent;
 
 /// The KPIs of one lubricated joint over the reported cycle. Crank angles [°CA] are within the
 /// cycle, of the output step where the extreme occurs (the first on a tie).

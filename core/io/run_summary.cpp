@@ -73,7 +73,9 @@ RunSummary SummarizeRun(const std::string& case_name, const engine::RunConfig& c
     // + 0.0: a signed zero (e.g. a friction power of -0) reads 0.
     s.extremes[columns[c].header] = {*value(*lo) + 0.0, *value(*hi) + 0.0, spike(*lo), spike(*hi)};
   }
-  s.headline = engine::HeadlineFigures(result.samples);
+  s.headline = engine::HeadlineFigures(result.samples,
+                                       {&result.motion, config.engine_case.geometry.piston_mass,
+                                        config.engine_case.geometry.piston_inertia});
   for (const engine::HeadlineFigure& f : s.headline) {
     if (f.key == "skirt_fpl_mean[W]") s.mean_fpl_skirt_w = f.value;
     if (f.key == "bearing_fpl_mean[W]") s.mean_fpl_bearing_w = f.value;

@@ -21,6 +21,7 @@
 #include <stdexcept>
 
 #include "core/engine/error_estimate.hpp"
+#include "core/engine/piston_slap.hpp"
 #include "core/engine/run_job.hpp"
 #include "core/io/case_file.hpp"
 
@@ -316,6 +317,42 @@ class TestErrorEstimate : public QObject {
                  .contains(QString("%1 % in the min big-end MOFT")
                                .arg(100 * moft_error.relative, 0, 'g', 2)),
              e.Summary().c_str());
+  }
+
+  // The largest piston-slap energy is a skirt headline figure when its inputs are given: the
+  // KPIs' value (SlapOf), none without them; a run whose companion has no change of side keeps
+  // it out of the estimate instead of making the estimate unavailable.
+  void slapEnergyIsAHeadlineFigureWithItsInputs() {
+    constexpr int n = 8;
+    const double force[n] = {50, 40, -30, -60, 20, 70, -10, -40};
+    std::vector<engine::CrankTrainSample> samples(n);
+    for (int k = 0; k < n; ++k) {
+      samples[k].crank_angle = k * 0.5 * M_PI;  // a whole cycle: 8 samples 90 °CA apart
+      samples[k].time = k * 1e-3;
+      samples[k].skirt.present = true;
+      samples[k].skirt.moft = 5e-6;
+      samples[k].skirt.normal_force = force[k];
+      samples[k].piston_com_lateral_velocity = 0.01 * (k + 1);
+      samples[k].piston_tilt_rate = 0.5;
+    }
+    const std::vector<engine::MotionSample> motion;  // the output samples' own motion
+    const engine::SlapInputs inputs{&motion, 0.4, 2e-4};
+    const engine::PistonSlap slap = engine::SlapOf(samples, motion, 0.4, 2e-4, true);
+    QVERIFY(slap.energy_max && slap.events.size() == 4);
+    const auto with = Values(engine::HeadlineFigures(samples, inputs));
+    QCOMPARE(with.at("slap_energy_max[J]"), *slap.energy_max);
+    QVERIFY(!Values(engine::HeadlineFigures(samples)).count("slap_energy_max[J]"));
+    // The companion's piston never changes side: no slap figure to compare, the rest estimated.
+    auto one_side = samples;
+    for (auto& s : one_side) s.skirt.normal_force = std::abs(s.skirt.normal_force);
+    engine::CoarseCompanion companion;
+    const engine::ErrorEstimate e =
+        engine::EstimateErrors(samples, one_side, companion, inputs, inputs);
+    QCOMPARE(e.status, std::string("estimated"));
+    QVERIFY(std::none_of(e.figures.begin(), e.figures.end(), [](const engine::FigureError& f) {
+      return f.figure.key == "slap_energy_max[J]";
+    }));
+    QCOMPARE(engine::HeadlineDisplayUnit("slap_energy_max[J]").unit, std::string("mJ"));
   }
 
   // A mass-conserving film's oil per cycle is its account's: a film booking 2e-6 m³/s in and
@@ -639,9 +676,14 @@ class TestErrorEstimate : public QObject {
               runs[level].wall_time, runs[level].error_estimate.coarse_wall_time,
               runs[level].error_estimate.Summary().c_str());
       }
-      const auto f1 = Values(engine::HeadlineFigures(runs[0].samples));
-      const auto f2 = Values(engine::HeadlineFigures(runs[1].samples));
-      const auto f4 = Values(engine::HeadlineFigures(runs[2].samples));
+      // The run's own headline figures, the slap energy's included (summary.json's).
+      const engine::CrankTrainGeometry& g = Config(rpm, 1).engine_case.geometry;
+      const auto figures = [&](const engine::RunResult& r) {
+        return Values(
+            engine::HeadlineFigures(r.samples, {&r.motion, g.piston_mass, g.piston_inertia}));
+      };
+      const auto f1 = figures(runs[0]), f2 = figures(runs[1]), f4 = figures(runs[2]);
+      QVERIFY(f4.count("slap_energy_max[J]") == 1);
       for (const auto& [key, v4] : f4) {
         const double d12 = f2.at(key) - f1.at(key), d24 = v4 - f2.at(key);
         // Observed order over the three meshes, kept to [1, 3] (2 when the differences do not
