@@ -48,8 +48,8 @@ else
 fi
 if [ "$scope" = ci ]; then
   # Only what this scope runs: the suites it selects below (a suite is built by the target of its
-  # name; the layer check is a script) and the fuzz harnesses. The left-out suites are ~20 % of
-  # the test objects.
+  # name; the layer check is a script) and the fuzz harnesses. The left-out suites were 12 of the
+  # build's 159 objects, about 16 % of its compile time.
   mapfile -t suites < <(cd "$asan" && ctest -N -LE "$ci_excluded_labels" | awk '/Test +#/{print $3}')
   declare -A is_target=()
   while read -r target; do is_target[$target]=1; done \

@@ -204,8 +204,9 @@ std::vector<std::string> UnresolvedKeys(const std::vector<CrankTrainSample>& sam
     std::size_t at = 0;
     for (std::size_t k = 1; k < n; ++k)
       if (magnitude(k) > magnitude(at)) at = k;
-    const double before = at > 0 || whole_cycle ? magnitude((at + n - 1) % n) : NAN;
-    const double after = at + 1 < n || whole_cycle ? magnitude((at + 1) % n) : NAN;
+    const SamplesBeside beside = SamplesBesideOf(n, at, whole_cycle);
+    const double before = beside.before ? magnitude(*beside.before) : NAN;
+    const double after = beside.after ? magnitude(*beside.after) : NAN;
     if (NeighbourRatio(magnitude(at), before, after) > kUnresolvedPeakRatio) keys.push_back(d.key);
   }
   return keys;
@@ -282,6 +283,14 @@ bool SpanIsACycle(std::size_t count, double interval) {
   return interval > 0.0 && std::abs(span - 4.0 * std::numbers::pi) < 0.5 * interval;
 }
 
+SamplesBeside SamplesBesideOf(std::size_t count, std::size_t at, bool whole_cycle) {
+  SamplesBeside beside;
+  if (count < 2 || at >= count) return beside;
+  if (at > 0 || whole_cycle) beside.before = (at + count - 1) % count;
+  if (at + 1 < count || whole_cycle) beside.after = (at + 1) % count;
+  return beside;
+}
+
 double NeighbourRatio(double value, double before, double after) {
   double beside = -HUGE_VAL;
   for (double v : {before, after})
@@ -311,8 +320,9 @@ std::vector<SampledPeak> SampledPeaks(const std::vector<CrankTrainSample>& sampl
     SampledPeak peak;
     peak.figure = {d.key, d.label, d.value(samples[at]), d.big_end, d.order};
     peak.index = at;
-    if (n >= 2 && (at > 0 || whole_cycle)) peak.before = d.value(samples[(at + n - 1) % n]);
-    if (n >= 2 && (at + 1 < n || whole_cycle)) peak.after = d.value(samples[(at + 1) % n]);
+    const SamplesBeside beside = SamplesBesideOf(n, at, whole_cycle);
+    if (beside.before) peak.before = d.value(samples[*beside.before]);
+    if (beside.after) peak.after = d.value(samples[*beside.after]);
     for (std::size_t k = 0; k < n; ++k) {
       const double step = d.between_samples(samples[k]);
       if (std::isfinite(step) && !(step <= peak.step_peak)) {

@@ -88,6 +88,14 @@ HeadlineFigure HeadlineFigureFor(const std::string& key, double value);
 /// interval) is reported at whatever height the samples happen to catch.
 inline constexpr double kUnresolvedPeakRatio = 1.5;
 
+/// The output samples beside sample `at` of `count`: the one before and the one after it, none
+/// past an end of samples that are not a whole cycle (the last is beside the first when they
+/// are). The one rule for every test of a spike between output samples.
+struct SamplesBeside {
+  std::optional<std::size_t> before, after;
+};
+SamplesBeside SamplesBesideOf(std::size_t count, std::size_t at, bool whole_cycle);
+
 /// A sample's value over the larger of the two samples beside it (NaN: none there): infinite
 /// when both are zero and the value is not, 1 without a neighbour. Above kUnresolvedPeakRatio
 /// the value is a spike the output samples do not resolve.

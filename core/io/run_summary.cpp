@@ -61,14 +61,13 @@ RunSummary SummarizeRun(const std::string& case_name, const engine::RunConfig& c
     // The extreme's magnitude against the samples beside it (none past an end of samples that
     // are not a whole cycle, nor where the column is empty).
     const auto spike = [&](std::size_t at) {
-      const auto beside = [&](bool next) {
-        if (!(n >= 2 && (whole_cycle || (next ? at + 1 < n : at > 0))))
-          return std::numeric_limits<double>::quiet_NaN();
-        const auto& v = value(next ? (at + 1) % n : (at + n - 1) % n);
+      const auto magnitude = [&](std::optional<std::size_t> k) {
+        const auto& v = k ? value(*k) : std::optional<double>();
         return v ? std::abs(*v) : std::numeric_limits<double>::quiet_NaN();
       };
-      return engine::NeighbourRatio(std::abs(*value(at)), beside(false), beside(true)) >
-             engine::kUnresolvedPeakRatio;
+      const engine::SamplesBeside beside = engine::SamplesBesideOf(n, at, whole_cycle);
+      return engine::NeighbourRatio(std::abs(*value(at)), magnitude(beside.before),
+                                    magnitude(beside.after)) > engine::kUnresolvedPeakRatio;
     };
     // + 0.0: a signed zero (e.g. a friction power of -0) reads 0.
     s.extremes[columns[c].header] = {*value(*lo) + 0.0, *value(*hi) + 0.0, spike(*lo), spike(*hi)};

@@ -83,12 +83,14 @@ QString FormatReadoutValues(const std::vector<double>& values, const QString& se
     for (double v : values) texts << FormatReadout(v);
     return texts.join(separator);
   }
-  const QString zero = QString::number(0.0, 'f', *decimals);
-  for (double v : values) {
-    const QString t = QString::number(v, 'f', *decimals);
-    texts << (t == "-" + zero ? zero : t);  // a value that rounds to zero reads without a sign
-  }
+  for (double v : values) texts << FixedDecimals(v, *decimals);
   return texts.join(separator);
+}
+
+QString FixedDecimals(double value, int decimals) {
+  const QString text = QString::number(value, 'f', decimals);
+  const QString zero = QString::number(0.0, 'f', decimals);
+  return text == "-" + zero ? zero : text;
 }
 
 QString FormatReadoutPair(double x, double y, const QString& unit) {

@@ -47,5 +47,8 @@ QString FormatReadoutValues(const std::vector<double>& values, const QString& se
 /// value, zeros alone, magnitudes of 1e6 and more or below 1e-4). Values that are not finite are
 /// ignored.
 std::optional<int> CommonDecimals(const std::vector<double>& values);
+/// A value with `decimals` decimals; one that rounds to zero reads without a sign ("0.00", not
+/// "-0.00").
+QString FixedDecimals(double value, int decimals);
 
 }  // namespace filmdyn::ui

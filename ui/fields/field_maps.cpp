@@ -3,7 +3,6 @@
 #include <QObject>
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <numeric>
 #include <string_view>
 
@@ -236,7 +235,7 @@ FilmMapData CrankAngleMap(const FieldFrames& frames, size_t joint_index,
   const size_t row = d.x.size(), n = d.y.size();
   if (n >= 2 && d.values.size() == row * n) {
     const double step = (d.y.back() - d.y.front()) / double(n - 1);
-    if (engine::SpanIsACycle(n, step * std::numbers::pi / 180.0)) {
+    if (engine::SpanIsACycle(n, step / kDeg)) {
       const std::vector<double> first(d.values.begin(), d.values.begin() + long(row));
       const std::vector<double> last(d.values.end() - long(row), d.values.end());
       if (d.y.back() < 720.0 - 1e-9) {

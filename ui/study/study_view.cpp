@@ -196,10 +196,8 @@ class StudyTableModel : public QAbstractTableModel {
       const io::ComparisonFigure& fig = io::ComparisonFigures()[size_t(k)];
       const std::optional<double>& value = r.figures[size_t(k)];
       if (role == Qt::DisplayRole && value && std::isfinite(*value) && n < decimals_.size() &&
-          decimals_[n]) {
-        const QString text = QString::number(*value * fig.display_scale, 'f', *decimals_[n]);
-        return text.startsWith('-') && text.toDouble() == 0.0 ? text.mid(1) : text;
-      }
+          decimals_[n])
+        return FixedDecimals(*value * fig.display_scale, *decimals_[n]);
       return number(value, 1.0 / fig.display_scale);
     }
     // The last column: why a point is not done (or its run's message), and the figures its run
