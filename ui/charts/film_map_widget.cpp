@@ -91,14 +91,6 @@ void FilmMapWidget::paintEvent(QPaintEvent*) {
     const QRectF band(px(a), plot.top(), px(b) - px(a), plot.height());
     painter.fillRect(band, QColor(200, 200, 200));
     painter.fillRect(band, QBrush(QColor(150, 150, 150), Qt::BDiagPattern));
-    painter.save();
-    painter.translate(band.center());
-    painter.rotate(-90);
-    painter.setPen(Qt::black);
-    const QString text = fm.elidedText(d.no_film_label, Qt::ElideRight, plot.height() - 8);
-    painter.drawText(QRectF(-plot.height() / 2.0, -line / 2.0, plot.height(), line),
-                     Qt::AlignCenter, text);
-    painter.restore();
   }
   // Marker lines: black under white, visible on every colour of the map.
   auto marker = [&](QPointF a, QPointF b) {
@@ -166,9 +158,33 @@ void FilmMapWidget::paintEvent(QPaintEvent*) {
     }
     painter.restore();
   }
-  if (std::isfinite(d.y_line) && d.y_line >= y0 && d.y_line <= y1) {
+  const bool has_y_line = std::isfinite(d.y_line) && d.y_line >= y0 && d.y_line <= y1;
+  if (has_y_line) {
     const double y = py(d.y_line);
     marker(QPointF(plot.left(), y), QPointF(plot.right(), y));
+  }
+  // The no-film bands' name, upright along the band, in the half away from the horizontal line
+  // (it crossed the name at mid-cycle); drawn after it on the band's grey, so that a name longer
+  // than half the map is still read whole.
+  no_film_labels_.clear();
+  for (const auto& [a, b] : d.no_film_x) {
+    const QString text = fm.elidedText(d.no_film_label, Qt::ElideRight, plot.height() - 8);
+    const double length = fm.horizontalAdvance(text) + 6.0, middle = plot.center().y();
+    double centre = middle;
+    if (has_y_line) {
+      const double upper = plot.top() + std::max(plot.height() / 4.0, length / 2.0 + 4.0);
+      const double lower = plot.bottom() - std::max(plot.height() / 4.0, length / 2.0 + 4.0);
+      centre = py(d.y_line) < middle ? std::max(lower, middle) : std::min(upper, middle);
+    }
+    const QRectF box((px(a) + px(b) - line) / 2.0, centre - length / 2.0, line, length);
+    no_film_labels_.push_back(box);
+    painter.fillRect(box, QColor(200, 200, 200));
+    painter.save();
+    painter.translate(box.center());
+    painter.rotate(-90);
+    painter.setPen(Qt::black);
+    painter.drawText(QRectF(-length / 2.0, -line / 2.0, length, line), Qt::AlignCenter, text);
+    painter.restore();
   }
   painter.setPen(palette().color(QPalette::Text));
   painter.drawRect(plot.adjusted(0, 0, -1, -1));

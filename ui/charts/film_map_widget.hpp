@@ -57,6 +57,8 @@ class FilmMapWidget : public QWidget {
   std::pair<double, double> scaleRange() const { return {scale_lo_, scale_hi_}; }
   /// Where the points' legend was last drawn [px] (null before; tests).
   QRectF pointsLegendRect() const { return points_legend_; }
+  /// Where the no-film bands' names were last drawn [px], one box per band (tests).
+  const std::vector<QRectF>& noFilmLabelRects() const { return no_film_labels_; }
   QSize sizeHint() const override { return {640, 360}; }
   QSize minimumSizeHint() const override { return {260, 180}; }
 
@@ -68,6 +70,7 @@ class FilmMapWidget : public QWidget {
   FilmMapData data_;
   double scale_lo_ = 0.0, scale_hi_ = 1.0;
   QRectF points_legend_;
+  std::vector<QRectF> no_film_labels_;
 };
 
 }  // namespace filmdyn::ui

@@ -1,5 +1,6 @@
 // The film map's legend of its points goes to the corner where it hides least: it sat in the
-// bottom-right corner on the bright band at the cycle's end and over the load's dots.
+// bottom-right corner on the bright band at the cycle's end and over the load's dots. The name
+// of a band without film keeps clear of the crank-angle line (the line crossed it mid-cycle).
 #include <QImage>
 #include <QtTest>
 #include <cmath>
@@ -47,6 +48,46 @@ class TestFilmMap : public QObject {
     map.setData(d);
     (void)map.grab();
     QVERIFY(map.pointsLegendRect().center().y() > map.height() / 2.0);
+  }
+
+  void theNoFilmNameKeepsClearOfTheCrankAngleLine() {
+    // The skirt's map: film either side of a relief band in the middle, the crank angle's line
+    // at each of several angles.
+    FilmMapData d;
+    for (int i = 0; i <= 36; ++i) d.x.push_back(5.0 * i);
+    for (int j = 0; j <= 72; ++j) d.y.push_back(10.0 * j);
+    d.values.assign(d.x.size() * d.y.size(), 0.0);
+    d.no_film_x = {{45.0, 135.0}};
+    d.no_film_label = "pin-boss relief: no film";
+    FilmMapWidget map;
+    map.resize(600, 600);
+    for (const double angle : {10.0, 180.0, 350.0, 360.0, 380.0, 540.0, 710.0}) {
+      d.y_line = angle;
+      map.setData(d);
+      const QImage image = map.grab().toImage();
+      QCOMPARE(map.noFilmLabelRects().size(), std::size_t(1));
+      const QRectF label = map.noFilmLabelRects().front();
+      // The line's row: white between black in a film column (left of the band).
+      const int column = int(label.left()) - 60;
+      int row = -1;
+      for (int r = 1; r + 1 < image.height(); ++r) {
+        if (image.pixelColor(column, r) == QColor(Qt::white) &&
+            image.pixelColor(column, r - 1) == QColor(Qt::black) &&
+            image.pixelColor(column, r + 1) == QColor(Qt::black)) {
+          row = r;
+        }
+      }
+      QVERIFY2(row >= 0, qPrintable(QString("no line found at %1 °CA").arg(angle)));
+      QVERIFY2(row < label.top() - 2 || row > label.bottom() + 2,
+               qPrintable(QString("%1 °CA: the line at row %2 crosses the name at %3–%4")
+                              .arg(angle)
+                              .arg(row)
+                              .arg(label.top())
+                              .arg(label.bottom())));
+      // The name is whole: inside the map's height, as long as its text.
+      QVERIFY(label.top() >= 0 && label.bottom() <= map.height());
+      QVERIFY(label.height() >= map.fontMetrics().horizontalAdvance(d.no_film_label));
+    }
   }
 };
 
