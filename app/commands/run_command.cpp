@@ -119,8 +119,11 @@ Command MakeRunCommand() {
     const bool stopped_while_computing = interrupt.flag()->load();
     if (!quiet) streams.err << "\n";
     io::WriteRunFolder(out, c.name, config, result, [&](const std::vector<io::OutputRow>& rows) {
-      if (!fields.WriteReported(out / "fields", result.samples) &&
-          fields.skirt_frames() + fields.bearing_frames() > 0) {
+      const bool wrote = fields.WriteReported(out / "fields", result.samples);
+      if (wrote && result.reported_cycle == 0) {
+        streams.err << "filmdyn run: fields/ holds one step, the film where the run failed in its "
+                       "run-in (the run-in's other film fields are not recorded)\n";
+      } else if (!wrote && fields.skirt_frames() + fields.bearing_frames() > 0) {
         streams.err << "filmdyn run: fields/ not written: the run reports its last whole cycle, "
                        "whose film fields were not kept (two cycles of them would not fit in "
                        "this machine's memory)\n";

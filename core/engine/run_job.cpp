@@ -419,6 +419,33 @@ RunResult RunSingle(const RunConfig& config, const RunMonitor& monitor,
     }
     return result.status == RunStatus::kCancelled || result.status == RunStatus::kTimeLimit;
   };
+  // The films at an output step, to the field callback (the solvers re-solved at the step's
+  // state: the integrator's last evaluation may lie elsewhere).
+  auto field_frame = [&](int in_cycle, int step, double t, const CrankTrainSample& sample,
+                         bool failure) {
+    if (skirt) skirt->RefreshFields();
+    if (big_end) big_end->RefreshFields();
+    FieldFrame frame;
+    frame.cycle = in_cycle;
+    frame.step = step;
+    frame.failure = failure;
+    frame.crank_angle_deg = CycleCrankAngleDeg(sample.crank_angle);  // as results.csv
+    frame.time = t;
+    frame.sample = &sample;
+    frame.skirt = skirt ? &skirt->solver() : nullptr;
+    frame.bearing = big_end ? &big_end->solver() : nullptr;
+    config.field_callback(frame);
+    result.reynolds_solves = solves();
+  };
+  // The films where the run failed (the step's film solved, its figures out of bounds). Only a
+  // picture of the failure: should the films not solve again there, the failure stands without.
+  auto failure_frame = [&](int in_cycle, int step, double t, const CrankTrainSample& sample) {
+    if (!config.field_callback) return;
+    try {
+      field_frame(in_cycle, step, t, sample, true);
+    } catch (const std::exception&) {
+    }
+  };
   try {
     if (t_start > 0.0) {
       // Only where the run-in ends matters, not its accuracy: 10 x looser tolerances (the
@@ -439,6 +466,7 @@ RunResult RunSingle(const RunConfig& config, const RunMonitor& monitor,
         if (const std::string trouble = FilmTrouble(current.samples.back()); !trouble.empty()) {
           result.status = RunStatus::kFailed;
           result.message = WithSupplyHint(trouble, c) + where;
+          failure_frame(0, j, t, current.samples.back());
           keep(std::move(current));
           result.wall_time = elapsed();
           return result;
@@ -476,25 +504,13 @@ RunResult RunSingle(const RunConfig& config, const RunMonitor& monitor,
           result.status = RunStatus::kFailed;
           result.message = WithSupplyHint(trouble, c) + where_now();
           result.cycles = cycle;
+          failure_frame(cycle, k, t, sample);
           keep(std::move(current));
           result.wall_time = elapsed();
           return result;
         }
         steady.Record(k, tracked.values(sample));
-        if (config.field_callback) {
-          if (skirt) skirt->RefreshFields();
-          if (big_end) big_end->RefreshFields();
-          FieldFrame frame;
-          frame.cycle = cycle;
-          frame.step = k;
-          frame.crank_angle_deg = CycleCrankAngleDeg(sample.crank_angle);  // as results.csv
-          frame.time = t;
-          frame.sample = &sample;
-          frame.skirt = skirt ? &skirt->solver() : nullptr;
-          frame.bearing = big_end ? &big_end->solver() : nullptr;
-          config.field_callback(frame);
-          result.reynolds_solves = solves();
-        }
+        if (config.field_callback) field_frame(cycle, k, t, sample, false);
         // The cycle's verdict before its last step is reported, so that the monitor sees the
         // run's last step as such (fraction 1).
         const bool cycle_end = k == steps_per_cycle - 1;

@@ -42,8 +42,15 @@ Model ModelOfCase(const EngineCase& engine_case);
 /// film, y = z across the width) belong to the sampled state. nullptr = joint not lubricated.
 /// Valid only during the callback.
 struct FieldFrame {
-  int cycle = 0;                 ///< 1-based cycle the step belongs to
-  int step = 0;                  ///< output step within the cycle, 0 … steps_per_cycle − 1
+  /// 1-based cycle the step belongs to; 0: the run-in, whose only frame is a failure's (below).
+  int cycle = 0;
+  /// Output step within the cycle, 0 … steps_per_cycle − 1 (in the run-in: of the run-in's).
+  int step = 0;
+  /// The output step at which the run failed, its film in trouble (the sample that ends
+  /// results.csv): in a cycle the frame its step would have had anyway; in the run-in, whose
+  /// film fields are not recorded, the one frame a failure there leaves, to see where it
+  /// happened.
+  bool failure = false;
   /// The step's crank angle in [0, 720) as results.csv labels it (CycleCrankAngleDeg): a cycle
   /// that starts elsewhere than 0 °CA (operating.start_crank_angle) passes 720 → 0 within it.
   double crank_angle_deg = 0.0;
@@ -52,9 +59,10 @@ struct FieldFrame {
   const lubrication::SkirtSolver* skirt = nullptr;
   const lubrication::BearingSolver* bearing = nullptr;
 };
-/// Called at every output step of every cycle. The run reports the last cycle it computed
-/// (RunResult::cycles): keep the frames of the newest cycle only (e.g. write them into a fresh
-/// folder per cycle, or buffer one cycle). Costs nothing when empty.
+/// Called at every output step of every cycle, and at the output step where a run in its run-in
+/// fails (FieldFrame::failure). The run reports the last cycle it computed (RunResult::cycles):
+/// keep the frames of the newest cycle only (e.g. write them into a fresh folder per cycle, or
+/// buffer one cycle). Costs nothing when empty.
 using FieldCallback = std::function<void(const FieldFrame&)>;
 
 /// Default RunConfig::motion_interval: 1/8 °CA (a journal crossing its clearance in ~20 °CA

@@ -34,6 +34,11 @@ struct FieldRecorder::Cycle {
     // The run job gives a cycle's first frame and sample the same time t: equal, not close.
     return size() > 0 && !samples.empty() && samples.front().time == first_time;
   }
+  /// A run that failed in its run-in: the one frame of its last output step (the failure), for
+  /// samples that end there.
+  bool FailedRunInAt(const std::vector<engine::CrankTrainSample>& samples) const {
+    return cycle == 0 && size() > 0 && !samples.empty() && samples.back().time == first_time;
+  }
 };
 
 struct FieldRecorder::Frames {
@@ -70,6 +75,7 @@ const FieldRecorder::Cycle* FieldRecorder::Reported(
     const std::vector<engine::CrankTrainSample>& samples) const {
   for (const Cycle* cycle : {&frames_->newest, &frames_->previous})
     if (cycle->StartsAt(samples)) return cycle;
+  if (frames_->newest.FailedRunInAt(samples)) return &frames_->newest;
   return nullptr;
 }
 
@@ -188,6 +194,8 @@ void FieldRecorder::Record(const engine::FieldFrame& frame) {
     newest = {};
     newest.cycle = frame.cycle;
     newest.first_time = frame.time;
+  } else if (newest.size() == 0) {
+    newest.first_time = frame.time;  // the run-in's failure: cycle 0, as the empty start
   }
   if (frame.skirt != nullptr) {
     Keep(SkirtSurface(*frame.skirt), frame.crank_angle_deg, 0.0, &newest.skirt);

@@ -44,7 +44,9 @@ class FieldRecorder {
   std::size_t bearing_frames() const;
   /// Whether the recorder holds the frames of a run's reported samples (the same cycle, from its
   /// start): the newest cycle's, or the previous one's when it is kept. A run stopped in its
-  /// second or later cycle reports the last whole one: without the previous cycle, not held.
+  /// second or later cycle reports the last whole one: without the previous cycle, not held. A
+  /// run that failed in its run-in reports the run-in's part: held as the one frame of its last
+  /// step, the failure (engine::FieldFrame::failure).
   bool Holds(const std::vector<engine::CrankTrainSample>& samples) const;
   /// Writes the frames of the reported `samples` when held (Holds); returns whether it wrote. A run
   /// folder's fields/ are never of other output steps than its results.csv.

@@ -304,6 +304,35 @@ class TestCli : public QObject {
       QVERIFY(std::abs(fields.frames[k].crank_angle_deg - row_angles[k]) < 1e-6);
   }
 
+  // A run whose film fails in its run-in writes the film where it failed: fields/ holds that one
+  // step, results.csv's last row, and stderr says so (it used to write no fields/ at all).
+  void aRunFailingInItsRunInWritesTheFilmWhereItFailed() {
+    QTemporaryDir dir;
+    const QString out = dir.filePath("r");
+    QProcess run;
+    run.start(
+        FILMDYN_EXECUTABLE,
+        {"run", "--out", out, "--model", "only-lbrbe", "--rpm", "6000", "--set",
+         "big_end.mesh_theta=24", "--set", "big_end.mesh_z=4", "--set", "big_end.cavitation=jfo",
+         "--set", "lubricant.viscosity=0.6e-3", "--set", "solver.error_estimate=0", "--quiet"});
+    QVERIFY(run.waitForFinished(120000));
+    const QByteArray err = run.readAllStandardError();
+    QCOMPARE(run.exitCode(), 1);
+    QVERIFY2(err.contains("journal touches the bearing") && err.contains("(run-in, at"),
+             err.right(600).data());
+    QVERIFY2(err.contains("fields/ holds one step, the film where the run failed in its run-in"),
+             err.right(600).data());
+    QFile csv(out + "/results.csv");
+    QVERIFY(csv.open(QIODevice::ReadOnly));
+    double last_angle = NAN;
+    csv.readLine();  // the header; crank_angle[deg] is the first column
+    while (!csv.atEnd()) last_angle = csv.readLine().split(',').front().toDouble();
+    const filmdyn::io::FieldSeries fields =
+        filmdyn::io::ReadFieldSeries((out + "/fields/bearing.xdmf").toStdString());
+    QCOMPARE(fields.frames.size(), std::size_t(1));
+    QVERIFY(std::abs(fields.frames.front().crank_angle_deg - last_angle) < 1e-6);
+  }
+
   // A stop signal that arrives after the computing, while the files are written (a scheduler's
   // time limit can land there), lets the writing finish: the run is complete, its fields and
   // plots are there, exit 0. It used to kill the process half-way (exit 143, summary "running",

@@ -88,15 +88,17 @@ FieldCollector::FieldCollector(int steps_per_cycle)
     : stride_(std::max(1, (steps_per_cycle + kMaxFrames - 1) / kMaxFrames)) {}
 
 void FieldCollector::Add(const engine::FieldFrame& frame) {
-  if (frame.cycle != cycle_) {
+  if (frame.cycle != cycle_ || !frames_) {  // (a run-in's failure: cycle 0, the first frame)
     cycle_ = frame.cycle;
     frames_ = std::make_shared<FieldFrames>();
   }
-  if (frame.step % stride_ != 0) return;
+  // Every stride-th step, and the step where the run failed (the film a user wants to see).
+  if (frame.step % stride_ != 0 && !frame.failure) return;
   if (frames_->joints.empty()) {
     if (frame.skirt) frames_->joints.push_back(MakeSkirt(*frame.skirt));
     if (frame.bearing) frames_->joints.push_back(MakeBigEnd(*frame.bearing));
   }
+  if (frame.failure) frames_->failure_frame = int(frames_->crank_angle_deg.size());
   frames_->crank_angle_deg.push_back(frame.crank_angle_deg);
   frames_->time.push_back(frame.time);
   size_t j = 0;
@@ -130,6 +132,10 @@ std::shared_ptr<const FieldFrames> FieldCollector::Result() const {
     if (per_frame.size() > wrap)
       std::rotate(per_frame.begin(), per_frame.begin() + std::ptrdiff_t(wrap), per_frame.end());
   };
+  if (ordered->failure_frame >= 0) {  // its place after the turn
+    const std::size_t n = ordered->crank_angle_deg.size();
+    ordered->failure_frame = int((std::size_t(ordered->failure_frame) + n - wrap) % n);
+  }
   turn(ordered->crank_angle_deg);
   turn(ordered->time);
   for (JointFieldFrames& joint : ordered->joints) {

@@ -71,6 +71,9 @@ struct FieldFrames {
   std::vector<double> crank_angle_deg;  ///< one per frame [°CA]
   std::vector<double> time;             ///< [s], same length
   std::vector<JointFieldFrames> joints;
+  /// The frame of the output step where the run failed (its film in trouble), −1 for none: the
+  /// last of a failed cycle's, or the only one of a run that failed in its run-in.
+  int failure_frame = -1;
   bool empty() const { return crank_angle_deg.empty() || joints.empty(); }
 };
 

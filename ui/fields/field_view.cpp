@@ -445,7 +445,12 @@ void FieldView::showFrame() {
   shown_angle_ = angle;
   angle_label_->setText(tr("%1 °CA").arg(angle, 0, 'f', 1));
   const FieldArrayInfo& info = currentArray();
-  const QString what = tr("%1 at %2 °CA").arg(QString::fromUtf8(info.words)).arg(angle, 0, 'f', 0);
+  QString what = tr("%1 at %2 °CA").arg(QString::fromUtf8(info.words)).arg(angle, 0, 'f', 0);
+  if (int(k) == frames_->failure_frame) {
+    what += frames_->crank_angle_deg.size() == 1
+                ? tr(", where the run failed in its run-in (the only step kept)")
+                : tr(", where the run failed");
+  }
   title_->setText(run_label_.isEmpty() ? what.left(1).toUpper() + what.mid(1)
                                        : tr("%1 — %2").arg(run_label_, what));
   for (size_t j = 0; j < panes_.size() && j < frames_->joints.size(); ++j) {

@@ -351,6 +351,65 @@ class TestRunJob : public QObject {
     QVERIFY(cycle.big_end->mean_fpl && *cycle.big_end->mean_fpl > 0.0 && cycle.big_end->fmep);
   }
 
+  // A run whose film fails keeps the film where it failed: in a cycle the failing step's frame
+  // ends the cycle's fields (it had none: the fields ended a step before results.csv); in the
+  // run-in, whose fields are not recorded, that one frame is the fields/ the run writes.
+  void aFailedRunKeepsTheFilmWhereItFailed() {
+    struct Seen {
+      int cycle, step;
+      double time;
+      bool failure;
+    };
+    const auto run = [](double viscosity, double run_in, std::vector<Seen>* seen,
+                        io::FieldRecorder* recorder) {
+      engine::RunConfig config = DefaultConfig(6000, engine::Model::kOnlyLbrbe);
+      config.engine_case.big_end.mesh_theta = 24;
+      config.engine_case.big_end.mesh_z = 4;
+      config.engine_case.big_end.cavitation = lubrication::CavitationModel::kJfo;
+      config.engine_case.lubricant.viscosity = viscosity;  // too thin: the journal touches
+      config.engine_case.solver.jfo_run_in_angle = run_in;
+      recorder->Attach(&config);
+      config.field_callback = [seen, record = config.field_callback](const engine::FieldFrame& f) {
+        seen->push_back({f.cycle, f.step, f.time, f.failure});
+        record(f);
+      };
+      return engine::RunJob(config);
+    };
+    for (const double run_in : {4 * M_PI, 0.0}) {  // 720 °CA run-in, none
+      std::vector<Seen> seen;
+      io::FieldRecorder recorder;
+      const engine::RunResult r = run(0.6e-3, run_in, &seen, &recorder);
+      QCOMPARE(engine::StatusName(r.status), std::string("failed"));
+      QVERIFY2(r.message.find("journal touches the bearing") != std::string::npos,
+               r.message.c_str());
+      QVERIFY(!r.samples.empty() && !seen.empty());
+      // The last frame is the failure's, at the last sample's time; the only one flagged.
+      QVERIFY(seen.back().failure);
+      QCOMPARE(seen.back().time, r.samples.back().time);
+      QCOMPARE(std::count_if(seen.begin(), seen.end(), [](const Seen& s) { return s.failure; }),
+               std::ptrdiff_t(1));
+      if (run_in > 0.0) {
+        QVERIFY2(r.message.find("run-in") != std::string::npos, r.message.c_str());
+        QCOMPARE(r.reported_cycle, 0);
+        QCOMPARE(seen.size(), std::size_t(1));
+        QCOMPARE(seen.back().cycle, 0);
+      } else {
+        QCOMPARE(r.reported_cycle, 1);
+        // One frame per reported output step, the failing one included.
+        QCOMPARE(seen.size(), r.samples.size());
+      }
+      // fields/ as results.csv: the same steps at the same crank angles.
+      QVERIFY(recorder.Holds(r.samples));
+      QTemporaryDir dir;
+      QVERIFY(recorder.WriteReported(dir.path().toStdString(), r.samples));
+      const io::FieldSeries series =
+          io::ReadFieldSeries(std::filesystem::path(dir.path().toStdString()) / "bearing.xdmf");
+      QCOMPARE(series.frames.size(), run_in > 0.0 ? std::size_t(1) : r.samples.size());
+      QVERIFY(std::abs(series.frames.back().crank_angle_deg -
+                       engine::CycleCrankAngleDeg(r.samples.back().crank_angle)) < 1e-6);
+    }
+  }
+
   // A cycle that starts elsewhere than 0 °CA (operating.start_crank_angle = 90 °CA): its film
   // fields and its messages name each output step's crank angle as results.csv labels it, and
   // the fields are written in crank-angle order from 0 °CA (the time a reader keys them by).

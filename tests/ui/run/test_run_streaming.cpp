@@ -13,6 +13,7 @@
 #include <QStackedWidget>
 #include <QStandardPaths>
 #include <QTabWidget>
+#include <QTemporaryDir>
 #include <QThread>
 #include <QTimer>
 #include <QtTest>
@@ -355,6 +356,56 @@ class TestRunStreaming : public QObject {
         if (tabs->indexOf(page) >= 0) tabs->setCurrentWidget(page);
       QTest::qWait(200);
       window.grab().save(dir + "/field-view-cancelled-run.png");
+    }
+  }
+
+  // A run whose film fails in its run-in (an oil far too thin: the journal touches the bearing)
+  // keeps the film where it failed: the field view shows that one step, at the crank angle of
+  // the results' last row, and the run's fields can be saved.
+  void aRunFailingInItsRunInShowsTheFilmWhereItFailed() {
+    MainWindow window;
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    auto c = window.document()->engineCase();
+    filmdyn::ui::ApplyRunModel(c, "only-lbrbe");
+    c.operating.rpm = 6000;
+    c.big_end.mesh_theta = 24;
+    c.big_end.mesh_z = 4;
+    c.big_end.cavitation = filmdyn::lubrication::CavitationModel::kJfo;
+    c.lubricant.viscosity = 0.6e-3;
+    c.solver.error_estimate = 0;
+    window.document()->reset(c);
+    QSignalSpy finished(window.runController(), &filmdyn::ui::RunController::runFinished);
+    window.runAction()->trigger();
+    QVERIFY(finished.wait(120000));
+    const RunHandle run = finished.takeFirst().first().value<RunHandle>();
+    QCOMPARE(run->status(), RunStatus::kFailed);
+    QVERIFY2(run->reason().contains("run-in") && run->reason().contains("touches the bearing"),
+             qPrintable(run->reason()));
+    QVERIFY(run->fields() != nullptr);
+    QCOMPARE(run->fields()->crank_angle_deg.size(), std::size_t(1));
+    QVERIFY(!run->samples().empty());
+    QVERIFY(std::abs(run->fields()->crank_angle_deg.front() -
+                     run->samples().back()[filmdyn::ui::Column::kCrankAngle]) < 1e-6);
+    window.runTable()->selectRow(window.runTable()->rowCount() - 1);
+    QTRY_VERIFY(window.fieldView()->frames() == run->fields().get());
+    QCOMPARE(run->fields()->failure_frame, 0);
+    QVERIFY2(window.fieldView()->title().endsWith(
+                 QString("at %1 °CA, where the run failed in its run-in (the only step kept)")
+                     .arg(std::round(run->fields()->crank_angle_deg.front()))),
+             qPrintable(window.fieldView()->title()));
+    QTemporaryDir dir;
+    QString error;
+    QVERIFY2(run->writeFields(dir.path(), &error), qPrintable(error));
+    QVERIFY(QFile::exists(dir.path() + "/bearing.xdmf"));
+    if (const QString shots = qEnvironmentVariable("FILMDYN_SCREENSHOT_DIR"); !shots.isEmpty()) {
+      QWidget* page = window.fieldView();  // bring its workspace tab to the front
+      while (page->parentWidget() && !qobject_cast<QStackedWidget*>(page->parentWidget()))
+        page = page->parentWidget();
+      for (QTabWidget* tabs : window.findChildren<QTabWidget*>())
+        if (tabs->indexOf(page) >= 0) tabs->setCurrentWidget(page);
+      QTest::qWait(300);
+      window.grab().save(shots + "/field-view-failed-run-in.png");
     }
   }
 
