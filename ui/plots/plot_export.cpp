@@ -13,8 +13,13 @@ namespace filmdyn::ui {
 PlotRun PlotRunFromRows(int id, const engine::EngineCase& engine_case, const std::string& model,
                         double rpm, const std::vector<io::OutputRow>& rows,
                         const std::vector<io::OutputRow>& motion_rows) {
-  return {id, RunLabel(QString::fromStdString(model), rpm),
-          engine::BigEndFit(engine_case).hot_clearance, RunSamplesFromRows(rows),
+  const engine::Model parsed = engine::ParseModel(model);
+  return {id,
+          RunLabel(QString::fromStdString(model), rpm),
+          engine::BigEndFit(engine_case).hot_clearance,
+          engine::SkirtLubricated(parsed),
+          engine::BigEndLubricated(parsed),
+          RunSamplesFromRows(rows),
           RunSamplesFromRows(motion_rows)};
 }
 

@@ -453,15 +453,12 @@ void PlotPanel::updateRun(const PlotRun& run) {
     points.resize(series.size());
     for (size_t k = 0; k < series.size(); ++k) {
       const PlotCurve& curve = entry.spec->curves[k];
-      points[k] = LapCurve(curve, curve.from_motion && !motion.samples.empty() ? motion : samples);
-      // An orbit or portrait that never leaves one point (an ideal joint's centred journal)
-      // shows nothing: it counts as no data.
-      if (!entry.spec->crank_angle_axis && !points[k].xy.isEmpty()) {
-        const QPointF first = points[k].xy.front();
-        const bool still = std::all_of(points[k].xy.begin(), points[k].xy.end(),
-                                       [&first](const QPointF& p) { return p == first; });
-        if (still) points[k] = CurvePoints{};
-      }
+      // A quantity of a film the run has not (an ideal joint's zeros) is no data.
+      const bool has_film = curve.film == FilmOf::kNone ||
+                            (curve.film == FilmOf::kSkirt ? run.skirt_film : run.big_end_film);
+      points[k] = has_film ? LapCurve(curve, curve.from_motion && !motion.samples.empty() ? motion
+                                                                                          : samples)
+                           : CurvePoints{};
       const qsizetype gap = points[k].after_gap < 0 ? points[k].xy.size() : points[k].after_gap;
       series[k][0]->replace(points[k].xy.first(gap));
       if (points[k].after_gap >= 0 && series[k][1] == nullptr) series[k][1] = new_line(k);
@@ -1249,8 +1246,14 @@ void PlotPanel::exportChartInteractive(int index) {
 }
 
 PlotRun PlotRunOf(const RunRecord& run) {
-  return {run.id(), run.label(), engine::BigEndFit(run.request().engine_case).hot_clearance,
-          run.samples(), run.motion()};
+  const engine::Model model = engine::ParseModel(run.request().model);
+  return {run.id(),
+          run.label(),
+          engine::BigEndFit(run.request().engine_case).hot_clearance,
+          engine::SkirtLubricated(model),
+          engine::BigEndLubricated(model),
+          run.samples(),
+          run.motion()};
 }
 
 }  // namespace filmdyn::ui

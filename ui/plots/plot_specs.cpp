@@ -82,6 +82,12 @@ PlotCurve Phase(const QString& name, Column column, Column rate_column, double s
   return curve;
 }
 
+// `curve`, drawn only for runs with `film`.
+PlotCurve Of(FilmOf film, PlotCurve curve) {
+  curve.film = film;
+  return curve;
+}
+
 PlotSpec VsCrankAngle(QString id, QString title, QString y_title, QString y_unit,
                       std::vector<PlotCurve> curves, bool non_negative = false) {
   PlotSpec spec;
@@ -114,19 +120,21 @@ std::vector<PlotSpec> Make() {
   std::vector<PlotSpec> plots;
   plots.push_back(VsCrankAngle("piston_lateral", QObject::tr("Piston lateral displacement e₀"),
                                QObject::tr("lateral e₀ [µm]"), "µm",
-                               {VsAngle("e₀", Column::kPistonLateral, 1e6)}));
+                               {Of(FilmOf::kSkirt, VsAngle("e₀", Column::kPistonLateral, 1e6))}));
   plots.push_back(VsCrankAngle("piston_tilt", QObject::tr("Piston tilt γ"),
                                QObject::tr("tilt γ [mrad]"), "mrad",
-                               {VsAngle("γ", Column::kPistonTilt, 1e3)}));
-  plots.push_back(VsCrankAngle("piston_lateral_velocity", QObject::tr("Piston lateral velocity ė₀"),
-                               QObject::tr("velocity ė₀ [mm/s]"), "mm/s",
-                               {VsAngle("ė₀", Column::kPistonLateralVelocity, 1e3)}));
-  plots.push_back(VsCrankAngle("piston_tilt_rate", QObject::tr("Piston tilt rate dγ/dt"),
-                               QObject::tr("dγ/dt [rad/s]"), "rad/s",
-                               {VsAngle("dγ/dt", Column::kPistonTiltRate, 1.0)}));
+                               {Of(FilmOf::kSkirt, VsAngle("γ", Column::kPistonTilt, 1e3))}));
+  plots.push_back(
+      VsCrankAngle("piston_lateral_velocity", QObject::tr("Piston lateral velocity ė₀"),
+                   QObject::tr("velocity ė₀ [mm/s]"), "mm/s",
+                   {Of(FilmOf::kSkirt, VsAngle("ė₀", Column::kPistonLateralVelocity, 1e3))}));
+  plots.push_back(VsCrankAngle(
+      "piston_tilt_rate", QObject::tr("Piston tilt rate dγ/dt"), QObject::tr("dγ/dt [rad/s]"),
+      "rad/s", {Of(FilmOf::kSkirt, VsAngle("dγ/dt", Column::kPistonTiltRate, 1.0))}));
   {
     PlotCurve path = XY("orbit", Column::kJournalEccX, 1e6, Column::kJournalEccY, 1e6);
     path.from_motion = true;
+    path.film = FilmOf::kBigEnd;
     PlotSpec orbit = Portrait("journal_orbit", QObject::tr("Journal orbit (rod frame)"),
                               QObject::tr("journal centre x [µm]"), "µm",
                               QObject::tr("journal centre y [µm]"), "µm", {path});
@@ -142,10 +150,11 @@ std::vector<PlotSpec> Make() {
     polar.equal_axes = true;
     plots.push_back(polar);
   }
-  plots.push_back(VsCrankAngle("liner_forces", QObject::tr("Liner (skirt) forces"),
-                               QObject::tr("force on the skirt [N]"), "N",
-                               {VsAngle("normal", Column::kSkirtNormalForce, 1.0),
-                                VsAngle("friction", Column::kSkirtFrictionForce, 1.0)}));
+  plots.push_back(
+      VsCrankAngle("liner_forces", QObject::tr("Liner (skirt) forces"),
+                   QObject::tr("force on the skirt [N]"), "N",
+                   {VsAngle("normal", Column::kSkirtNormalForce, 1.0),
+                    Of(FilmOf::kSkirt, VsAngle("friction", Column::kSkirtFrictionForce, 1.0))}));
   // The crank pin's force on the rod in the global frame (the load diagram beside it shows the
   // same force in the rod's frame: its curves are named for that frame).
   plots.push_back(VsCrankAngle(
@@ -157,17 +166,20 @@ std::vector<PlotSpec> Make() {
       "moft", QObject::tr("Minimum oil-film thickness"), QObject::tr("MOFT [µm]"), "µm",
       {VsAngle("skirt", Column::kSkirtMoft, 1e6), VsAngle("big end", Column::kBearingMoft, 1e6)},
       true));
-  plots.push_back(VsCrankAngle(
-      "fpl", QObject::tr("Friction power loss"), QObject::tr("friction power [W]"), "W",
-      {VsAngle("skirt", Column::kSkirtFpl, 1.0), VsAngle("big end", Column::kBearingFpl, 1.0)},
-      true));
+  plots.push_back(VsCrankAngle("fpl", QObject::tr("Friction power loss"),
+                               QObject::tr("friction power [W]"), "W",
+                               {Of(FilmOf::kSkirt, VsAngle("skirt", Column::kSkirtFpl, 1.0)),
+                                Of(FilmOf::kBigEnd, VsAngle("big end", Column::kBearingFpl, 1.0))},
+                               true));
   plots.push_back(VsCrankAngle(
       "friction_split", QObject::tr("Friction power: film shear and asperity contact"),
       QObject::tr("friction power [W]"), "W",
-      {DifferenceVsAngle("skirt, film", Column::kSkirtFpl, Column::kSkirtContactFpl, 1.0),
-       VsAngle("skirt, asperities", Column::kSkirtContactFpl, 1.0),
-       DifferenceVsAngle("big end, film", Column::kBearingFpl, Column::kBearingContactFpl, 1.0),
-       VsAngle("big end, asperities", Column::kBearingContactFpl, 1.0)},
+      {Of(FilmOf::kSkirt,
+          DifferenceVsAngle("skirt, film", Column::kSkirtFpl, Column::kSkirtContactFpl, 1.0)),
+       Of(FilmOf::kSkirt, VsAngle("skirt, asperities", Column::kSkirtContactFpl, 1.0)),
+       Of(FilmOf::kBigEnd,
+          DifferenceVsAngle("big end, film", Column::kBearingFpl, Column::kBearingContactFpl, 1.0)),
+       Of(FilmOf::kBigEnd, VsAngle("big end, asperities", Column::kBearingContactFpl, 1.0))},
       true));
   plots.push_back(VsCrankAngle(
       "peak_pressure", QObject::tr("Peak film pressure"), QObject::tr("peak film pressure [MPa]"),
@@ -197,17 +209,17 @@ std::vector<PlotSpec> Make() {
                                QObject::tr("oil-covered share of the panels [-]"), "",
                                {VsAngle("skirt", Column::kSkirtWettedFraction, 1.0)}, true));
   {
-    PlotSpec eps =
-        Portrait("phase_eps", QObject::tr("Big-end phase portrait ε / dε/dt"),
-                 QObject::tr("eccentricity ratio ε [-]"), "", QObject::tr("rate dε/dt [1/s]"),
-                 "1/s", {Phase("ε", Column::kBearingEps, Column::kBearingEpsRate, 1.0, 1.0)});
+    PlotSpec eps = Portrait(
+        "phase_eps", QObject::tr("Big-end phase portrait ε / dε/dt"),
+        QObject::tr("eccentricity ratio ε [-]"), "", QObject::tr("rate dε/dt [1/s]"), "1/s",
+        {Of(FilmOf::kBigEnd, Phase("ε", Column::kBearingEps, Column::kBearingEpsRate, 1.0, 1.0))});
     eps.x_non_negative = true;
     plots.push_back(eps);
   }
-  plots.push_back(Portrait("phase_tilt", QObject::tr("Piston phase portrait γ / dγ/dt"),
-                           QObject::tr("tilt γ [mrad]"), "mrad", QObject::tr("dγ/dt [rad/s]"),
-                           "rad/s",
-                           {Phase("γ", Column::kPistonTilt, Column::kPistonTiltRate, 1e3, 1.0)}));
+  plots.push_back(Portrait(
+      "phase_tilt", QObject::tr("Piston phase portrait γ / dγ/dt"), QObject::tr("tilt γ [mrad]"),
+      "mrad", QObject::tr("dγ/dt [rad/s]"), "rad/s",
+      {Of(FilmOf::kSkirt, Phase("γ", Column::kPistonTilt, Column::kPistonTiltRate, 1e3, 1.0))}));
   return plots;
 }
 

@@ -20,6 +20,11 @@ struct CurvePoints {
   qsizetype after_gap = -1;
 };
 
+/// The film a quantity belongs to: a run whose joint there is ideal has no such quantity (the
+/// piston's secondary motion and the skirt's friction without a skirt film, the journal's orbit
+/// without a big-end film: their columns hold the ideal joint's zeros).
+enum class FilmOf { kNone, kSkirt, kBigEnd };
+
 /// One kind of series of a plot (e.g. "skirt" or "big end" in the MOFT plot). Every run draws
 /// each kind with the kind's line style; colours tell runs apart.
 struct PlotCurve {
@@ -29,6 +34,8 @@ struct PlotCurve {
   /// Drawn from the run's motion samples (PlotRun::motion: the output steps and the
   /// integrator's interpolation between them) when it has them, else from its output samples.
   bool from_motion = false;
+  /// Drawn only for runs with this film (PlotRun::skirt_film / big_end_film); kNone: for all.
+  FilmOf film = FilmOf::kNone;
 };
 
 struct PlotSpec {

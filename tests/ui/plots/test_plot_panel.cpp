@@ -142,9 +142,10 @@ class TestPlotPanel : public QObject {
     QCOMPARE(entries[1].second.style(), Qt::DashLine);
     QCOMPARE(entries[2].first, coupled_.label);
     QCOMPARE(entries[2].second.color(), panel.runColour(coupled_.id));
-    // A plot where both runs have data lists both runs, each in its own colour.
-    const int lateral = panel.chartIndex("piston_lateral");
-    entries = panel.legendEntries(lateral);
+    // A plot where both runs have data lists both runs, each in its own colour (the load
+    // diagram: the ideal run has no secondary motion to plot, but a big-end load).
+    const int load = panel.chartIndex("bigend_load_polar");
+    entries = panel.legendEntries(load);
     QCOMPARE(int(entries.size()), 2);
     QVERIFY(entries[0].second.color() != entries[1].second.color());
     // One run shown: the run named once, each kind in its own colour and style.
@@ -174,7 +175,7 @@ class TestPlotPanel : public QObject {
     const QString shared = panel.runLegendText();
     QVERIFY(shared.contains(long_label.toHtmlEscaped()) && shared.contains(ideal_.label));
     QVERIFY(shared.contains(panel.runColour(coupled_.id).name()));
-    QVERIFY(panel.legendEntries(lateral).empty());  // one kind: the shared legend says it all
+    QVERIFY(panel.legendEntries(load).empty());  // one kind: the shared legend says it all
     panel.setRunVisible(ideal_.id, false);
     QVERIFY(!panel.runLegendText().contains(ideal_.label));
     // Several runs whose data is of one kind only (an Only-LBRBE run beside an ideal one): that
@@ -449,6 +450,24 @@ class TestPlotPanel : public QObject {
     PlotPanel ideal;
     ideal.updateRun(ideal_);
     QVERIFY(ideal.chart(ideal.chartIndex("bigend_oil_flow"))->title().contains("no data"));
+    // Nor secondary motion, orbit or friction: "no data", not the ideal joints' zero lines
+    // (the piston's four plots drew flat zeros).
+    for (const char* id :
+         {"piston_lateral", "piston_tilt", "piston_lateral_velocity", "piston_tilt_rate",
+          "journal_orbit", "phase_eps", "phase_tilt", "fpl", "friction_split"}) {
+      QVERIFY2(ideal.chart(ideal.chartIndex(id))->title().contains("no data"), id);
+    }
+    // The liner forces: the ideal joint's reaction, drawn; its friction (none) not.
+    const int liner = ideal.chartIndex("liner_forces");
+    QVERIFY(!ideal.chart(liner)->title().contains("no data"));
+    std::vector<QString> drawn;
+    for (const auto& [name, pen] : ideal.legendEntries(liner)) drawn.push_back(name);
+    QVERIFY2(std::find(drawn.begin(), drawn.end(), QString("friction")) == drawn.end(),
+             qPrintable(QStringList(drawn.begin(), drawn.end()).join(", ")));
+    // Beside a lubricated run the ideal run adds nothing to those plots, and the lubricated
+    // run's curves are all there.
+    ideal.updateRun(coupled_);
+    QVERIFY(!ideal.chart(ideal.chartIndex("piston_lateral"))->title().contains("no data"));
   }
 
   void orbitAndPortraitsFollowTheMotionBetweenOutputSteps() {
