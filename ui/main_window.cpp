@@ -14,6 +14,9 @@
 #include <QLocale>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QPainter>
+#include <QPainterPath>
+#include <QPixmap>
 #include <QProgressBar>
 #include <QScrollBar>
 #include <QSettings>
@@ -47,6 +50,44 @@
 namespace filmdyn::ui {
 
 namespace {
+
+// Undo as a hooked arrow turning back to the left (redo: its mirror), drawn in the text colour:
+// the style's back and forward arrows read as a browser's navigation, not as undoing an edit.
+QIcon HookedArrowIcon(bool redo, const QColor& colour) {
+  QIcon icon;
+  for (const int size : {16, 22, 24, 32, 48}) {
+    QPixmap pixmap(size, size);
+    pixmap.fill(Qt::transparent);
+    QPainter painter(&pixmap);
+    painter.setRenderHint(QPainter::Antialiasing);
+    if (redo) {  // the mirror image
+      painter.translate(size, 0);
+      painter.scale(-1, 1);
+    }
+    painter.scale(size / 16.0, size / 16.0);  // drawn on a 16 × 16 grid
+    QPen pen(colour, 1.8, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin);
+    painter.setPen(pen);
+    painter.setBrush(Qt::NoBrush);
+    // The hook: from the lower right up round to the left, where the head points back.
+    QPainterPath hook;
+    hook.moveTo(12.5, 13.0);
+    hook.cubicTo(14.5, 8.0, 11.5, 4.5, 7.5, 4.5);
+    hook.lineTo(4.5, 4.5);
+    painter.drawPath(hook);
+    painter.setPen(Qt::NoPen);
+    painter.setBrush(colour);
+    QPainterPath head;
+    head.moveTo(1.0, 4.5);
+    head.lineTo(5.5, 0.8);
+    head.lineTo(5.5, 8.2);
+    head.closeSubpath();
+    painter.drawPath(head);
+    painter.end();
+    icon.addPixmap(pixmap);
+  }
+  return icon;
+}
+
 constexpr int kMaxRecentFiles = 8;
 const char* kProjectFilter = QT_TRANSLATE_NOOP("MainWindow", "FilmDyn case (*.json)");
 
@@ -238,10 +279,10 @@ void MainWindow::createMenus() {
 
   QMenu* edit_menu = menuBar()->addMenu(tr("&Edit"));
   QAction* undo = document_->undoStack()->createUndoAction(this, tr("&Undo"));
-  undo->setIcon(icon(QStyle::SP_ArrowBack));
+  undo->setIcon(HookedArrowIcon(false, palette().color(QPalette::WindowText)));
   undo->setShortcut(QKeySequence::Undo);
   QAction* redo = document_->undoStack()->createRedoAction(this, tr("&Redo"));
-  redo->setIcon(icon(QStyle::SP_ArrowForward));
+  redo->setIcon(HookedArrowIcon(true, palette().color(QPalette::WindowText)));
   // The platform's redo keys plus Ctrl+Y — once: some platforms' Redo already includes Ctrl+Y,
   // and a key listed twice makes the shortcut ambiguous (it then does nothing).
   QList<QKeySequence> redo_keys = QKeySequence::keyBindings(QKeySequence::Redo);

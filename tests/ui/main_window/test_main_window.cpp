@@ -7,6 +7,7 @@
 #include <QMessageBox>
 #include <QSettings>
 #include <QStandardPaths>
+#include <QStyle>
 #include <QTabWidget>
 #include <QTemporaryDir>
 #include <QTimer>
@@ -220,6 +221,48 @@ class TestMainWindow : public QObject {
     QTest::keyClick(&window, Qt::Key_1, Qt::ControlModifier);  // case page
     QCOMPARE(window.workspace()->currentIndex(), 0);
     window.document()->reset(window.document()->engineCase());  // nothing to ask at close
+  }
+
+  // Undo and redo show hooked arrows, each the other's mirror, not the style's back and forward
+  // arrows (a browser's navigation: they were those).
+  void undoAndRedoAreHookedArrowsNotNavigation() {
+    filmdyn::ui::MainWindow window;
+    QAction *undo = nullptr, *redo = nullptr;
+    for (QAction* action : window.findChildren<QAction*>()) {
+      if (action->shortcut() == QKeySequence(QKeySequence::Undo)) undo = action;
+      if (action->shortcuts().contains(QKeySequence("Ctrl+Y"))) redo = action;
+    }
+    QVERIFY(undo && redo);
+    const QSize size(24, 24);
+    const QImage u = undo->icon().pixmap(size).toImage().convertToFormat(QImage::Format_ARGB32);
+    const QImage r = redo->icon().pixmap(size).toImage().convertToFormat(QImage::Format_ARGB32);
+    QVERIFY(!u.isNull() && !r.isNull());
+    // Each the other's mirror, to the antialiasing's rounding (a pixel's coverage may differ
+    // by a few levels of 255 where the edge lies).
+    const QImage mirror = u.mirrored(true, false);
+    int largest = 0;
+    for (int y = 0; y < u.height(); ++y)
+      for (int x = 0; x < u.width(); ++x)
+        largest = std::max(largest, std::abs(qAlpha(mirror.pixel(x, y)) - qAlpha(r.pixel(x, y))));
+    qInfo("largest alpha difference from the mirror: %d", largest);
+    QVERIFY2(largest <= 24, qPrintable(QString::number(largest)));
+    for (const auto p : {QStyle::SP_ArrowBack, QStyle::SP_ArrowForward, QStyle::SP_ArrowLeft,
+                         QStyle::SP_ArrowRight}) {
+      const QImage nav =
+          window.style()->standardIcon(p).pixmap(size).toImage().convertToFormat(u.format());
+      QVERIFY(nav != u && nav != r);
+    }
+    // Something is drawn, on the upper left (the head) and not only there.
+    int ink = 0, upper_left = 0;
+    for (int y = 0; y < u.height(); ++y) {
+      for (int x = 0; x < u.width(); ++x) {
+        if (qAlpha(u.pixel(x, y)) > 128) {
+          ++ink;
+          if (x < u.width() / 2 && y < u.height() / 2) ++upper_left;
+        }
+      }
+    }
+    QVERIFY2(ink > 40 && upper_left > 10 && upper_left < ink, qPrintable(QString::number(ink)));
   }
 
   void aboutListsLibraryVersions() {
