@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <cctype>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -1343,6 +1344,49 @@ const CaseField* FindCaseField(std::string_view path) {
 
 const std::string& CaseField::ChoiceName(const EngineCase& c) const {
   return choices.at(static_cast<std::size_t>(choice(c)));
+}
+
+std::string CaseField::ChoiceTitle(std::size_t k) const {
+  // One table for every choice field: the names mean the same wherever they appear.
+  static const std::map<std::string, std::string, std::less<>> kTitles = {
+      {"reynolds", "Reynolds (Swift–Stieber)"},
+      {"jfo", "JFO (mass-conserving)"},
+      {"starved", "starved (liner oil film)"},
+      {"elastic_layer", "elastic layer"},
+      {"half_space", "elastic half-spaces"},
+      {"imported", "imported (finite elements)"},
+      {"line_of_centres", "film start at the line of centres"},
+      {"shell_holes", "holes in the shell"},
+      {"pin_holes", "holes in the crank pin"},
+      {"groove", "groove in the shell"},
+      {"pin_holes_and_groove", "crank-pin holes and groove"},
+      {"lubricant", "the case's lubricant"},
+      {"own", "its own oil"},
+      {"heat_balance", "heat balance"},
+      {"vogel", "Vogel's law (temperature)"},
+      {"grade", "catalogue oil (SAE grade)"},
+      {"barus", "Barus"},
+      {"roelands", "Roelands"},
+      {"cross", "Cross (critical shear rate)"},
+      {"hths", "Cross, from the HTHS viscosity"},
+  };
+  const std::string& name = choices.at(k);
+  if (const auto it = kTitles.find(name); it != kTitles.end()) return it->second;
+  for (const lubrication::OilGrade& g : lubrication::OilCatalogue()) {
+    if (g.key == name) {  // an SAE grade as it is written: "0W-20"
+      std::string title = name;
+      for (char& ch : title) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
+      return title;
+    }
+  }
+  return name;
+}
+
+int CaseField::ChoiceIndex(std::string_view text) const {
+  for (std::size_t k = 0; k < choices.size(); ++k) {
+    if (choices[k] == text || ChoiceTitle(k) == text) return static_cast<int>(k);
+  }
+  return -1;
 }
 
 std::string CaseField::ChoicesText(bool prose) const {

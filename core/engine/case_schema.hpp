@@ -73,6 +73,11 @@ struct CaseField {
 
   /// The chosen name of a choice field.
   const std::string& ChoiceName(const EngineCase& c) const;
+  /// What the GUI shows for the k-th choice ("JFO (mass-conserving)" for "jfo", "0W-20" for
+  /// "0w-20", "heat balance" for "heat_balance"); the file, `--set` and messages keep the names.
+  std::string ChoiceTitle(std::size_t k) const;
+  /// The choice whose name or title is `text`; −1 when none is.
+  int ChoiceIndex(std::string_view text) const;
   /// Sets a choice field by name; any other name throws InputError(path, name, the choices).
   void SetChoice(EngineCase& c, const std::string& name) const;
   /// The choices quoted: "a" | "b" | "c", or in prose "a", "b" or "c".

@@ -78,7 +78,7 @@ QString DisplayDefaultText(const engine::CaseField& field) {
       return text.size() > 40 ? QString() : "\"" + text + "\"";
     }
     case FieldKind::kChoice:
-      return QString::fromStdString(field.ChoiceName(c));
+      return QString::fromStdString(field.ChoiceTitle(std::size_t(field.choice(c))));
     case FieldKind::kNumber:
     case FieldKind::kInteger:
       return DisplayNumber(field.get(c), field) + UnitSuffix(field);

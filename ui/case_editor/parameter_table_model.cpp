@@ -120,9 +120,10 @@ QVariant ParameterTableModel::data(const QModelIndex& index, int role) const {
       return QString::fromStdString(p.path);
     case kChoicesRole:
       if (p.choice && index.column() == kValue) {
-        QStringList names;
-        for (const std::string& name : p.field->choices) names << QString::fromStdString(name);
-        return names;
+        QStringList titles;  // as the GUI shows them (CaseField::ChoiceTitle)
+        for (std::size_t k = 0; k < p.field->choices.size(); ++k)
+          titles << QString::fromStdString(p.field->ChoiceTitle(k));
+        return titles;
       }
       break;
   }
@@ -132,17 +133,19 @@ QVariant ParameterTableModel::data(const QModelIndex& index, int role) const {
 QString ParameterTableModel::choiceText(const CaseParameter& p) const {
   const int k = p.field->choice(document_->engineCase());
   if (k < 0 || k >= int(p.field->choices.size())) return tr("(invalid)");
-  return QString::fromStdString(p.field->choices[size_t(k)]);
+  return QString::fromStdString(p.field->ChoiceTitle(size_t(k)));
 }
 
 bool ParameterTableModel::setData(const QModelIndex& index, const QVariant& value, int role) {
   if (role != Qt::EditRole || index.column() != kValue) return false;
   const CaseParameter& p = *rows_[size_t(index.row())];
   if (p.choice) {
-    // One of core's names (the combo box offers nothing else); anything else changes nothing.
-    const QString name = value.toString();
-    if (name == choiceText(p)) return true;
-    return document_->setChoice(p.path, name.toStdString());
+    // One of core's choices by its title (what the combo box offers) or name; anything else
+    // changes nothing.
+    const int k = p.field->ChoiceIndex(value.toString().toStdString());
+    if (k < 0) return false;
+    if (k == p.field->choice(document_->engineCase())) return true;
+    return document_->setChoice(p.path, p.field->choices[size_t(k)]);
   }
   if (p.text) return document_->setText(p.path, value.toString().toStdString());
   const double display = ParseUserNumber(value.toString());

@@ -217,6 +217,12 @@ QString FactorValueText(const batch::StudyFactor& factor, const std::string& val
                         std::optional<double> number) {
   // A run model by its title, as the run page and the case editor name it ("Only-LBRBE").
   if (factor.path == batch::kModelFactor) return Text(engine::ModelTitle(value));
+  // A choice by its title, as the case editor shows it ("JFO (mass-conserving)", "0W-20").
+  if (const engine::CaseField* field = engine::FindCaseField(factor.path);
+      field != nullptr && field->kind == engine::FieldKind::kChoice) {
+    if (const int k = field->ChoiceIndex(value); k >= 0)
+      return Text(field->ChoiceTitle(std::size_t(k)));
+  }
   if (factor.is_text() || !number) return Text(value);
   return QString::number(*number / FactorDisplay(factor).scale, 'g', 4);
 }

@@ -747,16 +747,15 @@ class TestCaseEditor : public QObject {
     QCOMPARE(model->index(cell.row(), ParameterTableModel::kQuantity).data().toString(),
              QString::fromStdString(field->label));
     QVERIFY(model->index(cell.row(), ParameterTableModel::kUnit).data().toString().isEmpty());
-    QCOMPARE(cell.data().toString(), QString("reynolds"));
+    QCOMPARE(cell.data().toString(), QString("Reynolds (Swift–Stieber)"));
     auto* combo = qobject_cast<QComboBox*>(table->indexWidget(cell));
     QVERIFY2(combo != nullptr, "no combo box in the cavitation row");
     QVERIFY(combo->isVisible());
-    QStringList names;
-    for (const std::string& name : field->choices) names << QString::fromStdString(name);
+    // Each choice by its title (the file's names "reynolds", "jfo").
     QStringList items;
     for (int i = 0; i < combo->count(); ++i) items << combo->itemText(i);
-    QCOMPARE(items, names);
-    QCOMPARE(combo->currentText(), QString("reynolds"));
+    QCOMPARE(items, QStringList({"Reynolds (Swift–Stieber)", "JFO (mass-conserving)"}));
+    QCOMPARE(combo->currentText(), QString("Reynolds (Swift–Stieber)"));
     QVERIFY2(combo->toolTip().contains(QString::fromStdString(field->description).toHtmlEscaped()),
              qPrintable(combo->toolTip()));
     QVERIFY(combo->toolTip().contains("In the case file: big_end.cavitation"));
@@ -772,7 +771,7 @@ class TestCaseEditor : public QObject {
       QWheelEvent wheel(centre, combo->mapToGlobal(centre), {}, {0, -120}, Qt::NoButton,
                         Qt::NoModifier, Qt::NoScrollPhase, false);
       QApplication::sendEvent(combo, &wheel);
-      QCOMPARE(combo->currentText(), QString("reynolds"));
+      QCOMPARE(combo->currentText(), QString("Reynolds (Swift–Stieber)"));
       QVERIFY(!window.document()->isModified());
     }
 
@@ -781,11 +780,11 @@ class TestCaseEditor : public QObject {
     combo->showPopup();
     QAbstractItemView* list = combo->view();
     QTRY_VERIFY(list->isVisible());
-    const QModelIndex jfo = list->model()->index(combo->findText("jfo"), 0);
+    const QModelIndex jfo = list->model()->index(combo->findText("JFO (mass-conserving)"), 0);
     QTest::mouseClick(list->viewport(), Qt::LeftButton, {}, list->visualRect(jfo).center());
     QTRY_COMPARE(window.document()->engineCase().big_end.cavitation, CavitationModel::kJfo);
-    QCOMPARE(cell.data().toString(), QString("jfo"));
-    QCOMPARE(combo->currentText(), QString("jfo"));
+    QCOMPARE(cell.data().toString(), QString("JFO (mass-conserving)"));
+    QCOMPARE(combo->currentText(), QString("JFO (mass-conserving)"));
     QVERIFY(window.document()->isModified());
     QVERIFY(window.document()->issues().empty());
     QVERIFY(window.runAction()->isEnabled());
@@ -802,11 +801,11 @@ class TestCaseEditor : public QObject {
     // Undo restores the case and the combo; redo sets it again.
     window.document()->undoStack()->undo();
     QCOMPARE(window.document()->engineCase().big_end.cavitation, CavitationModel::kReynolds);
-    QCOMPARE(combo->currentText(), QString("reynolds"));
+    QCOMPARE(combo->currentText(), QString("Reynolds (Swift–Stieber)"));
     QVERIFY(!window.document()->isModified());
     window.document()->undoStack()->redo();
     QCOMPARE(window.document()->engineCase().big_end.cavitation, CavitationModel::kJfo);
-    QCOMPARE(combo->currentText(), QString("jfo"));
+    QCOMPARE(combo->currentText(), QString("JFO (mass-conserving)"));
 
     // The keyboard picks too (focus in the combo, arrow up): one more undo step.
     combo->setFocus();
@@ -826,11 +825,11 @@ class TestCaseEditor : public QObject {
     MainWindow again;
     QVERIFY2(again.openProject(path, &error), qPrintable(error));
     const QModelIndex reopened = ValueCell(again, CaseGroup::kBigEnd, "big_end.cavitation");
-    QCOMPARE(reopened.data().toString(), QString("jfo"));
+    QCOMPARE(reopened.data().toString(), QString("JFO (mass-conserving)"));
     auto* reopened_combo = qobject_cast<QComboBox*>(
         again.caseEditor()->parameterTable(CaseGroup::kBigEnd)->indexWidget(reopened));
     QVERIFY(reopened_combo != nullptr);
-    QCOMPARE(reopened_combo->currentText(), QString("jfo"));
+    QCOMPARE(reopened_combo->currentText(), QString("JFO (mass-conserving)"));
     QVERIFY(!again.document()->isModified());
   }
 

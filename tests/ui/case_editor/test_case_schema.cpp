@@ -155,6 +155,12 @@ class TestCaseSchema : public QObject {
     for (const ui::CaseParameter& p : ui::CaseParameters()) {
       if (!p.choice) continue;
       const engine::CaseField& field = *p.field;
+      // Each choice's title names it alone: no two alike, none another choice's name.
+      for (std::size_t k = 0; k < field.choices.size(); ++k) {
+        QCOMPARE(field.ChoiceIndex(field.ChoiceTitle(k)), int(k));
+        QCOMPARE(field.ChoiceIndex(field.choices[k]), int(k));
+      }
+      QCOMPARE(field.ChoiceIndex("no such choice"), -1);
       for (const std::string& name : field.choices) {
         // Does core's case reader accept the default case with this name? (A choice may need
         // another field, e.g. a cavitation model.)
@@ -179,7 +185,15 @@ class TestCaseSchema : public QObject {
         QVERIFY(cell.flags() & Qt::ItemIsEditable);
         QVERIFY(model.setData(cell, QString::fromStdString(name), Qt::EditRole));
         QCOMPARE(field.ChoiceName(document.engineCase()), name);
-        QCOMPARE(cell.data().toString(), QString::fromStdString(name));
+        // The cell shows the choice's title (the combo box offers the titles), and picking the
+        // title stores the same name.
+        const std::string title = field.ChoiceTitle(std::size_t(field.ChoiceIndex(name)));
+        QCOMPARE(cell.data().toString(), QString::fromStdString(title));
+        QVERIFY(cell.data(ui::ParameterTableModel::kChoicesRole)
+                    .toStringList()
+                    .contains(QString::fromStdString(title)));
+        QVERIFY(model.setData(cell, QString::fromStdString(title), Qt::EditRole));
+        QCOMPARE(field.ChoiceName(document.engineCase()), name);
         QCOMPARE(document.undoStack()->count(), name == field.ChoiceName(base) ? 0 : 1);
         QVERIFY2(document.issues().empty() == core_accepts, (field.path + " = " + name).c_str());
         if (!core_accepts) {

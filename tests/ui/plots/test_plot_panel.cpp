@@ -23,6 +23,7 @@
 #include "ui/plots/mark_labels.hpp"
 #include "ui/plots/plot_export.hpp"
 #include "ui/plots/plot_panel.hpp"
+#include "ui/plots/study_charts.hpp"
 
 namespace engine = filmdyn::engine;
 namespace io = filmdyn::io;
@@ -76,6 +77,22 @@ class TestPlotPanel : public QObject {
     coupled_ = RealRun(1, engine::Model::kSkirtLbrbe, 6000);
     ideal_ = RealRun(2, engine::Model::kIdeal, 4000);
     QVERIFY(coupled_.samples.size() >= 700);
+  }
+
+  // A study's factor values read as the case editor shows them: a run model by its title, a
+  // choice by its title, numbers in the field's display unit.
+  void studyFactorValuesReadAsTheEditorShowsThem() {
+    filmdyn::batch::StudyFactor model{filmdyn::batch::kModelFactor, {}, {"only-lbrbe"}};
+    QCOMPARE(filmdyn::ui::FactorValueText(model, "only-lbrbe", std::nullopt),
+             QString("Only-LBRBE"));
+    filmdyn::batch::StudyFactor cavitation{"big_end.cavitation", {}, {"reynolds", "jfo"}};
+    QCOMPARE(filmdyn::ui::FactorValueText(cavitation, "jfo", std::nullopt),
+             QString("JFO (mass-conserving)"));
+    filmdyn::batch::StudyFactor grade{"lubricant.grade", {}, {"0w-20", "15w-40"}};
+    QCOMPARE(filmdyn::ui::FactorValueText(grade, "15w-40", std::nullopt), QString("15W-40"));
+    filmdyn::batch::StudyFactor viscosity{"lubricant.viscosity", {0.01, 0.02}};
+    viscosity.unit = "Pa*s";
+    QCOMPARE(filmdyn::ui::FactorValueText(viscosity, "0.01", 0.01), QString("10"));
   }
 
   void roundStepsAndZeroBasedNonNegativeAxes() {
