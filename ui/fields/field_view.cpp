@@ -277,11 +277,14 @@ void FieldView::setUpJoint(Pane& pane, const JointFieldFrames& joint) {
     labels.push_back({tr("anti-thrust side"), {-r, 0.0, 0.16 * length}});
     // Above the front panel's far corner (the mirrored half), clear of the other labels.
     labels.push_back({tr("skirt top"), {r * std::cos(0.7), -r * std::sin(0.7), 0.14 * length}});
-    labels.push_back({tr("skirt bottom (crank side)"), {0.0, r, -1.12 * length}});
+    // Under the front panel's near corner (it floated in the relief's gap, far from any edge).
+    labels.push_back(
+        {tr("skirt bottom (crank side)"), {r * std::cos(0.8), r * std::sin(0.8), -1.14 * length}});
+    // In the relief's gap, low enough to clear the anti-thrust panel seen behind it.
     for (const auto& [a, b] : joint.no_film) {
       const double m = 0.5 * (a + b);
       labels.push_back(
-          {tr("pin-boss relief: no film"), {r * std::cos(m), r * std::sin(m), -length / 2}});
+          {tr("pin-boss relief: no film"), {r * std::cos(m), r * std::sin(m), -0.82 * length}});
     }
   } else {
     // Along the crank-pin axis, the small end up: rod side above, cap side below.

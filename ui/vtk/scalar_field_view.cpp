@@ -259,11 +259,11 @@ void ScalarFieldView::showArrow(const std::array<double, 3>& from, const std::ar
   arrow_data_->Modified();
   arrow_->VisibilityOn();
   arrow_label_->SetInput(label.toUtf8().constData());
-  // Beside the shaft, clear of the labels around the surface.
-  const double off = 0.16 * length;
-  arrow_label_->GetPositionCoordinate()->SetValue(from[0] + 0.55 * d[0] + off * side[0],
-                                                  from[1] + 0.55 * d[1] + off * side[1],
-                                                  from[2] + 0.55 * d[2]);
+  // Behind the tail, on the arrow's line: clear of the shaft and the head (beside the shaft the
+  // label's box, wider than the offset, covered it) and of the loaded film the head points at.
+  const double back = 0.3;
+  arrow_label_->GetPositionCoordinate()->SetValue(from[0] - back * d[0], from[1] - back * d[1],
+                                                  from[2] - back * d[2]);
   arrow_label_->SetVisibility(!label.isEmpty());
   update();
 }

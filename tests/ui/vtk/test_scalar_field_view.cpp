@@ -148,8 +148,31 @@ class TestScalarFieldView : public QObject {
     view.showArrow({0, 0, 0.75}, {0, 1.3, 0.75}, "load 20.0 kN");
     const int frames = view.renderedFrames();
     QTRY_VERIFY_WITH_TIMEOUT(view.renderedFrames() > frames, 10000);
-    QVERIFY(view.grabFramebuffer() != plain);
+    const QImage with_arrow = view.grabFramebuffer();
+    QVERIFY(with_arrow != plain);
     QCOMPARE(view.labelTexts(), (std::vector<QString>{"thrust side", "load 20.0 kN"}));
+    // The load's label keeps off its arrow (it sat on the shaft): the box of its dark red
+    // background and the box of the arrow's bright red pixels do not meet.
+    QRect arrow_box, label_box;
+    for (int y = 0; y < with_arrow.height(); ++y) {
+      for (int x = 0; x < with_arrow.width(); ++x) {
+        const QColor c = with_arrow.pixelColor(x, y);
+        if (c.red() > 200 && c.green() < 140 && c.blue() < 120) arrow_box |= QRect(x, y, 1, 1);
+        if (c.red() > 60 && c.red() < 120 && c.green() < 45 && c.blue() < 45)
+          label_box |= QRect(x, y, 1, 1);
+      }
+    }
+    QVERIFY(!arrow_box.isEmpty() && !label_box.isEmpty());
+    QVERIFY2(!arrow_box.intersects(label_box),
+             qPrintable(QString("arrow %1,%2 %3x%4, label %5,%6 %7x%8")
+                            .arg(arrow_box.x())
+                            .arg(arrow_box.y())
+                            .arg(arrow_box.width())
+                            .arg(arrow_box.height())
+                            .arg(label_box.x())
+                            .arg(label_box.y())
+                            .arg(label_box.width())
+                            .arg(label_box.height())));
     view.hideArrow();
     QCOMPARE(view.labelTexts(), (std::vector<QString>{"thrust side"}));
   }
