@@ -558,6 +558,8 @@ ErrorEstimate EstimateErrors(const std::vector<CrankTrainSample>& samples,
     e.relative = figures[k].value != 0.0 ? std::abs(e.error / figures[k].value) : 0.0;
     e.resolved_in_time =
         std::find(unresolved.begin(), unresolved.end(), e.figure.key) == unresolved.end();
+    e.far_companion = figures[k].value != 0.0 &&
+                      std::abs(coarse[k].value / figures[k].value - 1.0) > kFarCompanion;
     if (e.resolved_in_time && e.relative >= estimate.worst_relative) {
       estimate.worst_relative = e.relative;
       estimate.worst_label = e.figure.label;
@@ -576,12 +578,17 @@ std::string ErrorEstimate::Summary() const {
   }
   // What follows the figure: peaks between output samples (named, not estimated), extremes the
   // meshes place apart, a mass-conserving big end's note.
+  const auto join = [](const std::vector<std::string>& items) {  // "a", "a and b", "a, b and c"
+    std::string text;
+    for (std::size_t k = 0; k < items.size(); ++k)
+      text += (k == 0 ? "" : k + 1 == items.size() ? " and " : ", ") + items[k];
+    return text;
+  };
   std::vector<std::string> spiked;
   for (const FigureError& e : figures)
     if (!e.resolved_in_time) spiked.push_back(e.figure.label);
-  std::string notes, spikes;  // "a", "a and b", "a, b and c"
-  for (std::size_t k = 0; k < spiked.size(); ++k)
-    spikes += (k == 0 ? "" : k + 1 == spiked.size() ? " and " : ", ") + spiked[k];
+  std::string notes;
+  const std::string spikes = join(spiked);
   if (!spikes.empty()) notes = fmt::format("; {} {}", spikes, kUnresolvedPeakNote);
   // Extremes whose place in the cycle the meshes disagree on.
   for (const FigureError& e : figures) {
@@ -593,6 +600,21 @@ std::string ErrorEstimate::Summary() const {
         "extrapolation at {:.0f} °CA",
         e.figure.label, CycleCrankAngleDeg(*e.crank_angle),
         CycleCrankAngleDeg(*e.extrapolated_crank_angle));
+  }
+  // Figures whose companion lies far from this run: a rough estimate.
+  std::vector<std::string> far_figures;
+  for (const FigureError& e : figures) {
+    if (!e.resolved_in_time || !e.far_companion || e.figure.value == 0.0) continue;
+    far_figures.push_back(fmt::format("{} ({:.0f} %)", e.figure.label,
+                                      100.0 * std::abs(e.coarse_value / e.figure.value - 1.0)));
+  }
+  if (const std::string far = join(far_figures); !far.empty()) {
+    notes += fmt::format(
+        "; the companion run on the coarser mesh lies far from this run in the {}: outside the "
+        "range where the two meshes' difference measures the error, so those estimates are "
+        "rough (they can be several times too large, or half too small); a finer mesh settles "
+        "them",
+        far);
   }
   // A mass-conserving big end (its oil figure): at low speed not in the asymptotic range of the
   // meshes the estimate compares (docs/validation/errors.md, section 6). A mass-conserving

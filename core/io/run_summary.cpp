@@ -341,7 +341,8 @@ json SummaryToJson(const RunSummary& s) {
         // No best estimate from two samples of a spike that neither
         // resolves (it gave a negative pressure): null.
         {"extrapolated", f.resolved_in_time ? json(f.figure.value + f.error) : json(nullptr)},
-        {"resolved_in_time", f.resolved_in_time}};
+        {"resolved_in_time", f.resolved_in_time},
+        {"far_companion", f.far_companion}};
     if (f.crank_angle && f.extrapolated_crank_angle) {
       json& o = figures[f.figure.key];
       o["crank_angle[deg]"] = engine::CycleCrankAngleDeg(*f.crank_angle);
@@ -527,6 +528,7 @@ RunSummary FromJson(const json& j) {
     fe.relative = Get<double>(f, "relative", at);
     Read(f, "order", at, &fe.figure.order);
     Read(f, "resolved_in_time", at, &fe.resolved_in_time);  // absent before: resolved
+    Read(f, "far_companion", at, &fe.far_companion);        // absent before: not far
     // A curve's extreme (absent for the other figures and in older summaries).
     constexpr double kRadPerDeg = std::numbers::pi / 180.0;
     const std::optional<double> own = GetOptional(f, "crank_angle[deg]", at);

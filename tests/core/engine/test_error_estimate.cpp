@@ -267,6 +267,25 @@ class TestErrorEstimate : public QObject {
         find(engine::EstimateErrors(fine, shifted, companion), "bearing_moft_min[m]");
     QVERIFY(std::abs(own.error - 0.04e-6 / 3.0) < 1e-15);
     QVERIFY(!own.crank_angle && !own.extrapolated_crank_angle && !own.extreme_elsewhere);
+    // None of these companions lies far from the run (4 % at most): no "rough" note.
+    for (const auto& f : e.figures) QVERIFY2(!f.far_companion, f.figure.key.c_str());
+    QVERIFY2(e.Summary().find("rough") == std::string::npos, e.Summary().c_str());
+    // A companion whose friction power lies 40 % from the run's (70 against 50 W): its
+    // estimate is rough, and the summary says so, naming the figure and the distance; the
+    // film's companion, 4 % away, is not.
+    auto far = coarse;
+    for (auto& s : far) s.bearing.fpl = 70.0;
+    const engine::ErrorEstimate rough = engine::EstimateErrors(fine, far, companion);
+    QVERIFY(find(rough, "bearing_fpl_mean[W]").far_companion);
+    QVERIFY(!find(rough, "bearing_moft_min[m]").far_companion);
+    QVERIFY2(rough.Summary().find("the companion run on the coarser mesh lies far from this run "
+                                  "in the mean big-end FPL (40 %): outside the range") !=
+                 std::string::npos,
+             rough.Summary().c_str());
+    // Just inside the bound (24 %: 62 W against 50 W): not far.
+    for (auto& s : far) s.bearing.fpl = 62.0;
+    QVERIFY(
+        !find(engine::EstimateErrors(fine, far, companion), "bearing_fpl_mean[W]").far_companion);
   }
 
   void headlineFiguresAreTheirDefinitions() {

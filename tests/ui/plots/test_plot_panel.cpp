@@ -82,15 +82,23 @@ class TestPlotPanel : public QObject {
   // A study's factor values read as the case editor shows them: a run model by its title, a
   // choice by its title, numbers in the field's display unit.
   void studyFactorValuesReadAsTheEditorShowsThem() {
-    filmdyn::batch::StudyFactor model{filmdyn::batch::kModelFactor, {}, {"only-lbrbe"}};
-    QCOMPARE(filmdyn::ui::FactorValueText(model, "only-lbrbe", std::nullopt),
+    const auto factor = [](const char* path, std::vector<std::string> text_levels) {
+      filmdyn::batch::StudyFactor f;
+      f.path = path;
+      f.text_levels = std::move(text_levels);
+      return f;
+    };
+    QCOMPARE(filmdyn::ui::FactorValueText(factor(filmdyn::batch::kModelFactor, {"only-lbrbe"}),
+                                          "only-lbrbe", std::nullopt),
              QString("Only-LBRBE"));
-    filmdyn::batch::StudyFactor cavitation{"big_end.cavitation", {}, {"reynolds", "jfo"}};
-    QCOMPARE(filmdyn::ui::FactorValueText(cavitation, "jfo", std::nullopt),
+    QCOMPARE(filmdyn::ui::FactorValueText(factor("big_end.cavitation", {"reynolds", "jfo"}), "jfo",
+                                          std::nullopt),
              QString("JFO (mass-conserving)"));
-    filmdyn::batch::StudyFactor grade{"lubricant.grade", {}, {"0w-20", "15w-40"}};
-    QCOMPARE(filmdyn::ui::FactorValueText(grade, "15w-40", std::nullopt), QString("15W-40"));
-    filmdyn::batch::StudyFactor viscosity{"lubricant.viscosity", {0.01, 0.02}};
+    QCOMPARE(filmdyn::ui::FactorValueText(factor("lubricant.grade", {"0w-20", "15w-40"}), "15w-40",
+                                          std::nullopt),
+             QString("15W-40"));
+    filmdyn::batch::StudyFactor viscosity = factor("lubricant.viscosity", {});
+    viscosity.levels = {0.01, 0.02};
     viscosity.unit = "Pa*s";
     QCOMPARE(filmdyn::ui::FactorValueText(viscosity, "0.01", 0.01), QString("10"));
   }
