@@ -119,6 +119,20 @@ double HeapInUseMegabytes() {
 #endif
 }
 
+// With FILMDYN_SCREENSHOT_DIR set: the window with the field view's workspace tab in front,
+// saved there as `name`.
+void SaveFieldViewShot(MainWindow& window, const QString& name) {
+  const QString dir = qEnvironmentVariable("FILMDYN_SCREENSHOT_DIR");
+  if (dir.isEmpty()) return;
+  QWidget* page = window.fieldView();
+  while (page->parentWidget() && !qobject_cast<QStackedWidget*>(page->parentWidget()))
+    page = page->parentWidget();
+  for (QTabWidget* tabs : window.findChildren<QTabWidget*>())
+    if (tabs->indexOf(page) >= 0) tabs->setCurrentWidget(page);
+  QTest::qWait(300);
+  window.grab().save(dir + "/" + name);
+}
+
 QString JoinNumbers(const std::vector<double>& values) {
   QStringList parts;
   for (double v : values) parts << QString::number(v, 'f', 1);
@@ -348,15 +362,7 @@ class TestRunStreaming : public QObject {
     for (const QLabel* label : window.fieldView()->findChildren<QLabel*>())
       explained = explained || label->text().contains("cancelled run keeps its curves");
     QVERIFY(explained);
-    if (const QString dir = qEnvironmentVariable("FILMDYN_SCREENSHOT_DIR"); !dir.isEmpty()) {
-      QWidget* page = window.fieldView();  // bring its workspace tab to the front
-      while (page->parentWidget() && !qobject_cast<QStackedWidget*>(page->parentWidget()))
-        page = page->parentWidget();
-      for (QTabWidget* tabs : window.findChildren<QTabWidget*>())
-        if (tabs->indexOf(page) >= 0) tabs->setCurrentWidget(page);
-      QTest::qWait(200);
-      window.grab().save(dir + "/field-view-cancelled-run.png");
-    }
+    SaveFieldViewShot(window, "field-view-cancelled-run.png");
   }
 
   // A run whose film fails in its run-in (an oil far too thin: the journal touches the bearing)
@@ -398,15 +404,7 @@ class TestRunStreaming : public QObject {
     QString error;
     QVERIFY2(run->writeFields(dir.path(), &error), qPrintable(error));
     QVERIFY(QFile::exists(dir.path() + "/bearing.xdmf"));
-    if (const QString shots = qEnvironmentVariable("FILMDYN_SCREENSHOT_DIR"); !shots.isEmpty()) {
-      QWidget* page = window.fieldView();  // bring its workspace tab to the front
-      while (page->parentWidget() && !qobject_cast<QStackedWidget*>(page->parentWidget()))
-        page = page->parentWidget();
-      for (QTabWidget* tabs : window.findChildren<QTabWidget*>())
-        if (tabs->indexOf(page) >= 0) tabs->setCurrentWidget(page);
-      QTest::qWait(300);
-      window.grab().save(shots + "/field-view-failed-run-in.png");
-    }
+    SaveFieldViewShot(window, "field-view-failed-run-in.png");
   }
 
   // Closing the main window during a run stops the run and returns promptly, also on a big end
