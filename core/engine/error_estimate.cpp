@@ -558,8 +558,7 @@ ErrorEstimate EstimateErrors(const std::vector<CrankTrainSample>& samples,
     e.relative = figures[k].value != 0.0 ? std::abs(e.error / figures[k].value) : 0.0;
     e.resolved_in_time =
         std::find(unresolved.begin(), unresolved.end(), e.figure.key) == unresolved.end();
-    e.far_companion = figures[k].value != 0.0 &&
-                      std::abs(coarse[k].value / figures[k].value - 1.0) > kFarCompanion;
+    e.far_companion = e.CompanionDistance() > kFarCompanion;
     if (e.resolved_in_time && e.relative >= estimate.worst_relative) {
       estimate.worst_relative = e.relative;
       estimate.worst_label = e.figure.label;
@@ -604,9 +603,9 @@ std::string ErrorEstimate::Summary() const {
   // Figures whose companion lies far from this run: a rough estimate.
   std::vector<std::string> far_figures;
   for (const FigureError& e : figures) {
-    if (!e.resolved_in_time || !e.far_companion || e.figure.value == 0.0) continue;
-    far_figures.push_back(fmt::format("{} ({:.0f} %)", e.figure.label,
-                                      100.0 * std::abs(e.coarse_value / e.figure.value - 1.0)));
+    if (!e.resolved_in_time || !e.far_companion) continue;
+    far_figures.push_back(
+        fmt::format("{} ({:.0f} %)", e.figure.label, 100.0 * e.CompanionDistance()));
   }
   if (const std::string far = join(far_figures); !far.empty()) {
     notes += fmt::format(

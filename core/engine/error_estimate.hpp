@@ -14,6 +14,7 @@
 /// error is then (f − f_coarse) / (r^p − 1) with p = 2 the figures' observed order, signed:
 /// converged value ≈ f + error. It sees the coupled result (the coarse films move the journal and
 /// the piston). Justification and its check against converged solutions: docs/validation/errors.md.
+#include <cmath>
 #include <cstddef>
 #include <limits>
 #include <optional>
@@ -176,6 +177,11 @@ struct FigureError {
   /// the range where the two meshes' difference measures the error, and the estimate is rough
   /// (the summary line says so).
   bool far_companion = false;
+  /// How far the companion's figure lies from this run's: |coarse_value / value − 1| (0 for a
+  /// figure of value 0).
+  double CompanionDistance() const {
+    return figure.value != 0.0 ? std::abs(coarse_value / figure.value - 1.0) : 0.0;
+  }
 };
 
 /// When an extrapolated extreme counts as lying elsewhere in the cycle (FigureError): at least

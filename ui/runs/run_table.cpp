@@ -75,11 +75,10 @@ void ShowErrorEstimate(const engine::ErrorEstimate& e,
                   .arg(engine::CycleCrankAngleDeg(*f.extrapolated_crank_angle), 0, 'f', 0)
             : QString();
     // A companion far from the run: the estimate is rough (the summary line says why).
-    const QString rough =
-        f.far_companion && f.figure.value != 0.0
-            ? QString(" — rough: the coarser mesh's value lies %1 % away")
-                  .arg(100.0 * std::abs(f.coarse_value / f.figure.value - 1.0), 0, 'f', 0)
-            : QString();
+    const QString rough = f.far_companion
+                              ? QString(" — rough: the coarser mesh's value lies %1 % away")
+                                    .arg(100.0 * f.CompanionDistance(), 0, 'f', 0)
+                              : QString();
     lines << QString("%1: %2%3, %4%5 % → %6%3%7%8")
                  .arg(QString::fromStdString(f.figure.label))
                  .arg(QString::number(f.figure.value * scale, 'g', 5))
