@@ -1517,9 +1517,19 @@ std::string DerivedNote(const EngineCase& c, const std::string& path) {
   return {};
 }
 
-std::string UnusedReason(const EngineCase& c, const std::string& path) {
+std::string UnusedReason(const EngineCase& c, const std::string& path, ChoiceWording wording) {
+  // A choice of the field at `field_path` as the reader knows it: its name in straight quotes
+  // (as written in a file), or its title in typographic ones.
+  auto choice = [wording](std::string_view field_path, std::string_view name) -> std::string {
+    const CaseField* field = FindCaseField(field_path);
+    const int k = field != nullptr ? field->ChoiceIndex(name) : -1;
+    if (wording == ChoiceWording::kTitles && k >= 0)
+      return "“" + field->ChoiceTitle(std::size_t(k)) + "”";
+    return fmt::format("\"{}\"", name);
+  };
   // The oil fields under a prefix: which of them the oil's own choices leave unused.
-  auto oil_reason = [](const lubrication::OilSpec& oil, const std::string& name) -> std::string {
+  auto oil_reason = [&choice](const lubrication::OilSpec& oil,
+                              const std::string& name) -> std::string {
     using lubrication::PressureLaw;
     using lubrication::ViscosityModel;
     const bool vogel = oil.model == ViscosityModel::kVogel;
@@ -1529,7 +1539,8 @@ std::string UnusedReason(const EngineCase& c, const std::string& path) {
                    : "the viscosity follows Vogel's law";
     if ((name == "vogel_a" || name == "vogel_b" || name == "vogel_c") && !vogel)
       return grade ? "the catalogue oil sets Vogel's law" : "the viscosity model is constant";
-    if (name == "grade" && !grade) return "the viscosity model is not \"grade\"";
+    if (name == "grade" && !grade)
+      return "the viscosity model is not " + choice("lubricant.viscosity_model", "grade");
     if (name == "barus_alpha" && oil.pressure_law != PressureLaw::kBarus)
       return "the pressure-viscosity law is not Barus'";
     if (name == "roelands_z" && oil.pressure_law != PressureLaw::kRoelands)
@@ -1539,7 +1550,8 @@ std::string UnusedReason(const EngineCase& c, const std::string& path) {
         oil.shear_thinning == ShearThinning::kNone)
       return "no shear thinning";
     if (name == "cross_rate" && oil.shear_thinning != ShearThinning::kCross)
-      return "the critical shear rate is not given (shear thinning is not \"cross\")";
+      return "the critical shear rate is not given (shear thinning is not " +
+             choice("lubricant.shear_thinning", "cross") + ")";
     if (name == "hths" && oil.shear_thinning != ShearThinning::kHths)
       return "shear thinning is not set by the HTHS viscosity";
     return {};
@@ -1562,14 +1574,15 @@ std::string UnusedReason(const EngineCase& c, const std::string& path) {
   {
     using lubrication::OilFeedKind;
     const BigEndCase& b = c.big_end;
-    const std::string feed = fmt::format("the oil supply is \"{}\"", ToString(b.supply));
+    auto supply = [&choice](std::string_view name) { return choice("big_end.supply", name); };
+    const std::string feed = "the oil supply is " + supply(ToString(b.supply));
     if ((path == "big_end.supply_hole_angles" || path == "big_end.supply_hole_diameter") &&
         !lubrication::HasHoles(b.supply))
-      return feed +
-             "; holes feed the film only with \"shell_holes\", \"pin_holes\" or "
-             "\"pin_holes_and_groove\"";
+      return feed + "; holes feed the film only with " + supply("shell_holes") + ", " +
+             supply("pin_holes") + " or " + supply("pin_holes_and_groove");
     if (path.rfind("big_end.groove_", 0) == 0 && !lubrication::HasGroove(b.supply))
-      return feed + "; the groove feeds the film only with \"groove\" or \"pin_holes_and_groove\"";
+      return feed + "; the groove feeds the film only with " + supply("groove") + " or " +
+             supply("pin_holes_and_groove");
     const bool curve = !b.supply_pressure_angles.empty() || !b.supply_pressure_values.empty();
     if (b.supply != OilFeedKind::kLineOfCentres && curve && path == "big_end.oil_feed_pressure")
       return "the supply pressure follows the curve over the crank angle";
@@ -1584,9 +1597,9 @@ std::string UnusedReason(const EngineCase& c, const std::string& path) {
     const bool film_path = path == "skirt.oil_film" || path == "skirt.oil_film_positions" ||
                            path == "skirt.oil_film_values";
     if (film_path && sk.supply != lubrication::SkirtSupply::kStarved)
-      return fmt::format(
-          "the skirt supply is \"{}\"; the liner's oil film feeds only a \"starved\" skirt",
-          ToString(sk.supply));
+      return "the skirt supply is " + choice("skirt.supply", ToString(sk.supply)) +
+             "; the liner's oil film feeds the skirt only when its supply is " +
+             choice("skirt.supply", "starved");
     if (path == "skirt.oil_film" && !sk.oil_film_positions.empty())
       return "the liner's oil film is the table over the liner position";
   }

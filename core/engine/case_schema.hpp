@@ -111,7 +111,11 @@ std::string DerivedNote(const EngineCase& engine_case, const std::string& path);
 /// Why a field (a scalar, or a list by any of its columns' paths) is not used with the case's
 /// choices (e.g. "the viscosity follows Vogel's law" for lubricant.viscosity), or empty when it
 /// is used: the editor greys such rows and list tables. A value the choices make an error (a
-/// supply pressure without holes or groove) is not "unused": it stays editable.
-std::string UnusedReason(const EngineCase& engine_case, const std::string& path);
+/// supply pressure without holes or groove) is not "unused": it stays editable. The choices it
+/// quotes are named as the case file and `--set` write them ("shell_holes"), or by their titles
+/// (CaseField::ChoiceTitle: “holes in the shell”) where the reader sees titles (the editor).
+enum class ChoiceWording { kNames, kTitles };
+std::string UnusedReason(const EngineCase& engine_case, const std::string& path,
+                         ChoiceWording wording = ChoiceWording::kNames);
 
 }  // namespace filmdyn::engine

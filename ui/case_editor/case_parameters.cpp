@@ -117,8 +117,9 @@ QString CaseListColumnTitle(const engine::CaseField& field) {
 }
 
 QString ListUnusedReason(const CaseListTable& table, const engine::EngineCase& c) {
-  // Core decides, for the table's first column as for any field (engine::UnusedReason).
-  const std::string unused = engine::UnusedReason(c, table.key);
+  // Core decides, for the table's first column as for any field (engine::UnusedReason), in the
+  // choices' titles as the editor shows them.
+  const std::string unused = engine::UnusedReason(c, table.key, engine::ChoiceWording::kTitles);
   if (unused.empty()) return {};
   return QObject::tr("Not used: %1.").arg(QString::fromStdString(unused));
 }

@@ -83,7 +83,8 @@ QVariant ParameterTableModel::data(const QModelIndex& index, int role) const {
         case kNote:
           if (bad) return QString::fromStdString(issue->second);
           // Unused first: where it was assumed matters only once the field is read.
-          if (const std::string unused = engine::UnusedReason(document_->engineCase(), p.path);
+          if (const std::string unused = engine::UnusedReason(document_->engineCase(), p.path,
+                                                              engine::ChoiceWording::kTitles);
               !unused.empty()) {
             return tr("not used: %1").arg(QString::fromStdString(unused));
           }

@@ -111,6 +111,23 @@ class TestCaseFile : public QObject {
     QVERIFY(QString::fromStdString(UnusedReason(c, "big_end.groove_width"))
                 .contains("\"line_of_centres\""));
     QVERIFY(QString::fromStdString(UnusedReason(c, "skirt.oil_film")).contains("\"flooded\""));
+    // Where the reader sees the choices' titles (the case editor), the reason uses them too,
+    // and only them.
+    const auto titles = engine::ChoiceWording::kTitles;
+    const QString holes = QString::fromStdString(UnusedReason(c, "big_end.supply_hole_angles"));
+    const QString holes_titled =
+        QString::fromStdString(UnusedReason(c, "big_end.supply_hole_angles", titles));
+    QVERIFY2(holes.contains("\"shell_holes\", \"pin_holes\" or \"pin_holes_and_groove\""),
+             qPrintable(holes));
+    QCOMPARE(holes_titled,
+             QString("the oil supply is “film start at the line of centres”; holes feed the film "
+                     "only with “holes in the shell”, “holes in the crank pin” or “crank-pin "
+                     "holes and groove”"));
+    QVERIFY(!QString::fromStdString(UnusedReason(c, "skirt.oil_film", titles)).contains('"'));
+    QCOMPARE(QString::fromStdString(UnusedReason(c, "lubricant.grade", titles)),
+             QString("the viscosity model is not “catalogue oil (SAE grade)”"));
+    QCOMPARE(QString::fromStdString(UnusedReason(c, "lubricant.grade")),
+             QString("the viscosity model is not \"grade\""));
     c.big_end.oil_feed_pressure = 3e5;  // an error with this supply, not unused
     QVERIFY(UnusedReason(c, "big_end.oil_feed_pressure").empty());
     c.big_end.supply = OilFeedKind::kGroove;
