@@ -651,7 +651,11 @@ void SetDescriptions(std::vector<CaseField>& fields) {
       {"skirt.supply",
        "How oil reaches the skirt. \"flooded\": as much as the film can take, always (the "
        "paper's assumption). \"starved\": only the oil film the piston rings leave on the "
-       "liner; the skirt then runs partly dry. Needs the \"jfo\" cavitation model."},
+       "liner; the skirt then runs partly dry. Needs the \"jfo\" cavitation model. Its "
+       "figures converge more slowly with the mesh than a flooded skirt's, and the side-force "
+       "peak where the skirt runs from the starved onto the full film needs a finer skirt mesh "
+       "than the default (it grew 2.6× from the default mesh to one four times as fine in a "
+       "measured case)."},
       {"skirt.oil_film",
        "Thickness of the oil layer left on the liner that feeds a starved skirt, the same over "
        "the whole stroke."},
@@ -1340,6 +1344,33 @@ const CaseField* FindCaseField(std::string_view path) {
     if (f.path == path) return &f;
   }
   return nullptr;
+}
+
+namespace {
+// 1/scale where it is an integer (a unit that is an integer fraction of SI); 0 otherwise.
+double IntegerInverse(double scale) {
+  if (!(scale > 0.0 && scale < 1.0)) return 0.0;
+  const double inverse = std::round(1.0 / scale);
+  return std::abs(inverse * scale - 1.0) <= 1e-12 ? inverse : 0.0;
+}
+}  // namespace
+
+double ScaleToDisplay(double si, double scale) {
+  const double inverse = IntegerInverse(scale);
+  return inverse != 0.0 ? si * inverse : si / scale;
+}
+
+double ScaleFromDisplay(double display, double scale) {
+  const double inverse = IntegerInverse(scale);
+  return inverse != 0.0 ? display / inverse : display * scale;
+}
+
+double CaseField::ToDisplay(double si) const {
+  return ScaleToDisplay(si - display_offset, display_scale);
+}
+
+double CaseField::FromDisplay(double display) const {
+  return ScaleFromDisplay(display, display_scale) + display_offset;
 }
 
 const std::string& CaseField::ChoiceName(const EngineCase& c) const {

@@ -53,9 +53,9 @@ struct CaseField {
   /// Shift of the display unit's zero: −273.15 for temperatures in K shown in °C (SI =
   /// display + 273.15). Scalars only; lists keep 0.
   double display_offset = 0.0;
-  /// The value as the GUI shows it, and back.
-  double ToDisplay(double si) const { return (si - display_offset) / display_scale; }
-  double FromDisplay(double display) const { return display * display_scale + display_offset; }
+  /// The value as the GUI shows it, and back (ScaleToDisplay, ScaleFromDisplay).
+  double ToDisplay(double si) const;
+  double FromDisplay(double display) const;
   FieldRange range;              ///< numbers, integers and list elements (SI)
 
   /// Numbers and integers: the value in SI, and setting it (integers are rounded; a non-finite
@@ -94,6 +94,14 @@ struct CaseField {
 };
 
 /// Every field, in case-file order.
+/// A value in SI as a number of display units of `scale` SI units each, and back. Where the unit
+/// is an integer fraction of SI (mm, µm: 1e-3 and 1e-6 are not exact in binary, 1000 and 1e6 are)
+/// the conversion goes by that integer: a decimal typed in µm is then stored as the same decimal
+/// written in m far more often (0.615 µm → 6.15e-07 m, where × 1e-6 gives 6.1500000000000004e-07;
+/// of random 1–6 digit decimals 13 % still differ in the last bit, against 36 %).
+double ScaleToDisplay(double si, double scale);
+double ScaleFromDisplay(double display, double scale);
+
 const std::vector<CaseField>& CaseSchema();
 /// The field with this dotted path, or nullptr.
 const CaseField* FindCaseField(std::string_view path);

@@ -88,13 +88,21 @@ QVariant ArrayTableModel::data(const QModelIndex& index, int role) const {
   const auto& issues = document_->issues();
   const auto issue = issues.find(issue_key_());
   const bool bad = issue != issues.end();
+  const bool in_table = values && index.row() < int(values->size());
+  const double display = in_table ? engine::ScaleToDisplay((*values)[size_t(index.row())],
+                                                           columns_[size_t(index.column())].to_si)
+                                  : 0.0;
   if (role == Qt::DisplayRole || role == Qt::EditRole) {
-    if (!values || index.row() >= int(values->size())) return {};
-    return FormatDisplayNumber((*values)[size_t(index.row())] /
-                               columns_[size_t(index.column())].to_si);
+    if (!in_table) return {};
+    // The editor starts with the exact value (FormatEditNumber); the cell shows it rounded.
+    return role == Qt::EditRole ? FormatEditNumber(display) : FormatDisplayNumber(display);
   }
   if (role == Qt::ToolTipRole) {
     if (bad) return QString::fromStdString(issue->second);
+    if (in_table) {
+      if (const QString exact = FormatEditNumber(display); exact != FormatDisplayNumber(display))
+        return columnToolTip(index.column(), tr("%1 (shown rounded)").arg(exact));
+    }
     return columnToolTip(index.column());
   }
   if (role == Qt::BackgroundRole && bad) return QBrush(QColor(255, 225, 225));
@@ -107,9 +115,11 @@ bool ArrayTableModel::setData(const QModelIndex& index, const QVariant& value, i
   engine::EngineCase next = document_->engineCase();
   std::vector<double>* values = column(next, index.column());
   if (!values || index.row() >= int(values->size())) return false;
-  const double si = ParseUserNumber(value.toString()) * columns_[size_t(index.column())].to_si;
+  const double to_si = columns_[size_t(index.column())].to_si;
   const double old = (*values)[size_t(index.row())];
-  if (si == old || (std::isnan(si) && std::isnan(old))) return true;  // no empty undo step
+  // Left as it was: no change (the stored value kept to the bit), no empty undo step.
+  if (SameEditNumber(value.toString(), engine::ScaleToDisplay(old, to_si))) return true;
+  const double si = engine::ScaleFromDisplay(ParseUserNumber(value.toString()), to_si);
   (*values)[size_t(index.row())] = si;
   document_->edit(next, tr("Edit %1").arg(edit_name_));
   return true;
@@ -119,12 +129,12 @@ Qt::ItemFlags ArrayTableModel::flags(const QModelIndex& index) const {
   return QAbstractTableModel::flags(index) | Qt::ItemIsEditable;
 }
 
-QString ArrayTableModel::columnToolTip(int col) const {
+QString ArrayTableModel::columnToolTip(int col, const QString& first) const {
   const ArrayColumn& c = columns_[size_t(col)];
   if (const engine::CaseField* field = engine::FindCaseField(c.field_path)) {
-    return FieldToolTip(*field);
+    return FieldToolTip(*field, first);
   }
-  return c.tip;
+  return first.isEmpty() ? c.tip : first + "\n" + c.tip;
 }
 
 QVariant ArrayTableModel::headerData(int section, Qt::Orientation orientation, int role) const {

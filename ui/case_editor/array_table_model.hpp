@@ -64,8 +64,9 @@ class ArrayTableModel : public QAbstractTableModel {
  private:
   std::vector<double>* column(engine::EngineCase& c, int col) const;
   const std::vector<double>* column(int col) const;
-  /// The column's tooltip: its schema field's (FieldToolTip) or its own `tip`.
-  QString columnToolTip(int col) const;
+  /// The column's tooltip: its schema field's (FieldToolTip) or its own `tip`; `first` (a cell's
+  /// exact value) leads it when given.
+  QString columnToolTip(int col, const QString& first = {}) const;
 
   CaseDocument* document_;
   std::vector<ArrayColumn> columns_;

@@ -82,7 +82,7 @@ double ParseValue(const std::string& cell, const engine::CaseField& field,
     throw InputError(column, "\"" + cell + "\"",
                      "must be a finite number (with '.' as the decimal point)");
   }
-  const double si = value * field.display_scale;
+  const double si = engine::ScaleFromDisplay(value, field.display_scale);
   try {
     field.Check(si);
   } catch (const InputError&) {
@@ -181,8 +181,9 @@ std::string ListCsvText(const CaseListTable& table, const engine::EngineCase& c)
     std::string line;
     for (const engine::CaseField* field : table.columns) {
       const std::vector<double>& values = field->list(located);
-      const double display =
-          row < values.size() ? values[row] / field->display_scale : std::nan("");
+      const double display = row < values.size()
+                                 ? engine::ScaleToDisplay(values[row], field->display_scale)
+                                 : std::nan("");
       if (!std::isfinite(display)) {
         throw InputError(table.title.toStdString() + " row " + std::to_string(row + 1) + " " +
                              ColumnTitle(*field),

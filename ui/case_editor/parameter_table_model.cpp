@@ -25,6 +25,16 @@ QString FormatDisplayNumber(double value) {
   return QLocale::c().toString(value, 'g', 6);
 }
 
+QString FormatEditNumber(double display) {
+  if (std::isnan(display)) return {};
+  return QLocale::c().toString(display, 'g', 15);
+}
+
+bool SameEditNumber(const QString& text, double display) {
+  const double typed = ParseUserNumber(text), start = ParseUserNumber(FormatEditNumber(display));
+  return typed == start || (std::isnan(typed) && std::isnan(start));
+}
+
 namespace {
 // A text parameter's value. The field's accessor hands out the member for editing; it is only
 // read here.
@@ -74,8 +84,8 @@ QVariant ParameterTableModel::data(const QModelIndex& index, int role) const {
         case kValue: {
           if (p.choice) return choiceText(p);
           if (p.text) return QString::fromStdString(TextOf(p, document_->engineCase()));
-          const double display = p.get(document_->engineCase()) / p.to_si;
-          if (role == Qt::EditRole) return FormatDisplayNumber(display);
+          const double display = engine::ScaleToDisplay(p.get(document_->engineCase()), p.to_si);
+          if (role == Qt::EditRole) return FormatEditNumber(display);
           return bad && std::isnan(display) ? tr("(invalid)") : FormatDisplayNumber(display);
         }
         case kUnit:
@@ -103,6 +113,12 @@ QVariant ParameterTableModel::data(const QModelIndex& index, int role) const {
         return FieldToolTip(*p.field, QString::fromStdString(TextOf(p, document_->engineCase())));
       if (index.column() == kNote)
         return FieldToolTip(*p.field, data(index, Qt::DisplayRole).toString());
+      // A number the display rounds: its exact value first.
+      if (index.column() == kValue && !p.choice && !p.text) {
+        const double display = engine::ScaleToDisplay(p.get(document_->engineCase()), p.to_si);
+        if (const QString exact = FormatEditNumber(display); exact != FormatDisplayNumber(display))
+          return FieldToolTip(*p.field, tr("%1 %2 (shown rounded)").arg(exact, p.unit).trimmed());
+      }
       return FieldToolTip(*p.field);
     case Qt::BackgroundRole:
       if (bad) return QBrush(QColor(255, 205, 205));
@@ -149,11 +165,12 @@ bool ParameterTableModel::setData(const QModelIndex& index, const QVariant& valu
     return document_->setChoice(p.path, p.field->choices[size_t(k)]);
   }
   if (p.text) return document_->setText(p.path, value.toString().toStdString());
-  const double display = ParseUserNumber(value.toString());
-  const double si = display * p.to_si;
-  const double old = p.get(document_->engineCase());
-  if (si == old || (std::isnan(si) && std::isnan(old))) return true;
-  document_->setParameter(p.path, si);
+  // Left as it was: no change (the stored value kept to the bit), no empty undo step.
+  if (SameEditNumber(value.toString(),
+                     engine::ScaleToDisplay(p.get(document_->engineCase()), p.to_si)))
+    return true;
+  document_->setParameter(p.path,
+                          engine::ScaleFromDisplay(ParseUserNumber(value.toString()), p.to_si));
   return true;
 }
 

@@ -45,5 +45,12 @@ class ParameterTableModel : public QAbstractTableModel {
 double ParseUserNumber(const QString& text);
 /// Formats a display value with 6 significant digits ("" for NaN).
 QString FormatDisplayNumber(double value);
+/// A display value as a cell's editor starts with it: 15 significant digits (all a decimal
+/// keeps through a double; the cell shows six), so that the editor shows the value as typed or
+/// read from the file, not a rounding of it.
+QString FormatEditNumber(double display);
+/// Whether `text`, committed from the editor of a cell showing `display`, is the number the
+/// editor started with: the cell was left unchanged, and the stored value is kept to the bit.
+bool SameEditNumber(const QString& text, double display);
 
 }  // namespace filmdyn::ui

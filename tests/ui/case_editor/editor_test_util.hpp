@@ -31,6 +31,22 @@ inline void TypeIntoCell(QTableView* table, const QModelIndex& index, const QStr
               !table->viewport()->findChild<QLineEdit*>()->isVisible());
 }
 
+// Opens the cell's editor, checks it starts with `expected` and leaves it with Return, unchanged
+// (what tabbing through a table does).
+inline void OpenAndLeaveCell(QTableView* table, const QModelIndex& index, const QString& expected) {
+  QWidget* window = table->window();
+  window->activateWindow();
+  table->setFocus();
+  table->setCurrentIndex(index);
+  table->edit(index);
+  QLineEdit* editor = table->viewport()->findChild<QLineEdit*>();
+  QVERIFY2(editor != nullptr, "no line editor opened on the cell");
+  QCOMPARE(editor->text(), expected);
+  QTest::keyClick(editor, Qt::Key_Return);
+  QTRY_VERIFY(table->viewport()->findChild<QLineEdit*>() == nullptr ||
+              !table->viewport()->findChild<QLineEdit*>()->isVisible());
+}
+
 // The list block's button ("insert", "remove", "import", "export") of the table with a column
 // at `path`.
 inline QPushButton* ListButton(filmdyn::ui::MainWindow& window, const std::string& path,

@@ -43,6 +43,7 @@
 #include "ui/main_window.hpp"
 
 using editor_test::ListButton;
+using editor_test::OpenAndLeaveCell;
 using editor_test::TypeIntoCell;
 using filmdyn::ui::ArrayTableModel;
 using filmdyn::ui::CaseGroup;
@@ -171,6 +172,51 @@ class TestCaseEditor : public QObject {
     QVERIFY2(error.contains("roughness_journal"), qPrintable(error));
     QVERIFY(!QFile::exists(dir.filePath("bad.json")));
     QCOMPARE(window.document()->engineCase().big_end.roughness_journal, -1e-6);
+  }
+
+  // A value with more digits than the cell shows (six significant) keeps them when its cell is
+  // opened and left unchanged: the editor starts with the exact value, nothing is edited and no
+  // undo step is made; the tooltip gives the exact value. Both kinds of table: a quantity and a
+  // list.
+  void leavingACellUnchangedKeepsItsExactValue() {
+    MainWindow window;
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    window.workspace()->setCurrentIndex(0);
+    auto* tabs = window.caseEditor()->findChild<QTabWidget*>("case_tabs");
+    tabs->setCurrentIndex(1);
+    filmdyn::ui::CaseDocument* document = window.document();
+    const double rod = 0.1452345678;  // m: 145.2345678 mm, shown as 145.235
+    document->setParameter("geometry.rod_length", rod);
+    const int steps = document->undoStack()->count();
+    const QModelIndex cell = ValueCell(window, CaseGroup::kGeometry, "geometry.rod_length");
+    QCOMPARE(cell.data().toString(), QString("145.235"));
+    QVERIFY2(cell.data(Qt::ToolTipRole).toString().contains("145.2345678 mm (shown rounded)"),
+             qPrintable(cell.data(Qt::ToolTipRole).toString()));
+    OpenAndLeaveCell(window.caseEditor()->parameterTable(CaseGroup::kGeometry), cell,
+                     "145.2345678");
+    QCOMPARE(document->engineCase().geometry.rod_length, rod);  // to the bit
+    QCOMPARE(document->undoStack()->count(), steps);
+    // A value the display does not round has no such line.
+    QVERIFY(!ValueCell(window, CaseGroup::kGeometry, "geometry.crank_radius")
+                 .data(Qt::ToolTipRole)
+                 .toString()
+                 .contains("shown rounded"));
+
+    // A list cell: a point of the cylinder-pressure curve in MPa.
+    tabs->setCurrentIndex(7);
+    auto* pressure = window.caseEditor()->findChild<QTableView*>("pressure_table");
+    ArrayTableModel* model = window.caseEditor()->pressureModel();
+    const std::size_t curve = std::size_t(window.caseEditor()->currentCurve());
+    filmdyn::engine::EngineCase next = document->engineCase();
+    next.pressure_curves[curve].pressure[3] = 1234567.891;  // Pa: 1.234567891 MPa
+    document->edit(next, "set a point");
+    const int list_steps = document->undoStack()->count();
+    QCOMPARE(model->index(3, 1).data().toString(), QString("1.23457"));
+    OpenAndLeaveCell(pressure, model->index(3, 1), "1.234567891");
+    QCOMPARE(document->engineCase().pressure_curves[curve].pressure[3], 1234567.891);
+    QCOMPARE(document->undoStack()->count(), list_steps);
+    QVERIFY(model->index(3, 1).data(Qt::ToolTipRole).toString().contains("1.234567891"));
   }
 
   void profileAndPressureTablesEditTheArrays() {
