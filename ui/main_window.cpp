@@ -518,7 +518,7 @@ bool MainWindow::saveRuns(const QString& project_path, QString* message) {
   if (report.skipped_running > 0)
     parts << tr("the running run is not saved (save again once it ends)");
   if (report.skipped_unrestored > 0)
-    parts << tr("%n run(s) that could not be restored kept as files only", nullptr,
+    parts << tr("%n run(s) that could not be restored kept as they were saved", nullptr,
                 report.skipped_unrestored);
   if (!ok)
     parts = QStringList{tr("Saved the case %1, but not its runs: %2").arg(project_path, error)};

@@ -96,10 +96,16 @@ QString RunRecord::restoreError() const {
   return restore_error_;
 }
 
-void RunRecord::setRestoreError(const QString& error) {
+void RunRecord::setRestoreError(const QString& error, const std::string& entry) {
   std::lock_guard lock(mutex_);
   restore_error_ = error;
+  restore_entry_ = entry;
   ++version_;
+}
+
+std::string RunRecord::restoreEntry() const {
+  std::lock_guard lock(mutex_);
+  return restore_entry_;
 }
 
 void RunRecord::setWallSeconds(double seconds) {

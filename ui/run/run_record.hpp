@@ -49,7 +49,10 @@ class RunRecord : public RunSink {
   void setStoredFolder(const QString& folder);
   /// Why a saved run could not be read back (empty when it was, or for a run of this session).
   QString restoreError() const;
-  void setRestoreError(const QString& error);
+  /// `entry`: the run's entry of the project's runs index (JSON), which a save lists again as it
+  /// was.
+  void setRestoreError(const QString& error, const std::string& entry = {});
+  std::string restoreEntry() const;
   /// The wall time a restored run took when it ran [s] (its summary.json).
   void setWallSeconds(double seconds);
 
@@ -128,6 +131,7 @@ class RunRecord : public RunSink {
   QString notes_;
   QString stored_folder_;
   QString restore_error_;
+  std::string restore_entry_;
   QElapsedTimer clock_;
   double wall_seconds_ = -1;
   std::atomic<long> version_{0};

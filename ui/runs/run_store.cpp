@@ -193,6 +193,34 @@ std::string KeyOfEntry(std::string name) {
 
 void AddBigEndLoads(const fs::path& results_csv, FieldFrames* frames);
 
+// The runs index at `path`, checked to be one this version reads; throws std::runtime_error
+// saying why not (not JSON, not a runs index, saved by a newer FilmDyn, no list of runs).
+nlohmann::json ReadRunsIndex(const fs::path& path) {
+  nlohmann::json index = nlohmann::json::parse(ReadBytes(path));
+  if (!index.is_object() || index.value("format", "") != kFormat) {
+    throw std::runtime_error("not a FilmDyn runs index (\"format\" is not \"" +
+                             std::string(kFormat) + "\")");
+  }
+  if (!index.contains("format_version") || !index["format_version"].is_number_integer() ||
+      index["format_version"].get<int>() > kFormatVersion) {
+    throw std::runtime_error("format_version must be an integer ≤ " +
+                             std::to_string(kFormatVersion) + " (saved by a newer FilmDyn?)");
+  }
+  if (!index.contains("runs") || !index["runs"].is_array()) {
+    throw std::runtime_error("\"runs\" must be a list");
+  }
+  return index;
+}
+
+// The run-folder key of an index entry ("" for an entry without a usable one).
+std::string EntryKey(const nlohmann::json& entry) {
+  if (!entry.is_object() || !entry.contains("key") || !entry["key"].is_string()) return {};
+  const std::string key = entry["key"].get<std::string>();
+  if (!OwnEntry(key) || key.find('/') != std::string::npos || key.find("..") != std::string::npos)
+    return {};
+  return key;
+}
+
 // Fills a run from the files of its run folder (as `filmdyn run` writes it): the counters and
 // the error estimate of summary.json, the film fields, the writers that copy the files; throws
 // std::runtime_error naming the file and the problem.
@@ -403,9 +431,33 @@ bool SaveProjectRuns(const QString& project_path, const std::vector<ProjectRun>&
                      SaveRunsReport* report, QString* error) {
   SaveRunsReport done;
   const fs::path dir = PathOf(RunsFolderFor(project_path));
+  std::string writing;  // the key whose files this save is writing, until they are complete
   try {
+    // The index already there: a save removes only the runs it lists and this save does not
+    // (runs the user removed). One this version cannot read (damaged, or a newer FilmDyn's) is
+    // left as it is, with every run in the folder: nothing is written.
+    std::set<std::string> listed_before;
+    if (fs::exists(dir / kIndex)) {
+      try {
+        const nlohmann::json before = ReadRunsIndex(dir / kIndex);
+        for (const nlohmann::json& e : before["runs"])
+          if (const std::string key = EntryKey(e); !key.empty()) listed_before.insert(key);
+      } catch (const std::exception& e) {
+        throw std::runtime_error((dir / kIndex).string() + " cannot be read (" + e.what() +
+                                 "): it and the runs in its folder are left as they are; save "
+                                 "the project under another name to keep this session's runs");
+      }
+    }
     fs::create_directories(dir);
     std::set<std::string> keep;
+    // The runs that could not be read back keep their keys and their entries as saved (for a
+    // later version or a repair); no new run takes one of those keys.
+    for (const ProjectRun& entry : runs) {
+      if (entry.run->restoreError().isEmpty()) continue;
+      const std::string key =
+          EntryKey(nlohmann::json::parse(entry.run->restoreEntry(), nullptr, false));
+      if (!key.empty()) keep.insert(key);
+    }
     nlohmann::json list = nlohmann::json::array();
     std::string base_key;
     int next = 1;
@@ -418,8 +470,11 @@ bool SaveProjectRuns(const QString& project_path, const std::vector<ProjectRun>&
         continue;
       }
       if (!run->restoreError().isEmpty()) {
-        // Its files stay for a later version or a repair; it is not listed again.
-        if (stored_here) keep.insert(stored.filename().string());
+        const nlohmann::json saved = nlohmann::json::parse(run->restoreEntry(), nullptr, false);
+        if (!saved.is_discarded()) {
+          list.push_back(saved);
+          if (run->id() == base_id) base_key = EntryKey(saved);
+        }
         ++done.skipped_unrestored;
         continue;
       }
@@ -431,6 +486,7 @@ bool SaveProjectRuns(const QString& project_path, const std::vector<ProjectRun>&
           key = kKeyPrefix + std::to_string(next++);
         } while (fs::exists(dir / key) || fs::exists(dir / (key + kSamplesSuffix)) ||
                  keep.count(key));
+        writing = key;
         const fs::path tmp = dir / (key + ".tmp");
         fs::remove_all(tmp);
         if (!run->resultsCsv().isEmpty()) {  // a run with core's writers: its run folder
@@ -448,6 +504,7 @@ bool SaveProjectRuns(const QString& project_path, const std::vector<ProjectRun>&
         }
         io::WriteFileAtomically(dir / (key + kSamplesSuffix), SamplesCsv(run->samples()));
         run->setStoredFolder(QPath(dir / key));
+        writing.clear();
       }
       keep.insert(key);
       const RunRequest& request = run->request();
@@ -470,12 +527,22 @@ bool SaveProjectRuns(const QString& project_path, const std::vector<ProjectRun>&
                                   {"base", base_key},
                                   {"runs", list}};
     io::WriteFileAtomically(dir / kIndex, index.dump(2) + "\n");
-    // Folders and samples no longer listed (removed runs, interrupted saves) go.
+    // What the index listed and lists no more (removed runs) goes, and what a save left half
+    // written (".tmp"). Anything else in the folder, listed by no index this version read, stays.
     for (const auto& item : fs::directory_iterator(dir)) {
       const std::string name = item.path().filename().string();
-      if (OwnEntry(name) && !keep.count(KeyOfEntry(name))) fs::remove_all(item.path());
+      const std::string key = KeyOfEntry(name);
+      if (!OwnEntry(name) || keep.count(key)) continue;
+      if (listed_before.count(key) || name.ends_with(".tmp")) fs::remove_all(item.path());
     }
   } catch (const std::exception& e) {
+    // A run whose files were being written when the save failed: none of them stays.
+    if (!writing.empty()) {
+      std::error_code ignored;
+      for (const std::string& suffix : {std::string(), std::string(".tmp"),
+                                        std::string(kSamplesSuffix), std::string(kMotionSuffix)})
+        fs::remove_all(dir / (writing + suffix), ignored);
+    }
     if (error) *error = QObject::tr("Runs not saved: %1").arg(QString::fromUtf8(e.what()));
     if (report) *report = done;
     return false;
@@ -520,20 +587,9 @@ LoadedRuns LoadProjectRuns(const QString& project_path, const std::function<int(
   if (!fs::exists(dir)) return loaded;
   nlohmann::json index;
   try {
-    index = nlohmann::json::parse(ReadBytes(dir / kIndex));
-    if (!index.is_object() || index.value("format", "") != kFormat) {
-      throw std::runtime_error("not a FilmDyn runs index (\"format\" is not \"" +
-                               std::string(kFormat) + "\")");
-    }
-    if (!index.contains("format_version") || !index["format_version"].is_number_integer() ||
-        index["format_version"].get<int>() > kFormatVersion) {
-      throw std::runtime_error("format_version must be an integer ≤ " +
-                               std::to_string(kFormatVersion) + " (saved by a newer FilmDyn?)");
-    }
-    if (!index.contains("runs") || !index["runs"].is_array()) {
-      throw std::runtime_error("\"runs\" must be a list");
-    }
+    index = ReadRunsIndex(dir / kIndex);
   } catch (const std::exception& e) {
+    // A save leaves such a folder as it is (SaveProjectRuns).
     loaded.problems << QObject::tr("No runs restored from %1: %2")
                            .arg(QPath(dir / kIndex), QString::fromUtf8(e.what()));
     return loaded;
@@ -549,10 +605,8 @@ LoadedRuns LoadProjectRuns(const QString& project_path, const std::function<int(
     try {
       if (!entry.is_object()) throw std::runtime_error("the entry is not an object");
       key = entry.at("key").get<std::string>();
-      if (!OwnEntry(key) || key.find('/') != std::string::npos ||
-          key.find("..") != std::string::npos) {
+      if (EntryKey(entry).empty())
         throw std::runtime_error("key \"" + key + "\" is not a run folder name");
-      }
       request.model = entry.at("model").get<std::string>();
       request.rpm = entry.at("rpm").get<double>();
       request.engine_case = io::CaseFromJson(entry.at("case"));
@@ -590,7 +644,7 @@ LoadedRuns LoadProjectRuns(const QString& project_path, const std::function<int(
               ? QObject::tr("run %1 (%2)").arg(position).arg(QString::fromStdString(key))
               : QObject::tr("run %1 “%2”").arg(position).arg(run->name());
       const QString message = QObject::tr("not restored: %1").arg(problem);
-      run->setRestoreError(problem);
+      run->setRestoreError(problem, entry.dump());  // a save lists it again as it was
       run->finish(RunStatus::kFailed, message);
       run->setWallSeconds(0);
       loaded.problems << QObject::tr("%1 %2").arg(which, message);

@@ -41,12 +41,14 @@ QString RunsFolderFor(const QString& project_path);
 struct SaveRunsReport {
   int saved = 0;
   int skipped_running = 0;     ///< runs still running: not saved
-  int skipped_unrestored = 0;  ///< runs that could not be read back: their files are kept
+  int skipped_unrestored = 0;  ///< runs that could not be read back: listed and kept as saved
 };
 
 /// Saves the finished, failed and cancelled runs of `runs` (in this order) beside the project
-/// `project_path`; `base_id` is the base run. Returns false with *error naming the file when
-/// a write fails (the previous runs.json then stays).
+/// `project_path`; `base_id` is the base run. Runs that could not be read back are listed again
+/// as they were saved. Removes the files of runs the folder's index listed and `runs` does not;
+/// nothing else. Returns false with *error naming the file when a write fails (the previous
+/// runs.json then stays) or when the folder's runs.json cannot be read (nothing is written).
 bool SaveProjectRuns(const QString& project_path, const std::vector<ProjectRun>& runs, int base_id,
                      SaveRunsReport* report, QString* error);
 

@@ -340,7 +340,26 @@ class TestProjectRuns : public QObject {
       damaged.show();
       QVERIFY(QTest::qWaitForWindowExposed(&damaged));
       Save(&damaged, "run_table_not_restored.png");
+      // Saving keeps the run that could not be read back, listed as it was saved (its name and
+      // notes, its folder), so that a repair or a later version still finds it.
+      QVERIFY2(damaged.saveProjectAs(project, &error), qPrintable(error));
+      QVERIFY2(damaged.statusBar()->currentMessage().contains("kept as they were saved"),
+               qPrintable(damaged.statusBar()->currentMessage()));
+      QVERIFY(QFile::exists(c_folder + "/fields/bearing.h5"));
     }
+    for (int reopen = 0; reopen < 2; ++reopen) {  // and again after a second save
+      MainWindow again_damaged;
+      QVERIFY2(again_damaged.openProject(project, &error), qPrintable(error));
+      QCOMPARE(int(again_damaged.runTable()->runs().size()), 2);
+      QVERIFY(again_damaged.runTable()->runs()[0]->restoreError().contains("summary.json"));
+      QVERIFY(QFile::exists(c_folder + "/fields/bearing.h5"));
+      QVERIFY2(again_damaged.saveProjectAs(project, &error), qPrintable(error));
+    }
+    QVERIFY(QFile::exists(c_folder + "/fields/bearing.h5"));
+
+    // A runs index this version cannot read (damaged here; or a newer FilmDyn's): no run is
+    // restored, and a save leaves the index and every run folder as they are (it used to write
+    // an empty index and delete them all).
     QFile index(runs_dir + "/runs.json");
     QVERIFY(index.open(QIODevice::WriteOnly | QIODevice::Truncate));
     index.write("{ not json");
@@ -351,6 +370,13 @@ class TestProjectRuns : public QObject {
       QCOMPARE(int(damaged.runTable()->runs().size()), 0);
       QVERIFY(damaged.statusBar()->currentMessage().contains("runs.json"));
       QCOMPARE(damaged.document()->filePath(), project);
+      QVERIFY(!damaged.saveProjectAs(project, &error));
+      QVERIFY2(error.contains("not its runs") && error.contains("runs.json cannot be read") &&
+                   error.contains("another name"),
+               qPrintable(error));
+      QCOMPARE(ReadAll(runs_dir + "/runs.json"), QByteArray("{ not json"));
+      QVERIFY(QFile::exists(c_folder + "/fields/bearing.h5"));
+      QVERIFY(QFile::exists(c_folder + "/results.csv"));
     }
   }
 };
