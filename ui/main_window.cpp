@@ -31,6 +31,7 @@
 #include <QVBoxLayout>
 
 #include "core/engine/error_estimate.hpp"
+#include "core/io/case_file.hpp"
 #include "core/io/results_writer.hpp"
 #include "ui/about_info.hpp"
 #include "ui/case_editor/case_document.hpp"
@@ -901,22 +902,37 @@ bool MainWindow::autosaveNow(QString* error) {
 }
 
 bool MainWindow::recoverAutosave(QString* error) {
-  engine::EngineCase recovered;
-  QString message;
-  if (!LoadCaseFile(autosavePath(), &recovered, &message)) {
-    if (error) *error = message;
-    return false;
-  }
   const QString source = QSettings().value("autosave/source").toString();
   engine::EngineCase base;
   QString ignored;
   if (source.isEmpty() || !LoadCaseFile(source, &base, &ignored)) {
     if (!LoadCaseFile({}, &base, &ignored)) base = engine::EngineCase{};
   }
+  // The autosave holds the case as it was, marked cells included: what the reader refuses takes
+  // the saved case's value, and everything else is recovered.
+  engine::EngineCase recovered;
+  std::vector<std::string> dropped;
+  try {
+    recovered = io::CaseFileKeepingValid(autosavePath().toStdString(), base, &dropped);
+  } catch (const std::exception& e) {
+    if (error) *error = tr("%1: %2").arg(autosavePath(), QString::fromUtf8(e.what()));
+    return false;
+  }
   document_->reset(base, source.isEmpty() || !QFileInfo::exists(source) ? QString() : source);
   document_->edit(recovered, tr("Recovered unsaved edits"));
   QFile::remove(autosavePath());
-  statusBar()->showMessage(tr("Recovered the unsaved edits of the last session"), 8000);
+  QString message = tr("Recovered the unsaved edits of the last session");
+  if (!dropped.empty()) {
+    QStringList lines;
+    for (const std::string& d : dropped) lines << QString::fromStdString(d);
+    // Stays until the next message: these edits are not back.
+    message += tr("; %n value(s) marked invalid then kept the saved value: %1", nullptr,
+                  int(dropped.size()))
+                   .arg(lines.join("; "));
+    statusBar()->showMessage(message);
+  } else {
+    statusBar()->showMessage(message, 8000);
+  }
   return true;
 }
 
@@ -932,7 +948,13 @@ void MainWindow::offerRecovery() {
   QString error;
   if (answer == QMessageBox::Yes) {
     if (!recoverAutosave(&error)) {
-      QMessageBox::warning(this, tr("Cannot recover"), error);
+      // Kept aside (the next autosave would replace it, an unmodified session remove it).
+      const QString kept =
+          QFileInfo(autosavePath()).absoluteDir().filePath("autosave-not-recovered.json");
+      QFile::remove(kept);
+      const bool moved = QFile::rename(autosavePath(), kept);
+      QMessageBox::warning(this, tr("Cannot recover"),
+                           moved ? tr("%1\n\nThe file is kept as %2.").arg(error, kept) : error);
     }
   } else {
     QFile::remove(autosavePath());

@@ -492,6 +492,86 @@ engine::EngineCase LoadCaseText(const std::string& text, const std::string& sour
   return CaseFromJson(root, notes);
 }
 
+engine::EngineCase CaseFileKeepingValid(const std::filesystem::path& path,
+                                        const engine::EngineCase& base,
+                                        std::vector<std::string>* dropped) {
+  json current = ParseInputJson(ReadInputFile(path, "case", kMaxCaseFileBytes), path.string(),
+                                kMaxCaseDepth, "a case file");
+  const json fallback = CaseToJson(base);
+  // Each refusal restores one field, list or section from `base`, one that differed: at most as
+  // many rounds as the file has leaves; a file left equal to `base` that is refused throws.
+  std::vector<std::string> leaves;
+  if (current.is_object()) LeafPaths(current, "", &leaves);
+  for (std::size_t round = 0; round <= leaves.size() + 1; ++round) {
+    try {
+      return CaseFromJson(current);
+    } catch (const InputError& e) {
+      if (!current.is_object()) throw;
+      // The object members on the refused field's path, outermost first ("skirt",
+      // "skirt.profile_y" for "skirt.profile_y.3"; "pressure_curves" for "pressure_curves.0.rpm").
+      struct Level {
+        json* parent;
+        const json* base_parent;  // nullptr where `base` has no such object
+        std::string key;
+      };
+      std::vector<Level> levels;
+      json* parent = &current;
+      const json* base_parent = &fallback;
+      for (std::size_t start = 0;;) {
+        const auto dot = e.field().find('.', start);
+        const std::string key = e.field().substr(start, dot - start);
+        if (!parent->is_object() || !parent->contains(key)) break;
+        levels.push_back({parent, base_parent, key});
+        json& child = (*parent)[key];
+        base_parent = base_parent != nullptr && base_parent->is_object() &&
+                              base_parent->contains(key) && (*base_parent)[key].is_object()
+                          ? &(*base_parent)[key]
+                          : nullptr;
+        if (dot == std::string::npos || !child.is_object()) break;
+        parent = &child;
+        start = dot + 1;
+      }
+      // The innermost of them that differs from `base` takes base's value: the field itself, or
+      // (a rule across fields naming one left as saved: profile_h for a shorter profile_y) the
+      // section holding it.
+      bool restored = false;
+      for (auto level = levels.rbegin(); level != levels.rend() && !restored; ++level) {
+        const json* from = level->base_parent != nullptr && level->base_parent->contains(level->key)
+                               ? &(*level->base_parent)[level->key]
+                               : nullptr;
+        json& node = (*level->parent)[level->key];
+        if (from != nullptr && node == *from) continue;
+        if (from != nullptr) {
+          node = *from;
+        } else {
+          level->parent->erase(level->key);
+        }
+        restored = true;
+      }
+      std::string what = e.what();
+      if (!restored) {
+        // A rule across sections naming a field left as saved (the clearance against an edited
+        // liner radius): the first section that differs goes back to `base` instead, so that
+        // each round still restores something.
+        for (auto it = current.begin(); it != current.end(); ++it) {
+          if (fallback.contains(it.key()) && *it == fallback[it.key()]) continue;
+          what += " (\"" + it.key() + "\" as saved)";
+          if (fallback.contains(it.key())) {
+            *it = fallback[it.key()];
+          } else {
+            current.erase(it);
+          }
+          restored = true;
+          break;
+        }
+      }
+      if (!restored) throw;  // the file is `base`: base itself is refused
+      if (dropped) dropped->push_back(what);
+    }
+  }
+  return CaseFromJson(current);
+}
+
 namespace {
 
 // An inline curve's angle [°CA] in radians: the one conversion of the case reader.

@@ -53,6 +53,16 @@ engine::EngineCase LoadCaseText(const std::string& text, const std::string& sour
                                 const std::vector<std::string>& overrides = {},
                                 std::vector<std::string>* notes = nullptr);
 
+/// Reads a case an editor saved with values the reader refuses (the GUI's autosave of a case
+/// with a marked cell: a NaN, a value out of range, an inconsistent pair), keeping every other
+/// value: each refused field (the object field the reader names, or the list or section holding
+/// it) takes its value from `base` — a case that reads — and the rest is read again. One line
+/// per field taken from `base` ("geometry.rod_length = -1: must be > 0 [m]") goes to *dropped.
+/// Throws InputError when the file cannot be read, is not JSON or `base` itself is refused.
+engine::EngineCase CaseFileKeepingValid(const std::filesystem::path& path,
+                                        const engine::EngineCase& base,
+                                        std::vector<std::string>* dropped);
+
 /// The cylinder-pressure curve for `rpm`: the case curve at that speed, or linear interpolation
 /// between the two neighbouring speeds; InputError outside the tabulated speeds. CSV files are
 /// resolved against the case directory, then against resources/ (embedded copies).

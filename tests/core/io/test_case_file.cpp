@@ -1,6 +1,7 @@
 // The case file: the shipped default loads and equals the built-in defaults (Table I in SI), every
 // field round-trips, bad input is rejected naming the field, --set overrides, the pressure curve
 // resolves from the case (on disk and embedded) at and between the shipped speeds.
+#include <QTemporaryDir>
 #include <QtTest>
 
 #include <cmath>
@@ -162,6 +163,46 @@ class TestCaseFile : public QObject {
     QCOMPARE(once, twice);
     QCOMPARE(io::CaseFromJson(once).skirt.model, engine::JointModel::kLubricated);
   }
+  // An editor's autosave of a case with refused values: each refused field (or the list or the
+  // section holding it) takes the base case's value, every other value is read as saved, and
+  // each restored field is named; a base that is itself refused, or no JSON, throws.
+  void caseFileKeepingValidRestoresOnlyTheRefusedFields() {
+    const engine::EngineCase base = io::LoadCase({}).value;
+    nlohmann::json edited = io::CaseToJson(base);
+    edited["operating"]["rpm"] = 2468.5;                // good
+    edited["geometry"]["rod_length"] = nullptr;         // a cleared cell (NaN is written null)
+    edited["big_end"]["width"] = -0.01;                 // out of range
+    edited["skirt"]["profile_y"] = {0.0, 0.01, 0.005};  // not increasing
+    edited["pressure_curves"][0]["rpm"] = -5.0;         // inside a list of objects
+    QTemporaryDir dir;
+    const std::string path = dir.filePath("autosave.json").toStdString();
+    const auto write = [&path](const std::string& text) { std::ofstream(path) << text; };
+    write(edited.dump());
+    std::vector<std::string> dropped;
+    const engine::EngineCase c = io::CaseFileKeepingValid(path, base, &dropped);
+    QCOMPARE(c.operating.rpm, 2468.5);
+    QCOMPARE(c.geometry.rod_length, base.geometry.rod_length);
+    QCOMPARE(c.big_end.width, base.big_end.width);
+    QVERIFY(c.skirt.profile_y == base.skirt.profile_y);
+    QCOMPARE(c.pressure_curves.size(), base.pressure_curves.size());
+    QCOMPARE(c.pressure_curves[0].rpm, base.pressure_curves[0].rpm);
+    QCOMPARE(int(dropped.size()), 4);
+    std::string all;
+    for (const std::string& d : dropped) all += d + "\n";
+    for (const char* field :
+         {"geometry.rod_length", "big_end.width", "skirt.profile_y", "pressure_curves"})
+      QVERIFY2(all.find(field) != std::string::npos, all.c_str());
+    // The refusal is the base's own: nothing to fall back on.
+    engine::EngineCase bad_base = base;
+    bad_base.big_end.width = -0.01;
+    nlohmann::json only_width = io::CaseToJson(base);
+    only_width["big_end"]["width"] = -0.01;
+    write(only_width.dump());
+    QVERIFY_THROWS_EXCEPTION(InputError, io::CaseFileKeepingValid(path, bad_base, &dropped));
+    write("{ \"geometry\": ");
+    QVERIFY_THROWS_EXCEPTION(InputError, io::CaseFileKeepingValid(path, base, &dropped));
+  }
+
   void perSurfaceElasticityAndOvality() {
     // Defaults: E and ν per surface, no ovality.
     const engine::EngineCase d = io::CaseFromJson(DefaultJson());

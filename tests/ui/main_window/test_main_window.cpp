@@ -7,6 +7,7 @@
 #include <QMessageBox>
 #include <QSettings>
 #include <QStandardPaths>
+#include <QStatusBar>
 #include <QStyle>
 #include <QTabWidget>
 #include <QTemporaryDir>
@@ -22,14 +23,18 @@
 namespace {
 // Answers the next modal message box with `button` (from the event loop, as a user would) and
 // records its title; the box must appear within a few seconds.
-void AnswerNextMessageBox(QMessageBox::StandardButton button, QString* title) {
-  QTimer::singleShot(50, [button, title] {
+// Answers the next message box that has `button` (one without it is left to another answer),
+// keeping its title and text.
+void AnswerNextMessageBox(QMessageBox::StandardButton button, QString* title = nullptr,
+                          QString* text = nullptr) {
+  QTimer::singleShot(50, [button, title, text] {
     auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
-    if (!box) {
-      AnswerNextMessageBox(button, title);  // not shown yet: look again
+    if (!box || !box->button(button)) {
+      AnswerNextMessageBox(button, title, text);  // not shown yet: look again
       return;
     }
-    *title = box->windowTitle();
+    if (title) *title = box->windowTitle();
+    if (text) *text = box->text();
     // scripts/screenshots.sh-style runs keep a picture of every question asked.
     if (const QString dir = qEnvironmentVariable("FILMDYN_SCREENSHOT_DIR"); !dir.isEmpty()) {
       box->grab().save(dir + "/dialog-" + box->windowTitle().toLower().replace(' ', '-') + ".png");
@@ -201,6 +206,68 @@ class TestMainWindow : public QObject {
       QVERIFY(filmdyn::ui::MainWindow::hasRecovery());
       QVERIFY(next.saveProjectAs(path, &error));
       QVERIFY(!filmdyn::ui::MainWindow::hasRecovery());
+    }
+  }
+
+  // A crash while a cell is marked invalid: the autosave holds the invalid value (a NaN, an
+  // out-of-range number) beside the good edits. Recovery brings back every good edit and keeps
+  // the saved value where the cell was invalid, and says which (it used to refuse the whole file
+  // and the next minute's timer deleted it). A file that cannot be read at all is kept aside.
+  void autosaveWithAnInvalidCellRecoversTheRest() {
+    QTemporaryDir dir;
+    const QString path = dir.filePath("case.json");
+    QFile::remove(filmdyn::ui::MainWindow::autosavePath());
+    double rod = 0.0;
+    {
+      filmdyn::ui::MainWindow window;
+      QString error;
+      QVERIFY(window.saveProjectAs(path, &error));
+      rod = window.document()->engineCase().geometry.rod_length;
+      window.document()->setParameter("operating.rpm", 2468.5);
+      window.document()->setParameter("skirt.roughness_skirt", 0.85e-6);
+      window.document()->setParameter("geometry.rod_length", std::nan(""));  // a cell cleared
+      window.document()->setParameter("big_end.width", -0.01);               // out of range
+      QVERIFY(window.document()->issues().size() >= 2);
+      QVERIFY2(window.autosaveNow(&error), qPrintable(error));
+    }  // "crash"
+    {
+      filmdyn::ui::MainWindow next;
+      next.show();
+      AnswerNextMessageBox(QMessageBox::Yes);
+      next.offerRecovery();
+      const auto& c = next.document()->engineCase();
+      QCOMPARE(c.operating.rpm, 2468.5);
+      QCOMPARE(c.skirt.roughness_skirt, 0.85e-6);
+      QCOMPARE(c.geometry.rod_length, rod);  // the saved file's
+      QVERIFY(c.big_end.width > 0.0);
+      QVERIFY(next.document()->issues().empty());
+      QVERIFY(next.document()->isModified());
+      const QString message = next.statusBar()->currentMessage();
+      QVERIFY2(message.contains("Recovered") && message.contains("geometry.rod_length") &&
+                   message.contains("big_end.width"),
+               qPrintable(message));
+      QVERIFY(!filmdyn::ui::MainWindow::hasRecovery());
+    }
+    // Not a case file at all: the question's answer cannot recover it; it is kept aside.
+    QFile broken(filmdyn::ui::MainWindow::autosavePath());
+    QVERIFY(broken.open(QIODevice::WriteOnly));
+    broken.write("{ \"geometry\": ");
+    broken.close();
+    {
+      filmdyn::ui::MainWindow next;
+      next.show();
+      QString title, text;
+      AnswerNextMessageBox(QMessageBox::Yes);
+      AnswerNextMessageBox(QMessageBox::Ok, &title, &text);
+      next.offerRecovery();
+      QCOMPARE(title, QString("Cannot recover"));
+      const QString kept = QFileInfo(filmdyn::ui::MainWindow::autosavePath())
+                               .absoluteDir()
+                               .filePath("autosave-not-recovered.json");
+      QVERIFY2(text.contains(kept), qPrintable(text));
+      QVERIFY(QFile::exists(kept));
+      QVERIFY(!filmdyn::ui::MainWindow::hasRecovery());
+      QFile::remove(kept);
     }
   }
 
