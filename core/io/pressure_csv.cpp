@@ -105,13 +105,16 @@ engine::PressureCurve ReadPressureCsvFile(const std::filesystem::path& path,
 }
 
 void WritePressureCsv(std::ostream& out, const std::vector<double>& crank_angle_deg,
-                      const std::vector<double>& pressure, const std::string& comment) {
+                      const std::vector<double>& pressure, const std::string& comment,
+                      CsvDigits digits) {
   std::istringstream lines(comment);
   std::string line;
   while (std::getline(lines, line)) out << "# " << line << "\n";
   out << "crank_angle[deg],pressure[Pa]\n";
   for (std::size_t k = 0; k < crank_angle_deg.size(); ++k) {
-    out << fmt::format("{:.2f},{:.1f}\n", crank_angle_deg[k], pressure[k]);
+    out << (digits == CsvDigits::kTable
+                ? fmt::format("{:.2f},{:.1f}\n", crank_angle_deg[k], pressure[k])
+                : fmt::format("{},{}\n", crank_angle_deg[k], pressure[k]));
   }
 }
 

@@ -17,8 +17,13 @@ engine::PressureCurve ReadPressureCsv(std::istream& in, const std::string& sourc
 engine::PressureCurve ReadPressureCsvFile(const std::filesystem::path& path,
                                           const std::string& field = "--pressure-curve");
 
+/// How many digits WritePressureCsv writes: kExact, every number as the shortest text that
+/// reads back as the same double (an export the import gives back bit for bit); kTable, 0.01 °CA
+/// and 0.1 Pa (the shipped synthetic tables).
+enum class CsvDigits { kExact, kTable };
 /// Writes the table with the standard header, after `comment` lines (each prefixed "# ").
 void WritePressureCsv(std::ostream& out, const std::vector<double>& crank_angle_deg,
-                      const std::vector<double>& pressure, const std::string& comment);
+                      const std::vector<double>& pressure, const std::string& comment,
+                      CsvDigits digits = CsvDigits::kExact);
 
 }  // namespace filmdyn::io

@@ -715,7 +715,8 @@ void CaseEditor::importPressureCsv(const QString& given_path) {
   // The speed: the selected curve's, or one read from the file name ("..._4000rpm.csv").
   double rpm = next.operating.rpm;
   if (current_curve_ >= 0) rpm = next.pressure_curves[size_t(current_curve_)].rpm;
-  static const QRegularExpression rpm_re("(\\d+)\\s*rpm",
+  // A whole number or a decimal, not the tail of one ("1234.5rpm" is 1234.5, not 5).
+  static const QRegularExpression rpm_re("(?<![\\d.])(\\d+(?:\\.\\d+)?)\\s*rpm",
                                          QRegularExpression::CaseInsensitiveOption);
   const auto match = rpm_re.match(QFileInfo(path).fileName());
   if (match.hasMatch()) rpm = match.captured(1).toDouble();
@@ -724,6 +725,7 @@ void CaseEditor::importPressureCsv(const QString& given_path) {
   for (size_t i = 0; i < next.pressure_curves.size(); ++i) {
     if (next.pressure_curves[i].rpm == rpm) index = int(i);
   }
+  const bool replaced = index >= 0;
   if (index < 0) {
     next.pressure_curves.push_back(curve);
     index = int(next.pressure_curves.size()) - 1;
@@ -733,8 +735,12 @@ void CaseEditor::importPressureCsv(const QString& given_path) {
   current_curve_ = index;
   document_->edit(next, tr("Import pressure curve %1").arg(QFileInfo(path).fileName()));
   curve_combo_->setCurrentIndex(index);
-  emit statusMessage(
-      tr("Imported %1 points at %2 rpm from %3").arg(curve.pressure.size()).arg(rpm).arg(path));
+  emit statusMessage(tr("Imported %1 points at %2 rpm from %3%4")
+                         .arg(curve.pressure.size())
+                         .arg(rpm)
+                         .arg(path, replaced ? tr(", replacing the curve at that speed (undo "
+                                                  "brings it back)")
+                                             : QString()));
 }
 
 void CaseEditor::exportPressureCsv(const QString& given_path) {

@@ -2,7 +2,6 @@
 
 #include <QObject>
 #include <nlohmann/json.hpp>
-#include <numbers>
 
 #include "core/base/input_error.hpp"
 #include "core/io/case_file.hpp"
@@ -30,12 +29,8 @@ bool LoadCaseFile(const QString& path, engine::EngineCase* c, QString* error, QS
     engine::EngineCase value = loaded.value;
     for (auto& source : value.pressure_curves) {
       if (source.file.empty()) continue;
-      const engine::PressureCurve curve = io::PressureCurveForSpeed(loaded, source.rpm);
-      source.file.clear();
-      source.crank_angle_deg.clear();
-      for (double a : curve.Angles())
-        source.crank_angle_deg.push_back(a * 180.0 / std::numbers::pi);
-      source.pressure = curve.Pressures();
+      // Inline, in the degrees that convert back to exactly the angles the file gave.
+      source = io::InlinePressureCurve(io::PressureCurveForSpeed(loaded, source.rpm), source.rpm);
     }
     *c = std::move(value);
   } catch (const std::exception& e) {

@@ -15,7 +15,11 @@ namespace filmdyn::ui {
 double ParseUserNumber(const QString& text) {
   bool ok = false;
   const QString trimmed = text.trimmed();
-  double v = QLocale::c().toDouble(trimmed, &ok);
+  // '.' as the decimal point first, without thousands separators: the C locale would read
+  // "1,125" as 1125, where a user of a decimal-comma locale means 1.125 (read next).
+  QLocale point = QLocale::c();
+  point.setNumberOptions(QLocale::RejectGroupSeparator);
+  double v = point.toDouble(trimmed, &ok);
   if (!ok) v = QLocale().toDouble(trimmed, &ok);
   return ok ? v : std::numeric_limits<double>::quiet_NaN();
 }

@@ -1,9 +1,10 @@
 #include "ui/case_editor/pressure_csv.hpp"
 
+#include <fmt/format.h>
 #include <QFile>
-#include <numbers>
 #include <sstream>
 
+#include "core/io/case_file.hpp"
 #include "core/io/pressure_csv.hpp"
 #include "ui/save_text.hpp"
 
@@ -20,10 +21,9 @@ bool ImportPressureCsv(const QString& path, engine::PressureCurveSource* curve, 
   std::istringstream in(file.readAll().toStdString());
   try {
     const engine::PressureCurve read = io::ReadPressureCsv(in, path.toStdString());
-    curve->file.clear();
-    curve->crank_angle_deg.clear();
-    for (double a : read.Angles()) curve->crank_angle_deg.push_back(a * 180.0 / std::numbers::pi);
-    curve->pressure = read.Pressures();
+    // The degrees that convert back to exactly the angles read (core's one inversion).
+    const double rpm = curve->rpm;
+    *curve = io::InlinePressureCurve(read, rpm);
   } catch (const std::exception& e) {
     *error = QString::fromStdString(e.what());
     return false;
@@ -34,9 +34,8 @@ bool ImportPressureCsv(const QString& path, engine::PressureCurveSource* curve, 
 bool ExportPressureCsv(const engine::PressureCurveSource& curve, const QString& path,
                        QString* error) {
   std::ostringstream out;
-  io::WritePressureCsv(
-      out, curve.crank_angle_deg, curve.pressure,
-      "cylinder pressure at " + std::to_string(int(curve.rpm)) + " rpm, exported by FilmDyn");
+  io::WritePressureCsv(out, curve.crank_angle_deg, curve.pressure,
+                       fmt::format("cylinder pressure at {} rpm, exported by FilmDyn", curve.rpm));
   return SaveTextFile(path, out.str(), error);
 }
 

@@ -30,7 +30,8 @@ std::string CsvFor(double rpm) {
           " rpm, naturally aspirated gasoline, full load;\n"
           "polytropic compression/expansion + Wiebe heat release, geometry of "
           "resources/cases/default.json.\nModel: docs/pressure-model.md. Regenerate: "
-          "FILMDYN_REGENERATE_RESOURCES=1 test_engine_synthetic_pressure");
+          "FILMDYN_REGENERATE_RESOURCES=1 test_engine_synthetic_pressure",
+      io::CsvDigits::kTable);
   return out.str();
 }
 }  // namespace

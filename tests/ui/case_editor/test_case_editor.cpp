@@ -678,13 +678,24 @@ class TestCaseEditor : public QObject {
     auto changed = window.document()->engineCase();
     changed.pressure_curves[size_t(curve)].pressure[10] *= 2;
     window.document()->edit(changed, "change");
+    QSignalSpy imported(editor, &filmdyn::ui::CaseEditor::statusMessage);
     editor->importPressureCsv(path);
     const auto& back = window.document()->engineCase().pressure_curves[size_t(curve)];
-    QCOMPARE(back.pressure.size(), original.pressure.size());
-    for (size_t i = 0; i < back.pressure.size(); ++i) {
-      QVERIFY(std::abs(back.pressure[i] - original.pressure[i]) <= 1e-9 * original.pressure[i]);
-      QVERIFY(std::abs(back.crank_angle_deg[i] - original.crank_angle_deg[i]) < 1e-9);
-    }
+    // Bit for bit (the export writes every digit; the degrees are those that convert back to
+    // the same radians).
+    QVERIFY(back.pressure == original.pressure);
+    QVERIFY(back.crank_angle_deg == original.crank_angle_deg);
+    QCOMPARE(imported.count(), 1);
+    QVERIFY2(imported.first().first().toString().contains("replacing the curve at that speed"),
+             qPrintable(imported.first().first().toString()));
+    // A decimal speed in the file name is the speed ("1234.5rpm" is not 5 rpm): a new curve.
+    const QString decimal = dir.filePath("pressure_1234.5rpm.csv");
+    QVERIFY(QFile::copy(path, decimal));
+    const std::size_t curves = window.document()->engineCase().pressure_curves.size();
+    editor->importPressureCsv(decimal);
+    QCOMPARE(window.document()->engineCase().pressure_curves.size(), curves + 1);
+    QCOMPARE(window.document()->engineCase().pressure_curves.back().rpm, 1234.5);
+    window.document()->undoStack()->undo();
     // A broken CSV is reported (file and line), the case is unchanged.
     const QString bad = dir.filePath("bad.csv");
     QFile out(bad);

@@ -259,6 +259,22 @@ class TestCaseSchema : public QObject {
   // stored as the same decimal written in m more often than by multiplying with 1e-6 (the file
   // reads 8.5e-07, not 8.5000000000000004e-07: 13 % of random 1–6 digit decimals still differ in
   // the last bit, against 36 %), and a value shows in the editor at 15 digits, as written.
+  // A typed number: '.' is always the decimal point; a comma is the decimal point of a
+  // decimal-comma locale ("1,125" is 1.125 there, not 1125 read with a thousands separator),
+  // and a thousands separator in a locale that groups with it.
+  void typedNumbersReadTheDecimalComma() {
+    const QLocale saved;
+    QLocale::setDefault(QLocale(QLocale::German));
+    QCOMPARE(ui::ParseUserNumber("1,125"), 1.125);
+    QCOMPARE(ui::ParseUserNumber("1.125"), 1.125);
+    QCOMPARE(ui::ParseUserNumber(" 0,85 "), 0.85);
+    QLocale::setDefault(QLocale(QLocale::English, QLocale::UnitedStates));
+    QCOMPARE(ui::ParseUserNumber("1,125"), 1125.0);
+    QCOMPARE(ui::ParseUserNumber("1.125"), 1.125);
+    QVERIFY(std::isnan(ui::ParseUserNumber("1,2,3x")));
+    QLocale::setDefault(saved);
+  }
+
   void displayUnitsKeepTypedDecimals() {
     QCOMPARE(engine::ScaleFromDisplay(0.615, 1e-6), 6.15e-7);  // × 1e-6 gives 6.150...04e-07
     QCOMPARE(engine::ScaleToDisplay(6.15e-7, 1e-6), 0.615);    // ÷ 1e-6 gives 0.615...01
