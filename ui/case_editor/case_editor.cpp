@@ -221,6 +221,7 @@ QWidget* CaseEditor::makeParameterPage(CaseGroup group) {
     layout->addLayout(form);
   }
   auto* model = new ParameterTableModel(document_, group, page);
+  connect(model, &ParameterTableModel::editRefused, this, &CaseEditor::statusMessage);
   auto* table = MakeTable(model, page);
   table->setObjectName(QString("parameters_%1").arg(int(group)));
   table->horizontalHeader()->setSectionResizeMode(ParameterTableModel::kQuantity,

@@ -173,8 +173,16 @@ bool ParameterTableModel::setData(const QModelIndex& index, const QVariant& valu
   if (SameEditNumber(value.toString(),
                      engine::ScaleToDisplay(p.get(document_->engineCase()), p.to_si)))
     return true;
-  document_->setParameter(p.path,
-                          engine::ScaleFromDisplay(ParseUserNumber(value.toString()), p.to_si));
+  const double typed = ParseUserNumber(value.toString());
+  if (p.integer && std::isfinite(typed) && typed != std::round(typed)) {
+    // Core would round it (a mesh count of 40.6 stored as 41): the user says which.
+    emit editRefused(tr("%1: %2 is not a whole number; the value stays %3")
+                         .arg(p.label, value.toString().trimmed(),
+                              FormatDisplayNumber(engine::ScaleToDisplay(
+                                  p.get(document_->engineCase()), p.to_si))));
+    return false;
+  }
+  document_->setParameter(p.path, engine::ScaleFromDisplay(typed, p.to_si));
   return true;
 }
 

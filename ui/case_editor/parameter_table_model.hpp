@@ -33,6 +33,10 @@ class ParameterTableModel : public QAbstractTableModel {
   int rowOf(const std::string& path) const;
   const CaseParameter& parameter(int row) const { return *rows_[size_t(row)]; }
 
+ signals:
+  /// An edit left undone, and why (a whole-number field given a fraction): for the status bar.
+  void editRefused(const QString& message);
+
  private:
   /// The chosen name of a choice row ("(invalid)" for an index outside its choices).
   QString choiceText(const CaseParameter& p) const;

@@ -219,6 +219,28 @@ class TestCaseEditor : public QObject {
     QVERIFY(model->index(3, 1).data(Qt::ToolTipRole).toString().contains("1.234567891"));
   }
 
+  // A whole-number field (a mesh count) given a fraction is not rounded behind the user's back:
+  // the edit is refused and the status bar says why; a whole number is taken.
+  void aWholeNumberFieldRefusesAFraction() {
+    MainWindow window;
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    window.workspace()->setCurrentIndex(0);
+    const filmdyn::engine::CaseField* field = filmdyn::engine::FindCaseField("big_end.mesh_theta");
+    QVERIFY(field != nullptr && field->kind == filmdyn::engine::FieldKind::kInteger);
+    ParameterTableModel* model = window.caseEditor()->parameterModel(field->group);
+    const QModelIndex cell = model->index(model->rowOf(field->path), ParameterTableModel::kValue);
+    const double before = field->get(window.document()->engineCase());
+    QSignalSpy status(window.caseEditor(), &filmdyn::ui::CaseEditor::statusMessage);
+    QVERIFY(!model->setData(cell, "40.6", Qt::EditRole));
+    QCOMPARE(field->get(window.document()->engineCase()), before);
+    QCOMPARE(status.count(), 1);
+    QVERIFY2(status.first().first().toString().contains("40.6 is not a whole number"),
+             qPrintable(status.first().first().toString()));
+    QVERIFY(model->setData(cell, "40", Qt::EditRole));
+    QCOMPARE(field->get(window.document()->engineCase()), 40.0);
+  }
+
   void profileAndPressureTablesEditTheArrays() {
     MainWindow window;
     window.show();
