@@ -492,6 +492,31 @@ engine::EngineCase LoadCaseText(const std::string& text, const std::string& sour
   return CaseFromJson(root, notes);
 }
 
+std::vector<std::string*> CaseFileNames(engine::EngineCase* c) {
+  std::vector<std::string*> names = {&c->skirt.compliance_file, &c->big_end.compliance_file};
+  for (engine::PressureCurveSource& curve : c->pressure_curves) names.push_back(&curve.file);
+  return names;
+}
+
+int RebaseCaseFiles(engine::EngineCase* c, const std::filesystem::path& from,
+                    const std::filesystem::path& to) {
+  namespace fs = std::filesystem;
+  std::error_code ignored;
+  const fs::path source = fs::absolute(from, ignored).lexically_normal();
+  const fs::path target = fs::absolute(to, ignored).lexically_normal();
+  if (source == target) return 0;
+  int changed = 0;
+  for (std::string* name : CaseFileNames(c)) {
+    if (name->empty() || fs::path(*name).is_absolute()) continue;
+    const fs::path file = (source / *name).lexically_normal();
+    if (!fs::is_regular_file(file, ignored)) continue;
+    const fs::path relative = file.lexically_relative(target);
+    *name = relative.empty() ? file.string() : relative.string();
+    ++changed;
+  }
+  return changed;
+}
+
 engine::EngineCase CaseFileKeepingValid(const std::filesystem::path& path,
                                         const engine::EngineCase& base,
                                         std::vector<std::string>* dropped) {

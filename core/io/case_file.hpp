@@ -53,6 +53,16 @@ engine::EngineCase LoadCaseText(const std::string& text, const std::string& sour
                                 const std::vector<std::string>& overrides = {},
                                 std::vector<std::string>* notes = nullptr);
 
+/// The case's file names relative to the case file's folder may be: the compliance files and the
+/// pressure curves' CSV files (one list for the places that resolve or move them).
+std::vector<std::string*> CaseFileNames(engine::EngineCase* engine_case);
+/// For a case moving from the folder `from` to the folder `to` (a Save As elsewhere): each
+/// relative file name that names an existing file from `from` is rewritten to name the same file
+/// from `to` (relative, or absolute where no relative path leads there). Names of no file there
+/// (a built-in resource's, a missing file) stay as written. Returns how many changed.
+int RebaseCaseFiles(engine::EngineCase* engine_case, const std::filesystem::path& from,
+                    const std::filesystem::path& to);
+
 /// Reads a case an editor saved with values the reader refuses (the GUI's autosave of a case
 /// with a marked cell: a NaN, a value out of range, an inconsistent pair), keeping every other
 /// value: each refused field (the object field the reader names, or the list or section holding

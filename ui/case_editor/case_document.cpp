@@ -1,12 +1,13 @@
 #include "ui/case_editor/case_document.hpp"
 
+#include <QDir>
 #include <QFileInfo>
-
 #include <QUndoCommand>
 #include <algorithm>
 #include <cmath>
 
 #include "core/engine/case_schema.hpp"
+#include "core/io/case_file.hpp"
 #include "ui/case_editor/case_json.hpp"
 #include "ui/case_editor/case_parameters.hpp"
 
@@ -170,7 +171,19 @@ void CaseDocument::reset(const engine::EngineCase& engine_case, const QString& f
 }
 
 bool CaseDocument::save(const QString& path, QString* error) {
-  if (!SaveCaseFile(case_, path, error)) return false;
+  // Saved in another folder: relative file names (compliance files, pressure CSVs) are made to
+  // name the same files from there, as an edit of its own (undo gives back the old names).
+  const std::string from =
+      file_path_.isEmpty() ? QDir::currentPath().toStdString() : caseDirectory();
+  engine::EngineCase moved = case_;
+  const bool rebased =
+      io::RebaseCaseFiles(&moved, from, QFileInfo(path).absolutePath().toStdString()) > 0;
+  if (rebased)
+    edit(moved, QObject::tr("File names made relative to %1").arg(QFileInfo(path).absolutePath()));
+  if (!SaveCaseFile(case_, path, error)) {
+    if (rebased) undo_stack_.undo();  // not saved there: the names stay as they were
+    return false;
+  }
   undo_stack_.setClean();
   if (file_path_ != path) {
     file_path_ = path;

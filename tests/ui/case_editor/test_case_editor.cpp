@@ -12,6 +12,7 @@
 #include <QApplication>
 #include <QChart>
 #include <QComboBox>
+#include <QDir>
 #include <QFile>
 #include <QLabel>
 #include <QLineEdit>
@@ -938,6 +939,38 @@ class TestCaseEditor : public QObject {
     const auto saved = filmdyn::io::LoadCase(path.toStdString());
     QVERIFY(saved.notes.empty());
     QCOMPARE(filmdyn::engine::PistonRadius(saved.value), 0.03647);
+  }
+
+  // Save As into another folder keeps relative file names naming the same files: a compliance
+  // file next to the first case file is named "../a/skirt.csv" from the second folder (it used to
+  // keep "skirt.csv", which would then name a file beside the new case, or none). A name of no
+  // file (here the big end's) stays as written. Undo gives back the old names.
+  void saveAsElsewhereKeepsRelativeFileNames() {
+    QTemporaryDir dir;
+    QVERIFY(QDir(dir.path()).mkpath("a") && QDir(dir.path()).mkpath("b"));
+    QFile compliance(dir.filePath("a/skirt.csv"));
+    QVERIFY(compliance.open(QIODevice::WriteOnly));
+    compliance.write("# placeholder: only its place matters here\n");
+    compliance.close();
+    MainWindow window;
+    filmdyn::ui::CaseDocument* document = window.document();
+    QString error;
+    QVERIFY2(window.saveProjectAs(dir.filePath("a/case.json"), &error), qPrintable(error));
+    auto c = document->engineCase();
+    c.skirt.compliance_file = "skirt.csv";
+    c.big_end.compliance_file = "missing.csv";
+    document->edit(c, "files");
+    QVERIFY2(window.saveProjectAs(dir.filePath("a/case.json"), &error), qPrintable(error));
+    QCOMPARE(document->engineCase().skirt.compliance_file,
+             std::string("skirt.csv"));  // same folder
+    QVERIFY2(window.saveProjectAs(dir.filePath("b/case.json"), &error), qPrintable(error));
+    QCOMPARE(document->engineCase().skirt.compliance_file, std::string("../a/skirt.csv"));
+    QCOMPARE(document->engineCase().big_end.compliance_file, std::string("missing.csv"));
+    QVERIFY(!document->isModified());
+    const std::string saved = filmdyn::io::CaseToJson(document->engineCase()).dump();
+    QVERIFY(saved.find("../a/skirt.csv") != std::string::npos);
+    document->undoStack()->undo();
+    QCOMPARE(document->engineCase().skirt.compliance_file, std::string("skirt.csv"));
   }
 
   void projectRoundTripsThroughSaveAndLoad() {
