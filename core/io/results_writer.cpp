@@ -324,13 +324,10 @@ nlohmann::json RunCaseJson(const engine::RunConfig& config) {
         std::filesystem::absolute(config.case_directory / *file, ignored).lexically_normal();
     if (!full.empty() && std::filesystem::exists(full, ignored)) *file = full.string();
   };
-  absolute(&c.skirt.compliance_file);
-  absolute(&c.big_end.compliance_file);
-  if (!config.pressure.Empty()) {  // the curve the run used (a --pressure-curve, a blend, ...)
+  // The curve the run used (a --pressure-curve, a blend, ...): inline, no file.
+  if (!config.pressure.Empty())
     c.pressure_curves = {InlinePressureCurve(config.pressure, config.rpm)};
-  } else {
-    for (engine::PressureCurveSource& curve : c.pressure_curves) absolute(&curve.file);
-  }
+  for (std::string* file : CaseFileNames(&c)) absolute(file);
   return CaseToJson(c);
 }
 

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <numbers>
 #include <set>
@@ -452,11 +453,13 @@ bool SaveProjectRuns(const QString& project_path, const std::vector<ProjectRun>&
     std::set<std::string> keep;
     // The runs that could not be read back keep their keys and their entries as saved (for a
     // later version or a repair); no new run takes one of those keys.
+    std::map<int, nlohmann::json> unrestored;  // by run id: the entry as saved
     for (const ProjectRun& entry : runs) {
       if (entry.run->restoreError().isEmpty()) continue;
-      const std::string key =
-          EntryKey(nlohmann::json::parse(entry.run->restoreEntry(), nullptr, false));
-      if (!key.empty()) keep.insert(key);
+      nlohmann::json saved = nlohmann::json::parse(entry.run->restoreEntry(), nullptr, false);
+      if (saved.is_discarded()) continue;
+      if (const std::string key = EntryKey(saved); !key.empty()) keep.insert(key);
+      unrestored[entry.run->id()] = std::move(saved);
     }
     nlohmann::json list = nlohmann::json::array();
     std::string base_key;
@@ -470,10 +473,9 @@ bool SaveProjectRuns(const QString& project_path, const std::vector<ProjectRun>&
         continue;
       }
       if (!run->restoreError().isEmpty()) {
-        const nlohmann::json saved = nlohmann::json::parse(run->restoreEntry(), nullptr, false);
-        if (!saved.is_discarded()) {
-          list.push_back(saved);
-          if (run->id() == base_id) base_key = EntryKey(saved);
+        if (const auto saved = unrestored.find(run->id()); saved != unrestored.end()) {
+          list.push_back(saved->second);
+          if (run->id() == base_id) base_key = EntryKey(saved->second);
         }
         ++done.skipped_unrestored;
         continue;
