@@ -34,6 +34,7 @@
 #include "core/io/case_file.hpp"
 #include "core/io/results_writer.hpp"
 #include "ui/about_info.hpp"
+#include "ui/autosave.hpp"
 #include "ui/case_editor/case_document.hpp"
 #include "ui/case_editor/case_editor.hpp"
 #include "ui/case_editor/case_json.hpp"
@@ -162,12 +163,13 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   connect(run_controller_, &RunController::runUpdated, this, &MainWindow::onRunUpdated);
   connect(run_controller_, &RunController::runFinished, this, &MainWindow::onRunFinished);
   // Autosave: every minute while there are unsaved edits; gone once there are none.
+  autosave_ = std::make_unique<AutosaveSlot>();
   autosave_timer_ = new QTimer(this);
   autosave_timer_->setInterval(60 * 1000);
   connect(autosave_timer_, &QTimer::timeout, this, [this] { autosaveNow(); });
   autosave_timer_->start();
-  connect(document_, &CaseDocument::modifiedChanged, this, [](bool modified) {
-    if (!modified) QFile::remove(autosavePath());
+  connect(document_, &CaseDocument::modifiedChanged, this, [this](bool modified) {
+    if (!modified) autosave_->remove();
   });
   if (statusBar()->currentMessage().isEmpty()) statusBar()->showMessage(tr("Ready"));
   updateRunActions();
@@ -878,34 +880,28 @@ void MainWindow::restoreWindowState() {
   workspace_->setCurrentIndex(settings.value("main_window/tab", 0).toInt());
 }
 
-QString MainWindow::autosavePath() {
-  return QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation))
-      .filePath("autosave.json");
-}
+QString MainWindow::autosavePath() const { return autosave_->filePath(); }
 
-bool MainWindow::hasRecovery() { return QFileInfo::exists(autosavePath()); }
+bool MainWindow::hasRecovery() { return !ClaimLeftAutosaves().empty(); }
 
 bool MainWindow::autosaveNow(QString* error) {
   if (!document_->isModified()) {
-    QFile::remove(autosavePath());
+    autosave_->remove();
     return true;
   }
-  QDir().mkpath(QFileInfo(autosavePath()).absolutePath());
   QString message;
-  if (!SaveCaseFile(document_->engineCase(), autosavePath(), &message)) {
+  if (!autosave_->write(document_->engineCase(), document_->filePath(), &message)) {
     if (error) *error = message;
     statusBar()->showMessage(tr("Autosave failed: %1").arg(message), 8000);
     return false;
   }
-  QSettings().setValue("autosave/source", document_->filePath());
   return true;
 }
 
-bool MainWindow::recoverAutosave(QString* error) {
-  const QString source = QSettings().value("autosave/source").toString();
+bool MainWindow::recoverAutosave(const LeftAutosave& left, QString* error) {
   engine::EngineCase base;
   QString ignored;
-  if (source.isEmpty() || !LoadCaseFile(source, &base, &ignored)) {
+  if (left.source.isEmpty() || !LoadCaseFile(left.source, &base, &ignored)) {
     if (!LoadCaseFile({}, &base, &ignored)) base = engine::EngineCase{};
   }
   // The autosave holds the case as it was, marked cells included: what the reader refuses takes
@@ -913,14 +909,16 @@ bool MainWindow::recoverAutosave(QString* error) {
   engine::EngineCase recovered;
   std::vector<std::string> dropped;
   try {
-    recovered = io::CaseFileKeepingValid(autosavePath().toStdString(), base, &dropped);
+    recovered = io::CaseFileKeepingValid(left.file.toStdString(), base, &dropped);
   } catch (const std::exception& e) {
-    if (error) *error = tr("%1: %2").arg(autosavePath(), QString::fromUtf8(e.what()));
+    if (error) *error = tr("%1: %2").arg(left.file, QString::fromUtf8(e.what()));
     return false;
   }
-  document_->reset(base, source.isEmpty() || !QFileInfo::exists(source) ? QString() : source);
+  document_->reset(
+      base, left.source.isEmpty() || !QFileInfo::exists(left.source) ? QString() : left.source);
   document_->edit(recovered, tr("Recovered unsaved edits"));
-  QFile::remove(autosavePath());
+  // In this window's own file at once; the left one goes only once that is written.
+  if (autosaveNow()) left.remove();
   QString message = tr("Recovered the unsaved edits of the last session");
   if (!dropped.empty()) {
     QStringList lines;
@@ -937,27 +935,46 @@ bool MainWindow::recoverAutosave(QString* error) {
 }
 
 void MainWindow::offerRecovery() {
-  if (!hasRecovery()) return;
-  const QDateTime when = QFileInfo(autosavePath()).lastModified();
-  const auto answer = QMessageBox::question(
-      this, tr("Recover unsaved edits"),
-      tr("FilmDyn did not close normally last time. Restore the unsaved edits of the case "
-         "(saved automatically %1)?")
-          .arg(QLocale().toString(when, QLocale::ShortFormat)),
-      QMessageBox::Yes | QMessageBox::Discard, QMessageBox::Yes);
-  QString error;
-  if (answer == QMessageBox::Yes) {
-    if (!recoverAutosave(&error)) {
-      // Kept aside (the next autosave would replace it, an unmodified session remove it).
-      const QString kept =
-          QFileInfo(autosavePath()).absoluteDir().filePath("autosave-not-recovered.json");
-      QFile::remove(kept);
-      const bool moved = QFile::rename(autosavePath(), kept);
-      QMessageBox::warning(this, tr("Cannot recover"),
-                           moved ? tr("%1\n\nThe file is kept as %2.").arg(error, kept) : error);
+  const std::vector<LeftAutosave> left = ClaimLeftAutosaves();
+  for (std::size_t i = 0; i < left.size(); ++i) {
+    const LeftAutosave& one = left[i];
+    const QString belongs = one.source.isEmpty()
+                                ? tr("a case not yet saved")
+                                : tr("the case %1").arg(QDir::toNativeSeparators(one.source));
+    QString question =
+        tr("FilmDyn did not close normally last time. Restore the unsaved edits of %1 (saved "
+           "automatically %2)?")
+            .arg(belongs, QLocale().toString(one.written, QLocale::ShortFormat));
+    if (left.size() > 1) {
+      question += tr("\n\n(%1 of %2 sessions that did not close normally, the newest first.)")
+                      .arg(i + 1)
+                      .arg(left.size());
     }
-  } else {
-    QFile::remove(autosavePath());
+    const auto answer =
+        QMessageBox::question(this, tr("Recover unsaved edits"), question,
+                              QMessageBox::Yes | QMessageBox::Discard, QMessageBox::Yes);
+    if (answer != QMessageBox::Yes) {
+      one.remove();
+      continue;
+    }
+    QString error;
+    if (recoverAutosave(one, &error)) {
+      if (const std::size_t waiting = left.size() - i - 1; waiting > 0) {
+        // This window holds one case; the others are offered by the next FilmDyn started.
+        statusBar()->showMessage(
+            statusBar()->currentMessage() +
+            tr(". %n more session(s) left unsaved edits: start FilmDyn again to recover them",
+               nullptr, int(waiting)));
+      }
+      return;
+    }
+    // Kept aside (its name is this window's no more: it would be offered at every start).
+    const QString kept = NotRecoveredPath(one);
+    QFile::remove(kept);
+    const bool moved = QFile::rename(one.file, kept);
+    if (moved) one.remove();
+    QMessageBox::warning(this, tr("Cannot recover"),
+                         moved ? tr("%1\n\nThe file is kept as %2.").arg(error, kept) : error);
   }
 }
 
@@ -966,7 +983,7 @@ void MainWindow::closeEvent(QCloseEvent* event) {
     event->ignore();
     return;
   }
-  QFile::remove(autosavePath());  // saved or discarded: nothing to recover
+  autosave_->remove();  // saved or discarded: nothing to recover
   if (run_controller_->isRunning()) run_controller_->cancel();
   QSettings settings;
   settings.setValue("main_window/geometry", saveGeometry());

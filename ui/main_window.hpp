@@ -5,6 +5,7 @@
 /// geometry, state and preferences are remembered between sessions (QSettings).
 #include <QMainWindow>
 #include <QStringList>
+#include <memory>
 
 #include "ui/run/run_record.hpp"
 
@@ -18,6 +19,8 @@ class QTimer;
 
 namespace filmdyn::ui {
 
+class AutosaveSlot;
+struct LeftAutosave;
 class CaseDocument;
 class CaseEditor;
 class FieldView;
@@ -58,19 +61,17 @@ class MainWindow : public QMainWindow {
   /// The run's output folder exactly as `filmdyn run --out DIR` writes it (results.csv,
   /// summary.json, fields/).
   bool exportRunFolder(const RunHandle& run, const QString& directory, QString* error = nullptr);
-  /// Unsaved edits are written every minute to autosavePath() (the case's own file path kept in
-  /// the settings) and the file is removed once they are saved or discarded or the window
-  /// closes normally; after a crash the next start offers them back (offerRecovery).
-  static QString autosavePath();
+  /// Unsaved edits are written every minute to autosavePath(), this window's own file (with the
+  /// case file they belong to beside it: ui/autosave.hpp), and the file is removed once they are
+  /// saved or discarded or the window closes normally; after a crash the next start offers them
+  /// back (offerRecovery). Windows open at once each have their own file.
+  QString autosavePath() const;
   /// Whether the session's runs differ from what the project file's runs folder holds.
   bool hasUnsavedRuns() const;
   /// Writes the autosave now when the case has unsaved edits (removes it when it has none).
   bool autosaveNow(QString* error = nullptr);
-  /// An autosave of an earlier session is waiting (that session did not close normally).
+  /// An autosave of a window that is gone is waiting (it did not close normally).
   static bool hasRecovery();
-  /// Loads the waiting autosave as unsaved edits on top of its case file (or the default case),
-  /// then removes it.
-  bool recoverAutosave(QString* error = nullptr);
   /// Adds the run of point `number` of the study the Study page shows to the runs (its folder
   /// read by ReadRunFolder, its case rebuilt from the study) and shows the results page; a
   /// point already among the runs is selected. False with *error saying why it cannot be read.
@@ -93,7 +94,8 @@ class MainWindow : public QMainWindow {
   void removeSelectedRun();
   /// Removes a run from the table and the plots (not the one running).
   void removeRun(int run_id);
-  /// Asks whether to restore a waiting autosave (main() calls it once the window is shown).
+  /// Asks whether to restore the waiting autosaves, newest first, until one is restored (main()
+  /// calls it once the window is shown); the others wait for the next start.
   void offerRecovery();
 
  protected:
@@ -110,6 +112,9 @@ class MainWindow : public QMainWindow {
   /// Asks to save unsaved edits of the case or runs not yet saved with the project; false when
   /// the user cancels.
   bool maybeSave();
+  /// Loads `left` as unsaved edits on top of its case file (or the default case), writes this
+  /// window's autosave and removes `left`.
+  bool recoverAutosave(const LeftAutosave& left, QString* error);
   void onRunUpdated(const RunHandle& run);
   /// Project runs (ui/runs/run_store.hpp): drops the session's finished runs; reads back those
   /// saved beside `project_path` (returns what could not be restored); saves the finished runs
@@ -139,6 +144,7 @@ class MainWindow : public QMainWindow {
   QLabel* run_state_label_ = nullptr;
   QLabel* blocker_label_ = nullptr;
   QTimer* autosave_timer_ = nullptr;
+  std::unique_ptr<AutosaveSlot> autosave_;
   std::weak_ptr<RunRecord> shown_fields_run_;  ///< the run whose fields the field page shows
   std::weak_ptr<RunRecord> state_run_;         ///< the run the toolbar's state line speaks of
 };

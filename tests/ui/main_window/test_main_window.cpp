@@ -15,10 +15,18 @@
 #include <QtTest>
 
 #include "ui/about_info.hpp"
+#include "ui/autosave.hpp"
 #include "ui/case_editor/case_document.hpp"
+#include "ui/case_editor/case_json.hpp"
 #include "ui/case_editor/case_parameters.hpp"
 #include "ui/main_window.hpp"
 #include "ui/run/run_controller.hpp"
+
+// POSIX, after the project's headers (its macros clash with their names).
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <csignal>
 
 namespace {
 // Answers the next modal message box with `button` (from the event loop, as a user would) and
@@ -41,6 +49,11 @@ void AnswerNextMessageBox(QMessageBox::StandardButton button, QString* title = n
     }
     box->button(button)->click();
   });
+}
+
+// No autosave left by an earlier test or a window of this user.
+void ForgetLeftAutosaves() {
+  for (const auto& left : filmdyn::ui::ClaimLeftAutosaves()) left.remove();
 }
 }  // namespace
 
@@ -172,41 +185,158 @@ class TestMainWindow : public QObject {
     QCOMPARE(modified_signals, 0);
   }
 
-  // Unsaved edits survive a crash: written to the autosave file (every minute; here at once),
-  // left behind by a window that never closed normally, offered back by the next one on top of
-  // the case file they belong to; saving or closing normally removes the file.
+  // Unsaved edits survive a crash: written to the window's autosave file (every minute; here at
+  // once), left behind by a window that never closed normally, offered back by the next one on
+  // top of the case file they belong to; saving or closing normally removes the file.
   void autosaveIsOfferedBackAfterACrash() {
     QTemporaryDir dir;
     const QString path = dir.filePath("case.json");
-    QFile::remove(filmdyn::ui::MainWindow::autosavePath());
+    ForgetLeftAutosaves();
     {
       filmdyn::ui::MainWindow window;
       QString error;
       QVERIFY(window.saveProjectAs(path, &error));
       QVERIFY(window.autosaveNow());
-      QVERIFY(!filmdyn::ui::MainWindow::hasRecovery());  // nothing unsaved: nothing written
+      QVERIFY(!QFile::exists(window.autosavePath()));  // nothing unsaved: nothing written
       window.document()->setParameter("operating.rpm", 2468.5);
       QVERIFY2(window.autosaveNow(&error), qPrintable(error));
-      QVERIFY(filmdyn::ui::MainWindow::hasRecovery());
+      QVERIFY(QFile::exists(window.autosavePath()));
+      QVERIFY(!filmdyn::ui::MainWindow::hasRecovery());  // its window is alive
     }  // "crash": destroyed without a close event
     QVERIFY(filmdyn::ui::MainWindow::hasRecovery());
     {
       filmdyn::ui::MainWindow next;
-      QString error, title;
+      QString error, title, text;
       next.show();
-      AnswerNextMessageBox(QMessageBox::Yes, &title);
+      AnswerNextMessageBox(QMessageBox::Yes, &title, &text);
       next.offerRecovery();  // the question the next start asks (main.cpp), answered Yes
       QCOMPARE(title, QString("Recover unsaved edits"));
+      QVERIFY2(text.contains(QDir::toNativeSeparators(path)), qPrintable(text));
       QCOMPARE(next.document()->engineCase().operating.rpm, 2468.5);
       QVERIFY(next.document()->isModified());
       QCOMPARE(next.document()->filePath(), path);
       QVERIFY(!filmdyn::ui::MainWindow::hasRecovery());
-      // Undo goes back to the saved file's value; saving removes any new autosave.
-      QVERIFY(next.autosaveNow());
-      QVERIFY(filmdyn::ui::MainWindow::hasRecovery());
+      // At once in the new window's own file; saving removes it.
+      QVERIFY(QFile::exists(next.autosavePath()));
       QVERIFY(next.saveProjectAs(path, &error));
-      QVERIFY(!filmdyn::ui::MainWindow::hasRecovery());
+      QVERIFY(!QFile::exists(next.autosavePath()));
     }
+    QVERIFY(!filmdyn::ui::MainWindow::hasRecovery());
+  }
+
+  // Two windows open at once each keep their own autosave: an idle one does not remove the
+  // other's (one shared file used to be removed by whichever window had nothing unsaved). After
+  // both are gone, the next start offers each, the newest first; the one restored is this
+  // window's, the other waits for the next start. The one file of earlier versions is offered too.
+  void windowsOpenAtOnceKeepTheirOwnAutosaves() {
+    ForgetLeftAutosaves();
+    QString text;
+    {
+      filmdyn::ui::MainWindow first;
+      filmdyn::ui::MainWindow second;
+      QVERIFY(first.autosavePath() != second.autosavePath());
+      first.document()->setParameter("operating.rpm", 1111.0);
+      QVERIFY(first.autosaveNow());
+      QVERIFY(second.autosaveNow());  // nothing unsaved in the second window
+      QVERIFY(QFile::exists(first.autosavePath()));
+      QVERIFY(!filmdyn::ui::MainWindow::hasRecovery());
+      QTest::qWait(20);  // a later modification time
+      second.document()->setParameter("operating.rpm", 2222.0);
+      QVERIFY(second.autosaveNow());
+      QCOMPARE(filmdyn::ui::ClaimLeftAutosaves().size(), std::size_t{0});
+    }  // both "crash"
+    QCOMPARE(filmdyn::ui::ClaimLeftAutosaves().size(), std::size_t{2});
+    {
+      filmdyn::ui::MainWindow next;
+      next.show();
+      AnswerNextMessageBox(QMessageBox::Yes, nullptr, &text);
+      next.offerRecovery();
+      QVERIFY2(text.contains("1 of 2") && text.contains("a case not yet saved"), qPrintable(text));
+      QCOMPARE(next.document()->engineCase().operating.rpm, 2222.0);  // the newest
+      const QString message = next.statusBar()->currentMessage();
+      QVERIFY2(message.contains("1 more session"), qPrintable(message));
+      // While `next` lives, only the other one is left.
+      QCOMPARE(filmdyn::ui::ClaimLeftAutosaves().size(), std::size_t{1});
+      QTemporaryDir saved;
+      QVERIFY(next.saveProjectAs(saved.filePath("case.json")));  // its own autosave gone
+    }
+    {
+      filmdyn::ui::MainWindow later;
+      later.show();
+      AnswerNextMessageBox(QMessageBox::Yes);
+      later.offerRecovery();
+      QCOMPARE(later.document()->engineCase().operating.rpm, 1111.0);
+      QCOMPARE(filmdyn::ui::ClaimLeftAutosaves().size(), std::size_t{0});
+    }
+    ForgetLeftAutosaves();  // `later` "crashed" with its edits
+
+    // Earlier versions: autosave.json in the data folder, its case file in the settings.
+    QTemporaryDir dir;
+    const QString path = dir.filePath("case.json");
+    {
+      filmdyn::ui::MainWindow window;
+      QVERIFY(window.saveProjectAs(path));
+    }
+    const QString earlier = QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation))
+                                .filePath("autosave.json");
+    filmdyn::engine::EngineCase edited;
+    QVERIFY(filmdyn::ui::LoadCaseFile(path, &edited, nullptr));
+    edited.operating.rpm = 3333.0;
+    QVERIFY(filmdyn::ui::SaveCaseFile(edited, earlier, nullptr));
+    QSettings().setValue("autosave/source", path);
+    {
+      filmdyn::ui::MainWindow next;
+      next.show();
+      AnswerNextMessageBox(QMessageBox::Yes);
+      next.offerRecovery();
+      QCOMPARE(next.document()->engineCase().operating.rpm, 3333.0);
+      QCOMPARE(next.document()->filePath(), path);
+      QVERIFY(!QFile::exists(earlier));
+      QVERIFY(!QSettings().contains("autosave/source"));
+    }
+    ForgetLeftAutosaves();
+  }
+
+  // Across processes, as a real crash leaves it: a FilmDyn process that holds its autosave is
+  // alive, and its file is nobody else's to offer or remove; once the process is killed (no
+  // chance to clean up), the file is left and the next start offers it.
+  void aKilledProcessLeavesItsAutosave() {
+    ForgetLeftAutosaves();
+    filmdyn::engine::EngineCase edited;
+    QVERIFY(filmdyn::ui::LoadCaseFile({}, &edited, nullptr));
+    edited.operating.rpm = 4321.0;
+    int ready[2];
+    QCOMPARE(pipe(ready), 0);
+    const pid_t child = fork();
+    QVERIFY(child >= 0);
+    if (child == 0) {  // the other process: writes its autosave, then waits to be killed
+      close(ready[0]);
+      filmdyn::ui::AutosaveSlot slot;
+      const char ok = slot.write(edited, {}, nullptr) ? '1' : '0';
+      if (write(ready[1], &ok, 1) != 1) _exit(1);
+      for (;;) pause();
+    }
+    close(ready[1]);
+    char ok = 0;
+    QCOMPARE(read(ready[0], &ok, 1), ssize_t{1});
+    close(ready[0]);
+    QCOMPARE(ok, '1');
+    const QStringList files =
+        QDir(filmdyn::ui::AutosaveFolder()).entryList({"*.json"}, QDir::Files);
+    QCOMPARE(files.size(), 1);
+    QVERIFY(!filmdyn::ui::MainWindow::hasRecovery());  // its process is alive
+    QCOMPARE(kill(child, SIGKILL), 0);
+    int status = 0;
+    QCOMPARE(waitpid(child, &status, 0), child);
+    {
+      filmdyn::ui::MainWindow next;
+      next.show();
+      AnswerNextMessageBox(QMessageBox::Yes);
+      next.offerRecovery();
+      QCOMPARE(next.document()->engineCase().operating.rpm, 4321.0);
+      QVERIFY(!QFile::exists(QDir(filmdyn::ui::AutosaveFolder()).filePath(files.front())));
+    }
+    ForgetLeftAutosaves();
   }
 
   // A crash while a cell is marked invalid: the autosave holds the invalid value (a NaN, an
@@ -216,7 +346,7 @@ class TestMainWindow : public QObject {
   void autosaveWithAnInvalidCellRecoversTheRest() {
     QTemporaryDir dir;
     const QString path = dir.filePath("case.json");
-    QFile::remove(filmdyn::ui::MainWindow::autosavePath());
+    ForgetLeftAutosaves();
     double rod = 0.0;
     {
       filmdyn::ui::MainWindow window;
@@ -248,8 +378,9 @@ class TestMainWindow : public QObject {
                qPrintable(message));
       QVERIFY(!filmdyn::ui::MainWindow::hasRecovery());
     }
+    ForgetLeftAutosaves();
     // Not a case file at all: the question's answer cannot recover it; it is kept aside.
-    QFile broken(filmdyn::ui::MainWindow::autosavePath());
+    QFile broken(QDir(filmdyn::ui::AutosaveFolder()).filePath("session-broken.json"));
     QVERIFY(broken.open(QIODevice::WriteOnly));
     broken.write("{ \"geometry\": ");
     broken.close();
@@ -257,13 +388,14 @@ class TestMainWindow : public QObject {
       filmdyn::ui::MainWindow next;
       next.show();
       QString title, text;
+      auto left = filmdyn::ui::ClaimLeftAutosaves();
+      QCOMPARE(left.size(), std::size_t{1});
+      const QString kept = filmdyn::ui::NotRecoveredPath(left.front());
+      left.clear();  // released for the offer
       AnswerNextMessageBox(QMessageBox::Yes);
       AnswerNextMessageBox(QMessageBox::Ok, &title, &text);
       next.offerRecovery();
       QCOMPARE(title, QString("Cannot recover"));
-      const QString kept = QFileInfo(filmdyn::ui::MainWindow::autosavePath())
-                               .absoluteDir()
-                               .filePath("autosave-not-recovered.json");
       QVERIFY2(text.contains(kept), qPrintable(text));
       QVERIFY(QFile::exists(kept));
       QVERIFY(!filmdyn::ui::MainWindow::hasRecovery());
