@@ -143,6 +143,7 @@ BatchOutcome RunBatch(std::vector<batch::SweepJob> jobs, int parallel, bool quie
   for (batch::SweepJob& job : jobs) job.config.threads = cores >= 2 * at_once ? 2 : 1;
   batch.jobs = jobs;
   batch.runs.resize(jobs.size());
+  batch.not_run.resize(jobs.size());
   const InterruptGuard interrupt;
   batch::SweepRunner runner(std::move(jobs), parallel, interrupt.flag());
   int done = 0;
@@ -165,8 +166,16 @@ BatchOutcome RunBatch(std::vector<batch::SweepJob> jobs, int parallel, bool quie
     const std::string label =
         engine::ModelName(job.config.model) + " " + RpmText(job.config.rpm) + " rpm";
     if (!quiet) streams.err << "\n";
+    if (outcome.not_started) {
+      ++batch.incomplete;
+      batch.not_run[index] = "not started";
+      streams.err << prefix << ": " << label
+                  << ": not started (stopped before its turn; its folder is as it was)\n";
+      continue;
+    }
     if (!outcome.error.empty()) {
       ++batch.incomplete;
+      batch.not_run[index] = "failed: " + outcome.error;
       streams.err << prefix << ": " << label << ": failed: " << outcome.error << "\n";
       continue;
     }
@@ -199,8 +208,21 @@ std::string WriteComparison(const std::filesystem::path& out, const BatchOutcome
   std::vector<io::ComparisonRow> rows;
   std::vector<ui::PlotRun> runs;
   for (int k : chosen) {
-    if (!batch.runs[k]) continue;  // did not run: reported already
-    rows.push_back(io::ReadComparisonRow(batch.jobs[k].output_folder));
+    const batch::SweepJob& job = batch.jobs[k];
+    if (!batch.runs[k]) {
+      // No run to read: a row that says why, every figure empty.
+      io::ComparisonRow row;
+      row.folder = job.output_folder.filename().string();
+      row.model = engine::ModelName(job.config.model);
+      row.rpm = job.config.rpm;
+      const std::string& why = batch.not_run[k];
+      row.status = why.rfind("failed", 0) == 0 ? "failed" : "not started";
+      row.figures.assign(io::ComparisonFigures().size(), std::nullopt);
+      row.notes = {row.folder + ": " + (why.empty() ? std::string("no results") : why)};
+      rows.push_back(std::move(row));
+      continue;
+    }
+    rows.push_back(io::ReadComparisonRow(job.output_folder));
     runs.push_back(*batch.runs[k]);
   }
   std::sort(rows.begin(), rows.end(), [](const auto& a, const auto& b) {

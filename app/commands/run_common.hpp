@@ -74,7 +74,10 @@ int JobsOption(const Args& args);
 struct BatchOutcome {
   std::vector<batch::SweepJob> jobs;
   std::vector<std::optional<ui::PlotRun>> runs;  ///< empty where the run could not start
-  int incomplete = 0;               ///< failed, cancelled, time limit or not converged
+  /// Per job, why it has no run folder to compare: "failed: <error>" (it threw: bad input, a
+  /// file it could not write), "not started" (stopped before its turn); empty when it ran.
+  std::vector<std::string> not_run;
+  int incomplete = 0;  ///< failed, cancelled, time limit, not converged or not started
 };
 
 /// Runs `jobs`, `parallel` at a time (each with 2 film threads only when the cores allow it

@@ -85,7 +85,8 @@ std::vector<batch::StudyRow> Collect(const fs::path& dir, const batch::Study& st
 long PointsPerTask(const Args& args) {
   const long per_task = args.Integer("points-per-task").value_or(1);
   if (per_task < 1 || per_task > 100000) {
-    throw InputError("--points-per-task", std::to_string(per_task), "must be an integer ≥ 1");
+    throw InputError("--points-per-task", std::to_string(per_task),
+                     "must be an integer in [1, 100000]");
   }
   return per_task;
 }
@@ -151,7 +152,7 @@ int RunPoints(const std::function<batch::SweepJob(std::size_t)>& make,
   const InterruptGuard interrupt;
   const auto start = std::chrono::steady_clock::now();
   const std::size_t chunk = std::size_t(std::max(16, 8 * parallel));
-  int done = 0, failed = 0;
+  int done = 0, failed = 0, not_started = 0;
   for (std::size_t begin = 0; begin < total && !interrupt.flag()->load(); begin += chunk) {
     const std::size_t end = std::min(total, begin + chunk);
     std::vector<batch::SweepJob> jobs;
@@ -162,8 +163,12 @@ int RunPoints(const std::function<batch::SweepJob(std::size_t)>& make,
     batch::SweepRunner runner(std::move(jobs), parallel, interrupt.flag());
     for (int index; (index = runner.WaitNext(std::chrono::milliseconds(500))) != -1;) {
       if (index >= 0) {
-        ++done;
         const batch::SweepOutcome& outcome = runner.outcome(index);
+        if (outcome.not_started) {  // stopped before its turn: its folder as it was
+          ++not_started;
+          continue;
+        }
+        ++done;
         const bool ok =
             outcome.error.empty() && (outcome.result.status == engine::RunStatus::kCompleted ||
                                       outcome.result.status == engine::RunStatus::kNotConverged);
@@ -191,7 +196,11 @@ int RunPoints(const std::function<batch::SweepJob(std::size_t)>& make,
     }
   }
   if (!quiet) streams.err << "\n";
-  return failed;
+  if (const std::size_t left = total - std::size_t(done); left > 0) {
+    streams.err << fmt::format(
+        "study: stopped; {} point(s) not started, their folders as they were\n", left);
+  }
+  return failed + not_started;
 }
 
 // The path of this executable (the job script calls it on the compute nodes).
@@ -222,8 +231,10 @@ std::string ShellQuote(const std::string& text) {
   return quoted + "'";
 }
 
-// The job array of a study on Slurm: DIR/slurm/points.txt (the points to run, one folder a
-// line), DIR/slurm/study.sbatch (one array task per chunk of points), submitted with sbatch.
+// The job array of a study on Slurm: DIR/slurm/points-N.txt (the points to run, one folder a
+// line; N counts this folder's submissions, so that tasks of an earlier array still queued keep
+// reading their own list), DIR/slurm/study.sbatch (one array task per chunk of points),
+// submitted with sbatch.
 int SubmitToSlurm(const Args& args, Streams& streams, const fs::path& out,
                   const std::vector<std::string>& folders) {
   if (folders.empty()) {
@@ -236,7 +247,11 @@ int SubmitToSlurm(const Args& args, Streams& streams, const fs::path& out,
   fs::create_directories(slurm);
   std::string list;
   for (const std::string& f : folders) list += f + "\n";
-  io::WriteFileAtomically(slurm / "points.txt", list);
+  // Under the study folder's lock: no other submission picks the same number.
+  int submission = 1;
+  while (fs::exists(slurm / fmt::format("points-{}.txt", submission))) ++submission;
+  const std::string list_name = fmt::format("points-{}.txt", submission);
+  io::WriteFileAtomically(slurm / list_name, list);
   std::string script = "#!/bin/bash\n";
   script += "#SBATCH --job-name=filmdyn-study\n";
   script += fmt::format("#SBATCH --array=0-{}", tasks - 1);
@@ -249,14 +264,17 @@ int SubmitToSlurm(const Args& args, Streams& streams, const fs::path& out,
   if (const auto partition = args.Value("partition"))
     script += "#SBATCH --partition=" + *partition + "\n";
   if (const auto time = args.Value("time")) script += "#SBATCH --time=" + *time + "\n";
-  script += "# One array task runs its chunk of DIR/slurm/points.txt (filmdyn study task).\n";
+  script +=
+      "# One array task runs its chunk of DIR/slurm/" + list_name + " (filmdyn study task).\n";
   script += "exec " + ShellQuote(ThisExecutable().string()) + " study task " +
             ShellQuote(fs::absolute(out).string()) +
-            " \"$SLURM_ARRAY_TASK_ID\" --points-per-task " + std::to_string(per_task) + "\n";
+            " \"$SLURM_ARRAY_TASK_ID\" --points-per-task " + std::to_string(per_task) +
+            " --points-list " + list_name + "\n";
   io::WriteFileAtomically(slurm / "study.sbatch", script);
   const auto [code, output] =
       Capture("sbatch --parsable " + ShellQuote((slurm / "study.sbatch").string()));
   if (code != 0) {
+    fs::remove(slurm / list_name);  // submitted nothing: the number is free again
     throw InputError("--scheduler", "slurm",
                      "sbatch failed (exit " + std::to_string(code) + "): " + output);
   }
@@ -281,7 +299,10 @@ int SubmitToSlurm(const Args& args, Streams& streams, const fs::path& out,
 }
 
 // `filmdyn study task DIR INDEX`: what one array task runs — its chunk of the points listed in
-// DIR/slurm/points.txt, one after the other, by the same code as a local study.
+// DIR/slurm/<--points-list> (points.txt by default, as arrays submitted by earlier versions
+// name it), one after the other, by the same code as a local study. A point already done (a
+// requeued task, or one run meanwhile by another submission) or being run by another process is
+// skipped, its folder untouched.
 int RunTask(const Args& args, Streams& streams) {
   if (args.positional().size() != 3) {
     throw InputError("study task", "(arguments)", "needs DIR and the task index");
@@ -292,10 +313,24 @@ int RunTask(const Args& args, Streams& streams) {
   const batch::Study study = batch::ReadStudyFolder(dir);
   const std::vector<batch::StudyPoint> points =
       batch::DesignPoints(study, batch::LoadStudyBase(study).value);
-  std::ifstream list(dir / "slurm" / "points.txt");
+  const std::string list_name = args.Value("points-list").value_or("points.txt");
+  if (list_name.empty() || list_name.find('/') != std::string::npos || list_name[0] == '.') {
+    throw InputError("--points-list", list_name, "must be a file name in DIR/slurm");
+  }
+  std::ifstream list(dir / "slurm" / list_name);
+  if (!list)
+    throw InputError("--points-list", (dir / "slurm" / list_name).string(), "cannot be read");
   std::vector<std::string> folders;
   for (std::string line; std::getline(list, line);) {
     if (!line.empty()) folders.push_back(line);
+  }
+  // The array has one task per chunk of the list: a larger index names no task.
+  const long tasks = (long(folders.size()) + per_task - 1) / per_task;
+  if (index >= tasks) {
+    throw InputError("task index", std::to_string(index),
+                     fmt::format("must be below {}, the number of tasks of slurm/{} ({} points, "
+                                 "{} per task)",
+                                 tasks, list_name, folders.size(), per_task));
   }
   std::vector<const batch::StudyPoint*> mine;
   std::vector<std::string> names;
@@ -305,7 +340,13 @@ int RunTask(const Args& args, Streams& streams) {
       return p.folder == folders[size_t(k)];
     });
     if (point == points.end()) {
-      throw InputError("slurm/points.txt", folders[size_t(k)], "is not a point of this study");
+      throw InputError("slurm/" + list_name, folders[size_t(k)], "is not a point of this study");
+    }
+    if (const batch::PointState state = batch::ReadPointState(dir / point->folder);
+        state == batch::PointState::kDone || state == batch::PointState::kRunning) {
+      streams.err << "study task: " << point->folder << " is " << batch::PointStateName(state)
+                  << " already: skipped\n";
+      continue;
     }
     mine.push_back(&*point);
     names.push_back(point->folder);
@@ -327,6 +368,20 @@ int RunStudy(const Args& args, Streams& streams) {
   const std::string scheduler = args.Value("scheduler").value_or("local");
   if (scheduler != "local" && scheduler != "slurm") {
     throw InputError("--scheduler", scheduler, "must be local or slurm");
+  }
+  // Every option is checked before the points are (a large study takes a while to check).
+  if (scheduler == "local") {
+    JobsOption(args);
+    for (const char* option : {"partition", "time", "max-parallel", "points-per-task"}) {
+      if (args.Value(option)) {
+        throw InputError(std::string("--") + option, *args.Value(option),
+                         "is an option of --scheduler slurm; this study runs here (local)");
+      }
+    }
+  } else {
+    PointsPerTask(args);
+    if (const auto max = args.Integer("max-parallel"); max && *max < 1)
+      throw InputError("--max-parallel", std::to_string(*max), "must be ≥ 1");
   }
   if (scheduler == "slurm" && !OnPath("sbatch")) {
     throw InputError("--scheduler", "slurm",
@@ -391,6 +446,10 @@ int RunStudy(const Args& args, Streams& streams) {
                      "is not empty and holds no study; choose an empty or new folder");
   }
 
+  // Every point of the folder is made from its copy of the base case (written now for a new
+  // study); a case file changed since the study began is refused, before anything is written.
+  const batch::Study pinned = batch::PinStudyBase(out, study, base);
+
   // What is left to do: points whose results are complete are kept.
   std::vector<int> job_point;
   int kept = 0, elsewhere = 0;
@@ -427,9 +486,9 @@ int RunStudy(const Args& args, Streams& streams) {
   for (int k : job_point) names.push_back(points[size_t(k)].folder);
   if (scheduler == "slurm") return SubmitToSlurm(args, streams, out, names);
 
-  RunPoints([&](std::size_t k) { return JobForPoint(study, points[size_t(job_point[k])], out); },
+  RunPoints([&](std::size_t k) { return JobForPoint(pinned, points[size_t(job_point[k])], out); },
             names, JobsOption(args), quiet, streams);
-  const std::vector<batch::StudyRow> rows = Collect(out, study, args, streams);
+  const std::vector<batch::StudyRow> rows = Collect(out, pinned, args, streams);
   streams.err << "study: " << Counts(rows) << "; " << (out / "study.csv").string() << ", "
               << (out / "study.md").string() << ", " << (out / "plots").string() << "\n";
   const bool all_done = std::all_of(rows.begin(), rows.end(), [](const batch::StudyRow& r) {
@@ -504,7 +563,8 @@ Command MakeStudyCommand() {
       {"partition", "P", "slurm: the partition (sbatch --partition)"},
       {"time", "T", "slurm: the time limit of each array task (sbatch --time, e.g. 0:30:00)"},
       {"max-parallel", "N", "slurm: at most N array tasks at once (--array=…%N)"},
-      {"points-per-task", "K", "slurm: points run one after the other by each array task (1)"}};
+      {"points-per-task", "K", "slurm: points run one after the other by each array task (1)"},
+      {"points-list", "FILE", "study task: the submission's list in DIR/slurm (points.txt)"}};
   command.details =
       "STUDY.json names the base case, the factors (case fields by dotted path, with levels or a\n"
       "range; operating.rpm and \"model\" among them) and the design (docs/study.md; an example\n"

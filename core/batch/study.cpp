@@ -13,6 +13,7 @@
 
 #include "core/base/input_error.hpp"
 #include "core/base/input_file.hpp"
+#include "core/engine/case_diff.hpp"
 #include "core/engine/case_schema.hpp"
 #include "core/io/case_file.hpp"
 #include "core/io/json_input.hpp"
@@ -207,8 +208,9 @@ StudyFactor ParseFactor(const Study& s, const json& j, const std::string& key) {
 
 // The overrides ("path=value") that set a point's values: the model factor becomes the two
 // joints' models.
-std::vector<std::string> PointOverrides(const Study& study, const StudyPoint& point) {
-  std::vector<std::string> sets = study.base_overrides;
+// With `base` the study's own "set" entries first (the base case read from its case file).
+std::vector<std::string> PointOverrides(const Study& study, const StudyPoint& point, bool base) {
+  std::vector<std::string> sets = base ? study.base_overrides : std::vector<std::string>{};
   for (std::size_t f = 0; f < study.factors.size(); ++f) {
     const std::string& path = study.factors[f].path;
     if (path == kModelFactor) {
@@ -433,7 +435,9 @@ Study ReadStudyFolder(const fs::path& dir) {
                      "is not a study folder: it has no study.json (`filmdyn study STUDY.json "
                      "--out DIR` makes one)");
   }
-  return ReadStudyFile(file);
+  Study study = ReadStudyFile(file);
+  if (fs::exists(dir / kBaseCaseFile)) study.base_snapshot = dir / kBaseCaseFile;
+  return study;
 }
 
 std::vector<StudyPoint> DesignPoints(const Study& study, const engine::EngineCase& base) {
@@ -539,12 +543,50 @@ io::LoadedCase LoadWithOverrides(const Study& study, const std::vector<std::stri
 }  // namespace
 
 io::LoadedCase LoadStudyBase(const Study& study) {
+  if (!study.base_snapshot.empty()) return io::LoadCase(study.base_snapshot);
   return LoadWithOverrides(study, study.base_overrides);
+}
+
+std::string BaseCaseText(const io::LoadedCase& base) {
+  engine::EngineCase c = io::CaseWithInlineCurves(base);
+  io::AbsoluteCaseFileNames(&c, base.directory);
+  return io::CaseToJson(c).dump(2) + "\n";
+}
+
+Study PinStudyBase(const fs::path& dir, Study study, const io::LoadedCase& base) {
+  const fs::path file = dir / kBaseCaseFile;
+  const std::string text = BaseCaseText(base);
+  if (fs::exists(file)) {
+    const std::string pinned = ReadInputFile(file, "base case", io::kMaxCaseFileBytes);
+    if (pinned != text) {
+      const io::LoadedCase before = io::LoadCase(file);
+      std::string differences;
+      for (const engine::CaseDifference& d :
+           engine::DiffRunInputs({before.value, "", 0.0}, {base.value, "", 0.0})) {
+        differences +=
+            (differences.empty() ? "" : "; ") + d.path + " " + d.value_a + " → now " + d.value_b;
+      }
+      throw InputError(
+          study.case_file.empty() ? std::string("case (the embedded default case)")
+                                  : "case " + study.case_file.string(),
+          differences.empty() ? std::string("(its files)") : differences,
+          "differs from the base case the study in " + dir.string() + " began with (" +
+              file.string() +
+              "), so its points would mix two cases; restore the case, or run the study into "
+              "a new folder");
+    }
+  } else {
+    io::WriteFileAtomically(file, text);
+  }
+  study.base_snapshot = file;
+  return study;
 }
 
 io::LoadedCase LoadPointCase(const Study& study, const StudyPoint& point) {
   try {
-    return LoadWithOverrides(study, PointOverrides(study, point));
+    if (!study.base_snapshot.empty())
+      return io::LoadCase(study.base_snapshot, PointOverrides(study, point, false));
+    return LoadWithOverrides(study, PointOverrides(study, point, true));
   } catch (const InputError& e) {
     std::string where;
     for (std::size_t f = 0; f < study.factors.size(); ++f) {

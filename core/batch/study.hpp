@@ -8,6 +8,9 @@
 ///
 ///     DIR/study.json     the study as read (every path resolved, ranges expanded), written
 ///                        before any run: a second run into DIR must be the same study
+///     DIR/base-case.json the base case as the study's first run read it (its "set" entries
+///                        applied, pressure curves inline, file names absolute): every point of
+///                        DIR is made from it, so a later edit of the case file changes no point
 ///     DIR/design.csv     one row per point: point number, folder, each factor's value (SI)
 ///     DIR/point-NNNN/    the point's run folder, exactly what `filmdyn run` writes
 ///     DIR/study.csv      one row per point: the design, the status and the figures of each
@@ -64,7 +67,14 @@ struct Study {
   std::vector<StudyFactor> factors;
   bool write_fields = false;  ///< fields/ in every point's folder (off by default: volume)
   double time_limit_s = 0.0;  ///< per run; 0 = none
+  /// The study folder's base-case.json once a run has started there (PinStudyBase,
+  /// ReadStudyFolder): the base case and the points are read from it instead of case_file and
+  /// base_overrides. Not part of the study's definition (StudyJson).
+  std::filesystem::path base_snapshot;
 };
+
+/// The study folder's copy of the base case.
+inline constexpr char kBaseCaseFile[] = "base-case.json";
 
 /// One design point: the value of each factor (as the case-file text it sets).
 struct StudyPoint {
@@ -87,8 +97,18 @@ Study ParseStudy(const std::string& text, const std::filesystem::path& path);
 /// through its levels with the others at the base case's values).
 std::vector<StudyPoint> DesignPoints(const Study& study, const engine::EngineCase& base);
 
-/// The base case of the study (its case file or the embedded default, with its overrides).
+/// The base case of the study (its case file or the embedded default, with its overrides; or
+/// the study folder's copy, Study::base_snapshot).
 io::LoadedCase LoadStudyBase(const Study& study);
+/// base-case.json's text for `base` (LoadStudyBase's): the case with its pressure curves inline
+/// and its relative file names absolute, so that it reads the same from the study folder.
+std::string BaseCaseText(const io::LoadedCase& base);
+/// Pins the base case of the study run into `dir`: writes DIR/base-case.json from `base` when
+/// the folder has none (a new study, or one begun by a version without it) and returns `study`
+/// reading its cases from it. When DIR's copy differs — the case file (or the version's
+/// embedded default case) changed since the study began — throws InputError naming the case and
+/// every field that differs: its points would mix two base cases.
+Study PinStudyBase(const std::filesystem::path& dir, Study study, const io::LoadedCase& base);
 /// The case of a point: the base case with the point's values set (through the case reader, so
 /// every field's range and the rules between fields are checked). Throws InputError naming the
 /// point and the field.
@@ -168,7 +188,9 @@ std::vector<std::size_t> RankedPoints(const std::vector<StudyRow>& rows, std::si
 std::string StudyMarkdown(const Study& study, const std::vector<StudyRow>& rows,
                           const std::string& rank_by = {}, bool largest_first = false);
 
-/// Reads DIR/study.json back (a study folder's own copy). Throws InputError naming the file.
+/// Reads DIR/study.json back (a study folder's own copy), reading its cases from
+/// DIR/base-case.json when there is one (Study::base_snapshot). Throws InputError naming the
+/// file.
 Study ReadStudyFolder(const std::filesystem::path& dir);
 
 }  // namespace filmdyn::batch

@@ -52,36 +52,16 @@ SweepRunner::~SweepRunner() {
 void SweepRunner::Work() {
   for (int index = next_job_++; index < size(); index = next_job_++) {
     SweepOutcome outcome;
-    try {
-      const engine::RunMonitor monitor = [this, index](const engine::RunProgress& p) {
-        fractions_[index] = std::min(p.fraction, 1.0);
-        return true;
-      };
-      const SweepJob& job = jobs_[index];
-      io::FieldRecorder fields;
-      engine::RunConfig config = job.config;
-      if (job.write_fields) fields.Attach(&config);
-      // Memory for this run with what the running ones already hold, before its folder is used.
-      engine::CheckRunMemory(config);
-      // Locked for the run; marked "running" until its summary is written last.
-      const io::OutputFolder folder(
-          job.output_folder,
-          job.overwrite ? io::OutputFolder::Reuse::kReplace : io::OutputFolder::Reuse::kRefuse,
-          "--out");
-      io::MarkRunStarted(job.output_folder, job.case_name, job.config);
-      outcome.result = engine::RunJob(config, monitor, cancel_);
-      outcome.rows = io::WriteRunFolder(job.output_folder, job.case_name, job.config,
-                                        outcome.result, [&](const std::vector<io::OutputRow>&) {
-                                          fields.WriteReported(job.output_folder / "fields",
-                                                               outcome.result.samples);
-                                        });
-      if (!job.keep_results) {
-        outcome.rows = {};
-        outcome.result.samples = {};
-        outcome.result.motion = {};
+    // Cancelled before its turn: nothing of it runs, and its folder (where an earlier run's
+    // results may be, to be replaced) is left as it is.
+    if (cancel_ && cancel_->load()) {
+      outcome.not_started = true;
+    } else {
+      try {
+        Run(index, &outcome);
+      } catch (const std::exception& error) {
+        outcome.error = error.what();
       }
-    } catch (const std::exception& error) {
-      outcome.error = error.what();
     }
     outcome.finished = true;
     fractions_[index] = 1.0;
@@ -91,6 +71,36 @@ void SweepRunner::Work() {
       finished_.push_back(index);
     }
     finished_cv_.notify_all();
+  }
+}
+
+void SweepRunner::Run(int index, SweepOutcome* outcome) {
+  const engine::RunMonitor monitor = [this, index](const engine::RunProgress& p) {
+    fractions_[index] = std::min(p.fraction, 1.0);
+    return true;
+  };
+  const SweepJob& job = jobs_[index];
+  io::FieldRecorder fields;
+  engine::RunConfig config = job.config;
+  if (job.write_fields) fields.Attach(&config);
+  // Memory for this run with what the running ones already hold, before its folder is used.
+  engine::CheckRunMemory(config);
+  // Locked for the run; marked "running" until its summary is written last.
+  const io::OutputFolder folder(
+      job.output_folder,
+      job.overwrite ? io::OutputFolder::Reuse::kReplace : io::OutputFolder::Reuse::kRefuse,
+      "--out");
+  io::MarkRunStarted(job.output_folder, job.case_name, job.config);
+  outcome->result = engine::RunJob(config, monitor, cancel_);
+  outcome->rows = io::WriteRunFolder(job.output_folder, job.case_name, job.config, outcome->result,
+                                     [&](const std::vector<io::OutputRow>&) {
+                                       fields.WriteReported(job.output_folder / "fields",
+                                                            outcome->result.samples);
+                                     });
+  if (!job.keep_results) {
+    outcome->rows = {};
+    outcome->result.samples = {};
+    outcome->result.motion = {};
   }
 }
 

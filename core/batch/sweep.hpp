@@ -2,7 +2,8 @@
 /// @file Several runs in parallel (`filmdyn sweep`): a TBB task arena of `threads` slots takes
 /// jobs in order; each job is a complete `RunJob` plus its output folder. The caller's thread
 /// collects finished jobs one by one (e.g. to render plots, which Qt allows on the main thread
-/// only). One cancel flag stops every job cleanly with its partial results written.
+/// only). One cancel flag stops every running job cleanly with its partial results written; the
+/// jobs not yet started then never start (SweepOutcome::not_started), their folders untouched.
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
@@ -35,6 +36,9 @@ struct SweepOutcome {
   engine::RunResult result;
   std::vector<io::OutputRow> rows;  ///< as written to results.csv
   std::string error;                ///< non-empty when the job threw (bad input, I/O)
+  /// Cancelled before its turn came: the job never started and its output folder (an earlier
+  /// run's results in it included) was not touched.
+  bool not_started = false;
   bool finished = false;
 };
 
@@ -57,6 +61,8 @@ class SweepRunner {
 
  private:
   void Work();
+  /// Job `index`, from its folder to its summary, into *outcome; throws what the job throws.
+  void Run(int index, SweepOutcome* outcome);
 
   std::vector<SweepJob> jobs_;
   std::vector<SweepOutcome> outcomes_;

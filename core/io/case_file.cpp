@@ -28,7 +28,6 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 // Input limits (docs/case-file.md): a case file is a few KB and a few levels deep.
-constexpr std::uintmax_t kMaxCaseFileBytes = 16u << 20;
 constexpr int kMaxCaseDepth = 64;
 
 // The one list of case fields is the schema (core/engine/case_schema.hpp); V visits each with
@@ -515,6 +514,25 @@ int RebaseCaseFiles(engine::EngineCase* c, const std::filesystem::path& from,
     ++changed;
   }
   return changed;
+}
+
+void AbsoluteCaseFileNames(engine::EngineCase* c, const std::filesystem::path& directory) {
+  namespace fs = std::filesystem;
+  for (std::string* name : CaseFileNames(c)) {
+    if (name->empty() || fs::path(*name).is_absolute()) continue;
+    std::error_code ignored;
+    const fs::path full = fs::absolute(directory / *name, ignored).lexically_normal();
+    if (!full.empty() && fs::exists(full, ignored)) *name = full.string();
+  }
+}
+
+engine::EngineCase CaseWithInlineCurves(const LoadedCase& loaded) {
+  engine::EngineCase c = loaded.value;
+  for (engine::PressureCurveSource& source : c.pressure_curves) {
+    if (!source.file.empty())
+      source = InlinePressureCurve(PressureCurveForSpeed(loaded, source.rpm), source.rpm);
+  }
+  return c;
 }
 
 engine::EngineCase CaseFileKeepingValid(const std::filesystem::path& path,

@@ -2,6 +2,7 @@
 /// @file The case file (JSON; every field in docs/case-file.md). One visitor,
 /// VisitCase, lists every field once with its unit and allowed range; reading, writing and
 /// checking are visitors over it (Drake's Serialize(Archive*) pattern).
+#include <cstdint>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -11,6 +12,10 @@
 #include "core/engine/pressure_curve.hpp"
 
 namespace filmdyn::io {
+
+/// The largest case file read (docs/case-file.md): a case is a few kB, 16 MB leaves room for long
+/// inline pressure curves.
+inline constexpr std::uintmax_t kMaxCaseFileBytes = 16u << 20;
 
 /// Reads and checks a case from JSON. Missing fields keep their defaults; unknown fields, wrong
 /// types, values out of range, NaN and inconsistent geometry throw InputError naming the dotted
@@ -62,6 +67,13 @@ std::vector<std::string*> CaseFileNames(engine::EngineCase* engine_case);
 /// (a built-in resource's, a missing file) stay as written. Returns how many changed.
 int RebaseCaseFiles(engine::EngineCase* engine_case, const std::filesystem::path& from,
                     const std::filesystem::path& to);
+
+/// The case with every pressure curve given by a CSV file turned into its inline table: the
+/// curve the reader reads from the file, exactly (InlinePressureCurve).
+engine::EngineCase CaseWithInlineCurves(const LoadedCase& loaded);
+/// Makes each relative file name of the case (CaseFileNames) that names an existing file from
+/// `directory` absolute; names of no file there (a built-in resource's) stay as written.
+void AbsoluteCaseFileNames(engine::EngineCase* engine_case, const std::filesystem::path& directory);
 
 /// Reads a case an editor saved with values the reader refuses (the GUI's autosave of a case
 /// with a marked cell: a NaN, a value out of range, an inconsistent pair), keeping every other

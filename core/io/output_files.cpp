@@ -139,8 +139,16 @@ OutputFolder::OutputFolder(const std::filesystem::path& folder, Reuse reuse,
                      std::string("cannot write in the folder: ") + std::strerror(errno));
   }
   if (::flock(lock_fd_, LOCK_EX | LOCK_NB) != 0) {
+    const int lock_error = errno;
     ::close(lock_fd_);
     lock_fd_ = -1;
+    if (lock_error != EWOULDBLOCK) {  // a file system without locks (some NFS, Lustre mounts)
+      throw InputError(option, folder.string(),
+                       std::string("cannot lock ") + lock.string() + " (" +
+                           std::strerror(lock_error) +
+                           "): this file system does not support file locks; write the results "
+                           "to a local or lock-capable file system");
+    }
     throw InputError(option, folder.string(),
                      "another FilmDyn run is writing into this folder; wait for it or choose "
                      "another folder");
@@ -161,7 +169,8 @@ OutputFolder::OutputFolder(const std::filesystem::path& folder, Reuse reuse,
 bool OutputFolder::IsLocked(const std::filesystem::path& folder) {
   const int fd = ::open((folder / kLockFile).c_str(), O_RDONLY | O_CLOEXEC);
   if (fd < 0) return false;
-  const bool held = ::flock(fd, LOCK_SH | LOCK_NB) != 0;
+  // Only a lock another process holds counts (a file system without locks holds none).
+  const bool held = ::flock(fd, LOCK_SH | LOCK_NB) != 0 && errno == EWOULDBLOCK;
   ::close(fd);
   return held;
 }

@@ -315,23 +315,21 @@ std::filesystem::path DefaultOutputFolder(const std::string& case_name, engine::
 nlohmann::json RunCaseJson(const engine::RunConfig& config) {
   engine::EngineCase c = config.engine_case;
   c.operating.rpm = config.rpm;
-  // Relative names of files found from the case's folder, as the run found them, made absolute
-  // so that the file runs from anywhere (a name of the built-in resources stays as it is).
-  const auto absolute = [&config](std::string* file) {
-    if (file->empty() || std::filesystem::path(*file).is_absolute()) return;
-    std::error_code ignored;
-    const std::filesystem::path full =
-        std::filesystem::absolute(config.case_directory / *file, ignored).lexically_normal();
-    if (!full.empty() && std::filesystem::exists(full, ignored)) *file = full.string();
-  };
   // The curve the run used (a --pressure-curve, a blend, ...): inline, no file.
   if (!config.pressure.Empty())
     c.pressure_curves = {InlinePressureCurve(config.pressure, config.rpm)};
-  for (std::string* file : CaseFileNames(&c)) absolute(file);
+  // Relative names of files found from the case's folder, as the run found them, made absolute
+  // so that the file runs from anywhere (a name of the built-in resources stays as it is).
+  AbsoluteCaseFileNames(&c, config.case_directory);
   return CaseToJson(c);
 }
 
 namespace {
+std::vector<OutputRow> WriteRunFiles(const std::filesystem::path& directory,
+                                     const std::string& case_name, const engine::RunConfig& config,
+                                     const engine::RunResult& result,
+                                     const BeforeSummary& before_summary);
+
 void WriteRunCase(const std::filesystem::path& directory, const engine::RunConfig& config) {
   WriteFileAtomically(directory / "case-as-run.json", RunCaseJson(config).dump(2) + "\n");
 }
@@ -341,6 +339,28 @@ std::vector<OutputRow> WriteRunFolder(const std::filesystem::path& directory,
                                       const std::string& case_name, const engine::RunConfig& config,
                                       const engine::RunResult& result,
                                       const BeforeSummary& before_summary) {
+  try {
+    return WriteRunFiles(directory, case_name, config, result, before_summary);
+  } catch (const std::exception& e) {
+    // The summary says why the folder is incomplete (it said "running", which reads as a run
+    // killed); when even it cannot be written (a full disk) the caller has the message.
+    try {
+      RunSummary summary = SummarizeRun(case_name, config, result, {});
+      summary.status = engine::StatusName(engine::RunStatus::kFailed);
+      summary.complete = false;
+      summary.message = std::string("its results could not be written: ") + e.what();
+      WriteSummaryJson(directory / "summary.json", summary);
+    } catch (const std::exception&) {
+    }
+    throw;
+  }
+}
+
+namespace {
+std::vector<OutputRow> WriteRunFiles(const std::filesystem::path& directory,
+                                     const std::string& case_name, const engine::RunConfig& config,
+                                     const engine::RunResult& result,
+                                     const BeforeSummary& before_summary) {
   std::error_code error;
   std::filesystem::create_directories(directory, error);
   if (error)
@@ -362,6 +382,7 @@ std::vector<OutputRow> WriteRunFolder(const std::filesystem::path& directory,
   WriteSummaryJson(directory / "summary.json", SummarizeRun(case_name, config, result, rows));
   return rows;
 }
+}  // namespace
 
 void MarkRunStarted(const std::filesystem::path& directory, const std::string& case_name,
                     const engine::RunConfig& config) {

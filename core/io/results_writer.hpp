@@ -94,7 +94,8 @@ nlohmann::json RunCaseJson(const engine::RunConfig& config);
 /// Writes case-as-run.json (RunCaseJson), results.csv and motion.csv (for a model with a film
 /// joint), then `before_summary`'s outputs, then summary.json into `directory` (created), each file
 /// atomically (core/io/output_files.hpp). Returns the rows written. Throws OutputError naming the
-/// file when a write fails (the summary then stays what it was: MarkRunStarted's "running").
+/// file when a write fails, after replacing the summary by one of status "failed" that says so
+/// (when that can be written: MarkRunStarted's "running" would read as a run killed).
 std::vector<OutputRow> WriteRunFolder(const std::filesystem::path& directory,
                                       const std::string& case_name, const engine::RunConfig& config,
                                       const engine::RunResult& result,

@@ -159,6 +159,25 @@ class TestCli : public QObject {
       QVERIFY2(QFileInfo::exists(folder + "/results.csv"), qPrintable(folder));
       QVERIFY(QFileInfo::exists(folder + "/plots/moft.png"));
     }
+
+    // A run whose results cannot be written (the file's temporary name taken by a folder): its
+    // row stays in the comparison, marked failed with the reason (it used to be left out), and
+    // its summary says so.
+    const QString blocked = out + "/zhao-shen-gasoline-ideal-6000";
+    QVERIFY(QDir().mkpath(blocked + "/results.csv.tmp/x"));
+    const Result again =
+        Run({"sweep", "--models", "ideal", "--rpm", "1000,6000", "--jobs", "2", "--set",
+             "solver.max_cycles=3", "--out", out, "--overwrite", "--quiet"});
+    QVERIFY2(again.exit_code != 0, qPrintable(again.err));
+    QFile csv2(out + "/comparison.csv");
+    QVERIFY(csv2.open(QIODevice::ReadOnly));
+    const QStringList rows = QString::fromUtf8(csv2.readAll()).trimmed().split('\n');
+    QCOMPARE(rows.size(), 3);
+    QVERIFY2(rows[2].contains(",ideal,6000,failed,") && rows[2].contains("results.csv"),
+             qPrintable(rows[2]));
+    QFile summary(blocked + "/summary.json");
+    QVERIFY(summary.open(QIODevice::ReadOnly));
+    QVERIFY(summary.readAll().contains("its results could not be written"));
   }
 
   // A run folder keeps the case it ran (case-as-run.json): its models, its speed, the cylinder

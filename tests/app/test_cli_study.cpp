@@ -236,6 +236,81 @@ class TestCliStudy : public QObject {
     QVERIFY2(other.err.contains("holds a different study"), qPrintable(other.err));
   }
 
+  // The study folder keeps its own copy of the base case (base-case.json, its pressure curves
+  // inline): a resume after the case file was edited is refused, naming what changed (its points
+  // would mix two cases; the old code relabelled the done points with the new base values), and
+  // status / collect / a Slurm task read the folder's copy, even once the case file is gone. A
+  // task skips a point that is done already (a requeued task).
+  void theStudyFolderKeepsItsBaseCase() {
+    QTemporaryDir dir;
+    const QString seed = dir.filePath("seed");
+    const Result made =
+        Run({"run", "--model", "ideal", "--rpm", "2000", "--out", seed, "--no-fields", "--quiet"});
+    QVERIFY2(made.exit_code == 0, qPrintable(made.err));
+    QByteArray base_case = Read(seed + "/case-as-run.json");
+    base_case.replace("\"lubricated\"", "\"ideal\"");  // both joints ideal: quick points
+    const QString case_file = dir.filePath("case.json");
+    Write(case_file, base_case);
+    const QString file = dir.filePath("pin.json");
+    Write(file, R"({"name": "pin", "case": "case.json", "design": "one-at-a-time",
+      "set": {"solver.error_estimate": 0, "solver.max_cycles": 2},
+      "factors": [{"path": "lubricant.viscosity", "levels": [0.02, 0.03]}]})");
+    const QString out = dir.filePath("pin");
+    const Result first = Run({"study", file, "--out", out, "--quiet"});
+    QVERIFY2(first.exit_code == 0, qPrintable(first.err));
+    QVERIFY(QFile::exists(out + "/base-case.json"));
+    QVERIFY(!Read(out + "/base-case.json").contains("\"file\""));  // curves inline
+    const QByteArray table = Read(out + "/study.csv");
+
+    // The piston's mass edited in the case file: the resume is refused, nothing changes.
+    Write(case_file,
+          QByteArray(base_case).replace("\"piston_mass\": 0.264", "\"piston_mass\": 0.3125"));
+    QVERIFY(Read(case_file) != base_case);
+    const Result resumed = Run({"study", file, "--out", out, "--quiet"});
+    QCOMPARE(resumed.exit_code, 2);
+    QVERIFY2(resumed.err.contains("differs from the base case the study in") &&
+                 resumed.err.contains("0.3125"),
+             qPrintable(resumed.err));
+    QCOMPARE(Read(out + "/study.csv"), table);
+
+    // The case file gone: the folder still reads.
+    QVERIFY(QFile::remove(case_file));
+    const Result collect = Run({"study", "collect", out});
+    QVERIFY2(collect.exit_code == 0, qPrintable(collect.err));
+    QCOMPARE(Read(out + "/study.csv"), table);
+    QVERIFY2(Run({"study", "status", out}).out.startsWith("2 points, 2 done"),
+             qPrintable(Run({"study", "status", out}).out));
+
+    // A task of a submission listing a done point skips it, its folder untouched.
+    QVERIFY(QDir(out).mkpath("slurm"));
+    Write(out + "/slurm/points-1.txt", "point-0002\n");
+    const QByteArray summary = Read(out + "/point-0002/summary.json");
+    const Result task = Run({"study", "task", out, "0", "--points-list", "points-1.txt"});
+    QVERIFY2(task.exit_code == 0, qPrintable(task.err));
+    QVERIFY2(task.err.contains("point-0002 is done already: skipped"), qPrintable(task.err));
+    QCOMPARE(Read(out + "/point-0002/summary.json"), summary);
+    // An index past the list's tasks names no task (the largest one used to overflow).
+    for (const char* index : {"1", "9223372036854775807"}) {
+      const Result past = Run({"study", "task", out, index, "--points-list", "points-1.txt"});
+      QCOMPARE(past.exit_code, 2);
+      QVERIFY2(past.err.contains("must be below 1, the number of tasks of slurm/points-1.txt"),
+               qPrintable(past.err));
+    }
+
+    // Options are checked before the points: a bad --jobs, or a Slurm option on a local study,
+    // is refused with nothing written.
+    Write(case_file, base_case);
+    const QString fresh = dir.filePath("fresh");
+    const Result jobs = Run({"study", file, "--out", fresh, "--jobs", "0"});
+    QCOMPARE(jobs.exit_code, 2);
+    QVERIFY2(jobs.err.contains("--jobs = 0"), qPrintable(jobs.err));
+    const Result slurm_only = Run({"study", file, "--out", fresh, "--points-per-task", "2"});
+    QCOMPARE(slurm_only.exit_code, 2);
+    QVERIFY2(slurm_only.err.contains("is an option of --scheduler slurm"),
+             qPrintable(slurm_only.err));
+    QVERIFY(!QDir(fresh).exists());
+  }
+
   void pointsThatStopEarlyAreRecordedWithTheirReason() {
     // A wall-time limit no film run can meet: every Only-LBRBE point stops early; each is
     // recorded as incomplete with its reason, and none stops the others.

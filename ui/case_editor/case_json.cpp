@@ -26,13 +26,8 @@ bool LoadCaseFile(const QString& path, engine::EngineCase* c, QString* error, QS
       notes->clear();
       for (const std::string& note : loaded.notes) *notes << QString::fromStdString(note);
     }
-    engine::EngineCase value = loaded.value;
-    for (auto& source : value.pressure_curves) {
-      if (source.file.empty()) continue;
-      // Inline, in the degrees that convert back to exactly the angles the file gave.
-      source = io::InlinePressureCurve(io::PressureCurveForSpeed(loaded, source.rpm), source.rpm);
-    }
-    *c = std::move(value);
+    // Inline, in the degrees that convert back to exactly the angles the file gave.
+    *c = io::CaseWithInlineCurves(loaded);
   } catch (const std::exception& e) {
     if (error) {
       *error = QObject::tr("%1: %2").arg(path.isEmpty() ? QObject::tr("default case") : path,

@@ -1,7 +1,10 @@
 // Several ideal-model runs on a thread pool: every job finishes exactly once, writes its folder,
-// agrees with the same run made alone; a raised cancel flag ends every job cleanly.
+// agrees with the same run made alone; a cancel raised before a job's turn leaves it unstarted
+// with its folder untouched.
 #include <QTemporaryDir>
 #include <QtTest>
+#include <fstream>
+#include <iterator>
 #include <set>
 
 #include "core/batch/sweep.hpp"
@@ -59,17 +62,36 @@ class TestSweep : public QObject {
     }
   }
 
-  void cancelEndsEveryJobWithItsFolder() {
+  // A cancel raised before a job's turn: the job never starts, and its folder — here an earlier
+  // run's complete results, which the job was to replace — is left as it was (a Ctrl-C used to
+  // start every queued job, each wiping its folder first, to end it at once as "cancelled").
+  void cancelledJobsNotStartedKeepTheirFolders() {
     QTemporaryDir dir;
-    const auto jobs = MakeJobs(dir.path().toStdString());
+    auto jobs = MakeJobs(dir.path().toStdString());
+    {
+      batch::SweepRunner first(jobs, 2, nullptr);
+      while (first.WaitNext(std::chrono::milliseconds(100)) != -1) {
+      }
+    }
+    auto read = [](const std::filesystem::path& file) {
+      std::ifstream in(file, std::ios::binary);
+      return std::string(std::istreambuf_iterator<char>(in), {});
+    };
+    std::vector<std::string> before;
+    for (auto& job : jobs) {
+      before.push_back(read(job.output_folder / "summary.json"));
+      job.overwrite = true;
+    }
     std::atomic<bool> cancel{true};
     batch::SweepRunner runner(jobs, 2, &cancel);
     int count = 0;
     for (int index; (index = runner.WaitNext(std::chrono::milliseconds(100))) != -1;) {
       if (index == -2) continue;
       ++count;
-      QCOMPARE(runner.outcome(index).result.status, engine::RunStatus::kCancelled);
-      QVERIFY(std::filesystem::exists(jobs[index].output_folder / "summary.json"));
+      QVERIFY(runner.outcome(index).not_started);
+      QVERIFY(runner.outcome(index).error.empty());
+      QCOMPARE(read(jobs[index].output_folder / "summary.json"), before[std::size_t(index)]);
+      QVERIFY(std::filesystem::exists(jobs[index].output_folder / "results.csv"));
     }
     QCOMPARE(count, 4);
   }

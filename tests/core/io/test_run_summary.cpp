@@ -387,6 +387,34 @@ class TestRunSummary : public QObject {
     QVERIFY(!s.extremes.contains("skirt_moft[m]"));  // no film: no values, no extremes
     QVERIFY(!s.kpis.skirt && !s.kpis.big_end);       // nor KPIs
   }
+
+  // A results file that cannot be written (here its temporary name is taken by a folder; a full
+  // disk alike): the folder's summary says the run failed and why, instead of "running", which
+  // reads as a run killed; the error still reaches the caller.
+  void aFailedWriteLeavesAFailedSummary() {
+    const io::LoadedCase loaded = io::LoadCase("");
+    const engine::RunConfig config = engine::MakeRunConfig(
+        loaded.value, engine::Model::kIdeal, 3000.0, io::PressureCurveForSpeed(loaded, 3000.0));
+    const engine::RunResult result = engine::RunJob(config);
+    QTemporaryDir dir;
+    const std::filesystem::path folder = dir.path().toStdString();
+    io::MarkRunStarted(folder, "default", config);
+    std::filesystem::create_directories(folder / "results.csv.tmp" / "x");
+    bool threw = false;
+    try {
+      io::WriteRunFolder(folder, "default", config, result);
+    } catch (const std::exception& e) {
+      threw = true;
+      QVERIFY2(std::string(e.what()).find("results.csv") != std::string::npos, e.what());
+    }
+    QVERIFY(threw);
+    const io::RunSummary s = io::ReadSummaryJson(folder / "summary.json");
+    QCOMPARE(s.status, std::string("failed"));
+    QVERIFY(!s.complete);
+    QVERIFY2(s.message.find("its results could not be written") != std::string::npos &&
+                 s.message.find("results.csv") != std::string::npos,
+             s.message.c_str());
+  }
 };
 
 QTEST_GUILESS_MAIN(TestRunSummary)
