@@ -15,6 +15,8 @@
 
 #include "app/commands/commands.hpp"
 #include "core/base/input_error.hpp"
+#include "core/engine/case_schema.hpp"
+#include "core/engine/run_memory.hpp"
 #include "core/lubrication/bearing_calculator.hpp"
 #include "core/lubrication/oil_catalogue.hpp"
 
@@ -36,6 +38,13 @@ lubrication::BearingMeshSpec ParseMesh(const std::string& text) {
   }
   if (nt != std::floor(nt) || nz != std::floor(nz) || nt < 8 || nz < 2 || nt > 20000 || nz > 5000) {
     throw InputError("--mesh", text, allowed);
+  }
+  // The pressure unknowns (a node per element around, per node line across) within an engine
+  // run's limit: a larger film would take the machine's memory before it said anything.
+  if (const long unknowns = long(nt) * long(nz + 1); unknowns > engine::kMaxFilmUnknowns) {
+    throw InputError("--mesh", fmt::format("{}: {} unknowns", text, unknowns),
+                     fmt::format("at most {} pressure unknowns (the limit of an engine run's film)",
+                                 engine::kMaxFilmUnknowns));
   }
   return {static_cast<int>(nt), static_cast<int>(nz), false};
 }
@@ -276,6 +285,46 @@ Command MakeBearingCommand() {
                                                     .tolerance = "elastic tolerance",
                                                     .max_iterations = "elastic iterations",
                                                     .imported = "--compliance"});
+    // Each number within the range the case allows for the quantity it is (one definition of
+    // each range: the case schema), named by its option. A value far outside them (a viscosity
+    // of 1e300 Pa s) gave NaN figures reported as converged.
+    const auto within = [&args](const char* option, const char* field, double value) {
+      if (args.Has(option)) engine::FindCaseField(field)->Check(value, std::string("--") + option);
+    };
+    within("radius", "big_end.journal_radius", in.radius);
+    if (args.Has("length")) {
+      within("length", "big_end.width", in.length);
+    } else {
+      engine::FindCaseField("big_end.width")->Check(in.length, "--ld (the width 2 R L/D)");
+    }
+    within("viscosity", "lubricant.viscosity", in.viscosity);
+    if (temperature) {
+      // The case's temperatures are in kelvin; the option in °C.
+      const engine::FieldRange& t = engine::FindCaseField("big_end.oil.temperature")->range;
+      RequireInRange("--temperature", *temperature, t.lo - lubrication::kZeroCelsius,
+                     t.hi - lubrication::kZeroCelsius, t.lo_open, t.hi_open, "°C");
+      engine::FindCaseField("lubricant.viscosity")
+          ->Check(in.viscosity, "--temperature (the viscosity there)");
+    }
+    within("rpm", "operating.rpm", in.speed_rpm);
+    within("barus", "lubricant.barus_alpha", in.barus_alpha);
+    within("roelands", "lubricant.roelands_z", in.roelands_z);
+    if (args.Has("cross")) {
+      engine::FindCaseField("lubricant.cross_exponent")->Check(oil.cross_exponent, "--cross M");
+      if (oil.shear_thinning == lubrication::ShearThinning::kCross)
+        engine::FindCaseField("lubricant.cross_rate")->Check(oil.cross_rate, "--cross RATE");
+    }
+    within("hths", "lubricant.hths", oil.hths);
+    if (in.surfaces) {
+      within("sigma1", "big_end.roughness_journal", in.surfaces->sigma1);
+      within("sigma2", "big_end.roughness_bearing", in.surfaces->sigma2);
+      within("peklenik", "big_end.peklenik", in.surfaces->peklenik);
+      within("boundary-friction", "big_end.boundary_friction", in.surfaces->boundary_friction);
+    }
+    within("E1", "big_end.modulus_journal", args.Double("E1").value_or(0.0));
+    within("E2", "big_end.modulus_bearing", args.Double("E2").value_or(0.0));
+    within("nu1", "big_end.poisson_journal", args.Double("nu1").value_or(0.0));
+    within("nu2", "big_end.poisson_bearing", args.Double("nu2").value_or(0.0));
     // The calculator names its inputs by their own fields; here the options that set them (the
     // checks of the film's own configuration run when it is built, in RunBearingCalculator).
     lubrication::BearingCalcResult r;

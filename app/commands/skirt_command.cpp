@@ -13,7 +13,9 @@
 #include "app/commands/commands.hpp"
 #include "app/commands/run_common.hpp"
 #include "core/base/input_error.hpp"
+#include "core/engine/case_schema.hpp"
 #include "core/engine/film_joints.hpp"
+#include "core/engine/run_memory.hpp"
 #include "core/io/output_files.hpp"
 #include "core/io/skirt_report.hpp"
 #include "core/lubrication/skirt_calculator.hpp"
@@ -121,7 +123,26 @@ Command MakeSkirtCommand() {
   command.run = [](const Args& args, Streams& streams) {
     const io::LoadedCase loaded = LoadCaseArgument(args, &streams.err);
     lubrication::SkirtConfig config = engine::SkirtConfigFromCase(loaded.value, loaded.directory);
-    if (const auto mesh = args.Value("mesh")) config.mesh = ParseSkirtMesh(*mesh);
+    if (const auto mesh = args.Value("mesh")) {
+      config.mesh = ParseSkirtMesh(*mesh);
+      // As the case's own mesh would be checked: each count in its field's range, the film's
+      // unknowns within an engine run's limit (a larger film took the machine's memory first).
+      engine::EngineCase meshed = loaded.value;
+      meshed.skirt.mesh_thrust = config.mesh.n_thrust;
+      meshed.skirt.mesh_relief = config.mesh.n_relief;
+      meshed.skirt.mesh_anti = config.mesh.n_anti;
+      meshed.skirt.mesh_axial = config.mesh.n_axial;
+      try {
+        for (const auto& [field, count] : {std::pair{"skirt.mesh_thrust", meshed.skirt.mesh_thrust},
+                                           {"skirt.mesh_relief", meshed.skirt.mesh_relief},
+                                           {"skirt.mesh_anti", meshed.skirt.mesh_anti},
+                                           {"skirt.mesh_axial", meshed.skirt.mesh_axial}})
+          engine::FindCaseField(field)->Check(count, field);
+        engine::CheckFilmMeshSizes(meshed);
+      } catch (const InputError& e) {
+        throw InputError("--mesh", *mesh + " (" + e.field() + " " + e.value() + ")", e.allowed());
+      }
+    }
     const auto speed = args.Double("speed");
     if (!speed) throw InputError("--speed", "(missing)", "give the piston speed [m/s]");
     const bool load_mode = args.Has("side-force") || args.Has("moment");

@@ -153,9 +153,19 @@ struct Writer {
   }
 };
 
-// Every key path in the JSON (objects only; arrays are leaves).
+// Every key path in the JSON (objects only; arrays are leaves). A key holding a dot would join
+// into another key's path ("skirt.cold_clearance" at the top reads as the nested field, which the
+// reader never looked at): refused, naming where it is.
 void LeafPaths(const json& node, const std::string& prefix, std::vector<std::string>* out) {
   for (auto it = node.begin(); it != node.end(); ++it) {
+    if (it.key().find('.') != std::string::npos) {
+      const std::string at = prefix.empty() ? "at the top level" : "in \"" + prefix + "\"";
+      const std::string last = it.key().substr(it.key().rfind('.') + 1);
+      throw InputError(prefix.empty() ? it.key() : prefix + "." + it.key(), Dump(*it).substr(0, 60),
+                       "a key with a dot (\"" + it.key() + "\" " + at +
+                           ") is no field: nest it as objects, e.g. {\"" +
+                           it.key().substr(0, it.key().find('.')) + "\": {… \"" + last + "\": …}}");
+    }
     const std::string path = prefix.empty() ? it.key() : prefix + "." + it.key();
     if (it->is_object() && path != "assumed") {  // "assumed" keys are dotted paths themselves
       LeafPaths(*it, path, out);
@@ -476,7 +486,10 @@ LoadedCase LoadCase(const std::filesystem::path& path, const std::vector<std::st
     loaded.source = "embedded:cases/default.json";
   } else {
     text = ReadInputFile(path, "case", kMaxCaseFileBytes);
-    loaded.directory = path.parent_path();
+    // Absolute: a file named without a folder ("case.json") has its files beside it too (an
+    // empty directory means the embedded case, whose files are the built-in resources).
+    std::error_code ignored;
+    loaded.directory = std::filesystem::absolute(path, ignored).lexically_normal().parent_path();
     loaded.source = path.string();
   }
   loaded.value = LoadCaseText(text, loaded.source, overrides, &loaded.notes);

@@ -125,7 +125,13 @@ BearingCalcResult RunBearingCalculator(const BearingCalcInput& in) {
   out.max_deformation = r.max_deformation;
   out.elastic = r.elastic;
   out.last_stats = r.stats;
-  if (!r.elastic.converged) {
+  if (!std::isfinite(out.load) || !std::isfinite(out.friction_torque) ||
+      !std::isfinite(out.max_pressure) || !std::isfinite(out.side_flow)) {
+    // Inputs at the edge of floating point: no figure to report.
+    out.converged = false;
+    out.status = "the film's figures are not finite numbers (load " + std::to_string(out.load) +
+                 " N): the inputs are beyond what the calculation can represent";
+  } else if (!r.elastic.converged) {
     out.converged = false;
     out.status = "elastic film: " + r.elastic.message;
   } else if (r.stats.status != SolveStatus::kConverged) {

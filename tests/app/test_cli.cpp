@@ -648,7 +648,20 @@ class TestCli : public QObject {
               "--compliance at a time"},
              {{"bearing", "--eps", "0.5", "--mesh", "20001x2"},
               "--mesh = 20001x2: must be NthetaxNz with integers, e.g. 240x40 (8 <= Ntheta <= "
-              "20000, 2 <= Nz <= 5000)"}}) {
+              "20000, 2 <= Nz <= 5000)"},
+             // Within the case's ranges of the same quantities (1e300 Pa s gave NaN figures
+             // reported as converged), and a film within an engine run's size.
+             {{"bearing", "--eps", "0.5", "--viscosity", "1e300"},
+              "--viscosity = 1e+300: must be a finite number in (0, 1000] [Pa*s]"},
+             {{"bearing", "--eps", "0.5", "--rpm", "1e300"}, "--rpm = 1e+300"},
+             {{"bearing", "--eps", "0.5", "--sigma1", "1"}, "--sigma1 = 1"},
+             {{"bearing", "--eps", "0.5", "--mesh", "4000x1000"},
+              "--mesh = 4000x1000: 4004000 unknowns: at most 500000 pressure unknowns"},
+             {{"skirt", "--e0", "0", "--tilt", "0", "--speed", "10", "--mesh", "1+1+1x2"},
+              "--mesh = 1+1+1x2 (skirt.mesh_thrust 1): must be an integer in [2, 2000]"},
+             {{"skirt", "--e0", "0", "--tilt", "0", "--speed", "10", "--mesh",
+               "2000+2000+2000x1000"},
+              "4006002 unknowns): at most 500000 pressure unknowns"}}) {
       const Result result = Run(argv);
       QCOMPARE(result.exit_code, 2);
       QVERIFY2(result.err.contains(needle) && !result.err.contains("bearing."),

@@ -590,6 +590,62 @@ class TestCaseFile : public QObject {
       QCOMPARE(e.field(), std::string("pressure_curves.0.file"));
     }
   }
+  // A case file named without a folder ("case.json", run from its folder) reads the files it
+  // names from beside it, as "./case.json" does: its own curve file, not the built-in resource
+  // of the same name (the folder used to be empty, which means the embedded case).
+  void aCaseNamedWithoutAFolderReadsItsOwnFiles() {
+    QTemporaryDir dir;
+    QVERIFY(QDir(dir.path()).mkpath("pressure"));
+    {
+      std::ofstream csv(dir.filePath("pressure/synthetic_1000rpm.csv").toStdString());
+      csv << "crank_angle[deg],pressure[Pa]\n";
+      for (int deg = 0; deg <= 720; deg += 10)
+        csv << deg << "," << (deg == 360 ? 9.87e6 : 1e5) << "\n";
+    }
+    json j = DefaultJson();
+    j["pressure_curves"] =
+        json::array({{{"rpm", 1000.0}, {"file", "pressure/synthetic_1000rpm.csv"}}});
+    {
+      std::ofstream out(dir.filePath("case.json").toStdString());
+      out << j.dump(2);
+    }
+    const QString previous = QDir::currentPath();
+    QVERIFY(QDir::setCurrent(dir.path()));
+    double bare = 0.0, dotted = 0.0;
+    std::filesystem::path folder;
+    try {
+      const io::LoadedCase loaded = io::LoadCase("case.json");
+      folder = loaded.directory;
+      bare = io::PressureCurveForSpeed(loaded, 1000).PeakPressure();
+      dotted = io::PressureCurveForSpeed(io::LoadCase("./case.json"), 1000).PeakPressure();
+    } catch (const std::exception& e) {
+      QDir::setCurrent(previous);
+      QFAIL(e.what());
+    }
+    QDir::setCurrent(previous);
+    QCOMPARE(bare, 9.87e6);
+    QCOMPARE(dotted, 9.87e6);
+    QVERIFY(folder.is_absolute());
+  }
+  // A key holding a dot is no field ("skirt.cold_clearance" at the top level, "oil.viscosity"
+  // inside "skirt"): refused, naming it, where it used to be ignored silently (its path joined
+  // into a field's, which the reader had seen).
+  void dottedKeysAreRefused() {
+    for (const auto& [text, field] :
+         {std::pair{R"({"skirt.cold_clearance": 0.5})", "skirt.cold_clearance"},
+          std::pair{R"({"skirt": {"oil.viscosity": 5}})", "skirt.oil.viscosity"}}) {
+      json j = DefaultJson();
+      j.merge_patch(json::parse(text));
+      try {
+        io::CaseFromJson(j);
+        QFAIL(text);
+      } catch (const InputError& e) {
+        QCOMPARE(e.field(), std::string(field));
+        QVERIFY2(std::string(e.allowed()).find("nest it as objects") != std::string::npos,
+                 e.what());
+      }
+    }
+  }
   void embeddedResourcesPresent() {
     QVERIFY(io::ReadResource("cases/default.json").has_value());
     QVERIFY(io::ReadResource("pressure/synthetic_1000rpm.csv").has_value());
