@@ -60,6 +60,13 @@ void ValidateOilFeed(const OilFeed& feed, double radius, double width, const Oil
   if (HasHoles(feed.kind)) {
     if (feed.hole_angles.empty())
       throw InputError(names.hole_angles, "[]", "needs at least one hole angle");
+    // A crank pin or a shell has a few feed holes; the checks below and the film's marking of
+    // each hole's nodes go over the holes pairwise and node by node.
+    constexpr std::size_t kMaxHoles = 64;
+    if (feed.hole_angles.size() > kMaxHoles) {
+      throw InputError(names.hole_angles, std::to_string(feed.hole_angles.size()) + " holes",
+                       "at most " + std::to_string(kMaxHoles) + " holes");
+    }
     for (std::size_t k = 0; k < feed.hole_angles.size(); ++k)
       RequireFinite(names.hole_angles + "." + std::to_string(k), feed.hole_angles[k], "rad");
     if (!(feed.hole_diameter > 0.0 && feed.hole_diameter < width)) {

@@ -4,7 +4,9 @@
 #include <Eigen/Cholesky>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <numeric>
@@ -31,12 +33,13 @@ std::string Trim(const std::string& s) {
 }
 
 double Number(const std::string& where, const std::string& text) {
-  try {
-    std::size_t used = 0;
-    const double v = std::stod(text, &used);
-    if (used == text.size() && std::isfinite(v)) return v;
-  } catch (const std::exception&) {
-  }
+  // strtod, not stod: a value below the smallest normal double (1e-309) reads as what it is,
+  // a finite number, where stod throws.
+  char* end = nullptr;
+  const double v = text.empty() || std::isspace(static_cast<unsigned char>(text[0]))
+                       ? NAN
+                       : std::strtod(text.c_str(), &end);
+  if (end == text.c_str() + text.size() && std::isfinite(v)) return v;
   throw InputError(where, "\"" + text + "\"", "must be a finite number");
 }
 
@@ -83,6 +86,8 @@ ImportedCompliance ReadImportedCompliance(const std::string& matrix_path,
   bool header = false;
   while (std::getline(nodes, line)) {
     ++line_number;
+    // A byte-order mark, as some editors write UTF-8, is no part of the header.
+    if (line_number == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);
     const std::string text = Trim(line);
     if (text.empty() || text[0] == '#') continue;
     const std::string where = nodes_path + ":" + std::to_string(line_number);
@@ -192,6 +197,10 @@ ImportedCompliance ReadImportedCompliance(const std::string& matrix_path,
                          symmetric ? "i j value with 1 <= j <= i <= " + std::to_string(rows)
                                    : "i j value with 1 <= i, j <= " + std::to_string(rows));
       }
+      if (!std::isnan(a(i - 1, j - 1))) {  // an entry given twice: which one holds?
+        throw InputError(where, "\"" + text + "\"",
+                         fmt::format("each entry once: ({}, {}) is given again here", i, j));
+      }
       put(i - 1, j - 1, Number(where, value));
     }
   } else {
@@ -205,6 +214,12 @@ ImportedCompliance ReadImportedCompliance(const std::string& matrix_path,
         put(i, j, Number(where, text));
       }
     }
+  }
+  // Nothing but comments after the last entry (more values: a different matrix than its size
+  // line says, or two files joined).
+  if (next(&text)) {
+    throw InputError(where, "\"" + text.substr(0, 60) + "\"",
+                     "nothing after the last entry the size line announces (comments aside)");
   }
   for (long i = 0; i < a.rows(); ++i) {
     for (long j = 0; j < a.cols(); ++j) {

@@ -518,6 +518,16 @@ class TestCoupledCavitation : public QObject {
     c.big_end.supply_hole_angles = {0.0, 0.1};  // 0.1 rad apart, less than 4 mm / 15 mm
     QVERIFY(
         ErrorOf([&] { engine::CheckCaseConsistency(c); }).contains("big_end.supply_hole_angles.1"));
+    // Too many holes (a file of 600 000 tiny holes took minutes in the pairwise checks).
+    c.big_end.supply_hole_diameter = 1e-7;
+    c.big_end.supply_hole_angles.assign(65, 0.0);
+    for (std::size_t k = 0; k < 65; ++k) c.big_end.supply_hole_angles[k] = 0.09 * double(k);
+    const QString many = ErrorOf([&] { engine::CheckCaseConsistency(c); });
+    QVERIFY2(
+        many.contains("big_end.supply_hole_angles = 65 holes") && many.contains("at most 64 holes"),
+        qPrintable(many));
+    c.big_end.supply_hole_angles.resize(64);
+    QVERIFY(ErrorOf([&] { engine::CheckCaseConsistency(c); }).isEmpty());
     c.big_end.supply_hole_angles = {0.0};
     c.big_end.supply_hole_diameter = c.big_end.width;  // a hole as wide as the bearing
     QVERIFY(

@@ -882,6 +882,28 @@ class TestElasticFilm : public QObject {
              qPrintable(message()));
     write(csv, "x[m],y[m]\n0,0\n1,0\n0,nan\n1,1\n");
     QVERIFY2(message().contains("c.nodes.csv:4"), qPrintable(message()));
+    // A byte-order mark before the header (some editors write one) is no part of it.
+    write(csv, "\xEF\xBB\xBF" + nodes);
+    QVERIFY2(message().isEmpty(), qPrintable(message()));
+    write(csv, nodes);
+    // An entry given twice (which one holds?) and values after the last entry are refused, where
+    // the last value used to win silently and the rest be ignored; a value below the smallest
+    // normal double is a finite number.
+    write(mtx,
+          "%%MatrixMarket matrix coordinate real symmetric\n4 4 11\n1 1 2\n2 1 0.5\n3 1 0.2\n"
+          "4 1 0.1\n2 2 2\n3 2 0.1\n4 2 0.2\n3 3 2\n4 3 0.5\n4 4 2\n1 1 3\n");
+    QVERIFY2(message().contains("c.mtx:13") && message().contains("(1, 1) is given again"),
+             qPrintable(message()));
+    write(mtx, good + "7\n");
+    QVERIFY2(message().contains("c.mtx:13") && message().contains("nothing after the last entry"),
+             qPrintable(message()));
+    write(mtx, good + "% a comment\n\n");
+    QVERIFY2(message().isEmpty(), qPrintable(message()));
+    std::string tiny = good;
+    tiny.replace(tiny.find("\n0.1\n"), 5, "\n1e-309\n");
+    write(mtx, tiny);
+    QVERIFY2(message().isEmpty(), qPrintable(message()));
+    write(mtx, good);
     // Regular files only: a FIFO would wait for a writer forever (it hung a run that no signal
     // could stop); a folder, a device likewise.
     write(csv, nodes);
