@@ -29,6 +29,8 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 // Input limits (docs/case-file.md): a case file is a few KB and a few levels deep.
 constexpr int kMaxCaseDepth = 64;
+// The version case files are written with (filmdyn_case_version).
+constexpr long long kCaseFormatVersion = 1;
 
 // The one list of case fields is the schema (core/engine/case_schema.hpp); V visits each with
 // its kind, in schema order.
@@ -251,6 +253,20 @@ void ReadOldPistonRadius(const json& root, Reader& reader, EngineCase& c,
 EngineCase CaseFromJson(const json& root, std::vector<std::string>* notes) {
   if (!root.is_object())
     throw InputError("case", Dump(root).substr(0, 40), "must be a JSON object");
+  // The format's version first: a newer FilmDyn's file would otherwise be refused for a field
+  // this version does not know, which says nothing of why.
+  if (const auto version = root.find("filmdyn_case_version"); version != root.end()) {
+    if (!version->is_number_integer() || version->get<long long>() < 1) {
+      throw InputError("filmdyn_case_version", Dump(*version).substr(0, 40),
+                       "must be a whole number ≥ 1 (the case format's version)");
+    }
+    if (version->get<long long>() > kCaseFormatVersion) {
+      throw InputError("filmdyn_case_version", Dump(*version),
+                       "this FilmDyn reads case files up to version " +
+                           std::to_string(kCaseFormatVersion) +
+                           ": the file was written by a newer FilmDyn");
+    }
+  }
   EngineCase c;
   Reader reader{root, {}, {}};
   VisitCase(reader, c);
@@ -318,7 +334,7 @@ EngineCase CaseFromJson(const json& root, std::vector<std::string>* notes) {
 json CaseToJson(const EngineCase& engine_case) {
   EngineCase c = engine_case;
   Writer writer;
-  writer.root["filmdyn_case_version"] = 1;
+  writer.root["filmdyn_case_version"] = kCaseFormatVersion;
   VisitCase(writer, c);
   json curves = json::array();
   for (const auto& curve : c.pressure_curves) {
@@ -493,6 +509,10 @@ LoadedCase LoadCase(const std::filesystem::path& path, const std::vector<std::st
     loaded.source = path.string();
   }
   loaded.value = LoadCaseText(text, loaded.source, overrides, &loaded.notes);
+  // Every curve read and checked now, also those of speeds this run does not use: a broken curve
+  // (a missing file, a table of unequal lengths) is the case's error wherever it is.
+  for (const engine::PressureCurveSource& source : loaded.value.pressure_curves)
+    PressureCurveForSpeed(loaded, source.rpm);
   return loaded;
 }
 

@@ -48,7 +48,8 @@ struct LoadedCase {
   std::vector<std::string> notes;
 };
 
-/// Loads a case file (or the embedded default when path is empty), applies the overrides.
+/// Loads a case file (or the embedded default when path is empty), applies the overrides, and
+/// reads and checks every pressure curve (PressureCurveForSpeed at each curve's speed).
 LoadedCase LoadCase(const std::filesystem::path& path,
                     const std::vector<std::string>& overrides = {});
 /// The same from the file's text (`source` names it in messages). Bad input of any kind throws

@@ -193,6 +193,14 @@ std::string SafeFolderName(const std::string& name) {
     if (c == '/' || c == '\\' || u < 0x20 || u == 0x7F || c == ':') c = '_';
   }
   for (std::size_t i = 0; i < safe.size() && safe[i] == '.'; ++i) safe[i] = '_';
+  // A file name holds at most 255 bytes; the folder adds "-<model>-<rpm>" to it. Cut at a
+  // character's start (a UTF-8 continuation byte is 10xxxxxx).
+  constexpr std::size_t kMaxBytes = 120;
+  if (safe.size() > kMaxBytes) {
+    std::size_t cut = kMaxBytes;
+    while (cut > 0 && (static_cast<unsigned char>(safe[cut]) & 0xC0) == 0x80) --cut;
+    safe.resize(cut);
+  }
   if (safe.empty()) safe = "case";
   return safe;
 }

@@ -86,8 +86,8 @@ class OutputFolder {
 namespace filmdyn::io {
 
 /// A case name as a folder name: path separators, "..", leading dots, control characters and
-/// bytes that are not UTF-8 become '_' (a name can never point outside its parent); empty →
-/// "case".
+/// bytes that are not UTF-8 become '_' (a name can never point outside its parent); cut to 120
+/// bytes at a character's start (a file name holds 255); empty → "case".
 std::string SafeFolderName(const std::string& name);
 
 /// A text as one CSV cell: quoted (its quotes doubled) when it holds a comma, a quote or a line

@@ -646,6 +646,28 @@ class TestCaseFile : public QObject {
       }
     }
   }
+  // The format's version is read: a newer FilmDyn's file is refused saying so (before any field
+  // it may add), a version that is no whole number ≥ 1 is refused; the current one reads.
+  void caseFormatVersionIsChecked() {
+    for (const auto& [version, needle] :
+         {std::pair{json(2), "written by a newer FilmDyn"},
+          std::pair{json(99), "written by a newer FilmDyn"}, std::pair{json("abc"), "whole number"},
+          std::pair{json(0), "whole number"}, std::pair{json(1.5), "whole number"}}) {
+      json j = DefaultJson();
+      j["filmdyn_case_version"] = version;
+      j["a_field_of_a_newer_version"] = 1;
+      try {
+        io::CaseFromJson(j);
+        QFAIL(version.dump().c_str());
+      } catch (const InputError& e) {
+        QCOMPARE(e.field(), std::string("filmdyn_case_version"));
+        QVERIFY2(std::string(e.what()).find(needle) != std::string::npos, e.what());
+      }
+    }
+    json j = DefaultJson();
+    j["filmdyn_case_version"] = 1;
+    io::CaseFromJson(j);
+  }
   void embeddedResourcesPresent() {
     QVERIFY(io::ReadResource("cases/default.json").has_value());
     QVERIFY(io::ReadResource("pressure/synthetic_1000rpm.csv").has_value());

@@ -155,6 +155,13 @@ class TestOutputFiles : public QObject {
     QCOMPARE(io::SafeFolderName("ab\xff"), std::string("ab_"));
     QCOMPARE(io::SafeFolderName(""), std::string("case"));
     QCOMPARE(io::SafeFolderName("Kolben µ"), std::string("Kolben µ"));
+    // A long name is cut to 120 bytes, never inside a character (a 300-character name made the
+    // default folder's name too long for the file system).
+    QCOMPARE(io::SafeFolderName(std::string(300, 'a')), std::string(120, 'a'));
+    const std::string cut = io::SafeFolderName(std::string(119, 'a') + "µµ");
+    QCOMPARE(cut, std::string(119, 'a'));
+    QVERIFY(filmdyn::IsUtf8(
+        io::SafeFolderName(std::string(60, 'b') + std::string(40, 'x') + "€€€€€€€€€€€€€€€€€€€€")));
     for (const char* name : {"..", ".", "a/../../b", "\\..\\x"}) {
       const fs::path folder = fs::path("results") / io::SafeFolderName(name);
       QCOMPARE(folder.lexically_normal().begin()->string(), std::string("results"));
