@@ -138,6 +138,9 @@ Command MakeReproduceCommand() {
       "uniform; about 20 % low on the minimum big-end film at 6000 rpm); figures.md states them.\n"
       "Example:\n  filmdyn reproduce --out /tmp/paper";
   command.run = [](const Args& args, Streams& streams) {
+    // The plan sets the speeds and the models of its runs: a --set of them would be replaced.
+    RefuseSets(args, {"operating.rpm", "skirt.model", "big_end.model"},
+               "is set by the paper's plan of runs (its speeds and models)");
     std::vector<std::string> sets;
     if (args.Has("paper-meshes")) {
       engine::EngineCase paper;

@@ -126,6 +126,19 @@ std::unique_ptr<io::OutputFolder> PrepareBatchFolders(const std::filesystem::pat
   return folder;
 }
 
+void RefuseSets(const Args& args, std::initializer_list<const char*> keys, const std::string& why) {
+  for (const std::string& set : args.Values("set")) {
+    const std::string key = set.substr(0, set.find('='));
+    for (const char* refused : keys) {
+      if (key == refused) {
+        throw InputError("--set " + key,
+                         set.find('=') == std::string::npos ? set : set.substr(set.find('=') + 1),
+                         why);
+      }
+    }
+  }
+}
+
 int JobsOption(const Args& args) {
   const long jobs =
       args.Integer("jobs").value_or(std::max(1u, std::thread::hardware_concurrency()));

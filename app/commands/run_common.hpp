@@ -5,6 +5,7 @@
 #include <QString>
 #include <atomic>
 #include <filesystem>
+#include <initializer_list>
 #include <memory>
 #include <optional>
 #include <ostream>
@@ -71,6 +72,10 @@ std::unique_ptr<io::OutputFolder> PrepareBatchFolders(const std::filesystem::pat
 int JobsOption(const Args& args);
 
 /// The runs of a finished batch, in job order.
+/// Throws InputError("--set KEY", value, `why`) for the first --set of one of `keys`: a field
+/// the command sets itself for each run, which the --set would not reach.
+void RefuseSets(const Args& args, std::initializer_list<const char*> keys, const std::string& why);
+
 struct BatchOutcome {
   std::vector<batch::SweepJob> jobs;
   std::vector<std::optional<ui::PlotRun>> runs;  ///< empty where the run could not start

@@ -165,6 +165,9 @@ Command MakeSkirtCommand() {
                        "(given with --map)",
                        "the map sweeps e0 at steady sliding; set its tilts with --tilts");
     }
+    // The folders first: one that cannot be made is said before the film is solved.
+    if (map_mode) io::CreateFolder(*args.Value("map"), "--map");
+    if (const auto dir = args.Value("fields")) io::CreateFolder(*dir, "--fields");
     lubrication::SkirtCalculator calc(config, map_mode ? kMapOptionNames : kOptionNames);
     const bool json = args.Has("json");
 
@@ -195,7 +198,6 @@ Command MakeSkirtCommand() {
         for (auto& p : calc.Map(e0s, tilt, *speed)) points.push_back(std::move(p));
       }
       const std::filesystem::path dir = *args.Value("map");
-      std::filesystem::create_directories(dir);
       io::WriteFileAtomically(dir / "skirt_map.csv", io::SkirtMapCsv(points));
       QString error;
       const QStringList plots =

@@ -412,9 +412,8 @@ int RunStudy(const Args& args, Streams& streams) {
   }
 
   // The study folder: locked while this command works in it; a different study there refused.
+  io::CreateFolder(out, "--out");
   std::error_code ec;
-  fs::create_directories(out, ec);
-  if (ec) throw InputError("--out", out.string(), "cannot create the folder: " + ec.message());
   const std::string definition = batch::StudyJson(study);
   // Throws when `out` holds another study.
   auto refuse_other_study = [&out, &definition] {

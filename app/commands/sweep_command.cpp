@@ -48,6 +48,13 @@ Command MakeSweepCommand() {
       "same speed and model given twice is refused.\n"
       "Example:\n  filmdyn sweep --rpm 1000,2000,4000,6000 --models skirt-lbrbe --jobs 2";
   command.run = [](const Args& args, Streams& streams) {
+    // What the sweep itself sets for each run: a --set of it would be replaced without a word.
+    RefuseSets(args, {"operating.rpm"},
+               "is each run's speed in a sweep: give the speeds with --rpm");
+    if (args.Has("models")) {
+      RefuseSets(args, {"skirt.model", "big_end.model"},
+                 "is set by each run's model (--models): leave one of the two out");
+    }
     const io::LoadedCase loaded = LoadCaseArgument(args, &streams.err);
     const engine::EngineCase& c = loaded.value;
 

@@ -126,12 +126,7 @@ void OutputFolder::RemoveEarlierRun(const std::filesystem::path& folder) {
 OutputFolder::OutputFolder(const std::filesystem::path& folder, Reuse reuse,
                            const std::string& option)
     : folder_(folder) {
-  std::error_code error;
-  std::filesystem::create_directories(folder, error);
-  if (error) throw InputError(option, folder.string(), "cannot create the folder: " + error.message());
-  if (!std::filesystem::is_directory(folder, error)) {
-    throw InputError(option, folder.string(), "is not a folder");
-  }
+  CreateFolder(folder, option);
   const std::filesystem::path lock = folder / kLockFile;
   lock_fd_ = ::open(lock.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
   if (lock_fd_ < 0) {
@@ -182,6 +177,16 @@ OutputFolder::~OutputFolder() {
 }  // namespace filmdyn::io
 
 namespace filmdyn::io {
+
+void CreateFolder(const std::filesystem::path& folder, const std::string& option) {
+  std::error_code error;
+  std::filesystem::create_directories(folder, error);
+  if (!error && !std::filesystem::is_directory(folder, error)) {
+    throw InputError(option, folder.string(), "cannot create the folder: a file has its name");
+  }
+  if (error)
+    throw InputError(option, folder.string(), "cannot create the folder: " + error.message());
+}
 
 std::string SafeFolderName(const std::string& name) {
   std::string safe = IsUtf8(name) ? name : std::string();

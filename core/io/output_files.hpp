@@ -85,6 +85,10 @@ class OutputFolder {
 
 namespace filmdyn::io {
 
+/// Creates `folder` (and its parents) when missing. Throws InputError(option, folder, "cannot
+/// create the folder: <reason>") when that fails or the path is not a folder (a file).
+void CreateFolder(const std::filesystem::path& folder, const std::string& option);
+
 /// A case name as a folder name: path separators, "..", leading dots, control characters and
 /// bytes that are not UTF-8 become '_' (a name can never point outside its parent); cut to 120
 /// bytes at a character's start (a file name holds 255); empty → "case".

@@ -361,10 +361,7 @@ std::vector<OutputRow> WriteRunFiles(const std::filesystem::path& directory,
                                      const std::string& case_name, const engine::RunConfig& config,
                                      const engine::RunResult& result,
                                      const BeforeSummary& before_summary) {
-  std::error_code error;
-  std::filesystem::create_directories(directory, error);
-  if (error)
-    throw InputError("--out", directory.string(), "cannot create the folder: " + error.message());
+  CreateFolder(directory, "--out");
   WriteRunCase(directory, config);
   std::vector<OutputRow> rows;
   const double start = result.samples.empty() ? 0.0 : result.samples.front().time;

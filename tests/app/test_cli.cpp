@@ -243,6 +243,18 @@ class TestCli : public QObject {
     const Result result = Run({"sweep", "--jobs", "0"});
     QCOMPARE(result.exit_code, 2);
     QVERIFY(result.err.contains("--jobs"));
+    // A --set of what the command sets for each run (it was replaced without a word).
+    for (const auto& [argv, needle] :
+         {std::pair{QStringList{"sweep", "--set", "operating.rpm=3000"},
+                    "--set operating.rpm = 3000: is each run's speed in a sweep"},
+          std::pair{QStringList{"sweep", "--models", "ideal", "--set", "skirt.model=lubricated"},
+                    "--set skirt.model = lubricated: is set by each run's model"},
+          std::pair{QStringList{"reproduce", "--set", "big_end.model=ideal"},
+                    "--set big_end.model = ideal: is set by the paper's plan"}}) {
+      const Result refused = Run(argv);
+      QCOMPARE(refused.exit_code, 2);
+      QVERIFY2(refused.err.contains(needle), qPrintable(refused.err));
+    }
   }
 
   // An --out folder holding an earlier run is refused (exit 2 naming --out) unless --overwrite,

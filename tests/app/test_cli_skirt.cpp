@@ -160,6 +160,16 @@ class TestCliSkirt : public QObject {
                        "--points",   "3"}
         << "--e0-range = -0.001"
         << "at --tilts = 0 rad the film is positive for";
+    // An output folder that cannot be made: said before the film is solved, as bad input (it
+    // was a "filesystem error", exit 1, after the whole map was computed).
+    const QString file = QDir::tempPath() + "/filmdyn-skirt-a-file";
+    QFile(file).open(QIODevice::WriteOnly);
+    QTest::newRow("map into a file") << QStringList{"--map", file, "--speed", "10"}
+                                     << "--map = " + file << "cannot create the folder";
+    QTest::newRow("fields under a file")
+        << QStringList{"--e0", "5e-6", "--speed", "10", "--fields", file + "/x"}
+        << "--fields = " + file + "/x"
+        << "cannot create the folder";
   }
   void badInputNamesTheOption() {
     QFETCH(QStringList, arguments);
