@@ -63,6 +63,10 @@ std::string Duration(double seconds) {
 // are drawn when a point is done; a plot that cannot be drawn is a warning, never an error.
 std::vector<batch::StudyRow> Collect(const fs::path& dir, const batch::Study& study,
                                      const Args& args, Streams& streams) {
+  // One collect at a time, reading the folders under the lock: the last to write is the last to
+  // read (a `collect` started during a study could otherwise write its older table after the
+  // study's final one).
+  const io::WaitedLock lock(dir / ".filmdyn-collect.lock", "study collect");
   const std::vector<batch::StudyRow> rows = batch::CollectStudy(dir, study);
   const std::string rank_by = args.Value("rank-by").value_or("");
   std::ostringstream csv;

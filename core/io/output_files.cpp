@@ -161,6 +161,29 @@ OutputFolder::OutputFolder(const std::filesystem::path& folder, Reuse reuse,
   }
 }
 
+WaitedLock::WaitedLock(const std::filesystem::path& file, const std::string& option) {
+  fd_ = ::open(file.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  if (fd_ < 0) {
+    throw InputError(option, file.string(), std::string("cannot write: ") + std::strerror(errno));
+  }
+  int status = 0;
+  do {
+    status = ::flock(fd_, LOCK_EX);
+  } while (status != 0 && errno == EINTR);
+  if (status != 0) {
+    const int lock_error = errno;
+    ::close(fd_);
+    fd_ = -1;
+    throw InputError(option, file.string(),
+                     std::string("cannot lock (") + std::strerror(lock_error) +
+                         "): this file system does not support file locks");
+  }
+}
+
+WaitedLock::~WaitedLock() {
+  if (fd_ >= 0) ::close(fd_);
+}
+
 bool OutputFolder::IsLocked(const std::filesystem::path& folder) {
   const int fd = ::open((folder / kLockFile).c_str(), O_RDONLY | O_CLOEXEC);
   if (fd < 0) return false;

@@ -36,6 +36,21 @@ std::filesystem::path TemporaryFor(const std::filesystem::path& target);
 /// Writes `bytes` to a temporary beside `target`, syncs it and renames it into place.
 void WriteFileAtomically(const std::filesystem::path& target, std::string_view bytes);
 
+/// An exclusive advisory lock (flock) on `file` (created when missing), waited for and held
+/// while the object lives: for short writes several processes may make at once (a study's tables,
+/// written by the study and by any number of `collect`s). Throws InputError naming `option` and
+/// the file when it cannot be opened or the file system has no locks.
+class WaitedLock {
+ public:
+  WaitedLock(const std::filesystem::path& file, const std::string& option);
+  ~WaitedLock();
+  WaitedLock(const WaitedLock&) = delete;
+  WaitedLock& operator=(const WaitedLock&) = delete;
+
+ private:
+  int fd_ = -1;
+};
+
 /// The output folder of one run (or of a sweep's comparison) while FilmDyn writes it.
 class OutputFolder {
  public:
