@@ -722,6 +722,13 @@ RunResult RunJob(const RunConfig& config, const RunMonitor& monitor,
   bool reported = false;  // the last run reported a cycle (completed or not converged)
   while (true) {
     for (BalancedJoint& j : joints) j.oil->temperature = j.t;
+    if (config.field_callback) {  // each pass's frames marked with it (its cycles restart at 1)
+      run.field_callback = [&config, pass = hb.runs + 1](const FieldFrame& frame) {
+        FieldFrame marked = frame;
+        marked.pass = pass;
+        config.field_callback(marked);
+      };
+    }
     result = RunWithEstimate(run, monitor, cancel);
     wall += result.wall_time;
     ++hb.runs;

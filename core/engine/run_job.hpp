@@ -55,6 +55,10 @@ struct FieldFrame {
   /// that starts elsewhere than 0 °CA (operating.start_crank_angle) passes 720 → 0 within it.
   double crank_angle_deg = 0.0;
   double time = 0.0;             ///< [s] since the start of the run
+  /// The whole run's pass, from 1: a film temperature found by heat balance runs the whole run
+  /// again at each new temperature, its cycles counted from 1 again; frames of an earlier pass
+  /// belong to no reported cycle.
+  int pass = 1;
   const CrankTrainSample* sample = nullptr;
   const lubrication::SkirtSolver* skirt = nullptr;
   const lubrication::BearingSolver* bearing = nullptr;

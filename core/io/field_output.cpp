@@ -26,6 +26,7 @@ struct JointFrames {
 
 // One cycle's frames of both joints.
 struct FieldRecorder::Cycle {
+  int pass = 1;  ///< FieldFrame::pass
   int cycle = 0;
   double first_time = 0.0;  ///< of the cycle's first frame [s]
   JointFrames skirt, bearing;
@@ -187,11 +188,20 @@ SurfaceField FieldRecorder::BearingSurface(const lubrication::BearingSolver& bea
 
 void FieldRecorder::Record(const engine::FieldFrame& frame) {
   Cycle& newest = frames_->newest;
-  if (frame.cycle != newest.cycle) {
+  if (frame.pass != newest.pass) {
+    // The run again from its start (a heat balance's next pass): nothing recorded so far is of
+    // a cycle the run will report.
+    frames_->previous = {};
+    newest = {};
+    newest.pass = frame.pass;
+    newest.cycle = frame.cycle;
+    newest.first_time = frame.time;
+  } else if (frame.cycle != newest.cycle) {
     // A new cycle. The one before it is what a run stopped in this one reports; older ones are
     // reported by no run.
     if (frames_->keep_previous) frames_->previous = std::move(newest);
     newest = {};
+    newest.pass = frame.pass;
     newest.cycle = frame.cycle;
     newest.first_time = frame.time;
   } else if (newest.size() == 0) {

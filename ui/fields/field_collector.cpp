@@ -88,8 +88,11 @@ FieldCollector::FieldCollector(int steps_per_cycle)
     : stride_(std::max(1, (steps_per_cycle + kMaxFrames - 1) / kMaxFrames)) {}
 
 void FieldCollector::Add(const engine::FieldFrame& frame) {
-  if (frame.cycle != cycle_ || !frames_) {  // (a run-in's failure: cycle 0, the first frame)
+  // A new cycle, or the run again from its start (a heat balance's next pass, its cycles from 1
+  // again). (A run-in's failure: cycle 0, the first frame.)
+  if (frame.cycle != cycle_ || frame.pass != pass_ || !frames_) {
     cycle_ = frame.cycle;
+    pass_ = frame.pass;
     frames_ = std::make_shared<FieldFrames>();
   }
   // Every stride-th step, and the step where the run failed (the film a user wants to see).

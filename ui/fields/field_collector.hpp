@@ -31,6 +31,7 @@ class FieldCollector {
  private:
   int stride_;
   int cycle_ = 0;
+  int pass_ = 1;  ///< engine::FieldFrame::pass of the frames kept
   std::shared_ptr<FieldFrames> frames_;
 };
 

@@ -587,6 +587,27 @@ class TestRunJob : public QObject {
     QVERIFY(result.heat_balance->runs >= 2 && result.heat_balance->runs <= 10);
   }
 
+  // The film fields of a heat-balanced run are the reported pass's only: each pass runs the
+  // whole run again, its cycles counted from 1 again (FieldFrame::pass), and with one cycle per
+  // pass the frames of every pass used to be appended into one series, whose crank angles then
+  // went back (the fields' writer refused it: the run ended "failed").
+  void heatBalancedFieldsAreTheReportedPassOnly() {
+    engine::RunConfig config = CoarseBigEndWithVogelOil();
+    engine::EngineCase& c = config.engine_case;
+    c.big_end.oil.temperature_mode = engine::FilmTemperature::kHeatBalance;
+    c.big_end.oil.temperature = 373.15;
+    c.solver.max_cycles = 1;
+    io::FieldRecorder recorder;
+    recorder.Attach(&config);
+    const engine::RunResult result = engine::RunJob(config);
+    QVERIFY2(result.heat_balance && result.heat_balance->runs >= 2, result.message.c_str());
+    QVERIFY(!result.samples.empty());
+    QTemporaryDir dir;
+    QVERIFY(recorder.WriteReported(dir.path().toStdString(), result.samples));
+    // One frame per output sample of the reported cycle.
+    QCOMPARE(recorder.bearing_frames(), result.samples.size());
+  }
+
   // Every run that reports a cycle after another says how far its last cycles' headline figures
   // disagree (summary.json cycle_scatter), not only one that finds no periodic state: the
   // periodic-state test judges each quantity against its range over the cycle, which hides a
