@@ -979,12 +979,36 @@ void MainWindow::offerRecovery() {
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {
+  if (run_controller_->isRunning()) {
+    // A run in progress is not dropped silently: asked first; if stopped, the window closes once
+    // the run has ended (within about a second), through the question about its unsaved results.
+    event->ignore();
+    if (closing_after_run_) return;  // asked already: the run is stopping
+    const auto answer = QMessageBox::question(
+        this, tr("Run in progress"),
+        tr("A run is in progress. Stop it and close FilmDyn?\n\nWhat it has computed so far is "
+           "kept as a cancelled run, which you can then save with the project."),
+        QMessageBox::Yes | QMessageBox::Cancel, QMessageBox::Cancel);
+    if (answer != QMessageBox::Yes || !run_controller_->isRunning()) {
+      if (answer == QMessageBox::Yes) QTimer::singleShot(0, this, &QWidget::close);
+      return;
+    }
+    closing_after_run_ = true;
+    connect(
+        run_controller_, &RunController::runFinished, this,
+        [this] {
+          closing_after_run_ = false;
+          QTimer::singleShot(0, this, &QWidget::close);
+        },
+        Qt::SingleShotConnection);
+    run_controller_->cancel();
+    return;
+  }
   if (!maybeSave()) {
     event->ignore();
     return;
   }
   autosave_->remove();  // saved or discarded: nothing to recover
-  if (run_controller_->isRunning()) run_controller_->cancel();
   QSettings settings;
   settings.setValue("main_window/geometry", saveGeometry());
   settings.setValue("main_window/state", saveState());

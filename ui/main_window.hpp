@@ -145,6 +145,7 @@ class MainWindow : public QMainWindow {
   QLabel* blocker_label_ = nullptr;
   QTimer* autosave_timer_ = nullptr;
   std::unique_ptr<AutosaveSlot> autosave_;
+  bool closing_after_run_ = false;  ///< a close asked to stop the run; it closes when it ends
   std::weak_ptr<RunRecord> shown_fields_run_;  ///< the run whose fields the field page shows
   std::weak_ptr<RunRecord> state_run_;         ///< the run the toolbar's state line speaks of
 };

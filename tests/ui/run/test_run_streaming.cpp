@@ -3,11 +3,14 @@
 // keeps serving a 10 ms timer throughout, Cancel stops the run, cancelled runs drop their film
 // fields (memory stays bounded over repeated start/cancel), closing the window during a run returns
 // promptly, and a failing run shows its reason while the inputs and earlier results stay.
+#include <QAbstractButton>
 #include <QAction>
 #include <QDir>
 #include <QElapsedTimer>
 #include <QFile>
 #include <QLabel>
+#include <QMessageBox>
+#include <QPointer>
 #include <QProgressBar>
 #include <QSettings>
 #include <QStackedWidget>
@@ -147,6 +150,22 @@ void UseIdealModel(MainWindow& window, double output_interval_deg, int max_cycle
   window.document()->edit(c, "test set-up");
 }
 
+}  // namespace
+
+namespace {
+// Answers the next message box that has `button` (looked for from the event loop, as a user
+// would), appending its title to *titles.
+void AnswerBox(QMessageBox::StandardButton button, QStringList* titles) {
+  QTimer::singleShot(50, [button, titles] {
+    auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+    if (!box || !box->button(button)) {
+      AnswerBox(button, titles);
+      return;
+    }
+    titles->append(box->windowTitle());
+    box->button(button)->click();
+  });
+}
 }  // namespace
 
 class TestRunStreaming : public QObject {
@@ -407,8 +426,10 @@ class TestRunStreaming : public QObject {
     SaveFieldViewShot(window, "field-view-failed-run-in.png");
   }
 
-  // Closing the main window during a run stops the run and returns promptly, also on a big end
-  // whose film is factorised in blocks of rows (800 × 80: 32 800 unknowns).
+  // Closing the main window during a run asks first (a run is never dropped silently); stopping
+  // it ends the run promptly, also on a big end whose film is factorised in blocks of rows
+  // (800 × 80: 32 800 unknowns), and the window then closes through the question about the
+  // stopped run's unsaved results.
   void closingDuringARunReturnsPromptly() {
     auto* window = new MainWindow;
     window->show();
@@ -425,13 +446,26 @@ class TestRunStreaming : public QObject {
     // Wait until the films are built and the run-in is being integrated.
     QTRY_VERIFY_WITH_TIMEOUT(run->progress().run_in || run->progress().cycle > 0, 300000);
     QVERIFY(window->runController()->isRunning());
+    // Cancel keeps the window and the run.
+    QStringList titles;
+    AnswerBox(QMessageBox::Cancel, &titles);
+    QVERIFY(!window->close());
+    QCOMPARE(titles, QStringList{"Run in progress"});
+    QVERIFY(window->runController()->isRunning());
+    // Stop and close: the run stops, and the window closes once asked about the stopped run.
     QElapsedTimer clock;
     clock.start();
-    QVERIFY(window->close());
-    delete window;  // joins the worker
+    AnswerBox(QMessageBox::Yes, &titles);
+    QPointer<MainWindow> alive(window);
+    window->setAttribute(Qt::WA_DeleteOnClose);
+    AnswerBox(QMessageBox::Discard, &titles);
+    QVERIFY(!window->close());                        // closes once the run has ended
+    QTRY_VERIFY_WITH_TIMEOUT(alive.isNull(), 10000);  // closed, deleted, the worker joined
     const qint64 ms = clock.elapsed();
     qInfo("closing during a run on an 800 x 80 big end took %lld ms", ms);
     QVERIFY2(ms < 5000, "closing waited for the run");
+    QCOMPARE(titles, (QStringList{"Run in progress", "Run in progress", "Unsaved changes"}));
+    QCOMPARE(run->status(), RunStatus::kCancelled);
   }
 
   void failedRunShowsReasonAndKeepsInputsAndResults() {
