@@ -32,6 +32,7 @@
 
 #include "core/engine/error_estimate.hpp"
 #include "core/io/case_file.hpp"
+#include "core/io/output_files.hpp"
 #include "core/io/results_writer.hpp"
 #include "ui/about_info.hpp"
 #include "ui/autosave.hpp"
@@ -744,12 +745,25 @@ bool MainWindow::exportResultsCsv(const RunHandle& run, const QString& path, QSt
   return SaveTextFile(path, std::string_view(core_csv.constData(), core_csv.size()), error);
 }
 
-bool MainWindow::exportRunFolder(const RunHandle& run, const QString& directory, QString* error) {
+bool MainWindow::exportRunFolder(const RunHandle& run, const QString& directory, QString* error,
+                                 bool replace) {
   if (!run) {
     if (error) *error = tr("no run to export");
     return false;
   }
-  return run->writeRunFolder(directory, error);
+  // As `filmdyn run --out` takes its folder: locked while written (no other FilmDyn writes
+  // there meanwhile), an earlier run's files refused unless replacing them is asked — then
+  // exactly FilmDyn's files go and the user's other files stay.
+  try {
+    const io::OutputFolder folder(
+        directory.toStdString(),
+        replace ? io::OutputFolder::Reuse::kReplace : io::OutputFolder::Reuse::kRefuse,
+        "export folder");
+    return run->writeRunFolder(directory, error);
+  } catch (const std::exception& e) {
+    if (error) *error = QString::fromUtf8(e.what());
+    return false;
+  }
 }
 
 void MainWindow::exportRunFolderInteractive() {
@@ -763,10 +777,26 @@ void MainWindow::exportRunFolderInteractive() {
       this, tr("Write the run folder into"), settings.value("paths/export_dir").toString());
   if (dir.isEmpty()) return;
   settings.setValue("paths/export_dir", dir);
+  bool replace = false;
+  if (io::OutputFolder::HoldsEarlierRun(dir.toStdString())) {
+    const auto answer = QMessageBox::question(
+        this, tr("Replace the earlier run?"),
+        tr("%1 holds the files of an earlier run (results.csv, summary.json, …). Replace them? "
+           "Only FilmDyn's files are replaced; your other files there stay.")
+            .arg(QDir::toNativeSeparators(dir)),
+        QMessageBox::Yes | QMessageBox::Cancel, QMessageBox::Cancel);
+    if (answer != QMessageBox::Yes) return;
+    replace = true;
+  }
   QString error;
-  if (exportRunFolder(run, dir, &error)) {
-    statusBar()->showMessage(tr("Wrote results.csv, summary.json and fields/ to %1").arg(dir),
-                             8000);
+  if (exportRunFolder(run, dir, &error, replace)) {
+    const bool fields = QFileInfo::exists(QDir(dir).filePath("fields"));
+    statusBar()->showMessage(
+        fields ? tr("Wrote the run folder (results.csv, summary.json, fields/) to %1").arg(dir)
+               : tr("Wrote the run folder (results.csv, summary.json; no fields/: the run kept "
+                    "none) to %1")
+                     .arg(dir),
+        8000);
   } else {
     QMessageBox::warning(this, tr("Export failed"), error);
   }
@@ -850,6 +880,19 @@ void MainWindow::exportFieldsInteractive() {
   }
   const QString dir = QFileDialog::getExistingDirectory(this, tr("Export fields to"));
   if (dir.isEmpty()) return;
+  // Files of those names there (another run's fields, or anything of the user's) are replaced
+  // only when the user says so.
+  QStringList there;
+  for (const char* name : {"skirt.h5", "skirt.xdmf", "bearing.h5", "bearing.xdmf"})
+    if (QFileInfo::exists(QDir(dir).filePath(name))) there << name;
+  if (!there.isEmpty()) {
+    const auto answer =
+        QMessageBox::question(this, tr("Replace files?"),
+                              tr("%1 holds %2. Replace them with this run's fields?")
+                                  .arg(QDir::toNativeSeparators(dir), there.join(", ")),
+                              QMessageBox::Yes | QMessageBox::Cancel, QMessageBox::Cancel);
+    if (answer != QMessageBox::Yes) return;
+  }
   QString error;
   if (run->writeFields(dir, &error)) {
     statusBar()->showMessage(tr("Wrote fields to %1").arg(dir), 8000);

@@ -59,8 +59,11 @@ class MainWindow : public QMainWindow {
   bool exportResultsCsv(const RunHandle& run, const QString& path, QString* error = nullptr,
                         bool display_units = false);
   /// The run's output folder exactly as `filmdyn run --out DIR` writes it (results.csv,
-  /// summary.json, fields/).
-  bool exportRunFolder(const RunHandle& run, const QString& directory, QString* error = nullptr);
+  /// summary.json, fields/), the folder taken as that command takes it: locked while written, a
+  /// folder holding an earlier run's files refused (false, *error naming it) unless `replace`,
+  /// which removes exactly FilmDyn's files of it first.
+  bool exportRunFolder(const RunHandle& run, const QString& directory, QString* error = nullptr,
+                       bool replace = false);
   /// Unsaved edits are written every minute to autosavePath(), this window's own file (with the
   /// case file they belong to beside it: ui/autosave.hpp), and the file is removed once they are
   /// saved or discarded or the window closes normally; after a crash the next start offers them

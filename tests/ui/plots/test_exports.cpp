@@ -120,6 +120,18 @@ class TestExports : public QObject {
     QFile summary(folder + "/summary.json");
     QVERIFY(summary.open(QIODevice::ReadOnly));
     QVERIFY(summary.readAll().contains("\"model\""));
+    summary.close();
+    // Into a folder holding a run: refused unless replacing is asked (the user's files there
+    // were overwritten or mixed with the new run's); replacing keeps the user's other files.
+    QFile mine(folder + "/my-notes.txt");
+    QVERIFY(mine.open(QIODevice::WriteOnly));
+    mine.write("kept");
+    mine.close();
+    QVERIFY(!window.exportRunFolder(run, folder, &error));
+    QVERIFY2(error.contains(folder) && error.contains("earlier run"), qPrintable(error));
+    QVERIFY2(window.exportRunFolder(run, folder, &error, true), qPrintable(error));
+    QVERIFY(QFile::exists(folder + "/results.csv"));
+    QVERIFY(QFile::exists(folder + "/my-notes.txt"));
   }
 };
 
