@@ -849,6 +849,13 @@ RunResult RunWithEstimate(const RunConfig& config, const RunMonitor& monitor,
   } else if (stop_coarse) {
     estimate.status = "unavailable";
     estimate.message = "the run did not complete";
+  } else if (coarse_result.status == RunStatus::kCancelled ||
+             coarse_result.status == RunStatus::kTimeLimit) {
+    // Stopped from outside (a Cancel, a stop signal, the time limit) while it ended: no
+    // judgement of the meshes.
+    estimate.status = "unavailable";
+    estimate.message = "the companion run on meshes with half the elements was stopped (" +
+                       StatusName(coarse_result.status) + ") before it ended";
   } else if (coarse_result.status != RunStatus::kCompleted &&
              coarse_result.status != RunStatus::kNotConverged) {
     estimate.status = "unavailable";

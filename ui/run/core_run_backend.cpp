@@ -165,8 +165,9 @@ RunBackend CoreRunBackend() {
     sink.ReportWarnings(io::RunWarnings(config, result));
     switch (result.status) {
       case engine::RunStatus::kCompleted:
-      case engine::RunStatus::kCancelled:
         return;
+      case engine::RunStatus::kCancelled:
+        throw RunCancelled();
       case engine::RunStatus::kNotConverged:
         // Results are usable but not periodic: a finished run whose reason says so.
         sink.Warn(result.message);

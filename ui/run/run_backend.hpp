@@ -8,6 +8,7 @@
 #include <cmath>
 #include <functional>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -99,8 +100,16 @@ void ReportRunCounters(RunSink& sink, const RunCounters& counters);
 /// `counters` with the oil per cycle of the run's KPIs.
 RunCounters OilCounters(RunCounters counters, const io::RunKpis& kpis);
 
+/// A backend returns when the run reached its end (completed, or not periodic with a warning)
+/// and throws when it did not: RunCancelled when it was stopped by `cancel` (its partial results
+/// reported), anything else when it failed. A cancel raised after the run ended changes nothing.
 using RunBackend =
     std::function<void(const RunRequest& request, const std::atomic<bool>& cancel, RunSink& sink)>;
+
+/// What a backend throws for a run stopped by its cancel flag.
+struct RunCancelled : std::runtime_error {
+  RunCancelled() : std::runtime_error("cancelled by the user") {}
+};
 
 /// The backend built on core's run API (see core_run_backend.cpp for what it covers).
 RunBackend CoreRunBackend();

@@ -98,9 +98,12 @@ RunHandle RunController::start(RunRequest request) {
     // Everything is caught at the thread boundary and reported.
     try {
       if (!backend) throw std::runtime_error("no solver backend is configured");
+      // The run's own end decides its status: a Cancel pressed once the solver had finished
+      // (while the error estimate's companion ended) leaves a finished run finished.
       backend(raw->request(), cancel_, sink);
-      raw->finish(cancel_ ? RunStatus::kCancelled : RunStatus::kFinished,
-                  cancel_ ? tr("cancelled by the user") : raw->warning());
+      raw->finish(RunStatus::kFinished, raw->warning());
+    } catch (const RunCancelled&) {
+      raw->finish(RunStatus::kCancelled, tr("cancelled by the user"));
     } catch (const InputError& e) {
       raw->finish(RunStatus::kFailed, tr("invalid input: %1").arg(e.what()));
     } catch (const std::exception& e) {

@@ -273,6 +273,26 @@ class TestRunStreaming : public QObject {
     QCOMPARE(int(run->fields()->crank_angle_deg.size()), 90);
   }
 
+  // The run's own end decides its status: a Cancel pressed once the solver had finished (while
+  // the error estimate's companion ended) leaves the run finished; a run the backend reports
+  // stopped is cancelled. (The status used to follow the cancel flag alone.)
+  void aCancelAfterTheRunEndedLeavesItFinished() {
+    filmdyn::ui::RunController controller;
+    for (const bool stopped : {false, true}) {
+      controller.setBackend([stopped](const filmdyn::ui::RunRequest&,
+                                      const std::atomic<bool>& cancel, filmdyn::ui::RunSink&) {
+        while (!cancel) QThread::msleep(5);  // the Cancel comes while it ends
+        if (stopped) throw filmdyn::ui::RunCancelled();
+      });
+      QSignalSpy finished(&controller, &filmdyn::ui::RunController::runFinished);
+      const RunHandle run = controller.start({});
+      QVERIFY(run);
+      controller.cancel();
+      QVERIFY(finished.wait(10000));
+      QCOMPARE(run->status(), stopped ? RunStatus::kCancelled : RunStatus::kFinished);
+    }
+  }
+
   void cancelStopsTheRun() {
     MainWindow window;
     window.show();
