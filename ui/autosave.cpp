@@ -99,6 +99,11 @@ void LeftAutosave::remove() const {
 std::vector<LeftAutosave> ClaimLeftAutosaves() {
   std::vector<LeftAutosave> left;
   const QDir folder(AutosaveFolder());
+  // The lock of a window gone before it wrote anything: taken over and released, so removed.
+  for (const QString& lock : folder.entryList({"*.json.lock"}, QDir::Files)) {
+    const QString file = folder.filePath(lock.chopped(5));
+    if (!QFileInfo::exists(file)) Claim(file);
+  }
   for (const QFileInfo& info : folder.entryInfoList({"*.json"}, QDir::Files)) {
     if (auto lock = Claim(info.filePath())) left.push_back(Left(info.filePath(), lock, false));
   }

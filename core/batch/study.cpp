@@ -559,10 +559,12 @@ Study PinStudyBase(const fs::path& dir, Study study, const io::LoadedCase& base)
   if (fs::exists(file)) {
     const std::string pinned = ReadInputFile(file, "base case", io::kMaxCaseFileBytes);
     if (pinned != text) {
-      const io::LoadedCase before = io::LoadCase(file);
+      // Both as base-case.json holds them (curves inline), so that only real changes show.
+      const engine::EngineCase before = io::LoadCaseText(pinned, file.string());
+      const engine::EngineCase now = io::LoadCaseText(text, "the case");
       std::string differences;
       for (const engine::CaseDifference& d :
-           engine::DiffRunInputs({before.value, "", 0.0}, {base.value, "", 0.0})) {
+           engine::DiffRunInputs({before, "", 0.0}, {now, "", 0.0})) {
         differences +=
             (differences.empty() ? "" : "; ") + d.path + " " + d.value_a + " → now " + d.value_b;
       }

@@ -273,6 +273,30 @@ class TestCliStudy : public QObject {
              qPrintable(resumed.err));
     QCOMPARE(Read(out + "/study.csv"), table);
 
+    // A case whose curves are files (the shipped default case, its curves among the built-in
+    // resources): the refusal names the changed field only, not the curves, which the folder's
+    // copy holds inline.
+    {
+      QFile shipped(QString(FILMDYN_SOURCE_DIR) + "/resources/cases/default.json");
+      QVERIFY(shipped.open(QIODevice::ReadOnly));
+      const QByteArray text = shipped.readAll();
+      const QString files_case = dir.filePath("files.json");
+      Write(files_case, text);
+      const QString files_study = dir.filePath("files-study.json");
+      Write(files_study, R"({"name": "files", "case": "files.json", "design": "one-at-a-time",
+        "set": {"solver.error_estimate": 0, "solver.max_cycles": 2, "model": "ideal"},
+        "factors": [{"path": "lubricant.viscosity", "levels": [0.02, 0.03]}]})");
+      const QString files_out = dir.filePath("files");
+      const Result ran = Run({"study", files_study, "--out", files_out, "--quiet"});
+      QVERIFY2(ran.exit_code == 0, qPrintable(ran.err));
+      Write(files_case, QByteArray(text).replace("\"piston_mass\": 0.264", "\"piston_mass\": 0.3"));
+      const Result refused = Run({"study", files_study, "--out", files_out, "--quiet"});
+      QCOMPARE(refused.exit_code, 2);
+      QVERIFY2(refused.err.contains("geometry.piston_mass 0.264 kg → now 0.3 kg") &&
+                   !refused.err.contains("pressure"),
+               qPrintable(refused.err));
+    }
+
     // The case file gone: the folder still reads.
     QVERIFY(QFile::remove(case_file));
     const Result collect = Run({"study", "collect", out});

@@ -312,6 +312,7 @@ class TestMainWindow : public QObject {
     if (child == 0) {  // the other process: writes its autosave, then waits to be killed
       close(ready[0]);
       filmdyn::ui::AutosaveSlot slot;
+      filmdyn::ui::AutosaveSlot idle;  // a second window with nothing to save: its lock only
       const char ok = slot.write(edited, {}, nullptr) ? '1' : '0';
       if (write(ready[1], &ok, 1) != 1) _exit(1);
       for (;;) pause();
@@ -335,6 +336,9 @@ class TestMainWindow : public QObject {
       next.offerRecovery();
       QCOMPARE(next.document()->engineCase().operating.rpm, 4321.0);
       QVERIFY(!QFile::exists(QDir(filmdyn::ui::AutosaveFolder()).filePath(files.front())));
+      // The dead process's locks are gone too (the idle window's, which had no file, included);
+      // only `next`'s own stays.
+      QCOMPARE(QDir(filmdyn::ui::AutosaveFolder()).entryList({"*.lock"}, QDir::Files).size(), 1);
     }
     ForgetLeftAutosaves();
   }
