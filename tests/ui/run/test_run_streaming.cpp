@@ -163,6 +163,10 @@ void AnswerBox(QMessageBox::StandardButton button, QStringList* titles) {
       return;
     }
     titles->append(box->windowTitle());
+    // scripts/screenshots.sh-style runs keep a picture of every question asked.
+    if (const QString dir = qEnvironmentVariable("FILMDYN_SCREENSHOT_DIR"); !dir.isEmpty()) {
+      box->grab().save(dir + "/dialog-" + box->windowTitle().toLower().replace(' ', '-') + ".png");
+    }
     box->button(button)->click();
   });
 }
