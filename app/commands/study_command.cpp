@@ -259,10 +259,7 @@ int SubmitToSlurm(const Args& args, Streams& streams, const fs::path& out,
   std::string script = "#!/bin/bash\n";
   script += "#SBATCH --job-name=filmdyn-study\n";
   script += fmt::format("#SBATCH --array=0-{}", tasks - 1);
-  if (const auto max = args.Integer("max-parallel")) {
-    if (*max < 1) throw InputError("--max-parallel", std::to_string(*max), "must be ≥ 1");
-    script += fmt::format("%{}", *max);
-  }
+  if (const auto max = args.Integer("max-parallel")) script += fmt::format("%{}", *max);  // ≥ 1
   script += "\n#SBATCH --ntasks=1\n#SBATCH --cpus-per-task=1\n";
   script += "#SBATCH --output=" + (fs::absolute(slurm) / "task-%A_%a.out").string() + "\n";
   if (const auto partition = args.Value("partition"))

@@ -188,18 +188,16 @@ SurfaceField FieldRecorder::BearingSurface(const lubrication::BearingSolver& bea
 
 void FieldRecorder::Record(const engine::FieldFrame& frame) {
   Cycle& newest = frames_->newest;
-  if (frame.pass != newest.pass) {
-    // The run again from its start (a heat balance's next pass): nothing recorded so far is of
-    // a cycle the run will report.
-    frames_->previous = {};
-    newest = {};
-    newest.pass = frame.pass;
-    newest.cycle = frame.cycle;
-    newest.first_time = frame.time;
-  } else if (frame.cycle != newest.cycle) {
-    // A new cycle. The one before it is what a run stopped in this one reports; older ones are
-    // reported by no run.
-    if (frames_->keep_previous) frames_->previous = std::move(newest);
+  if (frame.pass != newest.pass || frame.cycle != newest.cycle) {
+    if (frame.pass != newest.pass) {
+      // The run again from its start (a heat balance's next pass): nothing recorded so far is
+      // of a cycle the run will report.
+      frames_->previous = {};
+    } else if (frames_->keep_previous) {
+      // A new cycle. The one before it is what a run stopped in this one reports; older ones
+      // are reported by no run.
+      frames_->previous = std::move(newest);
+    }
     newest = {};
     newest.pass = frame.pass;
     newest.cycle = frame.cycle;

@@ -14,6 +14,7 @@
 #include <QTimer>
 #include <QtTest>
 
+#include "tests/ui/answer_message_box.hpp"
 #include "ui/about_info.hpp"
 #include "ui/autosave.hpp"
 #include "ui/case_editor/case_document.hpp"
@@ -29,28 +30,6 @@
 #include <csignal>
 
 namespace {
-// Answers the next modal message box with `button` (from the event loop, as a user would) and
-// records its title; the box must appear within a few seconds.
-// Answers the next message box that has `button` (one without it is left to another answer),
-// keeping its title and text.
-void AnswerNextMessageBox(QMessageBox::StandardButton button, QString* title = nullptr,
-                          QString* text = nullptr) {
-  QTimer::singleShot(50, [button, title, text] {
-    auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
-    if (!box || !box->button(button)) {
-      AnswerNextMessageBox(button, title, text);  // not shown yet: look again
-      return;
-    }
-    if (title) *title = box->windowTitle();
-    if (text) *text = box->text();
-    // scripts/screenshots.sh-style runs keep a picture of every question asked.
-    if (const QString dir = qEnvironmentVariable("FILMDYN_SCREENSHOT_DIR"); !dir.isEmpty()) {
-      box->grab().save(dir + "/dialog-" + box->windowTitle().toLower().replace(' ', '-') + ".png");
-    }
-    box->button(button)->click();
-  });
-}
-
 // No autosave left by an earlier test or a window of this user.
 void ForgetLeftAutosaves() {
   for (const auto& left : filmdyn::ui::ClaimLeftAutosaves()) left.remove();
@@ -111,7 +90,7 @@ class TestMainWindow : public QObject {
     QVERIFY(window.hasUnsavedRuns());
     QVERIFY(!window.document()->isModified());
     QString title;
-    AnswerNextMessageBox(QMessageBox::Cancel, &title);
+    filmdyn::test::AnswerNextMessageBox(QMessageBox::Cancel, &title);
     QVERIFY(!window.close());
     QCOMPARE(title, QString("Unsaved changes"));
     // Saved with the project: nothing to ask any more.
@@ -135,7 +114,7 @@ class TestMainWindow : public QObject {
 
     // Cancel: the window stays open with the edit.
     QString title;
-    AnswerNextMessageBox(QMessageBox::Cancel, &title);
+    filmdyn::test::AnswerNextMessageBox(QMessageBox::Cancel, &title);
     QVERIFY(!window.close());
     QCOMPARE(title, QString("Unsaved changes"));
     QVERIFY(window.isVisible());
@@ -143,7 +122,7 @@ class TestMainWindow : public QObject {
 
     // Save: written to the project file, then the window closes.
     title.clear();
-    AnswerNextMessageBox(QMessageBox::Save, &title);
+    filmdyn::test::AnswerNextMessageBox(QMessageBox::Save, &title);
     QVERIFY(window.close());
     QCOMPARE(title, QString("Unsaved changes"));
     QFile file(path);
@@ -156,7 +135,7 @@ class TestMainWindow : public QObject {
     QVERIFY(QTest::qWaitForWindowExposed(&other));
     QVERIFY(other.openProject(path, &error));
     other.document()->setParameter("operating.rpm", 1357.25);
-    AnswerNextMessageBox(QMessageBox::Discard, &title);
+    filmdyn::test::AnswerNextMessageBox(QMessageBox::Discard, &title);
     QVERIFY(other.close());
     QFile again(path);
     QVERIFY(again.open(QIODevice::ReadOnly));
@@ -208,7 +187,7 @@ class TestMainWindow : public QObject {
       filmdyn::ui::MainWindow next;
       QString error, title, text;
       next.show();
-      AnswerNextMessageBox(QMessageBox::Yes, &title, &text);
+      filmdyn::test::AnswerNextMessageBox(QMessageBox::Yes, &title, &text);
       next.offerRecovery();  // the question the next start asks (main.cpp), answered Yes
       QCOMPARE(title, QString("Recover unsaved edits"));
       QVERIFY2(text.contains(QDir::toNativeSeparators(path)), qPrintable(text));
@@ -249,7 +228,7 @@ class TestMainWindow : public QObject {
     {
       filmdyn::ui::MainWindow next;
       next.show();
-      AnswerNextMessageBox(QMessageBox::Yes, nullptr, &text);
+      filmdyn::test::AnswerNextMessageBox(QMessageBox::Yes, nullptr, &text);
       next.offerRecovery();
       QVERIFY2(text.contains("1 of 2") && text.contains("a case not yet saved"), qPrintable(text));
       QCOMPARE(next.document()->engineCase().operating.rpm, 2222.0);  // the newest
@@ -263,7 +242,7 @@ class TestMainWindow : public QObject {
     {
       filmdyn::ui::MainWindow later;
       later.show();
-      AnswerNextMessageBox(QMessageBox::Yes);
+      filmdyn::test::AnswerNextMessageBox(QMessageBox::Yes);
       later.offerRecovery();
       QCOMPARE(later.document()->engineCase().operating.rpm, 1111.0);
       QCOMPARE(filmdyn::ui::ClaimLeftAutosaves().size(), std::size_t{0});
@@ -287,7 +266,7 @@ class TestMainWindow : public QObject {
     {
       filmdyn::ui::MainWindow next;
       next.show();
-      AnswerNextMessageBox(QMessageBox::Yes);
+      filmdyn::test::AnswerNextMessageBox(QMessageBox::Yes);
       next.offerRecovery();
       QCOMPARE(next.document()->engineCase().operating.rpm, 3333.0);
       QCOMPARE(next.document()->filePath(), path);
@@ -332,7 +311,7 @@ class TestMainWindow : public QObject {
     {
       filmdyn::ui::MainWindow next;
       next.show();
-      AnswerNextMessageBox(QMessageBox::Yes);
+      filmdyn::test::AnswerNextMessageBox(QMessageBox::Yes);
       next.offerRecovery();
       QCOMPARE(next.document()->engineCase().operating.rpm, 4321.0);
       QVERIFY(!QFile::exists(QDir(filmdyn::ui::AutosaveFolder()).filePath(files.front())));
@@ -367,7 +346,7 @@ class TestMainWindow : public QObject {
     {
       filmdyn::ui::MainWindow next;
       next.show();
-      AnswerNextMessageBox(QMessageBox::Yes);
+      filmdyn::test::AnswerNextMessageBox(QMessageBox::Yes);
       next.offerRecovery();
       const auto& c = next.document()->engineCase();
       QCOMPARE(c.operating.rpm, 2468.5);
@@ -396,8 +375,8 @@ class TestMainWindow : public QObject {
       QCOMPARE(left.size(), std::size_t{1});
       const QString kept = filmdyn::ui::NotRecoveredPath(left.front());
       left.clear();  // released for the offer
-      AnswerNextMessageBox(QMessageBox::Yes);
-      AnswerNextMessageBox(QMessageBox::Ok, &title, &text);
+      filmdyn::test::AnswerNextMessageBox(QMessageBox::Yes);
+      filmdyn::test::AnswerNextMessageBox(QMessageBox::Ok, &title, &text);
       next.offerRecovery();
       QCOMPARE(title, QString("Cannot recover"));
       QVERIFY2(text.contains(kept), qPrintable(text));

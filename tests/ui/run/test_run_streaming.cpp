@@ -25,6 +25,7 @@
 #include <malloc.h>
 #endif
 
+#include "tests/ui/answer_message_box.hpp"
 #include "ui/case_editor/case_document.hpp"
 #include "ui/case_editor/case_json.hpp"
 #include "ui/case_editor/case_parameters.hpp"
@@ -144,26 +145,6 @@ void UseIdealModel(MainWindow& window, double output_interval_deg, int max_cycle
   window.document()->edit(c, "test set-up");
 }
 
-}  // namespace
-
-namespace {
-// Answers the next message box that has `button` (looked for from the event loop, as a user
-// would), appending its title to *titles.
-void AnswerBox(QMessageBox::StandardButton button, QStringList* titles) {
-  QTimer::singleShot(50, [button, titles] {
-    auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
-    if (!box || !box->button(button)) {
-      AnswerBox(button, titles);
-      return;
-    }
-    titles->append(box->windowTitle());
-    // scripts/screenshots.sh-style runs keep a picture of every question asked.
-    if (const QString dir = qEnvironmentVariable("FILMDYN_SCREENSHOT_DIR"); !dir.isEmpty()) {
-      box->grab().save(dir + "/dialog-" + box->windowTitle().toLower().replace(' ', '-') + ".png");
-    }
-    box->button(button)->click();
-  });
-}
 }  // namespace
 
 class TestRunStreaming : public QObject {
@@ -472,17 +453,17 @@ class TestRunStreaming : public QObject {
     QVERIFY(window->runController()->isRunning());
     // Cancel keeps the window and the run.
     QStringList titles;
-    AnswerBox(QMessageBox::Cancel, &titles);
+    filmdyn::test::AnswerNextMessageBox(QMessageBox::Cancel, nullptr, nullptr, &titles);
     QVERIFY(!window->close());
     QCOMPARE(titles, QStringList{"Run in progress"});
     QVERIFY(window->runController()->isRunning());
     // Stop and close: the run stops, and the window closes once asked about the stopped run.
     QElapsedTimer clock;
     clock.start();
-    AnswerBox(QMessageBox::Yes, &titles);
+    filmdyn::test::AnswerNextMessageBox(QMessageBox::Yes, nullptr, nullptr, &titles);
     QPointer<MainWindow> alive(window);
     window->setAttribute(Qt::WA_DeleteOnClose);
-    AnswerBox(QMessageBox::Discard, &titles);
+    filmdyn::test::AnswerNextMessageBox(QMessageBox::Discard, nullptr, nullptr, &titles);
     QVERIFY(!window->close());                        // closes once the run has ended
     QTRY_VERIFY_WITH_TIMEOUT(alive.isNull(), 10000);  // closed, deleted, the worker joined
     const qint64 ms = clock.elapsed();
