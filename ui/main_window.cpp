@@ -29,6 +29,7 @@
 #include <QToolBar>
 #include <QUndoStack>
 #include <QVBoxLayout>
+#include <QtConcurrent/QtConcurrentRun>
 
 #include "core/engine/error_estimate.hpp"
 #include "core/io/case_file.hpp"
@@ -211,9 +212,9 @@ void MainWindow::createRunPage() {
     runs_modified_ = true;
     for (const RunHandle& run : run_table_->runs()) {
       if (!ids.contains(run->id())) continue;
-      plot_panel_->setRunLabel(run->id(), run->label());
+      plot_panel_->setRunLabel(run->id(), run->legendLabel());
       if (run == shown_fields_run_.lock())
-        field_view_->setFrames(run->fields(), run->label(), NoFieldsReason(*run));
+        field_view_->setFrames(run->fields(), run->legendLabel(), NoFieldsReason(*run));
       if (run == state_run_.lock()) showRunState(run);
     }
   });
@@ -230,7 +231,7 @@ void MainWindow::createRunPage() {
     RunHandle run = run_table_->currentRun();
     if (run && run != shown_fields_run_.lock()) {
       shown_fields_run_ = run;
-      field_view_->setFrames(run->fields(), run->label(), NoFieldsReason(*run));
+      field_view_->setFrames(run->fields(), run->legendLabel(), NoFieldsReason(*run));
     }
   });
   workspace_->addTab(page, tr("Run and results"));
@@ -260,10 +261,12 @@ void MainWindow::createMenus() {
   export_plots->setShortcut(QKeySequence(tr("Ctrl+E")));
   export_menu->addAction(tr("&Results of the selected run (CSV)…"), this,
                          &MainWindow::exportResultsInteractive);
-  export_menu->addAction(tr("Run &folder of the selected run (as filmdyn run)…"), this,
-                         &MainWindow::exportRunFolderInteractive);
-  export_menu->addAction(tr("Pressure &fields shown (HDF5 + XDMF for ParaView)…"), this,
-                         &MainWindow::exportFieldsInteractive);
+  export_folder_action_ =
+      export_menu->addAction(tr("Run &folder of the selected run (as filmdyn run)…"), this,
+                             &MainWindow::exportRunFolderInteractive);
+  export_fields_action_ =
+      export_menu->addAction(tr("Pressure &fields shown (HDF5 + XDMF for ParaView)…"), this,
+                             &MainWindow::exportFieldsInteractive);
   export_menu->addAction(tr("Cylinder pressure curve (CSV)…"), case_editor_,
                          [this] { case_editor_->exportPressureCsv(); });
   QAction* open_study = file_menu->addAction(tr("Open s&tudy folder…"), this, [this] {
@@ -450,7 +453,7 @@ void MainWindow::onRunFinished(const RunHandle& run) {
   }
   shown_fields_run_ = run;
   field_view_->setScaleFrames(AllRunFields(run_table_->runs()));
-  field_view_->setFrames(run->fields(), run->label(), NoFieldsReason(*run));
+  field_view_->setFrames(run->fields(), run->legendLabel(), NoFieldsReason(*run));
 }
 
 // The toolbar's line on the run last started or finished, in the run's label of the moment (the
@@ -788,18 +791,65 @@ void MainWindow::exportRunFolderInteractive() {
     if (answer != QMessageBox::Yes) return;
     replace = true;
   }
-  QString error;
-  if (exportRunFolder(run, dir, &error, replace)) {
-    const bool fields = QFileInfo::exists(QDir(dir).filePath("fields"));
-    statusBar()->showMessage(
-        fields ? tr("Wrote the run folder (results.csv, summary.json, fields/) to %1").arg(dir)
-               : tr("Wrote the run folder (results.csv, summary.json; no fields/: the run kept "
-                    "none) to %1")
-                     .arg(dir),
-        8000);
-  } else {
-    QMessageBox::warning(this, tr("Export failed"), error);
-  }
+  startRunFolderExport(run, dir, replace);
+}
+
+bool MainWindow::isExporting() const { return export_watcher_ != nullptr; }
+
+void MainWindow::startRunFolderExport(const RunHandle& run, const QString& directory,
+                                      bool replace) {
+  exportInBackground(tr("Writing the run folder to %1…").arg(directory), [run, directory, replace](
+                                                                             QString* message) {
+    if (!exportRunFolder(run, directory, message, replace)) return false;
+    *message =
+        QFileInfo::exists(QDir(directory).filePath("fields"))
+            ? tr("Wrote the run folder (results.csv, summary.json, fields/) to %1").arg(directory)
+            : tr("Wrote the run folder (results.csv, summary.json; no fields/: the run kept "
+                 "none) to %1")
+                  .arg(directory);
+    return true;
+  });
+}
+
+void MainWindow::startFieldsExport(const RunHandle& run, const QString& directory) {
+  exportInBackground(tr("Writing the fields to %1…").arg(directory),
+                     [run, directory](QString* message) {
+                       if (!run->writeFields(directory, message)) return false;
+                       *message = tr("Wrote fields to %1").arg(directory);
+                       return true;
+                     });
+}
+
+void MainWindow::exportInBackground(const QString& busy,
+                                    std::function<bool(QString* message)> job) {
+  if (export_watcher_ != nullptr) return;  // the actions are disabled meanwhile
+  export_watcher_ = new QFutureWatcher<std::pair<bool, QString>>(this);
+  export_folder_action_->setEnabled(false);
+  export_fields_action_->setEnabled(false);
+  statusBar()->showMessage(busy);
+  connect(export_watcher_, &QFutureWatcherBase::finished, this, &MainWindow::finishExport);
+  export_watcher_->setFuture(QtConcurrent::run([job = std::move(job)] {
+    QString message;
+    bool ok = false;
+    try {
+      ok = job(&message);
+    } catch (const std::exception& e) {
+      message = QString::fromUtf8(e.what());
+    }
+    return std::pair<bool, QString>(ok, message);
+  }));
+}
+
+void MainWindow::finishExport() {
+  if (export_watcher_ == nullptr) return;
+  const auto [ok, message] = export_watcher_->result();
+  export_watcher_->deleteLater();
+  export_watcher_ = nullptr;
+  export_folder_action_->setEnabled(true);
+  export_fields_action_->setEnabled(true);
+  statusBar()->showMessage(ok ? message : tr("Export failed: %1").arg(message), ok ? 8000 : 0);
+  emit exportFinished(ok, message);
+  if (!ok) QMessageBox::warning(this, tr("Export failed"), message);
 }
 
 bool MainWindow::exportAllPlots(const QString& directory, const QStringList& suffixes,
@@ -855,16 +905,24 @@ void MainWindow::exportResultsInteractive() {
   const QString si = tr("CSV in SI units, as results.csv (*.csv)");
   const QString display = tr("CSV in display units: µm, mrad, kN, MPa, bar (*.csv)");
   QString filter = settings.value("paths/results_units").toString() == "display" ? display : si;
+  // A run that did not end normally offers a name that says so: its rows are partial.
+  const QString state =
+      run->status() == RunStatus::kFinished ? QString() : RunStatusText(run->status());
   const QString path = QFileDialog::getSaveFileName(
       this, tr("Export results"),
-      QDir(settings.value("paths/export_dir").toString()).filePath("results.csv"),
+      QDir(settings.value("paths/export_dir").toString())
+          .filePath(state.isEmpty() ? QString("results.csv")
+                                    : QString("results-%1.csv").arg(state)),
       si + ";;" + display, &filter);
   if (path.isEmpty()) return;
   settings.setValue("paths/export_dir", QFileInfo(path).absolutePath());
   settings.setValue("paths/results_units", filter == display ? "display" : "si");
   QString error;
   if (exportResultsCsv(run, path, &error, filter == display)) {
-    statusBar()->showMessage(tr("Wrote %1").arg(path), 8000);
+    statusBar()->showMessage(state.isEmpty()
+                                 ? tr("Wrote %1").arg(path)
+                                 : tr("Wrote %1 — partial results: the run is %2").arg(path, state),
+                             8000);
   } else {
     QMessageBox::warning(this, tr("Export failed"), error);
   }
@@ -893,12 +951,7 @@ void MainWindow::exportFieldsInteractive() {
                               QMessageBox::Yes | QMessageBox::Cancel, QMessageBox::Cancel);
     if (answer != QMessageBox::Yes) return;
   }
-  QString error;
-  if (run->writeFields(dir, &error)) {
-    statusBar()->showMessage(tr("Wrote fields to %1").arg(dir), 8000);
-  } else {
-    QMessageBox::warning(this, tr("Export failed"), error);
-  }
+  startFieldsExport(run, dir);
 }
 
 // ---- Window ----
@@ -1050,6 +1103,12 @@ void MainWindow::closeEvent(QCloseEvent* event) {
   if (!maybeSave()) {
     event->ignore();
     return;
+  }
+  if (export_watcher_ != nullptr) {
+    // An export under way ends before the window goes (its files whole, a failure said).
+    statusBar()->showMessage(tr("Waiting for the export to end…"));
+    export_watcher_->waitForFinished();
+    finishExport();
   }
   autosave_->remove();  // saved or discarded: nothing to recover
   QSettings settings;

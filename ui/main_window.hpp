@@ -3,9 +3,12 @@
 /// overlaid for every run of the session, the run comparison table) and the pressure-field view;
 /// menus and shortcuts; project files with recent files and an unsaved-changes prompt. Window
 /// geometry, state and preferences are remembered between sessions (QSettings).
+#include <QFutureWatcher>
 #include <QMainWindow>
 #include <QStringList>
+#include <functional>
 #include <memory>
+#include <utility>
 
 #include "ui/run/run_record.hpp"
 
@@ -62,8 +65,8 @@ class MainWindow : public QMainWindow {
   /// summary.json, fields/), the folder taken as that command takes it: locked while written, a
   /// folder holding an earlier run's files refused (false, *error naming it) unless `replace`,
   /// which removes exactly FilmDyn's files of it first.
-  bool exportRunFolder(const RunHandle& run, const QString& directory, QString* error = nullptr,
-                       bool replace = false);
+  static bool exportRunFolder(const RunHandle& run, const QString& directory,
+                              QString* error = nullptr, bool replace = false);
   /// Unsaved edits are written every minute to autosavePath(), this window's own file (with the
   /// case file they belong to beside it: ui/autosave.hpp), and the file is removed once they are
   /// saved or discarded or the window closes normally; after a crash the next start offers them
@@ -79,9 +82,22 @@ class MainWindow : public QMainWindow {
   /// read by ReadRunFolder, its case rebuilt from the study) and shows the results page; a
   /// point already among the runs is selected. False with *error saying why it cannot be read.
   bool openStudyPointRun(int number, QString* error = nullptr);
+  /// The run-folder and fields exports write on a worker thread (tens of MB of HDF5 on fine
+  /// meshes, each file synced): the window stays responsive, those two exports wait (disabled)
+  /// until the one under way ends, and exportFinished reports it (the status bar says it, a
+  /// message box says why it failed). Closing the window waits for it to end.
+  bool isExporting() const;
+  /// exportRunFolder on the worker thread (the interactive export, its questions answered).
+  void startRunFolderExport(const RunHandle& run, const QString& directory, bool replace);
+  /// The run's fields/ files into `directory` on the worker thread.
+  void startFieldsExport(const RunHandle& run, const QString& directory);
   /// Writes every plot as <dir>/<plot id>.<suffix> for each suffix in {png, svg, pdf}.
   bool exportAllPlots(const QString& directory, const QStringList& suffixes,
                       QString* error = nullptr);
+
+ signals:
+  /// A background export ended: `message` is what the status bar shows, or why it failed.
+  void exportFinished(bool ok, const QString& message);
 
  public slots:
   void showAbout();
@@ -129,6 +145,10 @@ class MainWindow : public QMainWindow {
   /// a run finished, was removed, renamed, annotated, re-ordered, hidden or made the base.
   bool runs_modified_ = false;
   void onRunFinished(const RunHandle& run);
+  /// Runs `job` (which says what it wrote, or why not) on a worker thread as described at
+  /// isExporting(); `busy` is the status bar's text meanwhile.
+  void exportInBackground(const QString& busy, std::function<bool(QString* message)> job);
+  void finishExport();
   void showRunState(const RunHandle& run);
 
   QTabWidget* workspace_ = nullptr;
@@ -148,6 +168,10 @@ class MainWindow : public QMainWindow {
   QLabel* blocker_label_ = nullptr;
   QTimer* autosave_timer_ = nullptr;
   std::unique_ptr<AutosaveSlot> autosave_;
+  QAction* export_folder_action_ = nullptr;
+  QAction* export_fields_action_ = nullptr;
+  /// The background export under way (nullptr when none): its result, once ended.
+  QFutureWatcher<std::pair<bool, QString>>* export_watcher_ = nullptr;
   bool closing_after_run_ = false;  ///< a close asked to stop the run; it closes when it ends
   std::weak_ptr<RunRecord> shown_fields_run_;  ///< the run whose fields the field page shows
   std::weak_ptr<RunRecord> state_run_;         ///< the run the toolbar's state line speaks of

@@ -1248,7 +1248,7 @@ void PlotPanel::exportChartInteractive(int index) {
 PlotRun PlotRunOf(const RunRecord& run) {
   const engine::Model model = engine::ParseModel(run.request().model);
   return {run.id(),
-          run.label(),
+          run.legendLabel(),
           engine::BigEndFit(run.request().engine_case).hot_clearance,
           engine::SkirtLubricated(model),
           engine::BigEndLubricated(model),

@@ -40,6 +40,13 @@ QString RunRecord::label() const {
   return RunLabel(QString::fromStdString(request_.model), request_.rpm);
 }
 
+QString RunRecord::legendLabel() const {
+  const RunStatus state = status();
+  const QString plain = label();
+  return state == RunStatus::kFinished ? plain
+                                       : QString("%1 (%2)").arg(plain, RunStatusText(state));
+}
+
 QString RunRecord::name() const {
   std::lock_guard lock(mutex_);
   return name_;

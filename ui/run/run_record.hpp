@@ -30,6 +30,10 @@ class RunRecord : public RunSink {
   /// the automatic label (what differs from the base run), else model and speed ("Skirt-LBRBE
   /// 6000 rpm"). The run table keeps labels unique among its runs.
   QString label() const;
+  /// The label in the legends (on screen and in exported plots) and the field view: label(), with
+  /// the run's state when its curves are not those of a run that ended normally — "… (running)",
+  /// "… (cancelled)", "… (failed)" — so that a picture of partial curves says so.
+  QString legendLabel() const;
   /// The user's name for the run; empty = the automatic label.
   QString name() const;
   void setName(const QString& name);

@@ -145,13 +145,29 @@ RunWriters CopyingWriters(const fs::path& folder) {
   RunWriters writers;
   writers.folder = [folder](const std::string& dir) {
     const fs::path to(dir);
-    fs::create_directories(to);
-    io::WriteFileAtomically(to / "results.csv", ReadBytes(folder / "results.csv"));
-    if (fs::is_directory(folder / "fields")) CopyFieldFiles(folder / "fields", to / "fields");
-    for (const char* file : {"motion.csv", "case-as-run.json"}) {
-      if (fs::exists(folder / file)) io::WriteFileAtomically(to / file, ReadBytes(folder / file));
+    try {
+      io::CreateFolder(to, "export folder");
+      io::WriteFileAtomically(to / "results.csv", ReadBytes(folder / "results.csv"));
+      if (fs::is_directory(folder / "fields")) CopyFieldFiles(folder / "fields", to / "fields");
+      for (const char* file : {"motion.csv", "case-as-run.json"}) {
+        if (fs::exists(folder / file)) io::WriteFileAtomically(to / file, ReadBytes(folder / file));
+      }
+      // Last, as a run writes its folder: a summary is only ever beside complete files.
+      io::WriteFileAtomically(to / "summary.json", ReadBytes(folder / "summary.json"));
+    } catch (const std::exception& e) {
+      // As a run whose files cannot be written: the copy's summary says it is not complete (when
+      // that can be written; the caller has the message either way).
+      try {
+        io::RunSummary failed = io::ReadSummaryJson(folder / "summary.json");
+        failed.status = engine::StatusName(engine::RunStatus::kFailed);
+        failed.complete = false;
+        failed.message =
+            std::string("its files could not be copied from ") + folder.string() + ": " + e.what();
+        io::WriteSummaryJson(to / "summary.json", failed);
+      } catch (const std::exception&) {
+      }
+      throw;
     }
-    io::WriteFileAtomically(to / "summary.json", ReadBytes(folder / "summary.json"));
   };
   writers.csv = [folder] { return ReadBytes(folder / "results.csv"); };
   writers.fields = [folder](const std::string& dir) { CopyFieldFiles(folder / "fields", dir); };
@@ -530,12 +546,16 @@ bool SaveProjectRuns(const QString& project_path, const std::vector<ProjectRun>&
                                   {"runs", list}};
     io::WriteFileAtomically(dir / kIndex, index.dump(2) + "\n");
     // What the index listed and lists no more (removed runs) goes, and what a save left half
-    // written (".tmp"). Anything else in the folder, listed by no index this version read, stays.
+    // written: a ".tmp", or a run's files without its samples file (written last for each run,
+    // so a save stopped before it leaves such files, listed by no index). A run's complete files
+    // listed by no index this version read (a lost index) stay, as does anything else.
     for (const auto& item : fs::directory_iterator(dir)) {
       const std::string name = item.path().filename().string();
       const std::string key = KeyOfEntry(name);
       if (!OwnEntry(name) || keep.count(key)) continue;
-      if (listed_before.count(key) || name.ends_with(".tmp")) fs::remove_all(item.path());
+      const bool unfinished = !fs::exists(dir / (key + kSamplesSuffix));
+      if (listed_before.count(key) || name.ends_with(".tmp") || unfinished)
+        fs::remove_all(item.path());
     }
   } catch (const std::exception& e) {
     // A run whose files were being written when the save failed: none of them stays.

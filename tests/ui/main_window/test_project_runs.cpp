@@ -20,6 +20,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "core/io/run_summary.hpp"
 #include "ui/case_editor/case_document.hpp"
 #include "ui/case_editor/case_parameters.hpp"
 #include "ui/main_window.hpp"
@@ -311,12 +312,38 @@ class TestProjectRuns : public QObject {
     QCOMPARE(ReadAll(out.filePath("results.csv")), original_csv);
     QCOMPARE(ReadAll(out.filePath("summary.json")), ReadAll(c_folder + "/summary.json"));
     QCOMPARE(ReadAll(out.filePath("fields/bearing.h5")), ReadAll(c_folder + "/fields/bearing.h5"));
+    // A copy that cannot be completed (here "fields" is a file of the user's) leaves a summary
+    // that says so, not a folder that reads as a whole run.
+    QTemporaryDir blocked;
+    {
+      QFile in_the_way(blocked.filePath("fields"));
+      QVERIFY(in_the_way.open(QIODevice::WriteOnly));
+    }
+    QVERIFY(!again.exportRunFolder(rc, blocked.path(), &error));
+    qInfo("refused: %s", qPrintable(error));
+    const filmdyn::io::RunSummary marked =
+        filmdyn::io::ReadSummaryJson(blocked.filePath("summary.json").toStdString());
+    QCOMPARE(QString::fromStdString(marked.status), QString("failed"));
+    QVERIFY(!marked.complete);
+    QVERIFY2(QString::fromStdString(marked.message).contains("could not be copied"),
+             marked.message.c_str());
 
-    // Saving again keeps the stored folders; a removed run's folder goes.
+    // Saving again keeps the stored folders; a removed run's folder goes, and so do the files a
+    // save stopped midway left (a run folder without its samples file, listed nowhere); a run's
+    // complete files that no index lists (a lost index) stay.
     const QString a_folder = t->runs()[0]->storedFolder();
+    const QDir runs_folder(filmdyn::ui::RunsFolderFor(project));
+    QVERIFY(runs_folder.mkpath("run-97") && runs_folder.mkpath("run-98"));
+    for (const QString& file : {"run-97/results.csv", "run-98/results.csv", "run-98.samples.csv"}) {
+      QFile f(runs_folder.filePath(file));
+      QVERIFY(f.open(QIODevice::WriteOnly));
+    }
     again.removeRun(t->runs()[0]->id());
     QVERIFY2(again.saveProjectAs(project, &error), qPrintable(error));
     QVERIFY(!QFileInfo::exists(a_folder + ".samples.csv"));
+    QVERIFY(!QFileInfo::exists(runs_folder.filePath("run-97")));
+    QVERIFY(QFileInfo::exists(runs_folder.filePath("run-98/results.csv")));
+    QVERIFY(QFileInfo::exists(runs_folder.filePath("run-98.samples.csv")));
     QVERIFY(QFile::exists(c_folder + "/fields/bearing.h5"));
     again.close();
 

@@ -9,7 +9,11 @@
 #include <QSvgRenderer>
 #include <QTemporaryDir>
 #include <QtTest>
+#include <atomic>
+#include <memory>
+#include <stdexcept>
 
+#include "tests/ui/answer_message_box.hpp"
 #include "ui/case_editor/case_document.hpp"
 #include "ui/case_editor/case_parameters.hpp"
 #include "ui/main_window.hpp"
@@ -132,6 +136,71 @@ class TestExports : public QObject {
     QVERIFY2(window.exportRunFolder(run, folder, &error, true), qPrintable(error));
     QVERIFY(QFile::exists(folder + "/results.csv"));
     QVERIFY(QFile::exists(folder + "/my-notes.txt"));
+  }
+
+  // The run-folder and fields exports write on a worker thread: while a write is under way the
+  // window handles its events, a second export waits, and the end is reported (a failure in a
+  // message box). The writers here hold until released (at most 20 s: an export written on the
+  // GUI thread returns only after that, and the test fails at its first check).
+  void runFolderAndFieldsExportsLeaveTheWindowResponsive() {
+    MainWindow window;
+    auto entered = std::make_shared<std::atomic<int>>(0);
+    auto release = std::make_shared<std::atomic<bool>>(false);
+    const auto hold = [entered, release] {
+      ++*entered;
+      for (int i = 0; i < 2000 && !*release; ++i) QThread::msleep(10);
+    };
+    window.runController()->setBackend([hold](const filmdyn::ui::RunRequest&,
+                                              const std::atomic<bool>&,
+                                              filmdyn::ui::RunSink& sink) {
+      filmdyn::ui::RunWriters writers;
+      writers.folder = [hold](const std::string& dir) {
+        hold();
+        QFile file(QString::fromStdString(dir) + "/results.csv");
+        if (!file.open(QIODevice::WriteOnly)) throw std::runtime_error("cannot write");
+      };
+      writers.fields = [hold](const std::string&) {
+        hold();
+        throw std::runtime_error("no room left on the device");
+      };
+      sink.SetWriters(std::move(writers));
+    });
+    QSignalSpy finished(window.runController(), &filmdyn::ui::RunController::runFinished);
+    window.runAction()->trigger();
+    QVERIFY(finished.wait(30000));
+    const RunHandle run = finished.first().first().value<RunHandle>();
+    QTemporaryDir dir;
+    QSignalSpy exported(&window, &MainWindow::exportFinished);
+
+    window.startRunFolderExport(run, dir.path(), false);
+    QVERIFY(window.isExporting());
+    QTRY_COMPARE_WITH_TIMEOUT(entered->load(), 1, 10000);
+    QVERIFY(exported.isEmpty());
+    window.startFieldsExport(run, dir.path());  // waits for the one under way: not started
+    QTest::qWait(100);
+    QCOMPARE(entered->load(), 1);
+    *release = true;
+    QVERIFY(exported.wait(10000));
+    QVERIFY(!window.isExporting());
+    QCOMPARE(exported.first().at(0).toBool(), true);
+    QVERIFY2(exported.first().at(1).toString().contains(dir.path()),
+             qPrintable(exported.first().at(1).toString()));
+    QVERIFY(QFile::exists(dir.filePath("results.csv")));
+
+    // A failing export ends in a message box that says why.
+    *release = false;
+    exported.clear();
+    window.startFieldsExport(run, dir.path());
+    QVERIFY(window.isExporting());
+    QTRY_COMPARE_WITH_TIMEOUT(entered->load(), 2, 10000);
+    QString title, text;
+    filmdyn::test::AnswerNextMessageBox(QMessageBox::Ok, &title, &text);
+    *release = true;
+    QVERIFY(exported.wait(10000));
+    QCOMPARE(exported.first().at(0).toBool(), false);
+    QTRY_VERIFY_WITH_TIMEOUT(!title.isEmpty(), 10000);
+    QCOMPARE(title, QString("Export failed"));
+    QVERIFY2(text.contains("no room left"), qPrintable(text));
   }
 };
 

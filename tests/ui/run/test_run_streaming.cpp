@@ -299,8 +299,23 @@ class TestRunStreaming : public QObject {
     QCOMPARE(run->status(), RunStatus::kCancelled);
     QVERIFY(!window.runController()->isRunning());
     QVERIFY(window.runAction()->isEnabled());
-    // Partial results stay visible.
+    // Partial results stay visible, and every legend says whose they are: on screen and in the
+    // plots' own legends (what an exported plot shows).
     QVERIFY(window.plotPanel()->pointCount(run->id()) > 0);
+    const QString marked = run->label() + " (cancelled)";
+    QVERIFY2(window.plotPanel()->runLegendText().contains(marked.toHtmlEscaped()),
+             qPrintable(window.plotPanel()->runLegendText()));
+    window.plotPanel()->setRunsInChartLegends(true);
+    bool in_chart_legend = false;
+    for (int i = 0; i < window.plotPanel()->chartCount(); ++i)
+      for (const auto& [text, pen] : window.plotPanel()->legendEntries(i))
+        in_chart_legend = in_chart_legend || text == marked;
+    window.plotPanel()->setRunsInChartLegends(false);
+    QVERIFY(in_chart_legend);
+    if (const QString dir = qEnvironmentVariable("FILMDYN_SCREENSHOT_DIR"); !dir.isEmpty()) {
+      QTest::qWait(300);
+      window.grab().save(dir + "/cancelled-run-plots.png");
+    }
     QCOMPARE(window.runTable()->item(0, filmdyn::ui::RunTable::kStatus)->text(),
              QString("cancelled"));
     // An ideal run has no film, secondary motion or friction: "–" (no such figure), not 0.
@@ -503,6 +518,9 @@ class TestRunStreaming : public QObject {
     QCOMPARE(filmdyn::ui::CaseToJsonText(window.document()->engineCase()), before);
     QCOMPARE(window.runTable()->rowCount(), 2);
     QVERIFY(window.plotPanel()->pointCount(good->id()) > 0);
+    const QString legend = window.plotPanel()->runLegendText();
+    QVERIFY2(legend.contains((second->label() + " (failed)").toHtmlEscaped()), qPrintable(legend));
+    QVERIFY2(!legend.contains((good->label() + " (").toHtmlEscaped()), qPrintable(legend));
     QVERIFY(window.runAction()->isEnabled());
   }
 };
