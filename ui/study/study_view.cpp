@@ -355,8 +355,8 @@ bool StudyView::openFolder(const QString& dir, QString* error) {
     if (error) *error = QString::fromUtf8(e.what());
     return false;
   }
-  watcher_->waitForFinished();  // a read of the previous folder under way: its rows are dropped
   refresh_timer_->stop();
+  ++opened_folder_;  // a read of the previous folder under way: its rows are dropped (onLoaded)
   folder_ = dir;
   study_ = std::move(study);
   rows_.clear();
@@ -395,6 +395,7 @@ void StudyView::reload() {
   counts_->setText(rows_.empty() ? tr("reading the points…") : counts_->text());
   const fs::path dir(folder_.toStdString());
   const batch::Study study = study_;
+  read_folder_ = opened_folder_;
   watcher_->setFuture(QtConcurrent::run([dir, study] {
     std::pair<std::vector<batch::StudyRow>, QString> result;
     try {
@@ -407,6 +408,10 @@ void StudyView::reload() {
 }
 
 void StudyView::onLoaded() {
+  if (read_folder_ != opened_folder_) {  // the folder open before: read the one open now
+    reload();
+    return;
+  }
   auto [rows, error] = watcher_->result();
   if (!error.isEmpty()) {
     counts_->setText(tr("cannot read the points"));

@@ -31,7 +31,8 @@ class StudyView : public QWidget {
 
   /// Opens the study folder `dir`: its study.json is read at once (false with *error naming the
   /// file when it is not a study folder); the points' folders are read in the background
-  /// (loaded() when done).
+  /// (loaded() when done). A read of the folder open before, still under way, is not waited
+  /// for: its rows are dropped when it ends, and the new folder is read then.
   bool openFolder(const QString& dir, QString* error = nullptr);
   /// Reads the points' folders again (nothing when no study is open or a read is under way).
   void reload();
@@ -84,6 +85,9 @@ class StudyView : public QWidget {
   /// Indices of io::ComparisonFigures that some point has (the figure box's entries).
   std::vector<int> figures_;
   QFutureWatcher<std::pair<std::vector<batch::StudyRow>, QString>>* watcher_ = nullptr;
+  /// Counts the folders opened; the read under way is of folder number read_folder_.
+  int opened_folder_ = 0;
+  int read_folder_ = 0;
 
   QLabel* title_ = nullptr;
   QLabel* counts_ = nullptr;

@@ -131,6 +131,26 @@ class TestStudyView : public QObject {
     out6.close();
   }
 
+  // Opening another study while the points of the one before are read does not wait for that
+  // read (it held the window): its rows are dropped, and the folder open now is what shows.
+  void openingAnotherStudyDropsTheReadUnderWay() {
+    const QString other = dir_.filePath("study-b");
+    QCOMPARE(QProcess::execute("cp", {"-a", study_, other}), 0);
+    QVERIFY(QDir(QDir(other).filePath("point-0005")).removeRecursively());
+    StudyView view;
+    QSignalSpy loaded(&view, &StudyView::loaded);
+    QString error;
+    QVERIFY2(view.openFolder(study_, &error), qPrintable(error));
+    QVERIFY(view.isLoading());
+    QVERIFY2(view.openFolder(other, &error), qPrintable(error));
+    QVERIFY(loaded.wait(30000));
+    QTRY_VERIFY_WITH_TIMEOUT(!view.isLoading(), 30000);
+    QCOMPARE(loaded.count(), 1);
+    QVERIFY(view.row(5) != nullptr && view.row(4) != nullptr);
+    QCOMPARE(int(view.row(5)->state), int(filmdyn::batch::PointState::kPending));
+    QCOMPARE(int(view.row(4)->state), int(filmdyn::batch::PointState::kDone));
+  }
+
   void aFolderWithoutAStudyIsRefusedNamingTheFile() {
     StudyView view;
     QString error;
