@@ -115,7 +115,19 @@ Command MakeRunCommand() {
     // The guard spans the writing too: a stop signal (Ctrl-C, a scheduler's time limit) that
     // arrives once the computing is over lets the files be finished, not lost half-written.
     const InterruptGuard interrupt;
-    const engine::RunResult result = engine::RunJob(config, monitor, interrupt.flag());
+    const engine::RunResult result = [&] {
+      try {
+        return engine::RunJob(config, monitor, interrupt.flag());
+      } catch (const std::exception& e) {
+        // An input only the run's set-up checks (a film joint's oil or compliance): the folder
+        // says the run failed and why, not "running" (a run killed).
+        try {
+          io::MarkRunFailed(out, c.name, config, e.what());
+        } catch (const std::exception&) {  // the run's own error is the one to report
+        }
+        throw;
+      }
+    }();
     const bool stopped_while_computing = interrupt.flag()->load();
     if (!quiet) streams.err << "\n";
     io::WriteRunFolder(out, c.name, config, result, [&](const std::vector<io::OutputRow>& rows) {
@@ -163,6 +175,9 @@ Command MakeRunCommand() {
       } else if (result.reported_cycle != result.cycles) {
         streams.err << "filmdyn run: the results are cycle " << result.reported_cycle
                     << ", the last whole one\n";
+      } else if (result.status == engine::RunStatus::kFailed && !result.samples.empty()) {
+        streams.err << "filmdyn run: the results are cycle " << result.reported_cycle
+                    << " up to where the run failed\n";
       }
       return 1;
     }

@@ -91,7 +91,15 @@ void SweepRunner::Run(int index, SweepOutcome* outcome) {
       job.overwrite ? io::OutputFolder::Reuse::kReplace : io::OutputFolder::Reuse::kRefuse,
       "--out");
   io::MarkRunStarted(job.output_folder, job.case_name, job.config);
-  outcome->result = engine::RunJob(config, monitor, cancel_);
+  try {
+    outcome->result = engine::RunJob(config, monitor, cancel_);
+  } catch (const std::exception& e) {
+    try {  // the folder says why, not "running" (a run killed)
+      io::MarkRunFailed(job.output_folder, job.case_name, job.config, e.what());
+    } catch (const std::exception&) {  // the run's own error is the one to report
+    }
+    throw;
+  }
   outcome->rows = io::WriteRunFolder(job.output_folder, job.case_name, job.config, outcome->result,
                                      [&](const std::vector<io::OutputRow>&) {
                                        fields.WriteReported(job.output_folder / "fields",

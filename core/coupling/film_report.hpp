@@ -145,8 +145,7 @@ struct SkirtFilmSample {
   /// Asperity (boundary-friction) part of friction_force [N]; the hydrodynamic part is
   /// friction_force − contact_friction_force.
   double contact_friction_force = 0.0;
-  /// Asperity part of fpl: fpl · contact_friction_force / friction_force (0 without friction),
-  /// so that the two parts of the loss add up to fpl exactly [W].
+  /// Asperity (boundary-friction) part of fpl [W]: AsperityFrictionPower.
   double contact_fpl = 0.0;
   /// Where the minimum film is: angle from the thrust axis [rad] and distance from the skirt
   /// top [m] (the solver's skirt coordinates).
@@ -197,8 +196,7 @@ struct BearingFilmSample {
   /// + counter-clockwise [N], and its asperity (boundary-friction) part [N].
   double friction_force = 0.0;
   double contact_friction_force = 0.0;
-  /// Asperity part of fpl: fpl · contact_friction_force / friction_force (0 without friction),
-  /// so that the two parts of the loss add up to fpl exactly [W].
+  /// Asperity (boundary-friction) part of fpl [W]: AsperityFrictionPower.
   double contact_fpl = 0.0;
   Eigen::Vector2d force_on_rod = Eigen::Vector2d::Zero();        ///< film (crank pin) → rod [N]
   double friction_torque_journal = 0.0;                          ///< on the crank [N·m]
@@ -215,6 +213,17 @@ struct BearingFilmSample {
 
 /// Largest excursion of a reported film fraction outside [0, 1] a run accepts.
 inline constexpr double kFractionTolerance = 1e-6;
+
+/// The power the asperities' friction dissipates [W], |F_c · u|, from a joint's friction power
+/// loss fpl = |F · u| (F its friction force, u the sliding speed), F and its asperity part F_c
+/// [N]. Boundary friction opposes the sliding, so this is never negative; the rest of fpl,
+/// fpl − |F_c · u|, is the film's, which is negative where the film's pressure-driven shear
+/// pushes the surface along (then the asperity part exceeds fpl). 0 without friction.
+inline double AsperityFrictionPower(double fpl, double friction_force,
+                                    double contact_friction_force) {
+  return friction_force != 0.0 ? std::abs(contact_friction_force) * (fpl / std::abs(friction_force))
+                               : 0.0;
+}
 
 /// A film solve that did not converge is never used as a force: throws
 /// multibody::EvaluationFailure naming the joint, the status and the iterations (or, for elastic

@@ -255,8 +255,7 @@ void LubricatedBigEndElement::ReportFilm(SkirtFilmSample*, BearingFilmSample* be
   b.max_deformation = result_.max_deformation;
   b.friction_force = result_.friction_force_journal;
   b.contact_friction_force = result_.contact_friction_force_journal;
-  b.contact_fpl =
-      b.friction_force != 0.0 ? b.fpl * (b.contact_friction_force / b.friction_force) : 0.0;
+  b.contact_fpl = AsperityFrictionPower(b.fpl, b.friction_force, b.contact_friction_force);
   b.force_on_rod = -loads_.head<2>();
   b.friction_torque_journal = loads_[2];
   b.friction_torque_bearing = loads_[3];

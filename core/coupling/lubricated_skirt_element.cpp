@@ -197,8 +197,7 @@ void LubricatedSkirtElement::ReportFilm(SkirtFilmSample* skirt, BearingFilmSampl
   f.max_contact_pressure = result_.max_contact_pressure;
   f.max_deformation = result_.max_deformation;
   f.contact_friction_force = result_.contact_friction_force;
-  f.contact_fpl =
-      f.friction_force != 0.0 ? f.fpl * (f.contact_friction_force / f.friction_force) : 0.0;
+  f.contact_fpl = AsperityFrictionPower(f.fpl, f.friction_force, f.contact_friction_force);
   f.moft_alpha = result_.moft_alpha;
   f.moft_y = result_.moft_y;
   f.min_gap = kin_.min_gap;

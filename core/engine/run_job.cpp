@@ -573,6 +573,7 @@ RunResult RunSingle(const RunConfig& config, const RunMonitor& monitor,
   } catch (const std::exception& error) {
     result.status = RunStatus::kFailed;
     result.message = std::string("integration failed: ") + error.what() + where_now();
+    result.cycles = std::max(cycle, 0);  // the cycle it failed in, as a film's failure
     if (!current.empty()) {  // name the film state where it stopped
       const CrankTrainSample& last = current.samples.back();
       result.message += fmt::format("; last output: eps = {:.4f}, skirt gap {:.3g} um",
@@ -720,8 +721,17 @@ RunResult RunJob(const RunConfig& config, const RunMonitor& monitor,
   RunResult result;
   double wall = 0.0;
   bool reported = false;  // the last run reported a cycle (completed or not converged)
+  // Why the iteration stopped before its balance (empty: converged, or out of runs).
+  std::string stopped;
+  // The time limit holds for the whole command, every run of the balance included.
+  const auto start = std::chrono::steady_clock::now();
+  const auto seconds_used = [&start] {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  };
   while (true) {
     for (BalancedJoint& j : joints) j.oil->temperature = j.t;
+    if (config.wall_time_limit > 0.0)
+      run.wall_time_limit = std::max(config.wall_time_limit - seconds_used(), 1e-3);
     if (config.field_callback) {  // each pass's frames marked with it (its cycles restart at 1)
       run.field_callback = [&config, pass = hb.runs + 1](const FieldFrame& frame) {
         FieldFrame marked = frame;
@@ -733,7 +743,11 @@ RunResult RunJob(const RunConfig& config, const RunMonitor& monitor,
     wall += result.wall_time;
     ++hb.runs;
     reported = result.status == RunStatus::kCompleted || result.status == RunStatus::kNotConverged;
-    if (!reported) break;
+    if (!reported) {
+      if (hb.runs > 1)  // the results are this run's part, not an earlier whole run's
+        result.message = fmt::format("heat-balance run {}: {}", hb.runs, result.message);
+      break;
+    }
     hb.residual = 0.0;
     for (BalancedJoint& j : joints) {
       double power = 0.0, outflow = 0.0;
@@ -759,6 +773,11 @@ RunResult RunJob(const RunConfig& config, const RunMonitor& monitor,
       break;
     }
     if (hb.runs >= kMaxRuns) break;
+    if (config.wall_time_limit > 0.0 && seconds_used() >= config.wall_time_limit) {
+      stopped = fmt::format("wall-time limit reached after heat-balance run {}", hb.runs);
+      result.status = RunStatus::kTimeLimit;
+      break;
+    }
     for (BalancedJoint& j : joints) {
       if (j.f >= 0.0) j.lo = std::max(j.lo, j.t);
       if (j.f < 0.0) j.hi = std::min(j.hi, j.t);
@@ -772,17 +791,44 @@ RunResult RunJob(const RunConfig& config, const RunMonitor& monitor,
       j.have_prev = true;
       j.t = next;
     }
+    // A temperature the balance asks for that the joint's oil has no viscosity at (past a
+    // catalogue oil's range, or where its law has no finite value) ends the iteration here,
+    // with this run's results: another run cannot start there.
+    for (const BalancedJoint& j : joints) {
+      JointOil next_oil = *j.oil;
+      next_oil.temperature = j.t;
+      try {
+        JointOilAt(c, next_oil, j.skirt ? "skirt" : "big_end");
+      } catch (const InputError& e) {
+        stopped = fmt::format(
+            "heat balance stopped: the {} film's balance asks for {:.1f} K ({:.1f} °C; this run "
+            "at {:.1f} K), where its oil has no viscosity ({}): the friction power is too large "
+            "for the oil flow through the film (lubricant.heat_capacity, lubricant.density, {}.oil"
+            ".heat_share)",
+            j.skirt ? "skirt" : "big-end", j.t, j.t - 273.15, j.oil->temperature, e.what(),
+            j.skirt ? "skirt" : "big_end");
+        break;
+      }
+    }
+    if (!stopped.empty()) break;
   }
+  // The temperatures the reported run used (a run stopped before its balance: not the next
+  // ones the iteration would have tried).
   for (const BalancedJoint& j : joints)
-    (j.skirt ? result.skirt_film_temperature : result.big_end_film_temperature) = j.t;
+    (j.skirt ? result.skirt_film_temperature : result.big_end_film_temperature) =
+        hb.converged || !reported ? j.t : j.oil->temperature;
   result.heat_balance = hb;
   result.wall_time = wall;
   if (!hb.converged && reported) {
-    result.message += (result.message.empty() ? "" : "; ") +
-                      fmt::format(
-                          "heat balance not converged: film temperature {:.2f} K from its "
-                          "balance after {} runs (tolerance {:g} K)",
-                          hb.residual, hb.runs, kTolerance);
+    // Its results are one run's at temperatures that are not their balance: not converged
+    // (a run that found no periodic state stays so; a time limit stays a time limit).
+    if (result.status == RunStatus::kCompleted) result.status = RunStatus::kNotConverged;
+    result.message +=
+        (result.message.empty() ? "" : "; ") + (stopped.empty() ? std::string() : stopped + "; ") +
+        fmt::format(
+            "heat balance not converged: film temperature {:.2f} K from its balance after {} "
+            "runs (tolerance {:g} K)",
+            hb.residual, hb.runs, kTolerance);
   }
   return result;
 }

@@ -381,15 +381,31 @@ std::vector<OutputRow> WriteRunFiles(const std::filesystem::path& directory,
 }
 }  // namespace
 
+namespace {
+// The summary of a run with no result yet: `status`, not complete, `message`.
+void WriteResultlessSummary(const std::filesystem::path& directory, const std::string& case_name,
+                            const engine::RunConfig& config, const std::string& status,
+                            const std::string& message) {
+  engine::RunResult none;
+  RunSummary summary = SummarizeRun(case_name, config, none, {});
+  summary.status = status;
+  summary.complete = false;
+  summary.message = message;
+  WriteSummaryJson(directory / "summary.json", summary);
+}
+}  // namespace
+
 void MarkRunStarted(const std::filesystem::path& directory, const std::string& case_name,
                     const engine::RunConfig& config) {
   WriteRunCase(directory, config);
-  engine::RunResult running;
-  RunSummary summary = SummarizeRun(case_name, config, running, {});
-  summary.status = kRunningStatus;
-  summary.complete = false;
-  summary.message = "the run is in progress, or was killed before it could write its results";
-  WriteSummaryJson(directory / "summary.json", summary);
+  WriteResultlessSummary(directory, case_name, config, kRunningStatus,
+                         "the run is in progress, or was killed before it could write its results");
+}
+
+void MarkRunFailed(const std::filesystem::path& directory, const std::string& case_name,
+                   const engine::RunConfig& config, const std::string& message) {
+  WriteResultlessSummary(directory, case_name, config,
+                         engine::StatusName(engine::RunStatus::kFailed), message);
 }
 
 }  // namespace filmdyn::io

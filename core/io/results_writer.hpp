@@ -107,6 +107,12 @@ std::vector<OutputRow> WriteRunFolder(const std::filesystem::path& directory,
 void MarkRunStarted(const std::filesystem::path& directory, const std::string& case_name,
                     const engine::RunConfig& config);
 
+/// Replaces MarkRunStarted's summary by one of status "failed" with `message` (why the run
+/// stopped before any result: an input only the run's set-up could check); the "running" left
+/// would read as a run killed. Writes nothing else.
+void MarkRunFailed(const std::filesystem::path& directory, const std::string& case_name,
+                   const engine::RunConfig& config, const std::string& message);
+
 /// The default output folder `results/<case>-<model>-<rpm>`.
 std::filesystem::path DefaultOutputFolder(const std::string& case_name, engine::Model model,
                                           double rpm);

@@ -259,6 +259,13 @@ OilSpec::AtTemperature OilSpec::At(double temperature, const std::string& prefix
           !(temperature >= kGradeFitMinTemperature && temperature <= kGradeFitMaxTemperature);
     }
     out.viscosity = law.At(temperature, temperature_field);
+    if (!std::isfinite(out.viscosity)) {
+      throw InputError(temperature_field, Kelvin(temperature),
+                       "a temperature where the oil's Vogel law (" + prefix + "vogel_a, " + prefix +
+                           "vogel_b, " + prefix + "vogel_c) gives a finite viscosity: " +
+                           "exp(b/(T − c)) overflows at b/(T − c) = " +
+                           FormatValue(law.b / (temperature - law.c)));
+    }
     if (shear_thinning != ShearThinning::kNone)
       mu1_hths = law.At(CrossLaw::kHthsTemperature, prefix + "vogel_c");
   }

@@ -131,6 +131,18 @@ class TestCli : public QObject {
     result = Run({"run", "/nonexistent/case.json"});
     QCOMPARE(result.exit_code, 2);
     QVERIFY(result.err.contains("/nonexistent/case.json"));
+    // A Vogel law with no finite viscosity at the film's temperature (its exponent overflows):
+    // refused before any folder is written, naming the temperature and the law's fields (it
+    // reached the film solver as "skirt.viscosity = inf", a name no case has).
+    QTemporaryDir dir;
+    result = Run({"run", "--no-fields", "--out", dir.filePath("vogel"), "--set",
+                  "lubricant.viscosity_model=vogel", "--set", "lubricant.vogel_a=1e-4", "--set",
+                  "lubricant.vogel_b=100000", "--set", "lubricant.vogel_c=373"});
+    QCOMPARE(result.exit_code, 2);
+    QVERIFY2(result.err.contains("skirt.oil.temperature") &&
+                 result.err.contains("lubricant.vogel_b") && result.err.contains("finite"),
+             qPrintable(result.err));
+    QVERIFY(!QFileInfo::exists(dir.filePath("vogel")));
   }
 
   void sweepRunsInParallelAndCompares() {
@@ -237,6 +249,25 @@ class TestCli : public QObject {
     QCOMPARE(QFileInfo(named).canonicalFilePath(),
              QFileInfo(dir.filePath("engine/shell_compliance.mtx")).canonicalFilePath());
     QVERIFY2(QFileInfo(named).isAbsolute(), qPrintable(named));
+
+    // An input only the film's set-up can check (here the compliance's surface, shorter than the
+    // skirt's film): exit 2 naming it, and the folder says the run failed and why, not
+    // "running" (which reads as a run killed).
+    const QString refused = dir.filePath("refused");
+    r = Run({"run", "--model", "only-skirt", "--no-fields", "--out", refused, "--quiet", "--set",
+             "skirt.compliance=imported", "--set",
+             "skirt.compliance_file=" + QString(FILMDYN_SOURCE_DIR) +
+                 "/examples/calculix-skirt-shell/skirt_compliance.mtx",
+             "--set", "skirt.length=0.03", "--set",
+             "skirt.profile_y=[0,0.0075,0.015,0.0225,0.03]"});
+    QCOMPARE(r.exit_code, 2);
+    QVERIFY2(r.err.contains("FE surface"), qPrintable(r.err));
+    QFile summary(refused + "/summary.json");
+    QVERIFY(summary.open(QIODevice::ReadOnly));
+    const QJsonObject s = QJsonDocument::fromJson(summary.readAll()).object();
+    QCOMPARE(s["status"].toString(), QString("failed"));
+    QCOMPARE(s["complete"].toBool(), false);
+    QVERIFY2(s["message"].toString().contains("FE surface"), qPrintable(s["message"].toString()));
   }
 
   void sweepRejectsBadJobs() {

@@ -9,6 +9,7 @@
 
 #include "core/batch/sweep.hpp"
 #include "core/io/case_file.hpp"
+#include "core/io/run_summary.hpp"
 
 using namespace filmdyn;
 
@@ -94,6 +95,28 @@ class TestSweep : public QObject {
       QVERIFY(std::filesystem::exists(jobs[index].output_folder / "results.csv"));
     }
     QCOMPARE(count, 4);
+  }
+
+  // A job refused by the run's own set-up (here a lubricated skirt in a build without film
+  // models: an input error the case check cannot see) ends with that error, and its folder's
+  // summary says "failed" with it, not "running" (which reads as a run killed).
+  void aJobRefusedAtItsSetUpLeavesAFailedSummary() {
+    QTemporaryDir dir;
+    auto jobs = MakeJobs(dir.path().toStdString());
+    jobs.resize(1);
+    const io::LoadedCase loaded = io::LoadCase("");
+    jobs[0].config = engine::MakeRunConfig(loaded.value, engine::Model::kOnlySkirt, 1000.0,
+                                           io::PressureCurveForSpeed(loaded, 1000.0));
+    jobs[0].config.factories = {};
+    batch::SweepRunner runner(jobs, 1, nullptr);
+    while (runner.WaitNext(std::chrono::milliseconds(100)) != -1) {
+    }
+    const std::string error = runner.outcome(0).error;
+    QVERIFY2(error.find("skirt.model") != std::string::npos, error.c_str());
+    const io::RunSummary summary = io::ReadSummaryJson(jobs[0].output_folder / "summary.json");
+    QCOMPARE(summary.status, std::string("failed"));
+    QVERIFY(!summary.complete);
+    QCOMPARE(summary.message, error);
   }
 };
 

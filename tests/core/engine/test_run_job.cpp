@@ -587,6 +587,43 @@ class TestRunJob : public QObject {
     QVERIFY(result.heat_balance->runs >= 2 && result.heat_balance->runs <= 10);
   }
 
+  // A balance that asks for a temperature the oil has no viscosity at (here a catalogue oil,
+  // 0–200 °C, and an oil that carries almost no heat: c_p = 1 J/(kg·K)) ends the iteration with
+  // the run it has, not computed: not converged, its results kept and its film temperature the
+  // one it ran at, the message naming the joint and the temperature asked for. (It used to throw
+  // an input error naming a temperature nobody gave, the computed run dropped.) A time limit
+  // holds for all the runs of a balance together (it held for each).
+  void aHeatBalanceOutsideTheOilsRangeEndsWithItsLastRun() {
+    const engine::RunResult result = HeatBalancedBigEnd([](engine::EngineCase& c) {
+      c.lubricant.model = lubrication::ViscosityModel::kGrade;
+      c.lubricant.heat_capacity = 1.0;
+    });
+    QCOMPARE(int(result.status), int(engine::RunStatus::kNotConverged));
+    qInfo("%s", result.message.c_str());
+    QVERIFY(result.message.find("heat balance stopped: the big-end film") != std::string::npos);
+    QVERIFY(result.message.find("big_end.oil.heat_share") != std::string::npos);
+    QVERIFY(!result.samples.empty() && result.cycles >= 1);
+    QVERIFY(result.heat_balance && !result.heat_balance->converged);
+    QCOMPARE(result.heat_balance->runs, 1);
+    QCOMPARE(*result.big_end_film_temperature, 373.15);
+
+    // The time limit of all the runs together: the first run takes longer than this limit
+    // allows the whole, so no second run starts (each run used to have the limit to itself).
+    engine::RunConfig config = CoarseBigEndWithVogelOil();
+    engine::EngineCase& c = config.engine_case;
+    c.big_end.oil.temperature_mode = engine::FilmTemperature::kHeatBalance;
+    c.big_end.oil.temperature = 373.15;
+    const engine::RunResult untimed = engine::RunJob(config);
+    QVERIFY(untimed.heat_balance && untimed.heat_balance->runs >= 2);
+    config.wall_time_limit = 0.6 * untimed.wall_time;  // under the runs' time together
+    const engine::RunResult timed = engine::RunJob(config);
+    qInfo("untimed: %d runs in %.2f s; limit %.2f s: %d runs in %.2f s, %s",
+          untimed.heat_balance->runs, untimed.wall_time, config.wall_time_limit,
+          timed.heat_balance->runs, timed.wall_time, timed.message.c_str());
+    QCOMPARE(int(timed.status), int(engine::RunStatus::kTimeLimit));
+    QVERIFY(timed.message.find("heat-balance run") != std::string::npos);
+  }
+
   // The film fields of a heat-balanced run are the reported pass's only: each pass runs the
   // whole run again, its cycles counted from 1 again (FieldFrame::pass), and with one cycle per
   // pass the frames of every pass used to be appended into one series, whose crank angles then
@@ -742,6 +779,26 @@ class TestRunJob : public QObject {
             r.message.find("°CA") != std::string::npos,
         r.message.c_str());
     QVERIFY(!r.samples.empty());
+  }
+
+  // A run that fails inside a cycle (here an error thrown at 100 °CA of cycle 2, as the
+  // integrator's own failures are) counts that cycle: its results are that cycle up to the
+  // failure, and cycles = reported_cycle says so (cycles stayed at the last whole cycle, so the
+  // command called the part "the last whole one").
+  void aRunFailingInsideACycleCountsThatCycle() {
+    const engine::RunConfig config = CoarseBigEndWithVogelOil();
+    const engine::RunMonitor monitor = [](const engine::RunProgress& p) {
+      if (!p.run_in && p.cycle == 2 && p.crank_angle_deg >= 100.0)
+        throw std::runtime_error("a test's failure");
+      return true;
+    };
+    const engine::RunResult r = engine::RunJob(config, monitor);
+    QCOMPARE(r.status, engine::RunStatus::kFailed);
+    QVERIFY2(r.message.find("a test's failure") != std::string::npos, r.message.c_str());
+    QCOMPARE(r.cycles, 2);
+    QCOMPARE(r.reported_cycle, 2);
+    QVERIFY(!r.samples.empty());
+    QVERIFY(engine::CycleCrankAngleDeg(r.samples.back().crank_angle) < 101.0);
   }
 
   // Shear thinning in an engine run: the Vogel oil calibrated to an HTHS viscosity of 3.2 mPa s

@@ -22,6 +22,7 @@
 #include <numbers>
 #include <optional>
 
+#include "core/coupling/film_report.hpp"
 #include "core/engine/run_job.hpp"
 #include "core/io/case_file.hpp"
 #include "core/io/results_writer.hpp"
@@ -179,11 +180,9 @@ class TestRunWarnings : public QObject {
       // Skirt: friction power split at the sliding speed the film was solved at.
       const double u = s.skirt.speed;
       const double F = *r.skirt_friction_force, Fc = *r.skirt_contact_friction_force;
-      const double sign = F * u < 0.0 ? -1.0 : 1.0;
-      const double contact = sign * Fc * u, hydrodynamic = sign * (F - Fc) * u;
-      QVERIFY(Near(*r.skirt_contact_fpl, contact, 1e-9, 1e-12));
-      QVERIFY(Near(contact + hydrodynamic, *r.skirt_fpl, 1e-9, 1e-12));
-      QVERIFY(*r.skirt_contact_fpl >= -1e-12);  // asperity friction only ever dissipates
+      QVERIFY(Fc * u <= 0.0);  // the asperities' friction opposes the sliding
+      QVERIFY(Near(*r.skirt_fpl, std::abs(F * u), 1e-9, 1e-12));
+      QVERIFY(Near(*r.skirt_contact_fpl, -Fc * u, 1e-9, 1e-12));  // what they dissipate
       // Big end: the asperity friction is μ_f ∫ p_c dA of the field, against the sliding.
       const double Fb = *r.bearing_friction_force, Fbc = *r.bearing_contact_friction_force;
       QVERIFY2(
@@ -194,10 +193,8 @@ class TestRunWarnings : public QObject {
                          .arg(c.big_end.boundary_friction * p.bearing_contact_integral)));
       const double ub = c.big_end.journal_radius * (omega - s.rod_angular_velocity);
       QVERIFY(Fbc * ub <= 0.0);
-      const double sign_b = Fb * ub < 0.0 ? -1.0 : 1.0;
-      const double contact_b = sign_b * Fbc * ub, hydrodynamic_b = sign_b * (Fb - Fbc) * ub;
-      QVERIFY(Near(*r.bearing_contact_fpl, contact_b, 1e-6, 1e-9));
-      QVERIFY(Near(contact_b + hydrodynamic_b, *r.bearing_fpl, 1e-6, 1e-9));
+      QVERIFY(Near(*r.bearing_fpl, std::abs(Fb * ub), 1e-6, 1e-9));
+      QVERIFY(Near(*r.bearing_contact_fpl, -Fbc * ub, 1e-6, 1e-9));
       largest_contact_friction = std::max(largest_contact_friction, std::abs(Fbc));
     }
     QVERIFY(largest_contact_friction > 0.0);  // the split is exercised: the asperities touch
@@ -277,6 +274,17 @@ class TestRunWarnings : public QObject {
   // A value given to an input the run does not read (a constant supply pressure beside a
   // supply-pressure curve, which sets the pressure) is named, with why; the default case and a
   // case that reads what it sets have no such warning; an ideal joint's data do not count.
+  // The asperities' friction power is what they dissipate, |F_c u|, also where the film's
+  // pressure-driven shear pushes the surface along so that the total friction force does not
+  // oppose the sliding (the share fpl · F_c / F read negative there: −15 W below).
+  void theAsperityFrictionPowerIsNeverNegative() {
+    const double u = 3.0, F = 2.0, Fc = -5.0;  // total along u, the asperities' part against
+    const double fpl = std::abs(F * u);
+    QCOMPARE(filmdyn::coupling::AsperityFrictionPower(fpl, F, Fc), 15.0);
+    QCOMPARE(filmdyn::coupling::AsperityFrictionPower(fpl, -1.0, -4.0), 4.0 * fpl);  // > fpl
+    QCOMPARE(filmdyn::coupling::AsperityFrictionPower(0.0, 0.0, 0.0), 0.0);
+  }
+
   void inputsSetButNotReadAreNamed() {
     const engine::RunResult none;
     auto unused = [&](const engine::EngineCase& c, engine::Model model) {
