@@ -205,7 +205,8 @@ std::string AtAngle(int cycle, double crank_deg, double cycle_start) {
 // wall time per cycle of work so far (the film joints' set-up excluded); from
 // kRemainingSmoothedFrom of the work on it is smoothed: it counts down with the wall clock and
 // moves toward the extrapolation with a time constant of max(1 s, 20 % of the elapsed time), by
-// at most kRemainingMaxStep of the estimated whole run time per update.
+// at most kRemainingMaxStep of the estimated whole run time per update (up: plus the wall time
+// since the last update).
 class ProgressClock {
  public:
   ProgressClock(int typical, int max_cycles, double run_in_cycles, double setup_time)
@@ -235,7 +236,10 @@ class ProgressClock {
       const double countdown = std::max(0.0, remaining_ - dt);
       const double weight = 1.0 - std::exp(-dt / std::max(1.0, 0.2 * elapsed));
       const double limit = kRemainingMaxStep * (elapsed + countdown);
-      remaining_ = countdown + std::clamp(weight * (raw - countdown), -limit, limit);
+      // Up by the wall time in between as well: while the extrapolation wants more (a stretch
+      // of the cycle that is slow to integrate), the estimate holds instead of counting down to
+      // a few seconds and staying there.
+      remaining_ = countdown + std::clamp(weight * (raw - countdown), -limit, limit + dt);
     }
     last_elapsed_ = elapsed;
     progress->fraction = fraction_;

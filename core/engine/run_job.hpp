@@ -125,8 +125,9 @@ struct RunProgress {
   double elapsed = 0.0;  ///< wall time so far [s]
   /// Estimated wall time left [s]. From a fraction of kRemainingSmoothedFrom on it is smoothed:
   /// between two updates it differs from the previous estimate minus the wall time in between by
-  /// at most kRemainingMaxStep × (elapsed + that count-down), so it counts down steadily instead
-  /// of jumping when a cycle starts.
+  /// at most kRemainingMaxStep × (elapsed + that count-down) down, and that plus the wall time in
+  /// between up, so it counts down steadily instead of jumping when a cycle starts, and holds
+  /// (not counting down to nothing) through a stretch that is slow to integrate.
   double remaining = 0.0;
   /// The change of the last compared cycle (RunResult::cycle_changes' last); < 0 until the
   /// second cycle has ended.
