@@ -577,6 +577,10 @@ RunResult RunSingle(const RunConfig& config, const RunMonitor& monitor,
   } catch (const std::exception& error) {
     result.status = RunStatus::kFailed;
     result.message = std::string("integration failed: ") + error.what() + where_now();
+    if (dynamic_cast<const multibody::TolerancesTooTight*>(&error) != nullptr)
+      result.message +=
+          "; the tolerances ask for more accuracy than double precision gives: loosen "
+          "solver.relative_tolerance or solver.position_tolerance";
     result.cycles = std::max(cycle, 0);  // the cycle it failed in, as a film's failure
     if (!current.empty()) {  // name the film state where it stopped
       const CrankTrainSample& last = current.samples.back();
@@ -641,7 +645,8 @@ std::string FilmTrouble(const CrankTrainSample& s) {
       return fmt::format(
           "{} film beyond the pressure-viscosity limit at {} nodes: with this oil's pressure "
           "law no finite pressure carries the load (the isoviscous pressure exceeds the law's "
-          "limit, 1/alpha for Barus)",
+          "limit, 1/alpha for Barus): a smaller coefficient (lubricant.barus_alpha or "
+          "lubricant.roelands_z, or the joint's own oil's) or pressure_viscosity \"none\"",
           joint, capped);
     }
   }

@@ -117,10 +117,12 @@ struct Integrator::Impl {
   }
 
   void Check(int flag, const char* what) const {
-    if (flag < 0)
-      throw std::runtime_error(
-          std::string("CVODE ") + what + " failed (" + std::to_string(flag) + ") " + cvode_message +
-          (last_failure.empty() ? "" : "; the last failed evaluation: " + last_failure));
+    if (flag >= 0) return;
+    const std::string message =
+        std::string("CVODE ") + what + " failed (" + std::to_string(flag) + ") " + cvode_message +
+        (last_failure.empty() ? "" : "; the last failed evaluation: " + last_failure);
+    if (flag == CV_TOO_MUCH_ACC) throw TolerancesTooTight(message);
+    throw std::runtime_error(message);
   }
 };
 

@@ -4,6 +4,7 @@
 /// (MultibodySystem::AccelerationJacobian). Why this choice: docs/validation/multibody.md.
 #include <initializer_list>
 #include <memory>
+#include <stdexcept>
 #include <string>
 
 #include "core/multibody/multibody_system.hpp"
@@ -46,6 +47,13 @@ struct SolverStats {
   int last_order = 0;
 };
 
+/// The integration stopped because its tolerances ask for more accuracy than double precision
+/// gives at the time reached (CVODE's CV_TOO_MUCH_ACC): the remedy is looser tolerances.
+class TolerancesTooTight : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 /// Integrates a MultibodySystem; the system must outlive the integrator.
 class Integrator {
  public:
@@ -57,7 +65,8 @@ class Integrator {
   /// Starts at (t0, state); the state should be consistent (MultibodySystem::Assemble).
   void Initialize(double t0, const SystemState& state);
   /// Advances to t_out (interpolating inside the last step) and returns the state there.
-  /// Throws std::runtime_error with CVODE's reason when the integration cannot continue.
+  /// Throws std::runtime_error with CVODE's reason when the integration cannot continue
+  /// (TolerancesTooTight when they ask for more than double precision gives).
   SystemState AdvanceTo(double t_out);
   /// Changes the error tolerances (relative and absolute) from the next step on; the other
   /// fields of `config` are ignored.

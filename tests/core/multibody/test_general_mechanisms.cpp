@@ -82,6 +82,24 @@ class TestGeneralMechanisms : public QObject {
     QVERIFY(std::abs(small_angle / 2 - half) > 0.05 * half);
   }
 
+  // Tolerances past double precision end the integration with their own error type (the
+  // engine run then names the case's tolerance fields), not a bare CVODE flag.
+  void tolerancesPastDoublePrecisionAreNamedAsSuch() {
+    Pendulum p(1.2);
+    Integrator integrator(p.system, IntegratorConfig{.relative_tolerance = 1e-18,
+                                                     .position_tolerance = 1e-30,
+                                                     .angle_tolerance = 1e-30,
+                                                     .velocity_tolerance = 1e-30,
+                                                     .angular_velocity_tolerance = 1e-30});
+    integrator.Initialize(0.0, p.state);
+    try {
+      integrator.AdvanceTo(p.Period(1.2));
+      QFAIL("no error");
+    } catch (const filmdyn::multibody::TolerancesTooTight& e) {
+      qInfo("%s", e.what());
+    }
+  }
+
   void pendulumConservesEnergyAndConstraint() {
     Pendulum p(2.5);  // nearly inverted
     Integrator integrator(p.system, IntegratorConfig{.relative_tolerance = 1e-9});
