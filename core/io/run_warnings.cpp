@@ -589,11 +589,17 @@ std::vector<RunWarning> RunWarnings(const engine::RunConfig& config,
         crossed.push_back(s.bearing.present && s.bearing.eps > kHighEccentricity);
       }
       w.crank_angle_ranges_deg = Ranges(angles, crossed, whole_cycle);
+      // Past ε = 1 (elastic surfaces only) the rigid position is inside the wall, which the
+      // surfaces' deformation opens.
+      const double gap_um = (1.0 - eps) * engine::BigEndFit(c).hot_clearance * 1e6;
       w.message = fmt::format(
-          "big-end eccentricity ratio ε = {:.3f} at {:.0f} °CA, above {:g} over {}: the journal "
-          "runs within {:.1f} µm of the bearing wall",
-          eps, *w.crank_angle_deg, kHighEccentricity, RangesText(w.crank_angle_ranges_deg),
-          (1.0 - eps) * engine::BigEndFit(c).hot_clearance * 1e6);
+          "big-end eccentricity ratio ε = {:.3f} at {:.0f} °CA, above {:g} over {}: {}", eps,
+          *w.crank_angle_deg, kHighEccentricity, RangesText(w.crank_angle_ranges_deg),
+          gap_um >= 0.0
+              ? fmt::format("the journal runs within {:.1f} µm of the bearing wall", gap_um)
+              : fmt::format("the journal's rigid position is {:.1f} µm past the bearing wall, "
+                            "which only the surfaces' elastic deformation opens",
+                            -gap_um));
       out.push_back(std::move(w));
     }
   }

@@ -12,6 +12,7 @@
 //   the film or eccentricity warnings.
 // - A run stopped at max_cycles before it is periodic: the not-periodic warning with the last
 //   cycle-to-cycle change; progress still ends at 1.
+#include <fmt/format.h>
 #include <QRegularExpression>
 #include <QtTest>
 
@@ -421,6 +422,33 @@ class TestRunWarnings : public QObject {
     c.big_end.compliance = lubrication::ComplianceModel::kRigid;
     result.samples[1].bearing.max_pressure = 200e6;
     QVERIFY(!found());
+  }
+
+  // A high eccentricity says how close the journal runs to the wall; past ε = 1 (elastic
+  // surfaces) its rigid position is past the wall, not "within −5.6 µm" of it.
+  void aHighEccentricitySaysWhereTheJournalRuns() {
+    for (const double eps : {0.97, 1.113}) {
+      engine::RunResult result;
+      for (double e : {0.5, eps, 0.6}) {
+        engine::CrankTrainSample s;
+        s.crank_angle = (360.0 + 10.0 * double(result.samples.size())) * M_PI / 180.0;
+        s.bearing.present = true;
+        s.bearing.eps = e;
+        result.samples.push_back(s);
+      }
+      const engine::EngineCase c = CoarseCase();
+      std::string message;
+      for (const io::RunWarning& w :
+           io::RunWarnings(Config(c, engine::Model::kOnlyLbrbe, 6000.0), result))
+        if (w.code == "high_eccentricity") message = w.message;
+      const double gap_um = (1.0 - eps) * engine::BigEndFit(c).hot_clearance * 1e6;
+      qInfo("%s", message.c_str());
+      QVERIFY2(message.find(eps < 1.0 ? fmt::format("within {:.1f} µm of the bearing wall", gap_um)
+                                      : fmt::format("{:.1f} µm past the bearing wall", -gap_um)) !=
+                   std::string::npos,
+               message.c_str());
+      QVERIFY(message.find("within -") == std::string::npos);
+    }
   }
 
   void halfSpaceBigEndWarns() {
