@@ -213,8 +213,7 @@ void MainWindow::createRunPage() {
     for (const RunHandle& run : run_table_->runs()) {
       if (!ids.contains(run->id())) continue;
       plot_panel_->setRunLabel(run->id(), run->legendLabel());
-      if (run == shown_fields_run_.lock())
-        field_view_->setFrames(run->fields(), run->legendLabel(), NoFieldsReason(*run));
+      if (run == shown_fields_run_.lock()) showRunFields(*run);
       if (run == state_run_.lock()) showRunState(run);
     }
   });
@@ -231,7 +230,7 @@ void MainWindow::createRunPage() {
     RunHandle run = run_table_->currentRun();
     if (run && run != shown_fields_run_.lock()) {
       shown_fields_run_ = run;
-      field_view_->setFrames(run->fields(), run->legendLabel(), NoFieldsReason(*run));
+      showRunFields(*run);
     }
   });
   workspace_->addTab(page, tr("Run and results"));
@@ -453,7 +452,12 @@ void MainWindow::onRunFinished(const RunHandle& run) {
   }
   shown_fields_run_ = run;
   field_view_->setScaleFrames(AllRunFields(run_table_->runs()));
-  field_view_->setFrames(run->fields(), run->legendLabel(), NoFieldsReason(*run));
+  showRunFields(*run);
+}
+
+// The field view on `run`'s fields, titled with its legend label (or why it has none).
+void MainWindow::showRunFields(const RunRecord& run) {
+  field_view_->setFrames(run.fields(), run.legendLabel(), NoFieldsReason(run));
 }
 
 // The toolbar's line on the run last started or finished, in the run's label of the moment (the

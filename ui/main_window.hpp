@@ -150,6 +150,7 @@ class MainWindow : public QMainWindow {
   void exportInBackground(const QString& busy, std::function<bool(QString* message)> job);
   void finishExport();
   void showRunState(const RunHandle& run);
+  void showRunFields(const RunRecord& run);
 
   QTabWidget* workspace_ = nullptr;
   CaseDocument* document_ = nullptr;

@@ -121,10 +121,7 @@ Command MakeRunCommand() {
       } catch (const std::exception& e) {
         // An input only the run's set-up checks (a film joint's oil or compliance): the folder
         // says the run failed and why, not "running" (a run killed).
-        try {
-          io::MarkRunFailed(out, c.name, config, e.what());
-        } catch (const std::exception&) {  // the run's own error is the one to report
-        }
+        io::MarkRunFailed(out, c.name, config, e.what());
         throw;
       }
     }();

@@ -71,11 +71,11 @@ std::unique_ptr<io::OutputFolder> PrepareBatchFolders(const std::filesystem::pat
 /// --jobs: runs computed at the same time (default: the number of cores), checked to [1, 256].
 int JobsOption(const Args& args);
 
-/// The runs of a finished batch, in job order.
 /// Throws InputError("--set KEY", value, `why`) for the first --set of one of `keys`: a field
 /// the command sets itself for each run, which the --set would not reach.
 void RefuseSets(const Args& args, std::initializer_list<const char*> keys, const std::string& why);
 
+/// The runs of a finished batch, in job order.
 struct BatchOutcome {
   std::vector<batch::SweepJob> jobs;
   std::vector<std::optional<ui::PlotRun>> runs;  ///< empty where the run could not start

@@ -414,7 +414,6 @@ int RunStudy(const Args& args, Streams& streams) {
 
   // The study folder: locked while this command works in it; a different study there refused.
   io::CreateFolder(out, "--out");
-  std::error_code ec;
   const std::string definition = batch::StudyJson(study);
   // Throws when `out` holds another study.
   auto refuse_other_study = [&out, &definition] {
@@ -467,6 +466,7 @@ int RunStudy(const Args& args, Streams& streams) {
     bytes += point_bytes[k];
     job_point.push_back(int(k));
   }
+  std::error_code ec;
   const fs::space_info space = fs::space(out, ec);
   if (!ec && bytes > double(space.available)) {
     throw InputError("--out", out.string(),

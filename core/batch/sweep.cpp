@@ -94,10 +94,8 @@ void SweepRunner::Run(int index, SweepOutcome* outcome) {
   try {
     outcome->result = engine::RunJob(config, monitor, cancel_);
   } catch (const std::exception& e) {
-    try {  // the folder says why, not "running" (a run killed)
-      io::MarkRunFailed(job.output_folder, job.case_name, job.config, e.what());
-    } catch (const std::exception&) {  // the run's own error is the one to report
-    }
+    // The folder says why, not "running" (a run killed).
+    io::MarkRunFailed(job.output_folder, job.case_name, job.config, e.what());
     throw;
   }
   outcome->rows = io::WriteRunFolder(job.output_folder, job.case_name, job.config, outcome->result,

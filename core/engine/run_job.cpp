@@ -825,7 +825,7 @@ RunResult RunJob(const RunConfig& config, const RunMonitor& monitor,
   // ones the iteration would have tried).
   for (const BalancedJoint& j : joints)
     (j.skirt ? result.skirt_film_temperature : result.big_end_film_temperature) =
-        hb.converged || !reported ? j.t : j.oil->temperature;
+        hb.converged ? j.t : j.oil->temperature;
   result.heat_balance = hb;
   result.wall_time = wall;
   if (!hb.converged && reported) {

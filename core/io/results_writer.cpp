@@ -404,8 +404,11 @@ void MarkRunStarted(const std::filesystem::path& directory, const std::string& c
 
 void MarkRunFailed(const std::filesystem::path& directory, const std::string& case_name,
                    const engine::RunConfig& config, const std::string& message) {
-  WriteResultlessSummary(directory, case_name, config,
-                         engine::StatusName(engine::RunStatus::kFailed), message);
+  try {
+    WriteResultlessSummary(directory, case_name, config,
+                           engine::StatusName(engine::RunStatus::kFailed), message);
+  } catch (const std::exception&) {  // the caller's error is the one to report
+  }
 }
 
 }  // namespace filmdyn::io

@@ -109,7 +109,8 @@ void MarkRunStarted(const std::filesystem::path& directory, const std::string& c
 
 /// Replaces MarkRunStarted's summary by one of status "failed" with `message` (why the run
 /// stopped before any result: an input only the run's set-up could check); the "running" left
-/// would read as a run killed. Writes nothing else.
+/// would read as a run killed. Writes nothing else. Best effort, called while the caller reports
+/// that error: a summary that cannot be written is left as it is, without a second error.
 void MarkRunFailed(const std::filesystem::path& directory, const std::string& case_name,
                    const engine::RunConfig& config, const std::string& message);
 

@@ -21,6 +21,7 @@
 #include <cstring>
 
 #include "core/io/run_summary.hpp"
+#include "tests/ui/legends_name.hpp"
 #include "ui/case_editor/case_document.hpp"
 #include "ui/case_editor/case_parameters.hpp"
 #include "ui/main_window.hpp"
@@ -48,18 +49,9 @@ RunHandle RunWith(MainWindow& window,
   return finished.last().first().value<RunHandle>();
 }
 
-// Whether any legend entry of the plots names `label`.
 // The plots name the run: in the legend above them (on screen) and in each exported plot's own.
 bool LegendsName(MainWindow& window, const QString& label) {
-  auto* panel = window.plotPanel();
-  if (!panel->runLegendText().contains(label.toHtmlEscaped())) return false;
-  panel->setRunsInChartLegends(true);
-  bool found = false;
-  for (int i = 0; i < panel->chartCount(); ++i) {
-    for (const auto& [text, pen] : panel->legendEntries(i)) found = found || text == label;
-  }
-  panel->setRunsInChartLegends(false);
-  return found;
+  return filmdyn::test::LegendsName(*window.plotPanel(), label);
 }
 
 void Save(QWidget* widget, const QString& name) {

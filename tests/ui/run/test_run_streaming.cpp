@@ -26,6 +26,7 @@
 #endif
 
 #include "tests/ui/answer_message_box.hpp"
+#include "tests/ui/legends_name.hpp"
 #include "ui/case_editor/case_document.hpp"
 #include "ui/case_editor/case_json.hpp"
 #include "ui/case_editor/case_parameters.hpp"
@@ -302,16 +303,7 @@ class TestRunStreaming : public QObject {
     // Partial results stay visible, and every legend says whose they are: on screen and in the
     // plots' own legends (what an exported plot shows).
     QVERIFY(window.plotPanel()->pointCount(run->id()) > 0);
-    const QString marked = run->label() + " (cancelled)";
-    QVERIFY2(window.plotPanel()->runLegendText().contains(marked.toHtmlEscaped()),
-             qPrintable(window.plotPanel()->runLegendText()));
-    window.plotPanel()->setRunsInChartLegends(true);
-    bool in_chart_legend = false;
-    for (int i = 0; i < window.plotPanel()->chartCount(); ++i)
-      for (const auto& [text, pen] : window.plotPanel()->legendEntries(i))
-        in_chart_legend = in_chart_legend || text == marked;
-    window.plotPanel()->setRunsInChartLegends(false);
-    QVERIFY(in_chart_legend);
+    QVERIFY(filmdyn::test::LegendsName(*window.plotPanel(), run->label() + " (cancelled)"));
     if (const QString dir = qEnvironmentVariable("FILMDYN_SCREENSHOT_DIR"); !dir.isEmpty()) {
       QTest::qWait(300);
       window.grab().save(dir + "/cancelled-run-plots.png");
