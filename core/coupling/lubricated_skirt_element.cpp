@@ -112,13 +112,18 @@ void LubricatedSkirtElement::EvaluateJoint(const multibody::JointForceInput& in,
     cached_out_ = *out;
     return;
   }
-  // ∂G/∂z by forward differences of the solver, z = (e0, γ, ė0, γ̇, u_p).
+  // ∂G/∂z by forward differences of the solver, z = (e0, γ, ė0, γ̇, u_p), each increment 1e-4 of
+  // its unknown's own scale: the clearance for e0 (over the skirt length for γ), for ė0 the
+  // clearance times the sliding's frequency |u_p|/L (at least 1 s⁻¹) — the lateral rate at
+  // which the sliding's wedge moves the skirt — and the skirt length per second for u_p. Fixed
+  // velocity increments (0.1 mm/s laterally) were a third of that rate at 100 rpm: a secant
+  // through the film's squeeze response, too coarse for the Newton iteration of a stiff film.
   const lubrication::SkirtGeometry& geo = solver_->config().geometry;
   const double c_p = geo.radial_clearance, L = geo.skirt_length;
   const lubrication::SkirtState& z0 = kin_.state;
-  const double dv = 1e-4 + 1e-4 * std::abs(z0.e0_dot);
-  const double steps[5] = {1e-4 * c_p, 1e-4 * c_p / L, dv, dv / L,
-                           1e-3 + 1e-4 * std::abs(z0.piston_velocity)};
+  const double u = std::abs(z0.piston_velocity);
+  const double dv = 1e-4 * (c_p * (u / L + 1.0) + std::abs(z0.e0_dot));
+  const double steps[5] = {1e-4 * c_p, 1e-4 * c_p / L, dv, dv / L, 1e-4 * (u + L)};
   Eigen::Matrix<double, 3, 5> dg;
   for (int k = 0; k < 5; ++k) {
     lubrication::SkirtState z = z0;

@@ -13,9 +13,8 @@
 /// and the skirt slides along the bore with u_p = ṡ, s = −Y of the axis at pin height. The film
 /// generalised forces (F on e0, M on γ, F_f on s) map to the CoM wrench by virtual work:
 ///   Q = J(q)ᵀ (F, M, F_f),  J = ∂(e0, γ, s)/∂(x, y, θ).
-/// Jacobian: ∂(F, M, F_f)/∂(e0, γ, ė0, γ̇, u_p) — the velocity columns exactly from the solver's
-/// linearity in the rates at a fixed cavitation set when available, else by forward differences
-/// of the solver — chained with J and its derivative.
+/// Jacobian: ∂(F, M, F_f)/∂(e0, γ, ė0, γ̇, u_p) by forward differences of the solver, each
+/// increment scaled to its unknown (EvaluateJoint), chained with J and its derivative.
 #include <memory>
 
 #include "core/coupling/film_report.hpp"
