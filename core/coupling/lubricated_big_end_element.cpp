@@ -252,7 +252,10 @@ void LubricatedBigEndElement::ReportFilm(SkirtFilmSample*, BearingFilmSample* be
   BearingFilmSample& b = *bearing;
   ReportKinematics(kin_, rod_angle_, bearing);
   b.eps_max = EpsMax();
-  b.moft = result_.moft;
+  // Past ε_max the film is solved at ε_max (a contact penalty acts beyond it, and the run ends):
+  // the film that figure reports less the overlap the solve did not see.
+  b.moft = result_.moft -
+           solver_->config().geometry.radial_clearance * std::max(0.0, kin_.eps_true - EpsMax());
   b.fpl = result_.friction_power_loss;
   b.max_pressure = result_.max_pressure;
   b.max_contact_pressure = result_.max_contact_pressure;

@@ -196,7 +196,10 @@ void LubricatedSkirtElement::ReportFilm(SkirtFilmSample* skirt, BearingFilmSampl
   f.contact_normal_force = result_.contact_lateral_force;
   f.friction_force = result_.friction_force;
   f.moment_about_pin = result_.moment_about_pin;
-  f.moft = result_.moft;
+  // On rigid surfaces a film thinner than the solver's floor is held at the floor: there the
+  // geometric gap is the figure (negative where the skirt has passed the liner's wall, which ends
+  // the run: the floor would read as a film).
+  f.moft = result_.clamped_nodes > 0 ? std::min(result_.moft, kin_.min_gap) : result_.moft;
   f.fpl = result_.friction_power_loss;
   f.max_pressure = result_.max_pressure;
   f.max_contact_pressure = result_.max_contact_pressure;

@@ -383,6 +383,15 @@ class TestRunJob : public QObject {
       QVERIFY2(r.message.find("journal touches the bearing") != std::string::npos,
                r.message.c_str());
       QVERIFY(!r.samples.empty() && !seen.empty());
+      {  // the row where it failed
+        const coupling::BearingFilmSample& last = r.samples.back().bearing;
+        const double c = engine::BigEndFit(DefaultConfig(6000).engine_case).hot_clearance;
+        qInfo("failed at eps %.6f (eps_max %.6f): moft %.4g um, c (1 - eps) %.4g um", last.eps,
+              last.eps_max, last.moft * 1e6, c * (1.0 - last.eps) * 1e6);
+        // Its film is the journal's own, not the one solved at eps_max (1 % thicker here).
+        QVERIFY(last.eps >= last.eps_max);
+        QVERIFY(std::abs(last.moft - c * (1.0 - last.eps)) < 1e-3 * c * (1.0 - last.eps_max));
+      }
       // The last frame is the failure's, at the last sample's time; the only one flagged.
       QVERIFY(seen.back().failure);
       QCOMPARE(seen.back().time, r.samples.back().time);
@@ -799,6 +808,27 @@ class TestRunJob : public QObject {
     QCOMPARE(r.reported_cycle, 2);
     QVERIFY(!r.samples.empty());
     QVERIFY(engine::CycleCrankAngleDeg(r.samples.back().crank_angle) < 101.0);
+  }
+
+  // A skirt that passes the liner's wall (100 rpm with the default oil: the rigid skirt cannot
+  // carry the side force) ends the run, and its last row gives the gap it reached, negative, as
+  // the message does: the film the solver held at its floor (1 nm) read as a film.
+  void aSkirtPastTheLinersWallReportsItsGap() {
+    const io::LoadedCase loaded = io::LoadCase({});
+    engine::EngineCase c = loaded.value;
+    c.solver.error_estimate = 0;
+    const engine::RunConfig config = engine::MakeRunConfig(c, engine::Model::kOnlySkirt, 100,
+                                                           io::PressureCurveForSpeed(loaded, 1000));
+    const engine::RunResult r = engine::RunJob(config);
+    QCOMPARE(engine::StatusName(r.status), std::string("failed"));
+    QVERIFY2(r.message.find("skirt touches the liner") != std::string::npos, r.message.c_str());
+    QVERIFY(!r.samples.empty());
+    const coupling::SkirtFilmSample& last = r.samples.back().skirt;
+    qInfo("smallest gap %.4g um, moft %.4g um", last.min_gap * 1e6, last.moft * 1e6);
+    QVERIFY(last.min_gap < 0.0);
+    QCOMPARE(last.moft, last.min_gap);
+    for (std::size_t k = 0; k + 1 < r.samples.size(); ++k)  // the rows before: films
+      QVERIFY(r.samples[k].skirt.moft > 0.0);
   }
 
   // A cranking speed with a cold, thick oil (100 rpm, 0.2 Pa·s; both joints lubricated, the

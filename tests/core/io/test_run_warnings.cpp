@@ -451,6 +451,30 @@ class TestRunWarnings : public QObject {
     }
   }
 
+  // A failed run's last row, where the skirt had passed the liner's wall: the film-ratio warning
+  // says the surfaces overlap there, not that asperities carry part of the load.
+  void aFilmRatioBelowZeroSaysTheSurfacesOverlap() {
+    engine::RunResult result;
+    for (double moft : {5e-6, 2e-7, -3.1e-7}) {
+      engine::CrankTrainSample s;
+      s.crank_angle = (360.0 + double(result.samples.size())) * M_PI / 180.0;
+      s.skirt.present = true;
+      s.skirt.moft = moft;
+      result.samples.push_back(s);
+    }
+    result.status = engine::RunStatus::kFailed;
+    const engine::EngineCase c = CoarseCase();
+    std::string message;
+    for (const io::RunWarning& w :
+         io::RunWarnings(Config(c, engine::Model::kOnlySkirt, 6000.0), result))
+      if (w.code == "asperity_contact" && w.joint == "skirt") message = w.message;
+    qInfo("%s", message.c_str());
+    QVERIFY2(message.find("the surfaces overlap by 0.31 µm there, where the run ended") !=
+                 std::string::npos,
+             message.c_str());
+    QVERIFY(message.find("asperities carry") == std::string::npos);
+  }
+
   void halfSpaceBigEndWarns() {
     // Judged from the case: a big end on elastic half-spaces, which engine runs outgrow; not the
     // skirt's half-spaces, nor the big end's elastic layer.
