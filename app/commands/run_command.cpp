@@ -97,9 +97,9 @@ Command MakeRunCommand() {
       const auto now = std::chrono::steady_clock::now();
       if (!quiet && now - last_print > std::chrono::milliseconds(200)) {
         last_print = now;
-        // The crank angle as results.csv labels it; the run-in also says how far cycle 1 is.
-        const double angle =
-            p.sample ? engine::CycleCrankAngleDeg(p.sample->crank_angle) : p.crank_angle_deg;
+        // The crank angle as results.csv labels it (inside an output step: the one reached);
+        // the run-in also says how far cycle 1 is.
+        const double angle = engine::CycleCrankAngleDeg(p.crank_angle);
         std::string where =
             p.run_in ? fmt::format("run-in {:5.1f} °CA ({:.0f} °CA before cycle 1)", angle,
                                    -p.crank_angle_deg)

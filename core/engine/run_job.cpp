@@ -400,6 +400,9 @@ RunResult RunSingle(const RunConfig& config, const RunMonitor& monitor,
   const int typical = !has_films || run_in >= 1.5 * std::numbers::pi - 1e-9 ? 2 : 4;
   const double run_in_cycles = run_in / (4.0 * std::numbers::pi);
   ProgressClock clock(typical, max_cycles, run_in_cycles, elapsed());
+  double last_report = elapsed();   // wall time of the monitor's last call
+  bool stopped_by_monitor = false;  // its answer: stop
+  double t_target = 0.0;            // the output (or motion) time being integrated to
   // Fills the common progress fields (`work`: cycles done, with the run-in's share; `last`: the
   // run's last output step), calls the monitor and sets a cancel/time-limit status.
   auto report = [&](RunProgress& progress, double work, bool last, const std::string& where) {
@@ -412,7 +415,10 @@ RunResult RunSingle(const RunConfig& config, const RunMonitor& monitor,
     }
     progress.steps = result.stats.steps;
     progress.reynolds_solves = result.reynolds_solves;
+    if (progress.sample != nullptr) progress.crank_angle = progress.sample->crank_angle;
+    last_report = progress.elapsed;
     const bool go_on = !monitor || monitor(progress);
+    stopped_by_monitor = !go_on;
     const bool cancelled = cancel && cancel->load();
     if (!go_on || cancelled) {
       result.status = RunStatus::kCancelled;
@@ -423,6 +429,35 @@ RunResult RunSingle(const RunConfig& config, const RunMonitor& monitor,
     }
     return result.status == RunStatus::kCancelled || result.status == RunStatus::kTimeLimit;
   };
+  // Heartbeats: inside an output step that takes long (a large mesh, a stiff stretch), the
+  // monitor hears the time the integration has reached (bounded by the output time it heads
+  // for, which the integrator may overshoot and interpolate back from: the progress never
+  // runs backwards).
+  const double crank_angle_0 = train.gas_force->CrankAngle(train.initial_state);
+  if (monitor) {
+    train.system->SetEvaluationObserver([&](double t_eval) {
+      if (elapsed() - last_report < config.heartbeat_interval) return;
+      const double t = std::min(t_eval, t_target);
+      RunProgress progress;
+      progress.heartbeat = true;
+      progress.crank_angle = crank_angle_0 + omega * t;
+      double work = 0.0;
+      if (cycle == 0) {
+        progress.run_in = true;
+        progress.crank_angle_deg = -(t_start - t) * omega * 180.0 / std::numbers::pi;
+        work = run_in_cycles * t / t_start;
+      } else {
+        const double cycle_start = t_start + (cycle - 1) * cycle_time;
+        progress.cycle = cycle;
+        progress.cycle_start_time = cycle_start;
+        progress.crank_angle_deg = 720.0 * (t - cycle_start) / cycle_time;
+        if (!result.cycle_changes.empty()) progress.cycle_change = result.cycle_changes.back();
+        // As the output step it heads for counts itself done (k + 1 of the cycle's steps).
+        work = run_in_cycles + (cycle - 1) + (t - cycle_start) / cycle_time + 1.0 / steps_per_cycle;
+      }
+      if (report(progress, work, false, where_now())) throw StopRequested();
+    });
+  }
   // The films at an output step, to the field callback (the solvers re-solved at the step's
   // state: the integrator's last evaluation may lie elsewhere).
   auto field_frame = [&](int in_cycle, int step, double t, const CrankTrainSample& sample,
@@ -463,6 +498,7 @@ RunResult RunSingle(const RunConfig& config, const RunMonitor& monitor,
       for (int j = 1; j < chunks; ++j) {
         const double t = t_start * j / chunks;
         crank_deg = -(run_in - run_in * j / chunks) * 180.0 / std::numbers::pi;
+        t_target = t;
         current.Add(SampleCrankTrain(train, c, t, integrator.AdvanceTo(t)));
         result.stats = integrator.Stats();
         result.reynolds_solves = solves();
@@ -485,6 +521,7 @@ RunResult RunSingle(const RunConfig& config, const RunMonitor& monitor,
           return result;
         }
       }
+      t_target = t_start;
       integrator.AdvanceTo(t_start);
       integrator.SetTolerances(config.integrator);
       current.clear();
@@ -496,6 +533,7 @@ RunResult RunSingle(const RunConfig& config, const RunMonitor& monitor,
       for (int k = 0; k < steps_per_cycle; ++k) {
         const double t = t_start + (cycle - 1) * cycle_time + k * cycle_time / steps_per_cycle;
         crank_deg = 720.0 * k / steps_per_cycle;
+        t_target = t;
         if (k > 0) add_motion_between(t - cycle_time / steps_per_cycle, t);
         const multibody::SystemState state =
             t > 0.0 ? integrator.AdvanceTo(t) : train.initial_state;
@@ -569,7 +607,7 @@ RunResult RunSingle(const RunConfig& config, const RunMonitor& monitor,
   } catch (const InputError&) {
     throw;
   } catch (const StopRequested&) {
-    const bool cancelled = cancel && cancel->load();
+    const bool cancelled = (cancel && cancel->load()) || stopped_by_monitor;
     result.status = cancelled ? RunStatus::kCancelled : RunStatus::kTimeLimit;
     result.message = (cancelled ? "cancelled" : "wall-time limit reached") + where_now();
     result.cycles = std::max(cycle, 0);

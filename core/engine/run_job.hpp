@@ -97,6 +97,10 @@ struct RunConfig {
   /// Where the case's relative file names (an imported compliance, a pressure-curve file)
   /// resolve: the case file's folder; empty = the working directory.
   std::filesystem::path case_directory;
+  /// Wall time [s] without a progress report after which the monitor hears where the
+  /// integration stands inside an output step (RunProgress::heartbeat), at most this often;
+  /// 0: at every evaluation of the forces.
+  double heartbeat_interval = 1.0;
 };
 
 /// Refuses (InputError naming the largest film mesh) a run whose estimated memory exceeds what
@@ -134,7 +138,13 @@ struct RunProgress {
   double cycle_change = -1.0;
   long steps = 0;                 ///< integrator steps so far
   long reynolds_solves = 0;       ///< film solves so far (both joints)
-  const CrankTrainSample* sample = nullptr;  ///< the step just computed
+  /// The crank's angle at the time reached [rad], as CrankTrainSample::crank_angle (its label
+  /// in results.csv: CycleCrankAngleDeg).
+  double crank_angle = 0.0;
+  /// A report from inside an output step (RunConfig::heartbeat_interval): the time the
+  /// integration has reached, no sample; the fields above are then that time's.
+  bool heartbeat = false;
+  const CrankTrainSample* sample = nullptr;  ///< the step just computed (none in a heartbeat)
 };
 
 /// Largest change of RunProgress::remaining between two updates beyond the count-down of the

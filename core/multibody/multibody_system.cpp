@@ -101,6 +101,7 @@ double MultibodySystem::StepLimit(double length_tolerance) const {
 
 Eigen::VectorXd MultibodySystem::AppliedForces(double t, const SystemState& state) {
   ThrowIfStopRequested(stop_check_);
+  if (observer_) observer_(t);
   const int n = NumCoordinates();
   Eigen::VectorXd q_force = Eigen::VectorXd::Zero(n);
   const std::vector<int> concurrent = ConcurrentElements(elements_, pool_.get());

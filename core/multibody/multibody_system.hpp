@@ -69,6 +69,12 @@ class MultibodySystem {
   /// filmdyn::StopRequested (core/base/stop.hpp), so
   /// a cancel or a time limit is honoured within one evaluation, not one output step.
   void SetStopCheck(StopCheck check) { stop_check_ = std::move(check); }
+  /// Called with the time of every evaluation of the applied forces, after the stop check and
+  /// on the calling thread (not the film joints' worker threads): where the integration stands
+  /// inside an output step. It may throw filmdyn::StopRequested to stop it.
+  void SetEvaluationObserver(std::function<void(double)> observer) {
+    observer_ = std::move(observer);
+  }
 
   /// True when a force element wants OnStepAccepted calls (ForceElement::WantsAcceptedSteps).
   bool WantsAcceptedSteps() const;
@@ -110,6 +116,7 @@ class MultibodySystem {
 
  private:
   StopCheck stop_check_;
+  std::function<void(double)> observer_;
   /// Assembled Φ, Φ_q (m × 3n), Φ_t, γ.
   struct ConstraintSystem {
     Eigen::VectorXd phi, phi_t, gamma;

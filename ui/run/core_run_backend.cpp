@@ -95,8 +95,10 @@ RunBackend CoreRunBackend() {
       progress.run_in = p.run_in;
       progress.cycle = p.cycle;
       progress.max_cycles = p.max_cycles;
-      progress.cycle_fraction = p.crank_angle_deg / 720.0;  // < 0 in the run-in
-      if (p.sample) progress.crank_angle_deg = engine::CycleCrankAngleDeg(p.sample->crank_angle);
+      // < 0 in the run-in; a heartbeat just before a cycle's first sample is at its start.
+      progress.cycle_fraction =
+          p.run_in ? p.crank_angle_deg / 720.0 : std::max(0.0, p.crank_angle_deg / 720.0);
+      progress.crank_angle_deg = engine::CycleCrankAngleDeg(p.crank_angle);
       progress.cycle_change = p.cycle_change;
       progress.fraction = p.fraction;
       progress.remaining = p.remaining;

@@ -810,6 +810,69 @@ class TestRunJob : public QObject {
     QVERIFY(engine::CycleCrankAngleDeg(r.samples.back().crank_angle) < 101.0);
   }
 
+  // Inside an output step the monitor hears where the integration stands (heartbeats, here at
+  // every force evaluation): between the output steps' crank angles, no sample, the progress
+  // never running backwards across heartbeats and output steps, in the run-in and in the
+  // cycles; a monitor that answers "stop" to a heartbeat ends the run there, cancelled.
+  void heartbeatsReportInsideOutputSteps() {
+    engine::RunConfig config = CoarseBigEndWithVogelOil();
+    config.engine_case.solver.max_cycles = 1;
+    config.engine_case.solver.output_interval = 30.0 * M_PI / 180.0;
+    config.heartbeat_interval = 0.0;
+    struct Seen {
+      bool heartbeat, has_sample, run_in;
+      int cycle;
+      double position, fraction, label;
+    };
+    std::vector<Seen> seen;
+    bool angles_are_the_samples = true;  // an output step's crank angle is its sample's
+    const engine::RunMonitor monitor = [&](const engine::RunProgress& p) {
+      seen.push_back({p.heartbeat, p.sample != nullptr, p.run_in, p.cycle, p.crank_angle_deg,
+                      p.fraction, engine::CycleCrankAngleDeg(p.crank_angle)});
+      if (p.sample != nullptr) angles_are_the_samples &= p.crank_angle == p.sample->crank_angle;
+      return true;
+    };
+    const engine::RunResult r = engine::RunJob(config, monitor);
+    QVERIFY2(r.status != engine::RunStatus::kFailed, r.message.c_str());
+    QVERIFY(angles_are_the_samples);
+    int heartbeats[2] = {0, 0};  // run-in, cycle 1
+    // The start of the run-in: where the integration is before the first output step.
+    double last_output = -engine::RunInAngle(config.engine_case) * 180.0 / M_PI;
+    for (std::size_t k = 0; k < seen.size(); ++k) {
+      const Seen& s = seen[k];
+      if (k > 0) QVERIFY(s.fraction >= seen[k - 1].fraction);
+      if (!s.heartbeat) {
+        QVERIFY(s.has_sample);
+        last_output = s.run_in ? s.position : s.position + 720.0 * (s.cycle - 1);
+        continue;
+      }
+      QVERIFY(!s.has_sample);
+      ++heartbeats[s.run_in ? 0 : 1];
+      // Past the last output step, not past the next (30 °CA on).
+      const double at = s.run_in ? s.position : s.position + 720.0 * (s.cycle - 1);
+      QVERIFY2(
+          at > last_output - 1e-9 && at <= last_output + 30.0 + 1e-9,
+          qPrintable(
+              QString("heartbeat at %1 after the output step at %2").arg(at).arg(last_output)));
+      // Its label is the crank angle of that position (the cycle starts at 0 °CA).
+      if (!s.run_in && s.position >= 0.0) QVERIFY(std::abs(s.label - s.position) < 1e-6);
+    }
+    qInfo("%d heartbeats in the run-in, %d in cycle 1, %zu reports", heartbeats[0], heartbeats[1],
+          seen.size());
+    QVERIFY(heartbeats[0] > 0 && heartbeats[1] > 0);
+
+    // Stopped by the monitor at a heartbeat of cycle 1: cancelled there, with its rows so far.
+    const engine::RunMonitor stop = [](const engine::RunProgress& p) {
+      return !(p.heartbeat && p.cycle == 1 && p.crank_angle_deg > 100.0);
+    };
+    const engine::RunResult stopped = engine::RunJob(config, stop);
+    QCOMPARE(stopped.status, engine::RunStatus::kCancelled);
+    QVERIFY2(stopped.message.find("cancelled (cycle 1") != std::string::npos,
+             stopped.message.c_str());
+    QVERIFY(!stopped.samples.empty());
+    QVERIFY(engine::CycleCrankAngleDeg(stopped.samples.back().crank_angle) < 130.0 + 1e-6);
+  }
+
   // A skirt that passes the liner's wall (100 rpm with the default oil: the rigid skirt cannot
   // carry the side force) ends the run, and its last row gives the gap it reached, negative, as
   // the message does: the film the solver held at its floor (1 nm) read as a film.
