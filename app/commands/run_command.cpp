@@ -70,6 +70,7 @@ Command MakeRunCommand() {
         throw;
       }
     }();
+    config.heartbeat_interval = engine::kHeartbeatInterval;  // the progress line through slow steps
     if (const auto threads = args.Integer("threads")) {
       if (*threads < 1 || *threads > 2) {
         throw InputError("--threads", std::to_string(*threads),

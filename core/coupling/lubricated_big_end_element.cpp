@@ -152,7 +152,7 @@ void LubricatedBigEndElement::EvaluateJoint(const multibody::JointForceInput& in
   }
   // ∂g/∂z by forward differences of the solver in the Cartesian unknowns, each increment 1e-4 of
   // its unknown's own scale: the clearance for e, for ė the clearance times the surfaces' angular
-  // speeds (at least 1 rad/s) — the rate at which the film's wedge moves the journal. A fixed
+  // speeds plus 1 rad/s (the rate at which the film's wedge moves the journal) plus |ė|. A fixed
   // velocity increment was that rate's 2 % at 100 rpm: a secant through the film's squeeze
   // response, too coarse for a Newton iteration whose step is ~100 of the film's damping times.
   const double c = solver_->config().geometry.radial_clearance;

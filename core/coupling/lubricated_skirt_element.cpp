@@ -57,7 +57,14 @@ SkirtKinematics LubricatedSkirtElement::Kinematics(const BodyState& piston) cons
   k.min_gap = 1e300;
   for (std::size_t j = 0; j < edge_y_.size(); ++j) {
     const double d = k.state.e0 + (edge_y_[j] - a_p) * k.state.gamma;
-    k.min_gap = std::min({k.min_gap, edge_gap_thrust_[j] - d, edge_gap_anti_[j] + d});
+    for (const auto& [gap, alpha] : {std::pair{edge_gap_thrust_[j] - d, 0.0},
+                                     std::pair{edge_gap_anti_[j] + d, std::numbers::pi}}) {
+      if (gap < k.min_gap) {
+        k.min_gap = gap;
+        k.min_gap_alpha = alpha;
+        k.min_gap_y = edge_y_[j];
+      }
+    }
   }
   return k;
 }
@@ -114,8 +121,9 @@ void LubricatedSkirtElement::EvaluateJoint(const multibody::JointForceInput& in,
   }
   // ∂G/∂z by forward differences of the solver, z = (e0, γ, ė0, γ̇, u_p), each increment 1e-4 of
   // its unknown's own scale: the clearance for e0 (over the skirt length for γ), for ė0 the
-  // clearance times the sliding's frequency |u_p|/L (at least 1 s⁻¹) — the lateral rate at
-  // which the sliding's wedge moves the skirt — and the skirt length per second for u_p. Fixed
+  // clearance times the sliding's frequency |u_p|/L plus 1 s⁻¹ (the lateral rate at which the
+  // sliding's wedge moves the skirt) plus |ė0|, and |u_p| plus the skirt length per second for
+  // u_p. Fixed
   // velocity increments (0.1 mm/s laterally) were a third of that rate at 100 rpm: a secant
   // through the film's squeeze response, too coarse for the Newton iteration of a stiff film.
   const lubrication::SkirtGeometry& geo = solver_->config().geometry;
@@ -199,15 +207,16 @@ void LubricatedSkirtElement::ReportFilm(SkirtFilmSample* skirt, BearingFilmSampl
   // On rigid surfaces a film thinner than the solver's floor is held at the floor: there the
   // geometric gap is the figure (negative where the skirt has passed the liner's wall, which ends
   // the run: the floor would read as a film).
-  f.moft = result_.clamped_nodes > 0 ? std::min(result_.moft, kin_.min_gap) : result_.moft;
+  const bool gap = result_.clamped_nodes > 0 && kin_.min_gap < result_.moft;
+  f.moft = gap ? kin_.min_gap : result_.moft;
   f.fpl = result_.friction_power_loss;
   f.max_pressure = result_.max_pressure;
   f.max_contact_pressure = result_.max_contact_pressure;
   f.max_deformation = result_.max_deformation;
   f.contact_friction_force = result_.contact_friction_force;
   f.contact_fpl = AsperityFrictionPower(f.fpl, f.friction_force, f.contact_friction_force);
-  f.moft_alpha = result_.moft_alpha;
-  f.moft_y = result_.moft_y;
+  f.moft_alpha = gap ? kin_.min_gap_alpha : result_.moft_alpha;
+  f.moft_y = gap ? kin_.min_gap_y : result_.moft_y;
   f.min_gap = kin_.min_gap;
   f.min_gap_allowed = MinGapAllowed();
   f.clamped_nodes = result_.clamped_nodes;

@@ -39,7 +39,8 @@ struct SkirtMounting {
 struct SkirtKinematics {
   lubrication::SkirtState state;
   Eigen::Matrix3d jac = Eigen::Matrix3d::Zero();  ///< ∂(e0, γ, s)/∂(x, y, θ)
-  double min_gap = 0.0;                           ///< smallest geometric gap of the panels [m]
+  double min_gap = 0.0;  ///< smallest geometric gap of the panels (their centre lines) [m]
+  double min_gap_alpha = 0.0, min_gap_y = 0.0;  ///< where: 0 thrust / π anti-thrust [rad], y [m]
 };
 
 class LubricatedSkirtElement final : public multibody::JointForceElement,

@@ -431,13 +431,16 @@ RunResult RunSingle(const RunConfig& config, const RunMonitor& monitor,
   };
   // Heartbeats: inside an output step that takes long (a large mesh, a stiff stretch), the
   // monitor hears the time the integration has reached (bounded by the output time it heads
-  // for, which the integrator may overshoot and interpolate back from: the progress never
-  // runs backwards).
+  // for, which the integrator may overshoot and interpolate back from, and never earlier than
+  // the last heartbeat's: the progress never runs backwards).
   const double crank_angle_0 = train.gas_force->CrankAngle(train.initial_state);
-  if (monitor) {
+  double t_shown = 0.0;  // the last heartbeat's time: a retried step evaluates earlier ones
+  if (monitor && config.heartbeat_interval > 0.0) {
     train.system->SetEvaluationObserver([&](double t_eval) {
       if (elapsed() - last_report < config.heartbeat_interval) return;
-      const double t = std::min(t_eval, t_target);
+      const double t = t_shown = std::max(t_shown, std::min(t_eval, t_target));
+      result.stats = integrator.Stats();
+      result.reynolds_solves = solves();
       RunProgress progress;
       progress.heartbeat = true;
       progress.crank_angle = crank_angle_0 + omega * t;

@@ -73,6 +73,9 @@ using FieldCallback = std::function<void(const FieldFrame&)>;
 /// near firing is drawn through ~160 points).
 inline constexpr double kMotionInterval = std::numbers::pi / 180.0 / 8.0;
 
+/// The progress displays' heartbeat (RunConfig::heartbeat_interval) [s].
+inline constexpr double kHeartbeatInterval = 1.0;
+
 struct RunConfig {
   EngineCase engine_case;  ///< joint models already set (ApplyModel)
   Model model = Model::kIdeal;
@@ -98,9 +101,10 @@ struct RunConfig {
   /// resolve: the case file's folder; empty = the working directory.
   std::filesystem::path case_directory;
   /// Wall time [s] without a progress report after which the monitor hears where the
-  /// integration stands inside an output step (RunProgress::heartbeat), at most this often;
-  /// 0: at every evaluation of the forces.
-  double heartbeat_interval = 1.0;
+  /// integration stands inside an output step (RunProgress::heartbeat), at the next evaluation
+  /// of the forces; 0: no heartbeats (the monitor sees output steps only). The CLI and the GUI
+  /// ask for kHeartbeatInterval.
+  double heartbeat_interval = 0.0;
 };
 
 /// Refuses (InputError naming the largest film mesh) a run whose estimated memory exceeds what
@@ -142,7 +146,8 @@ struct RunProgress {
   /// in results.csv: CycleCrankAngleDeg).
   double crank_angle = 0.0;
   /// A report from inside an output step (RunConfig::heartbeat_interval): the time the
-  /// integration has reached, no sample; the fields above are then that time's.
+  /// integration has reached (never going back), no sample; the fields above are then that
+  /// time's.
   bool heartbeat = false;
   const CrankTrainSample* sample = nullptr;  ///< the step just computed (none in a heartbeat)
 };

@@ -100,7 +100,8 @@ void FilmRatioWarning(const std::vector<engine::CrankTrainSample>& samples, bool
       skirt ? "skirt" : "big-end", lambda, moft * 1e6, sigma * 1e6, *w.crank_angle_deg, where,
       w.limit, RangesText(w.crank_angle_ranges_deg),
       !(moft > 0.0)  // a failed run's last row: the surfaces met (no film there)
-          ? fmt::format("the surfaces overlap by {:.3g} µm there, where the run ended", -moft * 1e6)
+          ? fmt::format("the surfaces overlap by {:.3g} µm there, where the run ended",
+                        std::max(0.0, -moft) * 1e6)
           : contact ? "the surface asperities carry part of the load (asperity contact, boundary "
                       "friction and wear)"
                     : "mixed lubrication, the film is only a few roughness heights thick");

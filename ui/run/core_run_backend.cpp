@@ -69,6 +69,7 @@ RunBackend CoreRunBackend() {
     engine::RunConfig config =
         engine::MakeRunConfig(c, model, request.rpm, CurveForSpeed(c, request.rpm),
                               std::filesystem::path(request.case_directory));
+    config.heartbeat_interval = engine::kHeartbeatInterval;  // progress through slow steps
     const int steps_per_cycle = std::max(1, int(std::lround(4 * M_PI / c.solver.output_interval)));
     FieldCollector collector(steps_per_cycle);
     // The GUI's frames and core's recorder (for the run folder's fields/, as `filmdyn run`).

@@ -35,7 +35,8 @@ struct RunProgress {
   int max_cycles = 0;
   bool run_in = false;        ///< integrating the run-in before the first cycle
   double cycle_fraction = 0;  ///< 0..1 within the current cycle (run-in: < 0, to cycle 1)
-  /// The crank angle [°CA] of the last output step as the results label it, [0, 720)
+  /// The crank angle [°CA] reached (the last output step's, or inside a step the integration's)
+  /// as the results label it, [0, 720)
   double crank_angle_deg = 0;
   double cycle_change = -1;   ///< last cycle-to-cycle change (relative), < 0 when unknown
   double fraction = -1;       ///< overall progress 0..1 (< 0: unknown)

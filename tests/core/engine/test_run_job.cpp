@@ -818,7 +818,7 @@ class TestRunJob : public QObject {
     engine::RunConfig config = CoarseBigEndWithVogelOil();
     config.engine_case.solver.max_cycles = 1;
     config.engine_case.solver.output_interval = 30.0 * M_PI / 180.0;
-    config.heartbeat_interval = 0.0;
+    config.heartbeat_interval = 1e-12;  // at every evaluation of the forces
     struct Seen {
       bool heartbeat, has_sample, run_in;
       int cycle;
@@ -890,6 +890,9 @@ class TestRunJob : public QObject {
     qInfo("smallest gap %.4g um, moft %.4g um", last.min_gap * 1e6, last.moft * 1e6);
     QVERIFY(last.min_gap < 0.0);
     QCOMPARE(last.moft, last.min_gap);
+    // Where: on the thrust or anti-thrust centre line, within the skirt's length.
+    QVERIFY(last.moft_alpha == 0.0 || last.moft_alpha == M_PI);
+    QVERIFY(last.moft_y >= 0.0 && last.moft_y <= c.skirt.length + 1e-12);
     for (std::size_t k = 0; k + 1 < r.samples.size(); ++k)  // the rows before: films
       QVERIFY(r.samples[k].skirt.moft > 0.0);
   }
