@@ -123,9 +123,9 @@ void LubricatedSkirtElement::EvaluateJoint(const multibody::JointForceInput& in,
   // its unknown's own scale: the clearance for e0 (over the skirt length for γ), for ė0 the
   // clearance times the sliding's frequency |u_p|/L plus 1 s⁻¹ (the lateral rate at which the
   // sliding's wedge moves the skirt) plus |ė0|, and |u_p| plus the skirt length per second for
-  // u_p. Fixed
-  // velocity increments (0.1 mm/s laterally) were a third of that rate at 100 rpm: a secant
-  // through the film's squeeze response, too coarse for the Newton iteration of a stiff film.
+  // u_p. Fixed velocity increments (0.1 mm/s laterally) were a third of that rate at 100 rpm: a
+  // secant through the film's squeeze response, too coarse for the Newton iteration of a stiff
+  // film.
   const lubrication::SkirtGeometry& geo = solver_->config().geometry;
   const double c_p = geo.radial_clearance, L = geo.skirt_length;
   const lubrication::SkirtState& z0 = kin_.state;

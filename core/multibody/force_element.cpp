@@ -48,9 +48,8 @@ void JointForceElement::AddForces(double t, const SystemState& state,
   }
 }
 
-double JointJacobianMismatch(JointForceElement& element, const JointForceInput& in, double h) {
-  JointForceOutput analytic;
-  element.EvaluateJoint(in, true, &analytic);
+Eigen::Matrix<double, 6, 12> JointJacobianByDifferences(JointForceElement& element,
+                                                        const JointForceInput& in, double h) {
   Eigen::Matrix<double, 6, 12> numeric;
   for (int c = 0; c < 12; ++c) {
     JointForceInput plus = in, minus = in;
@@ -67,6 +66,13 @@ double JointJacobianMismatch(JointForceElement& element, const JointForceInput& 
     numeric.block<3, 1>(0, c) = (fp.wrench_i - fm.wrench_i) / (2 * step);
     numeric.block<3, 1>(3, c) = (fp.wrench_j - fm.wrench_j) / (2 * step);
   }
+  return numeric;
+}
+
+double JointJacobianMismatch(JointForceElement& element, const JointForceInput& in, double h) {
+  JointForceOutput analytic;
+  element.EvaluateJoint(in, true, &analytic);
+  const Eigen::Matrix<double, 6, 12> numeric = JointJacobianByDifferences(element, in, h);
   const double scale = std::max(analytic.jacobian.cwiseAbs().maxCoeff(), 1e-300);
   return (analytic.jacobian - numeric).cwiseAbs().maxCoeff() / scale;
 }

@@ -115,8 +115,12 @@ class JointForceElement : public ForceElement {
   BodyIndex body_j_;
 };
 
+/// A joint element's Jacobian (rows wrench_i, wrench_j; columns q_i, q_j, v_i, v_j) by central
+/// differences of its wrenches, step h·max(1,|x|) (a check for element authors).
+Eigen::Matrix<double, 6, 12> JointJacobianByDifferences(JointForceElement& element,
+                                                        const JointForceInput& in, double h);
 /// Largest |analytic − finite-difference| entry of a joint element's Jacobian, relative to the
-/// largest analytic entry (a check for element authors; central differences, step h·max(1,|x|)).
+/// largest analytic entry (JointJacobianByDifferences).
 double JointJacobianMismatch(JointForceElement& element, const JointForceInput& in,
                              double h = 1e-7);
 
