@@ -65,6 +65,7 @@ const ReynoldsSolution& ReynoldsFem::Solve(const ReynoldsParams& params) {
   if (!(params.bulk_modulus >= 0.0) || !std::isfinite(params.bulk_modulus))
     throw std::logic_error("ReynoldsFem::Solve: bulk_modulus must be finite and >= 0");
   sol_.stats = ReynoldsStats{};
+  capacity_rate_ = 0.0;
   auto t0 = Clock::now();
   for (int k = 0; k < n; ++k) fixed_[k] = mesh_.fixed[k] || extra_fixed_[k];
   Assemble(params);
@@ -118,7 +119,7 @@ const ReynoldsSolution& ReynoldsFem::Solve(const ReynoldsParams& params) {
     const bool jfo = options_.cavitation == CavitationModel::kJfo;
     wetted += lumped_area_[k] * (jfo ? sol_.fluid_fraction[k] : (sol_.cavitated[k] ? 0.0 : 1.0));
   }
-  sol_.squeeze_rate = squeeze;
+  sol_.squeeze_rate = squeeze - capacity_rate_;
   sol_.void_volume = voids;
   sol_.wetted_area = wetted;
   return sol_;

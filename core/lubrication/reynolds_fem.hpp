@@ -159,7 +159,9 @@ struct ReynoldsSolution {
   /// through its boundary) equals squeeze_rate - (void_volume - void volume of the history) / dt
   /// for a transient JFO solve (squeeze_rate alone when quasi-static or Reynolds, plus the
   /// Reynolds condition's unbalanced cavitated nodes).
-  double squeeze_rate = 0.0;  ///< integral of phi_c dh/dt over the film [m^3/s]
+  /// integral of phi_c dh/dt over the film [m^3/s], less (transient JFO) the part of it a
+  /// cavity's void takes beyond the gap's own change over the step (SolveJfo: the capacity)
+  double squeeze_rate = 0.0;
   double void_volume = 0.0;   ///< sum of lumped area x void_content [m^3]
   /// Oil-covered area [m^2]: the lumped integral of theta (JFO), of the uncavitated nodes
   /// (Reynolds, which tracks no oil in a cavity).
@@ -219,6 +221,14 @@ class ReynoldsFem {
   /// Transient JFO: the void content [m] per node at the start of the step (the previous
   /// solve's ReynoldsSolution::void_content; zero = a full film).
   Eigen::VectorXd& void_history() { return void_old_; }
+  /// Transient JFO: the mean gap h_T [m] per node at the start of the step (the previous solve's
+  /// mean_gap()); empty: not known (a cavity's void then takes the gap's change at the film's
+  /// rate, dh_T/dt times the step, whatever the gap did over the step). With it, a cavity's oil
+  /// stays >= 0 when that product overstates the gap's own change (SolveJfo).
+  Eigen::VectorXd& gap_history() { return gap_old_; }
+  /// The mean gap h_T = h + NodalFilmFactors::mean_gap_excess [m] of the last solve (the next
+  /// transient step's gap_history()).
+  const Eigen::VectorXd& mean_gap() const { return h_mean_; }
   const Eigen::VectorXd& film_thickness() const { return h_; }
   const Eigen::VectorXd& film_rate() const { return dhdt_; }
 
@@ -284,7 +294,7 @@ class ReynoldsFem {
   bool shear_plus_ = true;
   std::unique_ptr<SparseLdlt> ldlt_;
   std::unique_ptr<SparseLu> lu_;  // JFO: the mixed (p, r) system
-  Eigen::VectorXd h_, dhdt_, p_fixed_, f_, rhs_, x_, work_, theta_fixed_, void_old_;
+  Eigen::VectorXd h_, dhdt_, p_fixed_, f_, rhs_, x_, work_, theta_fixed_, void_old_, gap_old_;
   Eigen::VectorXd reduced_, boundary_saved_;  // pressure-dependent viscosity: q, and p_fixed_
   double time_step_ = 0.0;
   double compressibility_ = 0.0;  // JFO transient: 1 / bulk modulus [1/Pa] (0: incompressible)
@@ -302,6 +312,10 @@ class ReynoldsFem {
   std::vector<int> add_rows_;
   std::vector<double> add_values_;
   Eigen::VectorXd phi_c_, source_scale_;
+  Eigen::VectorXd void_capacity_;  // JFO transient: the void's capacity per node (scratch) [m]
+  /// JFO transient: the storage rate the capacity's excess over the gap takes from the film
+  /// (SolveJfo) [m^3/s], booked in ReynoldsSolution::squeeze_rate.
+  double capacity_rate_ = 0.0;
   /// The mean gap h_T = h + NodalFilmFactors::mean_gap_excess [m]: a JFO film's oil capacity and
   /// what its Couette flow carries (h for smooth surfaces and from H = 3 on).
   Eigen::VectorXd h_mean_;

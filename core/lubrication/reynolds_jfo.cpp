@@ -48,7 +48,25 @@ bool ReynoldsFem::SolveJfo() {
   // per unit area (h for smooth surfaces and from H = 3 on).
   const bool transient = time_step_ > 0.0;
   const double inv_dt = transient ? 1.0 / time_step_ : 0.0;
-  auto storage = [&](int k) { return transient ? h_mean_[k] * inv_dt : phi_c_[k] * dhdt_[k]; };
+  // The void's capacity c_k (transient). A cavitated node's void steps with the film's rate,
+  // V = V_old + dt dh_T/dt - dt (net oil outflow), dh_T/dt from the integrator's velocities at
+  // the new state (as in the full film's squeeze term), while its oil is h_T - V at the new gap.
+  // Where dt dh_T/dt overstates the gap's own change since the last accepted state (a step in
+  // a violent transient, where the rate and the positions differ by far more than in a smooth
+  // step; a quasi-static deformation closing a cavity) the oil would lose the difference, and
+  // could go below zero. So the void fraction r is taken against c_k = max(h_T, h_T,old + dt
+  // dh_T/dt): the step carries the void r c_k and leaves the oil (1 - r) c_k >= 0 (the upwind
+  // scheme's inflow is never negative). At r = 0 the node's equation is the full film's, so
+  // the complementarity keeps one equation per node in either state. The void content kept is
+  // r h_T (the fraction at the true gap); the difference r (c_k - h_T) is booked in the squeeze
+  // rate (capacity_rate_), so the oil account closes to round-off as before. In a smooth step
+  // c_k - h_T is O(dt^2), and 0 wherever the rate understates the change.
+  Eigen::VectorXd& capacity = void_capacity_;
+  capacity = h_mean_;
+  if (transient && gap_old_.size() == n)
+    for (int k = 0; k < n; ++k)
+      capacity[k] = std::max(h_mean_[k], gap_old_[k] + time_step_ * phi_c_[k] * dhdt_[k]);
+  auto storage = [&](int k) { return transient ? capacity[k] * inv_dt : phi_c_[k] * dhdt_[k]; };
   // The roughness's shear flow carries the upwind fraction too: its void part, soff_k r_k from k
   // to its neighbour along the shear flow (Assemble: shear_face_), adds -soff_k to B_kk and
   // +soff_k to B_sk.
@@ -234,8 +252,12 @@ bool ReynoldsFem::SolveJfo() {
   st.max_mass_residual = mass / scale;
   st.fraction_excess = excess;
   sol_.fluid_fraction = Eigen::VectorXd::Ones(n) - r;
-  for (int k = 0; k < n; ++k)
+  capacity_rate_ = 0.0;
+  for (int k = 0; k < n; ++k) {
     sol_.void_content[k] = fixed_[k] ? 0.0 : h_mean_[k] * (r[k] - compressibility_ * p[k]);
+    if (transient && !fixed_[k])
+      capacity_rate_ += lumped_area_[k] * r[k] * (capacity[k] - h_mean_[k]) * inv_dt;
+  }
   prev_active_ = cav;
   jfo_warm_ = converged;
   return converged;
