@@ -658,25 +658,14 @@ std::string FilmTrouble(const CrankTrainSample& s) {
         "the side force with this clearance/profile",
         s.skirt.min_gap * 1e6);
   }
-  for (const auto& [present, excess, deformation, joint] :
-       {std::tuple{s.bearing.present, s.bearing.fraction_excess, s.bearing.max_deformation,
-                   "big-end"},
-        std::tuple{s.skirt.present, s.skirt.fraction_excess, s.skirt.max_deformation, "skirt"}}) {
+  for (const auto& [present, excess, joint] :
+       {std::tuple{s.bearing.present, s.bearing.fraction_excess, "big-end"},
+        std::tuple{s.skirt.present, s.skirt.fraction_excess, "skirt"}}) {
     if (present && excess > coupling::kFractionTolerance) {
-      // On elastic surfaces the likelier cause: the quasi-static deformation's change of a
-      // cavity's gap is in neither its void nor its oil (docs/validation/ehd.md, item 11).
       return fmt::format(
           "{} film fraction left [0, 1] by {:.3g} (more than {:g}): the mass-conserving "
-          "cavitation solve failed; {}",
-          joint, excess, coupling::kFractionTolerance,
-          deformation > 0.0
-              ? fmt::format(
-                    "on elastic surfaces (deformation up to {:.3g} um) a cavity's void does not "
-                    "follow the deformation's change of its gap, which a compliant surface under "
-                    "a partial film can make larger than the gap: a stiffer surface or the "
-                    "Reynolds cavitation model",
-                    deformation * 1e6)
-              : std::string("refine the film mesh or tighten solver.relative_tolerance"));
+          "cavitation solve failed; refine the film mesh or tighten solver.relative_tolerance",
+          joint, excess, coupling::kFractionTolerance);
     }
   }
   for (const auto& [present, capped, joint] :

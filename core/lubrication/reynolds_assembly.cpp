@@ -209,6 +209,10 @@ void ReynoldsFem::Assemble(const ReynoldsParams& params) {
     h_mean_[k] = h_[k] + fc.mean_gap_excess;
     sol_.contact_pressure[k] = fc.contact_pressure;
   }
+  if (oil_fixed_.size() == n)
+    for (int k = 0; k < n; ++k)
+      if (fixed_[k] && oil_fixed_[k] > 0.0)
+        theta_fixed_[k] = h_mean_[k] > oil_fixed_[k] ? oil_fixed_[k] / h_mean_[k] : 1.0;
   std::fill(k_lower_.valuePtr(), k_lower_.valuePtr() + k_lower_.nonZeros(), 0.0);
   const bool jfo = options_.cavitation == CavitationModel::kJfo;
   const bool full = jfo || ldlt_->SupportsRowModify();  // full matrix: JFO LU, row additions

@@ -218,6 +218,12 @@ class ReynoldsFem {
   std::vector<EmbeddedCut>& embedded_cuts() { return cuts_; }
   /// JFO: fluid fraction theta on fixed nodes, in (0, 1] (default 1: a flooded boundary).
   Eigen::VectorXd& boundary_fraction() { return theta_fixed_; }
+  /// JFO: the oil content theta h_T [m] a starved fixed node holds (empty, or <= 0 at a node:
+  /// boundary_fraction() holds there). Where it is given, each solve takes that node's fraction
+  /// as min(1, oil / h_T) at its own mean gap h_T (written into boundary_fraction()): the supply
+  /// stays the given oil when the gap changes from solve to solve, as an elastic surface's
+  /// deformation changes it within one step.
+  Eigen::VectorXd& boundary_oil() { return oil_fixed_; }
   /// Transient JFO: the void content [m] per node at the start of the step (the previous
   /// solve's ReynoldsSolution::void_content; zero = a full film).
   Eigen::VectorXd& void_history() { return void_old_; }
@@ -294,7 +300,8 @@ class ReynoldsFem {
   bool shear_plus_ = true;
   std::unique_ptr<SparseLdlt> ldlt_;
   std::unique_ptr<SparseLu> lu_;  // JFO: the mixed (p, r) system
-  Eigen::VectorXd h_, dhdt_, p_fixed_, f_, rhs_, x_, work_, theta_fixed_, void_old_, gap_old_;
+  Eigen::VectorXd h_, dhdt_, p_fixed_, f_, rhs_, x_, work_, theta_fixed_, void_old_, gap_old_,
+      oil_fixed_;
   Eigen::VectorXd reduced_, boundary_saved_;  // pressure-dependent viscosity: q, and p_fixed_
   double time_step_ = 0.0;
   double compressibility_ = 0.0;  // JFO transient: 1 / bulk modulus [1/Pa] (0: incompressible)

@@ -224,21 +224,20 @@ void SkirtSolver::SolvePanel(Panel& pa, const SkirtState& s, double time_step) {
   }
   if (config_.supply == SkirtSupply::kStarved) {
     // The leading edge (where the liner's oil enters): y = L while the piston moves toward the
-    // crank, y = 0 on the way back; a partial film theta = 2 h_oil / h_T there (SkirtConfig).
-    Eigen::VectorXd& theta_in = fem.boundary_fraction();
-    theta_in.setOnes();
+    // crank, y = 0 on the way back; a partial film of content theta h_T = 2 h_oil there
+    // (SkirtConfig), its fraction taken by the film solve at the gap it solves with (on an
+    // elastic skirt the deformed one: the rigid gap may be closed there).
+    fem.boundary_fraction().setOnes();
+    Eigen::VectorXd& oil_in = fem.boundary_oil();
+    oil_in.setZero(n);
     const TriMesh& pm = fem.mesh();
     const double y_lead = s.piston_velocity > 0.0 ? pm.y_lines.back() : pm.y_lines.front();
     if (s.piston_velocity != 0.0) {
       const double at = s.stroke_position + y_lead;
       const double h_oil =
           config_.oil_film_table.empty() ? config_.oil_film : config_.oil_film_table(at);
-      for (int k = 0; k < n; ++k) {
-        if (!(pm.fixed[k] && pm.y[k] == y_lead)) continue;
-        const double mean_gap =
-            h[k] + (config_.film ? config_.film->At(h[k]).mean_gap_excess : 0.0);
-        theta_in[k] = std::min(1.0, 2.0 * h_oil / mean_gap);
-      }
+      for (int k = 0; k < n; ++k)
+        if (pm.fixed[k] && pm.y[k] == y_lead) oil_in[k] = 2.0 * h_oil;
     }
   }
   ReynoldsParams params;

@@ -437,6 +437,53 @@ class TestElasticFilm : public QObject {
   // The skirt: each panel's film is the rigid film plus the compliance (with the panel's mirror
   // image about its thrust plane, built here separately) times its load; infinitely stiff
   // surfaces give the rigid skirt's forces to 1e-10.
+  void starvedElasticSkirtTakesItsSupplyAtTheDeformedGap() {
+    // A starved skirt's leading edge holds the liner's oil, 2 h_oil per unit area (a fraction
+    // 2 h_oil / h_T of the gap there). On an elastic skirt the gap is the deformed one, which
+    // the film solve iterates on: the fraction must follow it, else the supply is the oil
+    // scaled by deformed / rigid gap (and a rigid gap past the liner gave a negative fraction,
+    // that emptied cells downstream of it far below zero oil).
+    // Half-spaces: they deform at the edge too, under the pressure next to it (an elastic layer
+    // deforms with the local pressure only, zero on the edge).
+    SkirtConfig cfg = ElasticSkirt(ComplianceModel::kHalfSpace, 5e9);
+    cfg.solver.cavitation = CavitationModel::kJfo;
+    cfg.supply = SkirtSupply::kStarved;
+    cfg.oil_film = 4e-6;
+    SkirtSolver solver(cfg);
+    const SkirtState state = SlappingSkirt();
+    const SkirtResult r = solver.Solve(state);
+    QVERIFY2(r.elastic.converged, r.elastic.message.c_str());
+    SkirtConfig rigid_cfg = cfg;
+    rigid_cfg.compliance = {};
+    SkirtSolver rigid(rigid_cfg);
+    rigid.Solve(state);
+    const Eigen::VectorXd& h_rigid = rigid.film_thickness();
+    int edge_nodes = 0, partial = 0;
+    double worst = 0.0, moved = 0.0;
+    for (int p = 0; p < 2; ++p) {
+      const ReynoldsFem& fem = solver.panel(p);
+      const std::vector<int>& nodes = solver.panel_nodes(p);
+      const TriMesh& m = fem.mesh();
+      for (int k = 0; k < fem.NodeCount(); ++k) {
+        if (!(m.fixed[k] && m.y[k] == m.y_lines.back())) continue;  // moving toward the crank
+        ++edge_nodes;
+        const double h_t = fem.mean_gap()[k];
+        const double oil = fem.solution().fluid_fraction[k] * h_t;
+        partial += oil < h_t;
+        worst = std::max(worst, std::abs(oil - std::min(h_t, 2.0 * cfg.oil_film)) / h_t);
+        moved = std::max(moved, std::abs(fem.film_thickness()[k] - h_rigid[nodes[k]]));
+      }
+    }
+    qInfo(
+        "leading edge: %d nodes, %d partial; deformation there up to %.3g um; oil against "
+        "2 h_oil: %.2g of the gap",
+        edge_nodes, partial, moved * 1e6, worst);
+    QVERIFY(edge_nodes > 0 && partial > 0);
+    QVERIFY(moved > 0.01 * 2.0 * cfg.oil_film);  // the deformation matters there
+    QVERIFY(worst < 1e-12);
+    QVERIFY(r.stats.fraction_excess < 1e-12);
+  }
+
   void elasticSkirtPanelsHoldTheirFixedPointAndTheStiffLimit() {
     for (const ComplianceModel model :
          {ComplianceModel::kElasticLayer, ComplianceModel::kHalfSpace}) {
