@@ -399,15 +399,11 @@ const BearingResult& BearingSolver::SolveAt(const BearingState& state, double t)
     from = history_.Before(t);
   }
   fem_.void_history() = from->void_content.front();
-  if (from->mean_gap.empty())
-    fem_.gap_history().resize(0);
-  else
-    fem_.gap_history() = from->mean_gap.front();
   return SolveStep(state, t - from->time);
 }
 
 void BearingSolver::AcceptStep(double t) {
-  if (Transient()) history_.Push(t, {fem_.solution().void_content}, {fem_.mean_gap()});
+  if (Transient()) history_.Push(t, {fem_.solution().void_content});
 }
 
 Eigen::VectorXd BearingSolver::PredictorInputs(const BearingState& s) const {

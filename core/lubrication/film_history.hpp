@@ -24,10 +24,6 @@ class FilmHistory {
     /// per Reynolds solver of the joint [m] (ReynoldsSolution::void_content: the void, less
     /// a compressible full film's compressed oil)
     std::vector<Eigen::VectorXd> void_content;
-    /// per Reynolds solver: the mean gap h_T [m] (ReynoldsFem::mean_gap) at `time`, which a step
-    /// from this entry compares the gap's change with (ReynoldsFem::gap_history); empty for the
-    /// starting state (a step from it does not compare).
-    std::vector<Eigen::VectorXd> mean_gap;
   };
   bool empty() const { return entries_.empty(); }
   void Clear() { entries_.clear(); }
@@ -38,10 +34,9 @@ class FilmHistory {
     return nullptr;
   }
   /// Records the state at t. Entries at or after t (a restarted integration) are dropped.
-  void Push(double t, std::vector<Eigen::VectorXd> void_content,
-            std::vector<Eigen::VectorXd> mean_gap = {}) {
+  void Push(double t, std::vector<Eigen::VectorXd> void_content) {
     while (!entries_.empty() && entries_.back().time >= t) entries_.pop_back();
-    entries_.push_back({t, std::move(void_content), std::move(mean_gap)});
+    entries_.push_back({t, std::move(void_content)});
     while (entries_.size() > kKept) entries_.pop_front();
   }
   const Entry& latest() const { return entries_.back(); }

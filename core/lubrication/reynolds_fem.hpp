@@ -227,13 +227,7 @@ class ReynoldsFem {
   /// Transient JFO: the void content [m] per node at the start of the step (the previous
   /// solve's ReynoldsSolution::void_content; zero = a full film).
   Eigen::VectorXd& void_history() { return void_old_; }
-  /// Transient JFO: the mean gap h_T [m] per node at the start of the step (the previous solve's
-  /// mean_gap()); empty: not known (a cavity's void then takes the gap's change at the film's
-  /// rate, dh_T/dt times the step, whatever the gap did over the step). With it, a cavity's oil
-  /// stays >= 0 when that product overstates the gap's own change (SolveJfo).
-  Eigen::VectorXd& gap_history() { return gap_old_; }
-  /// The mean gap h_T = h + NodalFilmFactors::mean_gap_excess [m] of the last solve (the next
-  /// transient step's gap_history()).
+  /// The mean gap h_T = h + NodalFilmFactors::mean_gap_excess [m] of the last solve.
   const Eigen::VectorXd& mean_gap() const { return h_mean_; }
   const Eigen::VectorXd& film_thickness() const { return h_; }
   const Eigen::VectorXd& film_rate() const { return dhdt_; }
@@ -300,8 +294,7 @@ class ReynoldsFem {
   bool shear_plus_ = true;
   std::unique_ptr<SparseLdlt> ldlt_;
   std::unique_ptr<SparseLu> lu_;  // JFO: the mixed (p, r) system
-  Eigen::VectorXd h_, dhdt_, p_fixed_, f_, rhs_, x_, work_, theta_fixed_, void_old_, gap_old_,
-      oil_fixed_;
+  Eigen::VectorXd h_, dhdt_, p_fixed_, f_, rhs_, x_, work_, theta_fixed_, void_old_, oil_fixed_;
   Eigen::VectorXd reduced_, boundary_saved_;  // pressure-dependent viscosity: q, and p_fixed_
   double time_step_ = 0.0;
   double compressibility_ = 0.0;  // JFO transient: 1 / bulk modulus [1/Pa] (0: incompressible)

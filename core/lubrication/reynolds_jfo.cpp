@@ -51,21 +51,23 @@ bool ReynoldsFem::SolveJfo() {
   // The void's capacity c_k (transient). A cavitated node's void steps with the film's rate,
   // V = V_old + dt dh_T/dt - dt (net oil outflow), dh_T/dt from the integrator's velocities at
   // the new state (as in the full film's squeeze term), while its oil is h_T - V at the new gap.
-  // Where dt dh_T/dt overstates the gap's own change since the last accepted state (a step in
-  // a violent transient, where the rate and the positions differ by far more than in a smooth
-  // step; a quasi-static deformation closing a cavity) the oil would lose the difference, and
-  // could go below zero. So the void fraction r is taken against c_k = max(h_T, h_T,old + dt
-  // dh_T/dt): the step carries the void r c_k and leaves the oil (1 - r) c_k >= 0 (the upwind
-  // scheme's inflow is never negative). At r = 0 the node's equation is the full film's, so
-  // the complementarity keeps one equation per node in either state. The void content kept is
-  // r h_T (the fraction at the true gap); the difference r (c_k - h_T) is booked in the squeeze
-  // rate (capacity_rate_), so the oil account closes to round-off as before. In a smooth step
-  // c_k - h_T is O(dt^2), and 0 wherever the rate understates the change.
+  // Where dt dh_T/dt overstates the gap's own change since the last accepted state (a step in a
+  // violent transient, where the rate and the positions differ by far more than in a smooth
+  // step; a quasi-static deformation closing a cavity, which is in no rate) the void can
+  // outgrow the gap: the oil would go below zero. So the void fraction r is taken against
+  // c_k = max(h_T, V_old + dt dh_T/dt), the void the step would hold with no flow: the node's
+  // oil in the step is (1 - r) c_k, never below zero (its upwind inflow is never negative), and
+  // at r = 0 its equation is the full film's, so the complementarity keeps one equation per node
+  // in either state. c_k = h_T wherever that void fits in the gap — everywhere but in a cell the
+  // step would overfill, so the scheme is unchanged wherever the fraction stays in [0, 1]. The
+  // void kept is r h_T (at the true gap); the difference r (c_k - h_T), a void no gap holds, is
+  // booked in the squeeze rate (capacity_rate_), so the oil account closes to round-off.
   Eigen::VectorXd& capacity = void_capacity_;
   capacity = h_mean_;
-  if (transient && gap_old_.size() == n)
+  if (transient)
     for (int k = 0; k < n; ++k)
-      capacity[k] = std::max(h_mean_[k], gap_old_[k] + time_step_ * phi_c_[k] * dhdt_[k]);
+      if (!fixed_[k])
+        capacity[k] = std::max(h_mean_[k], void_old_[k] + time_step_ * phi_c_[k] * dhdt_[k]);
   auto storage = [&](int k) { return transient ? capacity[k] * inv_dt : phi_c_[k] * dhdt_[k]; };
   // The roughness's shear flow carries the upwind fraction too: its void part, soff_k r_k from k
   // to its neighbour along the shear flow (Assemble: shear_face_), adds -soff_k to B_kk and
@@ -103,6 +105,13 @@ bool ReynoldsFem::SolveJfo() {
   // the face's fraction between the two nodes' (no new extremum). The flows out of and into a
   // fixed node (a supply, whose flow is booked as the supply) and out of a node without an
   // upstream neighbour keep the upwind fraction.
+  // The known flow drains one cell, k where c_k < 0 (more oil through the face than k's
+  // fraction), d where c_k > 0 (a flow back from d): as the slopes are the last accepted
+  // state's, a cell the step empties could still send oil on. So each correction is held to
+  // half the oil its drained cell keeps with no flow at all, A_j max(0, h_T - V_old - dt
+  // dh_T/dt) / dt (half: a cell is drained through two faces at most): with what the upwind
+  // fluxes bring, which is never negative, no cell then sends on more oil than it holds. It
+  // acts only where the step's squeeze or a large Courant number leaves a cell little oil.
   Eigen::VectorXd& correction = face_correction_;
   correction.setZero(n);
   if (transient && options_.void_transport_order >= 2) {
@@ -111,18 +120,24 @@ bool ReynoldsFem::SolveJfo() {
     Eigen::VectorXd& old = fraction_old_;
     old.resize(n);
     for (int k = 0; k < n; ++k) {
-      const double capacity = h_mean_[k];
-      old[k] = fixed_[k]        ? r_fixed[k]
-               : capacity > 0.0 ? std::clamp(void_old_[k] / capacity, 0.0, 1.0)
-                                : 0.0;
+      const double h_t = h_mean_[k];
+      old[k] = fixed_[k] ? r_fixed[k] : h_t > 0.0 ? std::clamp(void_old_[k] / h_t, 0.0, 1.0) : 0.0;
     }
+    // The oil flow [m^3/s] that would empty each cell within the step, with no flow in or out.
+    auto drain_limit = [&](int j) {
+      const double oil = h_mean_[j] - void_old_[j] - time_step_ * phi_c_[j] * dhdt_[j];
+      return lumped_area_[j] * std::max(0.0, oil) * inv_dt;
+    };
     for (int k = 0; k < n; ++k) {
       const int d = bnode[k], u = up[k];
       if (d < 0 || u < 0 || fixed_[k] || fixed_[d]) continue;
       const double s_up = (old[k] - old[u]) / gap[u], s_down = (old[d] - old[k]) / gap[k];
       if (!(s_up * s_down > 0.0)) continue;
       const double slope = s_up > 0.0 ? std::min(s_up, s_down) : std::max(s_up, s_down);
-      correction[k] = 0.5 * gap[k] * slope;
+      double c = 0.5 * gap[k] * slope;
+      const double budget = 0.5 * drain_limit(c < 0.0 ? k : d);
+      if (boff[k] * std::abs(c) > budget) c = std::copysign(budget / boff[k], c);
+      correction[k] = c;
       base[k] += boff[k] * correction[k];
       base[d] -= boff[k] * correction[k];
     }

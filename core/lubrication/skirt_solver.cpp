@@ -290,23 +290,13 @@ const SkirtResult& SkirtSolver::SolveAt(const SkirtState& state, double t) {
     history_.Push(FilmHistory::StartTime(t), std::move(flooded));
     from = history_.Before(t);
   }
-  for (size_t p = 0; p < panels_.size(); ++p) {
-    ReynoldsFem& fem = *panels_[p]->fem;
-    fem.void_history() = from->void_content[p];
-    if (from->mean_gap.empty())
-      fem.gap_history().resize(0);
-    else
-      fem.gap_history() = from->mean_gap[p];
-  }
+  for (size_t p = 0; p < panels_.size(); ++p)
+    panels_[p]->fem->void_history() = from->void_content[p];
   return SolveStep(state, t - from->time);
 }
 
 void SkirtSolver::AcceptStep(double t) {
-  if (Transient()) {
-    std::vector<Eigen::VectorXd> gaps;
-    for (const auto& pa : panels_) gaps.push_back(pa->fem->mean_gap());
-    history_.Push(t, VoidContent(), std::move(gaps));
-  }
+  if (Transient()) history_.Push(t, VoidContent());
 }
 
 const SkirtResult& SkirtSolver::SolveStep(const SkirtState& s, double time_step) {

@@ -921,8 +921,9 @@ class TestRunJob : public QObject {
   // the journal rebounds off the bearing (eps 0.989 -> 0.972 within a 6 us step) and the
   // integrator's rate of the gap overstates the gap's own change at the thinnest film, a
   // cavity there being emptied by the squeeze term alone; the run ended failed there (the
-  // big end's film fraction 1.04 at 79 degrees of the run-in). The void's capacity
-  // (ReynoldsFem::gap_history) keeps every accepted step's fraction within [0, 1].
+  // big end's film fraction 1.04 at 79 degrees of the run-in). The void's capacity (the
+  // mass-conserving solve: a void never outgrows its gap) keeps every accepted step's fraction
+  // within [0, 1].
   void anIdleSpeedMassConservingRunKeepsItsFilmFraction() {
     const io::LoadedCase loaded = io::LoadCase({});
     engine::EngineCase c = loaded.value;
