@@ -24,9 +24,9 @@ namespace filmdyn::coupling {
 struct OilAccount {
   bool kept = false;  ///< false: the joint's cavitation model does not conserve oil
   /// The largest excursion of the film fraction outside [0, 1] at any accepted step so far
-  /// (ReynoldsStats::fraction_excess). Diagnostic: violent transients (a journal driven onto
-  /// the bearing wall in the start-up) can take it far above 1 at single steps while the film
-  /// at the output steps stays within [0, 1] (docs/validation/cavitation.md).
+  /// (ReynoldsStats::fraction_excess). Diagnostic: the solve keeps every cell's oil >= 0 (the
+  /// void's capacity, docs/validation/cavitation.md), so this is round-off unless the solve
+  /// itself failed.
   double fraction_excess = 0.0;
   double time = 0.0;         ///< of the last accepted step [s]
   double supplied = 0.0;     ///< oil in through the supply (big end) / inflow nodes (skirt) [m^3]

@@ -160,14 +160,15 @@ SqueezeRun RunStrip(const std::function<double(double)>& gap,
     const ReynoldsSolution& sol = fem.Solve(params);
     run.stats.Add(sol.stats);
     // Oil in through the ends over the step, and the full-film part of the stored oil's change
-    // at the solver's own rate (the void part, and a compressible film's compressed oil,
-    // telescope: their total is read at the end).
+    // at the solver's own rate, as the solve books it (ReynoldsSolution::squeeze_rate; the void
+    // part, and a compressible film's compressed oil, telescope: their total is read at the
+    // end).
     for (int k = 0; k < n; ++k) {
       if (!m.fixed[k]) continue;
       net_in += options.time_step * sol.residual[k];
       inflow += options.time_step * std::max(sol.residual[k], 0.0);
     }
-    stored_change += options.time_step * fem.Integrate(fem.film_rate());
+    stored_change += options.time_step * sol.squeeze_rate;
     if (options.model == CavitationModel::kJfo) fem.void_history() = sol.void_content;
     double front = 0.5;
     bool any = false;

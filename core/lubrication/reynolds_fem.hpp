@@ -159,8 +159,8 @@ struct ReynoldsSolution {
   /// through its boundary) equals squeeze_rate - (void_volume - void volume of the history) / dt
   /// for a transient JFO solve (squeeze_rate alone when quasi-static or Reynolds, plus the
   /// Reynolds condition's unbalanced cavitated nodes).
-  /// integral of phi_c dh/dt over the film [m^3/s], less (transient JFO) the part of it a
-  /// cavity's void takes beyond the gap's own change over the step (SolveJfo: the capacity)
+  /// integral of phi_c dh/dt over the film [m^3/s], less (transient JFO) the void a step's
+  /// rate makes beyond a cell's gap, sum of A r (c - h_T) / dt (SolveJfo: the void's capacity)
   double squeeze_rate = 0.0;
   double void_volume = 0.0;   ///< sum of lumped area x void_content [m^3]
   /// Oil-covered area [m^2]: the lumped integral of theta (JFO), of the uncavitated nodes
@@ -219,10 +219,11 @@ class ReynoldsFem {
   /// JFO: fluid fraction theta on fixed nodes, in (0, 1] (default 1: a flooded boundary).
   Eigen::VectorXd& boundary_fraction() { return theta_fixed_; }
   /// JFO: the oil content theta h_T [m] a starved fixed node holds (empty, or <= 0 at a node:
-  /// boundary_fraction() holds there). Where it is given, each solve takes that node's fraction
-  /// as min(1, oil / h_T) at its own mean gap h_T (written into boundary_fraction()): the supply
-  /// stays the given oil when the gap changes from solve to solve, as an elastic surface's
-  /// deformation changes it within one step.
+  /// boundary_fraction() holds there). Where it is > 0, each solve takes that node's fraction
+  /// as oil / h_T at its own mean gap h_T, 1 where h_T <= oil (a closed gap too), and writes it
+  /// into boundary_fraction(), where it stays: a caller that later stops giving a node oil
+  /// sets its fraction again. The supply then stays the given oil when the gap changes from
+  /// solve to solve, as an elastic surface's deformation changes it within one step.
   Eigen::VectorXd& boundary_oil() { return oil_fixed_; }
   /// Transient JFO: the void content [m] per node at the start of the step (the previous
   /// solve's ReynoldsSolution::void_content; zero = a full film).

@@ -43,9 +43,10 @@ bool ReynoldsFem::SolveJfo() {
     if (fixed_[k]) base[k] = kf[diag_pos_full_[k]] * p_fixed_[k];
   // Void transport coefficients: B_kk = -(|U|/2) h_f w_k - A_k s_k, B_dk = +(|U|/2) h_f w_k
   // (d = downstream neighbour of k, h_f the mean gap at their face), where s_k = phi_c dh/dt =
-  // dh_T/dt (quasi-static) or h_T / dt (transient: the void content h_T r's backward
-  // difference, its old part moved to `base`). h_T is the mean gap, the oil a full film holds
-  // per unit area (h for smooth surfaces and from H = 3 on).
+  // dh_T/dt (quasi-static) or c_k / dt (transient: the backward difference of the void
+  // content, r c_k against the void's capacity c_k below, its old part moved to `base`). h_T is
+  // the mean gap, the oil a full film holds per unit area (h for smooth surfaces and from H = 3
+  // on).
   const bool transient = time_step_ > 0.0;
   const double inv_dt = transient ? 1.0 / time_step_ : 0.0;
   // The void's capacity c_k (transient). A cavitated node's void steps with the film's rate,
@@ -55,19 +56,21 @@ bool ReynoldsFem::SolveJfo() {
   // violent transient, where the rate and the positions differ by far more than in a smooth
   // step; a quasi-static deformation closing a cavity, which is in no rate) the void can
   // outgrow the gap: the oil would go below zero. So the void fraction r is taken against
-  // c_k = max(h_T, V_old + dt dh_T/dt), the void the step would hold with no flow: the node's
-  // oil in the step is (1 - r) c_k, never below zero (its upwind inflow is never negative), and
-  // at r = 0 its equation is the full film's, so the complementarity keeps one equation per node
-  // in either state. c_k = h_T wherever that void fits in the gap — everywhere but in a cell the
-  // step would overfill, so the scheme is unchanged wherever the fraction stays in [0, 1]. The
-  // void kept is r h_T (at the true gap); the difference r (c_k - h_T), a void no gap holds, is
-  // booked in the squeeze rate (capacity_rate_), so the oil account closes to round-off.
+  // c_k = max(h_T, X_k), X_k = V_old + dt dh_T/dt the void the step would make with no flow:
+  // the node's oil in the step is (1 - r) c_k, never below zero (its upwind inflow is never
+  // negative, nor is the pressure flow into a cavity while K's off-diagonals are <= 0), and at
+  // r = 0 its equation is the full film's, so the complementarity keeps one equation per node
+  // in either state. c_k = h_T wherever X_k fits in the gap, and there the scheme is unchanged;
+  // in a cell the step would overfill the fraction changes even where oil flowing in would have
+  // kept it in [0, 1]. The void kept is r h_T (at the true gap); the difference r (c_k - h_T), a
+  // void no gap holds, is booked in the squeeze rate (capacity_rate_), so the oil account
+  // closes to round-off.
   Eigen::VectorXd& capacity = void_capacity_;
   capacity = h_mean_;
+  auto no_flow_void = [&](int k) { return void_old_[k] + time_step_ * phi_c_[k] * dhdt_[k]; };
   if (transient)
     for (int k = 0; k < n; ++k)
-      if (!fixed_[k])
-        capacity[k] = std::max(h_mean_[k], void_old_[k] + time_step_ * phi_c_[k] * dhdt_[k]);
+      if (!fixed_[k]) capacity[k] = std::max(h_mean_[k], no_flow_void(k));
   auto storage = [&](int k) { return transient ? capacity[k] * inv_dt : phi_c_[k] * dhdt_[k]; };
   // The roughness's shear flow carries the upwind fraction too: its void part, soff_k r_k from k
   // to its neighbour along the shear flow (Assemble: shear_face_), adds -soff_k to B_kk and
@@ -123,10 +126,10 @@ bool ReynoldsFem::SolveJfo() {
       const double h_t = h_mean_[k];
       old[k] = fixed_[k] ? r_fixed[k] : h_t > 0.0 ? std::clamp(void_old_[k] / h_t, 0.0, 1.0) : 0.0;
     }
-    // The oil flow [m^3/s] that would empty each cell within the step, with no flow in or out.
+    // The oil flow [m^3/s] that would empty each cell within the step, with no flow in or out:
+    // its oil with no flow, c - X >= 0, over the step.
     auto drain_limit = [&](int j) {
-      const double oil = h_mean_[j] - void_old_[j] - time_step_ * phi_c_[j] * dhdt_[j];
-      return lumped_area_[j] * std::max(0.0, oil) * inv_dt;
+      return lumped_area_[j] * (capacity[j] - no_flow_void(j)) * inv_dt;
     };
     for (int k = 0; k < n; ++k) {
       const int d = bnode[k], u = up[k];
