@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 #include "core/base/input_error.hpp"
 #include "core/lubrication/surface_film.hpp"
@@ -26,15 +25,7 @@ LubricatedSkirtElement::LubricatedSkirtElement(lubrication::SkirtConfig config,
                                                multibody::BodyIndex piston, SkirtMounting mounting)
     : JointForceElement("lubricated skirt", multibody::kGround, piston),
       solver_(std::make_unique<lubrication::SkirtSolver>(std::move(config))),
-      mount_(mounting) {
-  const lubrication::SkirtGeometry& g = solver_->config().geometry;
-  const lubrication::TriMesh& m = solver_->mesh();
-  for (double y : m.y_lines) {
-    edge_y_.push_back(y);
-    edge_gap_thrust_.push_back(g.radial_clearance + g.profile(y) + g.ovality(0.0));
-    edge_gap_anti_.push_back(g.radial_clearance + g.profile(y) + g.ovality(std::numbers::pi));
-  }
-}
+      mount_(mounting) {}
 
 SkirtKinematics LubricatedSkirtElement::Kinematics(const BodyState& piston) const {
   SkirtKinematics k;
@@ -53,19 +44,10 @@ SkirtKinematics LubricatedSkirtElement::Kinematics(const BodyState& piston) cons
   // The pin's height (the CoM's, less the pin arm along the tilted axis): how far the piston
   // is down the stroke.
   k.state.stroke_position = mount_.pin_y_at_tdc - (piston.q[1] - arm * c - cg * s);
-  const double a_p = solver_->config().geometry.pin_position;
-  k.min_gap = 1e300;
-  for (std::size_t j = 0; j < edge_y_.size(); ++j) {
-    const double d = k.state.e0 + (edge_y_[j] - a_p) * k.state.gamma;
-    for (const auto& [gap, alpha] : {std::pair{edge_gap_thrust_[j] - d, 0.0},
-                                     std::pair{edge_gap_anti_[j] + d, std::numbers::pi}}) {
-      if (gap < k.min_gap) {
-        k.min_gap = gap;
-        k.min_gap_alpha = alpha;
-        k.min_gap_y = edge_y_[j];
-      }
-    }
-  }
+  const lubrication::SkirtGap gap = solver_->MinRigidGap(k.state.e0, k.state.gamma);
+  k.min_gap = gap.gap;
+  k.min_gap_alpha = gap.alpha;
+  k.min_gap_y = gap.y;
   return k;
 }
 

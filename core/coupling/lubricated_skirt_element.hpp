@@ -39,8 +39,8 @@ struct SkirtMounting {
 struct SkirtKinematics {
   lubrication::SkirtState state;
   Eigen::Matrix3d jac = Eigen::Matrix3d::Zero();  ///< ∂(e0, γ, s)/∂(x, y, θ)
-  double min_gap = 0.0;  ///< smallest geometric gap of the panels (their centre lines) [m]
-  double min_gap_alpha = 0.0, min_gap_y = 0.0;  ///< where: 0 thrust / π anti-thrust [rad], y [m]
+  double min_gap = 0.0;                           ///< smallest rigid gap over the panels' nodes [m]
+  double min_gap_alpha = 0.0, min_gap_y = 0.0;    ///< where: α from the thrust axis [rad], y [m]
 };
 
 class LubricatedSkirtElement final : public multibody::JointForceElement,
@@ -98,8 +98,6 @@ class LubricatedSkirtElement final : public multibody::JointForceElement,
 
   std::unique_ptr<lubrication::SkirtSolver> solver_;
   SkirtMounting mount_;
-  // Gap geometry on the two panel edges (α = 0 and π): static gap per axial node line.
-  std::vector<double> edge_y_, edge_gap_thrust_, edge_gap_anti_;
   // Cache of the last base evaluation (the integrator asks twice for the same state).
   double eval_time_ = 0.0;  ///< time of the evaluation in progress (film history)
   multibody::JointForceInput cached_in_;

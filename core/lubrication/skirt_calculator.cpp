@@ -46,8 +46,6 @@ SkirtCalculator::SkirtCalculator(SkirtConfig config, SkirtInputNames names)
       static_gap_.push_back(g.radial_clearance + g.profile(y) + g.ovality(alpha));
       cos_.push_back(std::cos(alpha));
       arm_.push_back(y - g.pin_position);
-      alpha_.push_back(alpha);
-      y_.push_back(y);
     }
   }
 }
@@ -62,12 +60,7 @@ double SkirtCalculator::min_equilibrium_film() const {
 }
 
 SkirtGap SkirtCalculator::MinGap(double e0, double tilt) const {
-  SkirtGap best{1e300, 0.0, 0.0};
-  for (std::size_t k = 0; k < static_gap_.size(); ++k) {
-    const double gap = static_gap_[k] - (e0 + arm_[k] * tilt) * cos_[k];
-    if (gap < best.gap) best = {gap, alpha_[k], y_[k]};
-  }
-  return best;
+  return solver_.MinRigidGap(e0, tilt);
 }
 
 std::pair<double, double> SkirtCalculator::E0Range(double tilt, double margin) const {

@@ -46,13 +46,6 @@ struct SkirtLoad {
   double piston_velocity = 0.0;  ///< u_p, + toward the crank [m/s]
 };
 
-/// Smallest geometric film (before any clamping) over the lubricated panels, and where.
-struct SkirtGap {
-  double gap = 0.0;    ///< [m]; <= 0: the skirt is in the liner there
-  double alpha = 0.0;  ///< [rad] from the thrust side
-  double y = 0.0;      ///< [m] from the skirt top
-};
-
 /// The calculator's answer at one state.
 struct SkirtPoint {
   SkirtState state;
@@ -125,7 +118,7 @@ class SkirtCalculator {
   SkirtInputNames names_;
   StopCheck stop_;
   // Per lubricated-panel node: static gap, cos α, arm y − a_p, α, y.
-  std::vector<double> static_gap_, cos_, arm_, alpha_, y_;
+  std::vector<double> static_gap_, cos_, arm_;
 };
 
 }  // namespace filmdyn::lubrication

@@ -299,13 +299,23 @@ void SkirtSolver::AcceptStep(double t) {
   if (Transient()) history_.Push(t, VoidContent());
 }
 
+SkirtGap SkirtSolver::MinRigidGap(double e0, double gamma) const {
+  SkirtGap best{1e300, 0.0, 0.0};
+  for (const auto& pa : panels_)
+    for (const int k : pa->node) {
+      const double gap = RigidGap(k, e0, gamma);
+      if (gap < best.gap) best = {gap, alpha_[k], mesh_.y[k]};
+    }
+  return best;
+}
+
 const SkirtResult& SkirtSolver::SolveStep(const SkirtState& s, double time_step) {
   s.Validate();
   const int n = mesh_.NodeCount();
   SkirtResult& r = result_;
   r = SkirtResult{};
   for (int k = 0; k < n; ++k) {
-    h_[k] = h_static_[k] - (s.e0 + arm_[k] * s.gamma) * cos_[k];  // paper eq. 2, our sign
+    h_[k] = RigidGap(k, s.e0, s.gamma);
     hdot_[k] = -(s.e0_dot + arm_[k] * s.gamma_dot) * cos_[k];     // paper eq. 3
     // Rigid surfaces: a film thinner than min_film is held there (and counted). Elastic ones:
     // the rigid film may close (the piston past the liner's wall) where the deformation opens

@@ -115,6 +115,13 @@ struct SkirtResult {
   ElasticSolveStats elastic;
 };
 
+/// Smallest geometric film (before any clamping) over the lubricated panels, and where.
+struct SkirtGap {
+  double gap = 0.0;    ///< [m]; <= 0: the skirt is in the liner there
+  double alpha = 0.0;  ///< [rad] from the thrust side
+  double y = 0.0;      ///< [m] from the skirt top
+};
+
 /// Construct once per skirt (mesh + symbolic factorisation), then Solve() per time step.
 ///
 /// The pin-boss relief Omega2 (p = 0, no film) separates the thrust panel Omega1 and the
@@ -152,6 +159,9 @@ class SkirtSolver {
   void SetPressureViscosity(PressureViscosity law) { config_.pressure_viscosity = std::move(law); }
   /// alpha [rad] of each node (x = R alpha).
   const std::vector<double>& alpha() const { return alpha_; }
+  /// The smallest rigid gap over the panels' nodes at this lateral position and tilt, and
+  /// where (the film SolveAt would start from, before it is held at min_film).
+  SkirtGap MinRigidGap(double e0, double gamma) const;
   /// 1 (default): the panels one after the other; 2: side by side.
   void SetThreads(int threads);
   /// The stop check of both panels' solves (ReynoldsFem::SetStopCheck).
@@ -170,6 +180,10 @@ class SkirtSolver {
   void SolvePanel(Panel& panel, const SkirtState& s, double time_step);
   const SkirtResult& SolveStep(const SkirtState& state, double time_step);
   std::vector<Eigen::VectorXd> VoidContent() const;
+  /// The rigid gap at node k (paper eq. 2, our sign) [m].
+  double RigidGap(int k, double e0, double gamma) const {
+    return h_static_[k] - (e0 + arm_[k] * gamma) * cos_[k];
+  }
 
   SkirtConfig config_;
   TriMesh mesh_;

@@ -202,6 +202,38 @@ class TestFilmElements : public QObject {
     QVERIFY(std::abs(k.min_gap - expected) < 1e-12);
   }
 
+  // An ovality table that opens the gap at the thrust axis (20 um there, none from 0.3 rad on):
+  // the smallest gap of the skirt moved toward thrust lies off the axis, where the film touches
+  // first. It is the smallest over every node of the panels (it was taken on the thrust and
+  // anti-thrust centre lines only, which here read 20 um too much).
+  void skirtSmallestGapIsFoundOffTheAxis() {
+    engine::EngineCase c = CoarseCase();
+    c.skirt.ovality_alpha = {0.0, 0.3};
+    c.skirt.ovality_h = {20e-6, 0.0};
+    engine::CrankTrain train = engine::BuildCrankTrain(c, 6000, engine::PressureCurve{});
+    auto element = engine::MakeLubricatedSkirt(c, train.layout);
+    auto& skirt = dynamic_cast<coupling::LubricatedSkirtElement&>(*element);
+    const coupling::SkirtKinematics k = skirt.Kinematics(PistonState(c, train.layout));
+    const lubrication::SkirtSolver& solver = skirt.solver();
+    const lubrication::SkirtGeometry& g = solver.config().geometry;
+    double expected = 1e300, alpha_at = -1.0, on_axis = 1e300;
+    for (int p = 0; p < lubrication::SkirtSolver::kPanels; ++p)
+      for (const int node : solver.panel_nodes(p)) {
+        const double a = solver.alpha()[node], y = solver.mesh().y[node];
+        const double gap = g.radial_clearance + g.profile(y) + g.ovality(a) -
+                           (k.state.e0 + (y - g.pin_position) * k.state.gamma) * std::cos(a);
+        if (gap < expected) expected = gap, alpha_at = a;
+        if (a == 0.0) on_axis = std::min(on_axis, gap);
+      }
+    qInfo(
+        "smallest gap %.4f um at %.3f rad (on the thrust axis %.4f um); reported %.4f um at "
+        "%.3f rad",
+        expected * 1e6, alpha_at, on_axis * 1e6, k.min_gap * 1e6, k.min_gap_alpha);
+    QVERIFY(alpha_at >= 0.3 && on_axis > expected + 10e-6);
+    QVERIFY(std::abs(k.min_gap - expected) < 1e-15);
+    QCOMPARE(k.min_gap_alpha, alpha_at);
+  }
+
   void skirtWrenchIsTheVirtualWorkOfTheFilmForces() {
     const engine::EngineCase c = CoarseCase();
     engine::CrankTrain train = engine::BuildCrankTrain(c, 6000, engine::PressureCurve{});
