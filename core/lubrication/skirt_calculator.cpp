@@ -38,16 +38,8 @@ struct Interval {
 
 SkirtCalculator::SkirtCalculator(SkirtConfig config, SkirtInputNames names)
     : solver_(std::move(config)), names_(std::move(names)) {
-  const SkirtGeometry& g = solver_.config().geometry;
-  const TriMesh& mesh = solver_.mesh();
-  for (int p = 0; p < SkirtSolver::kPanels; ++p) {
-    for (int node : solver_.panel_nodes(p)) {
-      const double alpha = solver_.alpha()[node], y = mesh.y[node];
-      static_gap_.push_back(g.radial_clearance + g.profile(y) + g.ovality(alpha));
-      cos_.push_back(std::cos(alpha));
-      arm_.push_back(y - g.pin_position);
-    }
-  }
+  for (int p = 0; p < SkirtSolver::kPanels; ++p)
+    for (int node : solver_.panel_nodes(p)) nodes_.push_back(node);
 }
 
 void SkirtCalculator::SetStopCheck(const StopCheck& check) {
@@ -65,16 +57,16 @@ SkirtGap SkirtCalculator::MinGap(double e0, double tilt) const {
 
 std::pair<double, double> SkirtCalculator::E0Range(double tilt, double margin) const {
   Interval range;  // cos e0 <= static - margin - arm tilt cos
-  for (std::size_t k = 0; k < static_gap_.size(); ++k) {
-    range.Add(cos_[k], static_gap_[k] - margin - arm_[k] * tilt * cos_[k]);
+  for (const int k : nodes_) {
+    range.Add(solver_.cos_alpha()[k], solver_.RigidGap(k, 0.0, tilt) - margin);
   }
   return {range.lo, range.hi};
 }
 
 std::pair<double, double> SkirtCalculator::TiltRange(double e0, double margin) const {
   Interval range;  // arm cos tilt <= static - margin - e0 cos
-  for (std::size_t k = 0; k < static_gap_.size(); ++k) {
-    range.Add(arm_[k] * cos_[k], static_gap_[k] - margin - e0 * cos_[k]);
+  for (const int k : nodes_) {
+    range.Add(solver_.arm()[k] * solver_.cos_alpha()[k], solver_.RigidGap(k, e0, 0.0) - margin);
   }
   return {range.lo, range.hi};
 }
@@ -317,9 +309,9 @@ bool SkirtCalculator::Newton(const SkirtLoad& load, double e0, double tilt, Skir
     }
     // Fraction to the floor: every node keeps at least 10 % of its distance to the floor.
     double t_max = 1.0;
-    for (std::size_t k = 0; k < static_gap_.size(); ++k) {
-      const double gap = static_gap_[k] - (x[0] + arm_[k] * x[1]) * cos_[k];
-      const double change = -(dx[0] + arm_[k] * dx[1]) * cos_[k];
+    for (const int k : nodes_) {
+      const double gap = solver_.RigidGap(k, x[0], x[1]);
+      const double change = -(dx[0] + solver_.arm()[k] * dx[1]) * solver_.cos_alpha()[k];
       if (change < 0.0) t_max = std::min(t_max, 0.9 * std::max(gap - floor, 0.0) / -change);
     }
     if (point.min_gap.gap - floor < 1e-3 * floor && t_max < 1e-2) {

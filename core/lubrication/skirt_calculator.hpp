@@ -117,9 +117,7 @@ class SkirtCalculator {
   SkirtSolver solver_;
   SkirtInputNames names_;
   StopCheck stop_;
-  // Per lubricated-panel node: static gap, cos α, arm y − a_p (the bounds of E0Range, TiltRange
-  // and the step limit; the smallest gap is SkirtSolver::MinRigidGap's).
-  std::vector<double> static_gap_, cos_, arm_;
+  std::vector<int> nodes_;  // the lubricated panels' nodes (the solver's gap geometry)
 };
 
 }  // namespace filmdyn::lubrication

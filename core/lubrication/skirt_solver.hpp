@@ -162,6 +162,16 @@ class SkirtSolver {
   /// The smallest rigid gap over the panels' nodes at this lateral position and tilt, and
   /// where (the film SolveAt would start from, before it is held at min_film).
   SkirtGap MinRigidGap(double e0, double gamma) const;
+  /// The rigid gap at node k (paper eq. 2, our sign): static_gap - (e0 + arm gamma) cos(alpha)
+  /// [m].
+  double RigidGap(int k, double e0, double gamma) const {
+    return h_static_[k] - (e0 + arm_[k] * gamma) * cos_[k];
+  }
+  /// Per node: the gap of the centred skirt (clearance, profile, ovality) [m], the arm y - a_p
+  /// from the pin [m], cos(alpha).
+  const Eigen::VectorXd& static_gap() const { return h_static_; }
+  const Eigen::VectorXd& arm() const { return arm_; }
+  const Eigen::VectorXd& cos_alpha() const { return cos_; }
   /// 1 (default): the panels one after the other; 2: side by side.
   void SetThreads(int threads);
   /// The stop check of both panels' solves (ReynoldsFem::SetStopCheck).
@@ -180,10 +190,6 @@ class SkirtSolver {
   void SolvePanel(Panel& panel, const SkirtState& s, double time_step);
   const SkirtResult& SolveStep(const SkirtState& state, double time_step);
   std::vector<Eigen::VectorXd> VoidContent() const;
-  /// The rigid gap at node k (paper eq. 2, our sign) [m].
-  double RigidGap(int k, double e0, double gamma) const {
-    return h_static_[k] - (e0 + arm_[k] * gamma) * cos_[k];
-  }
 
   SkirtConfig config_;
   TriMesh mesh_;
