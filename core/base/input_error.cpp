@@ -85,18 +85,29 @@ std::string FormatValue(double value) {
   return out.str();
 }
 
+std::string FormatValueExact(double value) {
+  if (!std::isfinite(value)) return FormatValue(value);
+  char digits[32];
+  const std::to_chars_result r = std::to_chars(digits, digits + sizeof digits, value);
+  const std::ptrdiff_t length = r.ptr - digits;
+  if (r.ec != std::errc() || length <= 0 || length > 31) return FormatValue(value);
+  return std::string(digits, static_cast<std::size_t>(length));
+}
+
 std::string FormatValueOutside(double value, double lo, double hi, bool lo_open, bool hi_open) {
   const std::string shown = FormatValue(value);
   if (!std::isfinite(value)) return shown;
   const double read = std::stod(shown);
   const bool reads_inside =
       (lo_open ? read > lo : read >= lo) && (hi_open ? read < hi : read <= hi);
-  if (!reads_inside) return shown;
-  char digits[32];
-  const std::to_chars_result r = std::to_chars(digits, digits + sizeof digits, value);
-  const std::ptrdiff_t length = r.ptr - digits;
-  if (r.ec != std::errc() || length <= 0 || length > 31) return shown;
-  return std::string(digits, static_cast<std::size_t>(length));
+  return reads_inside ? FormatValueExact(value) : shown;
+}
+
+std::string FormatBound(double bound, bool upper, bool open) {
+  const std::string shown = FormatValue(bound);
+  if (open || !std::isfinite(bound)) return shown;
+  const double read = std::stod(shown);
+  return (upper ? read > bound : read < bound) ? FormatValueExact(bound) : shown;
 }
 
 namespace {
@@ -128,8 +139,8 @@ void RequireInRange(const std::string& field, double value, double lo, double hi
   const bool above = lo_open ? value > lo : value >= lo;
   const bool below = hi_open ? value < hi : value <= hi;
   if (!std::isfinite(value) || !above || !below) {
-    const std::string range = std::string(lo_open ? "(" : "[") + FormatValue(lo) + ", " +
-                              FormatValue(hi) + (hi_open ? ")" : "]");
+    const std::string range = std::string(lo_open ? "(" : "[") + FormatBound(lo, false, lo_open) +
+                              ", " + FormatBound(hi, true, hi_open) + (hi_open ? ")" : "]");
     throw InputError(field, FormatValueOutside(value, lo, hi, lo_open, hi_open),
                      WithUnit("must be a finite number in " + range, unit));
   }

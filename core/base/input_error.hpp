@@ -32,10 +32,16 @@ void RequireUtf8(const std::string& field, std::string_view text);
 
 /// Formats a double for error messages with enough digits to be recognised ("nan", "inf" too).
 std::string FormatValue(double value);
+/// Every digit a double needs to be read back exactly (the shortest such form).
+std::string FormatValueExact(double value);
 /// A value refused for lying outside [lo, hi] (or an open end): FormatValue's, or every digit it
 /// needs where that would read as inside ("720.0000000000001", not "720", against [0, 720]).
 std::string FormatValueOutside(double value, double lo, double hi, bool lo_open = false,
                                bool hi_open = false);
+/// A range's bound as messages and documents show it: FormatValue's, or every digit it needs
+/// where a closed bound's FormatValue would read outside the range ("25.132741228718345", not
+/// "25.13274123", for an upper bound of 8 pi): the bound shown, typed back, is allowed.
+std::string FormatBound(double bound, bool upper, bool open = false);
 
 /// Throws InputError unless value is finite and > 0. unit is appended to the message, e.g. "m".
 void RequirePositive(const std::string& field, double value, const std::string& unit = "");

@@ -1235,12 +1235,13 @@ std::vector<CaseField> MakeSchema() {
   f.push_back(Scalar(
       "solver.run_in_angle", sol, &SolverCase::run_in_angle,
       {G::kSolver, "Run-in before the first cycle", "rad", "°CA", kDeg, Between(0.0, 8 * kPi),
-       "integrated at 10× looser tolerances before the first monitored cycle"}));
+       "integrated at 10× looser tolerances before the first monitored cycle; below 1e-9 rad, "
+       "none"}));
   f.push_back(Scalar(
       "solver.jfo_run_in_angle", sol, &SolverCase::jfo_run_in_angle,
       {G::kSolver, "Run-in with a mass-conserving film", "rad", "°CA", kDeg, Between(0.0, 8 * kPi),
        "instead of the run-in above when a lubricated film is JFO: its oil "
-       "content drains from the flooded start over about two cycles"}));
+       "content drains from the flooded start over about two cycles; below 1e-9 rad, none"}));
   f.push_back(
       Scalar("solver.error_estimate", sol, &SolverCase::error_estimate,
              {G::kSolver, "Discretisation-error estimate (1 = on)", "-", "–", 1.0, Between(0, 1),
@@ -1253,8 +1254,6 @@ std::vector<CaseField> MakeSchema() {
 
 // "1 value", "3 values": a list's length in an error.
 std::string Values(std::size_t n) { return std::to_string(n) + (n == 1 ? " value" : " values"); }
-
-std::string Bound(double value) { return FormatValue(value); }
 
 }  // namespace
 
@@ -1326,10 +1325,10 @@ std::string CaseField::RangeText() const {
   if (range.lo == -kInf && range.hi == kInf) {
     text = "finite";
   } else if (range.hi == kInf) {
-    text = (range.lo_open ? "> " : "≥ ") + Bound(range.lo);
+    text = (range.lo_open ? "> " : "≥ ") + FormatBound(range.lo, false, range.lo_open);
   } else {
-    text = std::string(range.lo_open ? "(" : "[") + Bound(range.lo) + ", " + Bound(range.hi) +
-           (range.hi_open ? ")" : "]");
+    text = std::string(range.lo_open ? "(" : "[") + FormatBound(range.lo, false, range.lo_open) +
+           ", " + FormatBound(range.hi, true, range.hi_open) + (range.hi_open ? ")" : "]");
   }
   return kind == FieldKind::kNumberList ? "each " + text : text;
 }

@@ -10,6 +10,19 @@ namespace filmdyn::io {
 
 namespace {
 
+// A default's number as the table shows it: FormatValue's digits, or every digit it needs where
+// those, typed back, would fall outside the field's range (a default at a range's end, such as
+// 8 pi).
+std::string Shown(const engine::CaseField& field, double value) {
+  const std::string shown = FormatValue(value);
+  try {
+    field.Check(std::stod(shown));
+    return shown;
+  } catch (const std::exception&) {
+    return FormatValueExact(value);
+  }
+}
+
 std::string DefaultText(const engine::CaseField& field, engine::EngineCase& c) {
   switch (field.kind) {
     case engine::FieldKind::kText: {
@@ -20,10 +33,10 @@ std::string DefaultText(const engine::CaseField& field, engine::EngineCase& c) {
       return "\"" + field.ChoiceName(c) + "\"";
     case engine::FieldKind::kNumber:
     case engine::FieldKind::kInteger:
-      return FormatValue(field.get(c));
+      return Shown(field, field.get(c));
     case engine::FieldKind::kNumberList: {
       std::string text = "[";
-      for (double v : field.list(c)) text += (text.size() > 1 ? ", " : "") + FormatValue(v);
+      for (double v : field.list(c)) text += (text.size() > 1 ? ", " : "") + Shown(field, v);
       return text + "]";
     }
   }

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <exception>
 
+#include "core/base/input_error.hpp"
 #include "core/io/case_file.hpp"
 
 namespace filmdyn::ui {
@@ -22,6 +23,18 @@ QString UnitSuffix(const engine::CaseField& field) {
 
 QString DisplayNumber(double si, const engine::CaseField& field) {
   return QLocale::c().toString(field.ToDisplay(si), 'g', 6);
+}
+
+// A closed bound or a default as the tooltip shows it: six digits, or every digit where those,
+// typed back, would fall outside the field's range (a value at a range's end, such as 1/9).
+QString DisplayTypable(double si, const engine::CaseField& field) {
+  const QString shown = DisplayNumber(si, field);
+  try {
+    field.Check(field.FromDisplay(shown.toDouble()));
+    return shown;
+  } catch (const std::exception&) {
+    return QString::fromStdString(FormatValueExact(field.ToDisplay(si)));
+  }
 }
 
 // The default case as File → New opens it: the embedded default.json (both joints lubricated),
@@ -56,14 +69,17 @@ QString DisplayRangeText(const engine::CaseField& field) {
   }
   const engine::FieldRange& r = field.range;
   const QString unit = UnitSuffix(field);
+  auto Bound = [&field](double bound, bool open) {
+    return open ? DisplayNumber(bound, field) : DisplayTypable(bound, field);
+  };
   QString text;
   if (std::isinf(r.lo) && std::isinf(r.hi)) {
     text = Tr("any finite number");
   } else if (std::isinf(r.hi)) {
-    text = (r.lo_open ? "> " : "≥ ") + DisplayNumber(r.lo, field) + unit;
+    text = (r.lo_open ? "> " : "≥ ") + Bound(r.lo, r.lo_open) + unit;
   } else {
     text = QString("%1%2, %3%4%5")
-               .arg(r.lo_open ? "(" : "[", DisplayNumber(r.lo, field), DisplayNumber(r.hi, field),
+               .arg(r.lo_open ? "(" : "[", Bound(r.lo, r.lo_open), Bound(r.hi, r.hi_open),
                     r.hi_open ? ")" : "]", unit);
   }
   return field.kind == FieldKind::kNumberList ? Tr("each %1").arg(text) : text;
@@ -81,12 +97,12 @@ QString DisplayDefaultText(const engine::CaseField& field) {
       return QString::fromStdString(field.ChoiceTitle(std::size_t(field.choice(c))));
     case FieldKind::kNumber:
     case FieldKind::kInteger:
-      return DisplayNumber(field.get(c), field) + UnitSuffix(field);
+      return DisplayTypable(field.get(c), field) + UnitSuffix(field);
     case FieldKind::kNumberList: {
       const std::vector<double>& values = field.list(c);
       if (values.empty()) return Tr("none");
       QStringList parts;
-      for (double v : values) parts << DisplayNumber(v, field);
+      for (double v : values) parts << DisplayTypable(v, field);
       return parts.join(", ") + UnitSuffix(field);
     }
   }

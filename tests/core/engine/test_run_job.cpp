@@ -950,6 +950,29 @@ class TestRunJob : public QObject {
     QVERIFY(last.skirt.oil.fraction_excess < coupling::kFractionTolerance);
   }
 
+  // A run-in of a vanishing angle is none: at 1e-300 rad the integrator's first steps were
+  // subnormal numbers and the mass-conserving film's solve failed at 0 °CA ("factorization
+  // failed"), where 0 and 1e-9 rad run.
+  void aVanishingRunInIsNone() {
+    engine::RunConfig config = DefaultConfig(3000, engine::Model::kOnlyLbrbe);
+    engine::EngineCase& c = config.engine_case;
+    c.big_end.cavitation = lubrication::CavitationModel::kJfo;
+    c.big_end.mesh_theta = 48;
+    c.big_end.mesh_z = 6;
+    c.solver.error_estimate = 0;
+    c.solver.jfo_run_in_angle = 1e-300;
+    QCOMPARE(engine::RunInAngle(c), 0.0);
+    c.solver.jfo_run_in_angle = engine::kShortestRunIn;
+    QCOMPARE(engine::RunInAngle(c), engine::kShortestRunIn);
+    c.solver.jfo_run_in_angle = 1e-300;
+    const engine::RunMonitor monitor = [](const engine::RunProgress& p) {
+      return p.run_in || p.crank_angle_deg < 30.0;  // stop 30 degrees into the first cycle
+    };
+    const engine::RunResult r = engine::RunJob(config, monitor);
+    QVERIFY2(r.status == engine::RunStatus::kCancelled, r.message.c_str());
+    QVERIFY(!r.samples.empty());
+  }
+
   // Shear thinning in an engine run: the Vogel oil calibrated to an HTHS viscosity of 3.2 mPa s
   // (Cross r 0.7, m 1) thins the big-end film; the summary's oil reports the law at the film
   // temperature.

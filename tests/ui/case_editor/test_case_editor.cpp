@@ -18,6 +18,7 @@
 #include <QLineEdit>
 #include <QLineSeries>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QStatusBar>
@@ -40,6 +41,7 @@
 #include "ui/case_editor/case_editor.hpp"
 #include "ui/case_editor/case_json.hpp"
 #include "ui/case_editor/case_parameters.hpp"
+#include "ui/case_editor/field_tooltip.hpp"
 #include "ui/case_editor/parameter_table_model.hpp"
 #include "ui/main_window.hpp"
 
@@ -82,6 +84,58 @@ class TestCaseEditor : public QObject {
     QCoreApplication::setOrganizationName("FilmDynTest");
     QCoreApplication::setApplicationName("test_case_editor");
     QSettings().clear();
+  }
+
+  // What a tooltip shows as a closed bound or a default, typed back into the cell, is allowed:
+  // six digits would round a bound at 1/9 or 8 pi outward, so those are shown with every digit.
+  void tooltipBoundsAndDefaultsTypedBackAreAllowed() {
+    using filmdyn::engine::CaseField;
+    using filmdyn::engine::FieldKind;
+    const QRegularExpression number(R"([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)");
+    int checked = 0;
+    for (const CaseField& f : filmdyn::engine::CaseSchema()) {
+      if (f.kind != FieldKind::kNumber && f.kind != FieldKind::kNumberList) continue;
+      const QString unit = QString::fromStdString(f.display_unit);
+      auto without_unit = [&unit](QString text) {
+        if (!unit.isEmpty() && text.endsWith(" " + unit)) text.chop(unit.size() + 1);
+        return text;
+      };
+      auto typed_back_allowed = [&f](const QString& text) {
+        try {
+          f.Check(f.FromDisplay(text.toDouble()));
+          return true;
+        } catch (const std::exception&) {
+          return false;
+        }
+      };
+      const QString range = without_unit(filmdyn::ui::DisplayRangeText(f));
+      const qsizetype open = range.indexOf(QRegularExpression("[\\[(]"));
+      const qsizetype comma = range.indexOf(", ", open);
+      if (open >= 0 && comma > open) {
+        if (range[open] == '[') {
+          const QString lo = range.mid(open + 1, comma - open - 1);
+          QVERIFY2(typed_back_allowed(lo), qPrintable(QString::fromStdString(f.path) + " " + lo));
+          ++checked;
+        }
+        if (range.endsWith(']')) {
+          const QString hi = range.mid(comma + 2, range.size() - comma - 3);
+          QVERIFY2(typed_back_allowed(hi), qPrintable(QString::fromStdString(f.path) + " " + hi));
+          ++checked;
+        }
+      }
+      const QString shown = without_unit(filmdyn::ui::DisplayDefaultText(f));
+      for (auto it = number.globalMatch(shown); it.hasNext();) {
+        const QString value = it.next().captured();
+        QVERIFY2(typed_back_allowed(value),
+                 qPrintable(QString::fromStdString(f.path) + " default " + value));
+        ++checked;
+      }
+    }
+    QVERIFY(checked > 200);
+    // The Patir-Cheng range's lower end, 1/9: six digits (0.111111) would lie below it.
+    const QString peklenik =
+        filmdyn::ui::DisplayRangeText(*filmdyn::engine::FindCaseField("skirt.peklenik"));
+    QVERIFY2(peklenik.startsWith("[0.1111111111111111"), qPrintable(peklenik));
   }
 
   void startsFromTheDefaultCaseAndCanRun() {
