@@ -41,7 +41,8 @@ PressureCurve::PressureCurve(std::vector<double> angles, std::vector<double> pre
                      "needs as many pressures as crank angles");
   }
   if (angles.size() < 8) {
-    throw InputError(field, std::to_string(angles.size()) + " points",
+    throw InputError(field,
+                     std::to_string(angles.size()) + (angles.size() == 1 ? " point" : " points"),
                      "needs at least 8 points covering 0–720 °CA, at most 10 °CA apart");
   }
   for (std::size_t k = 0; k < angles.size(); ++k) {
