@@ -973,6 +973,28 @@ class TestRunJob : public QObject {
     QVERIFY(!r.samples.empty());
   }
 
+  // A compressible oil far softer than a mineral oil (0.1 GPa against ~1.7 GPa) in a
+  // mass-conserving big end: the film's pressures pass its bulk modulus in the first degrees of
+  // the run-in and the journal reaches the bearing. The failure names the bulk modulus, not only
+  // the clearance and viscosity.
+  void aFailedSoftCompressibleFilmNamesItsBulkModulus() {
+    engine::RunConfig config = DefaultConfig(6000, engine::Model::kOnlyLbrbe);
+    engine::EngineCase& c = config.engine_case;
+    c.big_end.cavitation = lubrication::CavitationModel::kJfo;
+    c.big_end.mesh_theta = 48;
+    c.big_end.mesh_z = 6;
+    c.solver.error_estimate = 0;
+    c.lubricant.bulk_modulus = 1e8;
+    const engine::RunMonitor monitor = [](const engine::RunProgress& p) {
+      return p.run_in;  // the failure comes within the run-in; stop at the first cycle if not
+    };
+    const engine::RunResult r = engine::RunJob(config, monitor);
+    qInfo("%s", r.message.c_str());
+    QCOMPARE(r.status, engine::RunStatus::kFailed);
+    for (const char* part : {"touches the bearing", "bulk modulus (1e+08 Pa)", "1.7e9 Pa"})
+      QVERIFY2(r.message.find(part) != std::string::npos, part);
+  }
+
   // Shear thinning in an engine run: the Vogel oil calibrated to an HTHS viscosity of 3.2 mPa s
   // (Cross r 0.7, m 1) thins the big-end film; the summary's oil reports the law at the film
   // temperature.
