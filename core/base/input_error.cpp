@@ -94,10 +94,18 @@ std::string FormatValueExact(double value) {
   return std::string(digits, static_cast<std::size_t>(length));
 }
 
+bool ParseNumber(std::string_view text, double& value) {
+  double read = 0.0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), read);
+  if (text.empty() || error != std::errc() || end != text.data() + text.size()) return false;
+  value = read;
+  return true;
+}
+
 std::string FormatValueOutside(double value, double lo, double hi, bool lo_open, bool hi_open) {
   const std::string shown = FormatValue(value);
-  if (!std::isfinite(value)) return shown;
-  const double read = std::stod(shown);
+  double read = 0.0;
+  if (!std::isfinite(value) || !ParseNumber(shown, read)) return shown;
   const bool reads_inside =
       (lo_open ? read > lo : read >= lo) && (hi_open ? read < hi : read <= hi);
   return reads_inside ? FormatValueExact(value) : shown;
@@ -105,8 +113,8 @@ std::string FormatValueOutside(double value, double lo, double hi, bool lo_open,
 
 std::string FormatBound(double bound, bool upper, bool open) {
   const std::string shown = FormatValue(bound);
-  if (open || !std::isfinite(bound)) return shown;
-  const double read = std::stod(shown);
+  double read = 0.0;
+  if (open || !std::isfinite(bound) || !ParseNumber(shown, read)) return shown;
   return (upper ? read > bound : read < bound) ? FormatValueExact(bound) : shown;
 }
 

@@ -34,6 +34,9 @@ void RequireUtf8(const std::string& field, std::string_view text);
 std::string FormatValue(double value);
 /// Every digit a double needs to be read back exactly (the shortest such form).
 std::string FormatValueExact(double value);
+/// Reads a whole string as a number in the C locale's form (the forms FormatValue writes),
+/// whatever the process's locale; false (value untouched) when it is not one or out of range.
+bool ParseNumber(std::string_view text, double& value);
 /// A value refused for lying outside [lo, hi] (or an open end): FormatValue's, or every digit it
 /// needs where that would read as inside ("720.0000000000001", not "720", against [0, 720]).
 std::string FormatValueOutside(double value, double lo, double hi, bool lo_open = false,

@@ -296,14 +296,13 @@ bool IsMassConservingFilm(const Joint& joint) {
 inline bool HasMassConservingFilm(const EngineCase& c) {
   return IsMassConservingFilm(c.skirt) || IsMassConservingFilm(c.big_end);
 }
-/// The run-in a run integrates before its first monitored cycle [rad of crank]: none without a
-/// film (ideal joints have no start-up transient), jfo_run_in_angle with a mass-conserving one,
-/// else run_in_angle.
 /// A run-in shorter than this is none: its time would lie below what the integrator resolves
 /// (at 1e-300 rad its first steps were subnormal numbers and a mass-conserving film's solve
 /// failed) [rad].
 inline constexpr double kShortestRunIn = 1e-9;
-
+/// The run-in a run integrates before its first monitored cycle [rad of crank]: none without a
+/// film (ideal joints have no start-up transient), jfo_run_in_angle with a mass-conserving one,
+/// else run_in_angle; none below kShortestRunIn.
 inline double RunInAngle(const EngineCase& c) {
   if (c.skirt.model != JointModel::kLubricated && c.big_end.model != JointModel::kLubricated)
     return 0.0;

@@ -119,13 +119,12 @@ RunConfig MakeRunConfig(const EngineCase& engine_case, Model model, double rpm,
 
 namespace {
 
-// A starved skirt's film trouble (touching the liner, a fraction failure) can come from
-// the little oil the liner leaves it as well as from its mesh or clearance: said with the trouble.
 // A film failure's message with what in the case may have caused it: a starved skirt's liner
-// film; a compressible oil whose bulk modulus the film's pressures approached, beyond the small
-// density changes the mass-conserving film's linearised density rho0 (1 + p / beta) is meant for
-// (the default case's big end at 6000 rpm fails in the first degrees of its run-in at beta = 0.1
-// GPa, its pressures reaching 23 GPa; it runs at a mineral oil's 1.7 GPa).
+// film; a compressible oil whose bulk modulus the film's pressures passed, far beyond the small
+// density changes the mass-conserving film's linearised density rho0 (1 + p / beta) stands for
+// (the default case's big end at 6000 rpm fails in the first degrees of its run-in at beta =
+// 0.1 GPa, its pressures reaching 23 GPa; at a mineral oil's 1.7 GPa it runs, its steps' peaks
+// about 0.8 GPa).
 std::string WithCauseHint(std::string trouble, const EngineCase& c,
                           const CrankTrainSample& sample) {
   const bool skirt_trouble =
@@ -139,19 +138,28 @@ std::string WithCauseHint(std::string trouble, const EngineCase& c,
                "): a thicker film may carry it";
   }
   if (!skirt_trouble && !big_end_trouble) return trouble;
-  const double beta = skirt_trouble
-                          ? JointBulkModulus(c, c.skirt.oil, "skirt", c.skirt.cavitation)
-                          : JointBulkModulus(c, c.big_end.oil, "big_end", c.big_end.cavitation);
+  const JointOil& oil = skirt_trouble ? c.skirt.oil : c.big_end.oil;
+  const std::string joint = skirt_trouble ? "skirt" : "big_end";
+  double beta = 0.0;
+  try {
+    beta =
+        JointBulkModulus(c, oil, joint, skirt_trouble ? c.skirt.cavitation : c.big_end.cavitation);
+  } catch (const InputError&) {
+    return trouble;  // the failure's own message stands
+  }
   double peak = skirt_trouble ? sample.skirt.max_pressure : sample.bearing.max_pressure;
   const double step_peak =
       skirt_trouble ? sample.skirt.step_peak_pressure : sample.bearing.step_peak_pressure;
   if (std::isfinite(step_peak)) peak = std::max(peak, step_peak);
-  if (beta > 0.0 && peak > kCompressibleValidity * beta) {
+  if (beta > 0.0 && peak > beta) {
     trouble += fmt::format(
-        "; the film's pressures (up to {:.3g} Pa) passed a tenth of its oil's bulk modulus "
-        "({:.3g} Pa), beyond the small density changes the compressible film's linearised "
-        "density is meant for: mineral oils are about 1.7e9 Pa",
-        peak, beta);
+        "; the film's pressures (up to {:.3g} Pa) passed its oil's bulk modulus ({}bulk_modulus "
+        "= {:.3g} Pa), far beyond the small density changes the compressible film's linearised "
+        "density stands for",
+        peak, JointOilPrefix(oil, joint), beta);
+    if (beta < lubrication::OilSpec::kMineralOilBulkModulus)
+      trouble += fmt::format(" (mineral oils: about {:.2g} Pa)",
+                             lubrication::OilSpec::kMineralOilBulkModulus);
   }
   return trouble;
 }

@@ -220,10 +220,6 @@ double HeatBalanceTemperature(double supply_temperature, double share, double fr
 /// coupling::kFractionTolerance, a non-finite state. RunJob ends a run with it (status failed,
 /// the message followed by where).
 std::string FilmTrouble(const CrankTrainSample& sample);
-/// A failed compressible film's message names its oil's bulk modulus when the film's pressures
-/// passed this share of it (the density change p / beta a tenth: beyond the small changes a
-/// linearised density is meant for).
-inline constexpr double kCompressibleValidity = 0.1;
 
 /// Runs cycles from the assembled start until the periodic steady state (cycle-to-cycle change of
 /// the monitored outputs below solver.steady_state_tolerance of their range) or max_cycles, and

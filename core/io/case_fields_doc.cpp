@@ -15,10 +15,12 @@ namespace {
 // 8 pi).
 std::string Shown(const engine::CaseField& field, double value) {
   const std::string shown = FormatValue(value);
+  double read = 0.0;
+  if (!ParseNumber(shown, read)) return shown;
   try {
-    field.Check(std::stod(shown));
+    field.Check(read);
     return shown;
-  } catch (const std::exception&) {
+  } catch (const InputError&) {
     return FormatValueExact(value);
   }
 }

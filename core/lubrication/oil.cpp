@@ -225,7 +225,8 @@ void OilSpec::CheckBulkModulus(const std::string& prefix) const {
   if (!(bulk_modulus == 0.0 ||
         (bulk_modulus >= kMinBulkModulus && bulk_modulus <= kMaxBulkModulus))) {
     throw InputError(prefix + "bulk_modulus", FormatValue(bulk_modulus) + " Pa",
-                     "0 (incompressible) or 1e7–1e11 Pa (mineral oils: about 1.7 GPa)");
+                     "0 (incompressible) or 1e7–1e11 Pa (mineral oils: about " +
+                         FormatValue(kMineralOilBulkModulus / 1e9) + " GPa)");
   }
 }
 

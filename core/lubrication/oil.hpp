@@ -147,6 +147,8 @@ struct OilSpec {
   double bulk_modulus = 0.0;
   static constexpr double kMinBulkModulus = 1e7;
   static constexpr double kMaxBulkModulus = 1e11;
+  /// A mineral oil's at low pressure (the slope of Dowson and Higginson's density law) [Pa].
+  static constexpr double kMineralOilBulkModulus = 1.7e9;
   /// Throws filmdyn::InputError naming `prefix`bulk_modulus unless it is 0 or within
   /// [kMinBulkModulus, kMaxBulkModulus].
   void CheckBulkModulus(const std::string& prefix) const;

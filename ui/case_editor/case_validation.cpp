@@ -12,6 +12,7 @@
 #include "core/engine/pressure_curve.hpp"
 #include "core/io/case_file.hpp"
 #include "ui/case_editor/case_parameters.hpp"
+#include "ui/case_editor/field_tooltip.hpp"
 
 namespace filmdyn::ui {
 
@@ -54,14 +55,30 @@ std::string InDisplayUnits(const InputError& e) {
   if (f == nullptr || f->display_unit.empty() || f->display_unit == f->unit ||
       (f->display_scale == 1.0 && f->display_offset == 0.0))
     return e.what();
-  const char* begin = e.value().c_str();
-  char* end = nullptr;
-  const double si = std::strtod(begin, &end);
-  if (end == begin || *end != '\0' || !std::isfinite(si)) return e.what();
-  auto shown = [f](const std::string& number) {
-    return fmt::format("{:.6g}", f->ToDisplay(std::strtod(number.c_str(), nullptr)));
+  double si = 0.0;
+  if (!ParseNumber(e.value(), si) || !std::isfinite(si)) return e.what();
+  auto six = [f](double number) { return fmt::format("{:.6g}", f->ToDisplay(number)); };
+  // A rule's number (six digits); an interval's closed end as the tooltip shows it (typed back,
+  // allowed).
+  auto shown = [&six](const std::string& number) {
+    double v = 0.0;
+    return ParseNumber(number, v) ? six(v) : number;
   };
-  const std::string value = fmt::format("{:.6g}", f->ToDisplay(si)) + " " + f->display_unit;
+  auto closed_end = [f, &shown](const std::string& number) {
+    double v = 0.0;
+    return ParseNumber(number, v) ? DisplayTypable(v, *f).toStdString() : shown(number);
+  };
+  // The refused value: six digits, or every digit where those would read as allowed.
+  std::string refused = six(si);
+  double typed = 0.0;
+  try {
+    if (ParseNumber(refused, typed)) {
+      f->Check(f->FromDisplay(typed), e.field());
+      refused = FormatValueExact(f->ToDisplay(si));
+    }
+  } catch (const InputError&) {
+  }
+  const std::string value = refused + " " + f->display_unit;
   // Every quantity "<number> [<SI unit>]" of the rule, and an interval's two ends before it
   // (not for a unit with a shifted zero: a rule's temperature may be a difference).
   const std::string allowed = e.allowed();
@@ -76,8 +93,10 @@ std::string InDisplayUnits(const InputError& e) {
   std::smatch m;
   std::string rest = allowed;
   while (std::regex_search(rest, m, interval)) {
-    out += m.prefix().str() + m[1].str() + shown(m[2].str()) + ", " + shown(m[3].str()) +
-           m[4].str() + " " + f->display_unit;
+    out += m.prefix().str() + m[1].str() +
+           (m[1].str() == "[" ? closed_end(m[2].str()) : shown(m[2].str())) + ", " +
+           (m[4].str() == "]" ? closed_end(m[3].str()) : shown(m[3].str())) + m[4].str() + " " +
+           f->display_unit;
     rest = m.suffix().str();
   }
   rest = out + rest;

@@ -25,18 +25,6 @@ QString DisplayNumber(double si, const engine::CaseField& field) {
   return QLocale::c().toString(field.ToDisplay(si), 'g', 6);
 }
 
-// A closed bound or a default as the tooltip shows it: six digits, or every digit where those,
-// typed back, would fall outside the field's range (a value at a range's end, such as 1/9).
-QString DisplayTypable(double si, const engine::CaseField& field) {
-  const QString shown = DisplayNumber(si, field);
-  try {
-    field.Check(field.FromDisplay(shown.toDouble()));
-    return shown;
-  } catch (const std::exception&) {
-    return QString::fromStdString(FormatValueExact(field.ToDisplay(si)));
-  }
-}
-
 // The default case as File → New opens it: the embedded default.json (both joints lubricated),
 // read once; the built-in struct defaults if it cannot be read.
 const engine::EngineCase& DefaultCase() {
@@ -51,6 +39,20 @@ const engine::EngineCase& DefaultCase() {
 }
 
 }  // namespace
+
+QString DisplayTypable(double si, const engine::CaseField& field) {
+  const QString shown = DisplayNumber(si, field);
+  bool ok = false;
+  const double typed = shown.toDouble(&ok);  // QString reads the C locale's form
+  try {
+    if (ok) {
+      field.Check(field.FromDisplay(typed));
+      return shown;
+    }
+  } catch (const InputError&) {
+  }
+  return QString::fromStdString(FormatValueExact(field.ToDisplay(si)));
+}
 
 QString DisplayRangeText(const engine::CaseField& field) {
   using engine::FieldKind;

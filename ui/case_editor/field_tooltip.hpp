@@ -12,6 +12,10 @@ namespace filmdyn::ui {
 /// The allowed values in display units: "(0, 10000] µm", "[-10, 10] mm", "integer in [8, 5000]",
 /// "each [0, 180] °", "\"ideal\" or \"lubricated\"".
 QString DisplayRangeText(const engine::CaseField& field);
+/// A closed bound or a default in display units without the unit: six digits, or every digit
+/// where those, typed back, would fall outside the field's range (a value at a range's end, such
+/// as 1/9 or 8 pi).
+QString DisplayTypable(double si, const engine::CaseField& field);
 /// The value of the default case (File → New) in display units with the unit: "25 µm",
 /// "0, 7, 14, 21, 28 mm", "lubricated"; empty for long text.
 QString DisplayDefaultText(const engine::CaseField& field);

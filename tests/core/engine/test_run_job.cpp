@@ -16,6 +16,7 @@
 #include "core/engine/film_joints.hpp"
 #include "core/engine/run_job.hpp"
 #include "core/engine/run_memory.hpp"
+#include "core/io/case_fields_doc.hpp"
 #include "core/io/case_file.hpp"
 #include "core/io/field_output.hpp"
 #include "core/io/field_series.hpp"
@@ -962,6 +963,18 @@ class TestRunJob : public QObject {
     c.solver.error_estimate = 0;
     c.solver.jfo_run_in_angle = 1e-300;
     QCOMPARE(engine::RunInAngle(c), 0.0);
+    // The fields' documentation gives the same floor.
+    for (const char* path : {"solver.run_in_angle", "solver.jfo_run_in_angle"}) {
+      const std::string doc = io::CaseFieldsMarkdown();
+      const std::string row =
+          doc.substr(doc.find(path), doc.find('\n', doc.find(path)) - doc.find(path));
+      const auto below = row.find("below "), rad = row.find(" rad, none");
+      double floor = 0.0;
+      QVERIFY2(below != std::string::npos && rad != std::string::npos &&
+                   ParseNumber(row.substr(below + 6, rad - below - 6), floor) &&
+                   floor == engine::kShortestRunIn,
+               row.c_str());
+    }
     c.solver.jfo_run_in_angle = engine::kShortestRunIn;
     QCOMPARE(engine::RunInAngle(c), engine::kShortestRunIn);
     c.solver.jfo_run_in_angle = 1e-300;
@@ -991,7 +1004,8 @@ class TestRunJob : public QObject {
     const engine::RunResult r = engine::RunJob(config, monitor);
     qInfo("%s", r.message.c_str());
     QCOMPARE(r.status, engine::RunStatus::kFailed);
-    for (const char* part : {"touches the bearing", "bulk modulus (1e+08 Pa)", "1.7e9 Pa"})
+    for (const char* part : {"touches the bearing", "passed its oil's bulk modulus",
+                             "lubricant.bulk_modulus = 1e+08 Pa", "mineral oils: about 1.7e+09 Pa"})
       QVERIFY2(r.message.find(part) != std::string::npos, part);
   }
 

@@ -101,8 +101,11 @@ class TestCaseEditor : public QObject {
         return text;
       };
       auto typed_back_allowed = [&f](const QString& text) {
+        bool ok = false;
+        const double typed = text.toDouble(&ok);
+        if (!ok) return false;
         try {
-          f.Check(f.FromDisplay(text.toDouble()));
+          f.Check(f.FromDisplay(typed));
           return true;
         } catch (const std::exception&) {
           return false;

@@ -395,6 +395,24 @@ class TestCaseSchema : public QObject {
              std::string("geometry.rod_length = -1 mm: must be a finite number in (0, 100000] mm"));
     QCOMPARE(ui::InDisplayUnits(InputError("skirt.profile_h.2", "5e-05", "must be >= 0 [m]")),
              std::string("skirt.profile_h.2 = 50 µm: must be >= 0 µm"));
+    // A value just past a closed end in display units: the end is shown so that, typed back, it
+    // is allowed (six digits would show 0.2 rad as 11.4592 °CA, itself refused), and the value
+    // so that it reads outside.
+    const engine::CaseField& interval = *engine::FindCaseField("solver.output_interval");
+    try {
+      interval.Check(interval.FromDisplay(11.4592));
+      QFAIL("11.4592 °CA > 0.2 rad was allowed");
+    } catch (const InputError& e) {
+      const std::string text = ui::InDisplayUnits(e);
+      const auto comma = text.find(", "), close = text.find("] °CA");
+      QVERIFY2(text.rfind("solver.output_interval = 11.4592 °CA: ", 0) == 0 &&
+                   comma != std::string::npos && close != std::string::npos,
+               text.c_str());
+      const double upper =
+          QString::fromStdString(text.substr(comma + 2, close - comma - 2)).toDouble();
+      QVERIFY2(upper < 11.4592, text.c_str());
+      interval.Check(interval.FromDisplay(upper));  // typed back: allowed (throws otherwise)
+    }
     // Not a case field, or no number: as core says it.
     QCOMPARE(ui::InDisplayUnits(InputError("case", "x", "y")), std::string("case = x: y"));
     QCOMPARE(ui::InDisplayUnits(InputError("big_end.journal_radius", "abc", "must be a number")),
