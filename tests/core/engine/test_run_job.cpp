@@ -47,6 +47,16 @@ engine::RunConfig CoarseBigEndWithVogelOil() {
   c.lubricant.vogel_c = 165.0;
   return config;
 }
+// Only-LBRBE with a mass-conserving big end on the coarse test mesh (48 x 6), no error estimate.
+engine::RunConfig CoarseJfoBigEnd(double rpm) {
+  engine::RunConfig config = DefaultConfig(rpm, engine::Model::kOnlyLbrbe);
+  engine::EngineCase& c = config.engine_case;
+  c.big_end.cavitation = lubrication::CavitationModel::kJfo;
+  c.big_end.mesh_theta = 48;
+  c.big_end.mesh_z = 6;
+  c.solver.error_estimate = 0;
+  return config;
+}
 // The reported cycle's mean big-end friction power [W] and mean sampled side leakage [m³/s].
 std::pair<double, double> MeanBigEndPowerAndLeakage(const engine::RunResult& result) {
   double power = 0.0, leakage = 0.0;
@@ -955,12 +965,8 @@ class TestRunJob : public QObject {
   // subnormal numbers and the mass-conserving film's solve failed at 0 °CA ("factorization
   // failed"), where 0 and 1e-9 rad run.
   void aVanishingRunInIsNone() {
-    engine::RunConfig config = DefaultConfig(3000, engine::Model::kOnlyLbrbe);
+    engine::RunConfig config = CoarseJfoBigEnd(3000);
     engine::EngineCase& c = config.engine_case;
-    c.big_end.cavitation = lubrication::CavitationModel::kJfo;
-    c.big_end.mesh_theta = 48;
-    c.big_end.mesh_z = 6;
-    c.solver.error_estimate = 0;
     c.solver.jfo_run_in_angle = 1e-300;
     QCOMPARE(engine::RunInAngle(c), 0.0);
     // The fields' documentation gives the same floor.
@@ -991,13 +997,8 @@ class TestRunJob : public QObject {
   // the run-in and the journal reaches the bearing. The failure names the bulk modulus, not only
   // the clearance and viscosity.
   void aFailedSoftCompressibleFilmNamesItsBulkModulus() {
-    engine::RunConfig config = DefaultConfig(6000, engine::Model::kOnlyLbrbe);
-    engine::EngineCase& c = config.engine_case;
-    c.big_end.cavitation = lubrication::CavitationModel::kJfo;
-    c.big_end.mesh_theta = 48;
-    c.big_end.mesh_z = 6;
-    c.solver.error_estimate = 0;
-    c.lubricant.bulk_modulus = 1e8;
+    engine::RunConfig config = CoarseJfoBigEnd(6000);
+    config.engine_case.lubricant.bulk_modulus = 1e8;
     const engine::RunMonitor monitor = [](const engine::RunProgress& p) {
       return p.run_in;  // the failure comes within the run-in; stop at the first cycle if not
     };
