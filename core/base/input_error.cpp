@@ -102,20 +102,23 @@ bool ParseNumber(std::string_view text, double& value) {
   return true;
 }
 
-std::string FormatValueOutside(double value, double lo, double hi, bool lo_open, bool hi_open) {
-  const std::string shown = FormatValue(value);
+std::string FormatOnItsSide(double value, const std::string& shown,
+                            const std::function<bool(double)>& inside) {
   double read = 0.0;
   if (!std::isfinite(value) || !ParseNumber(shown, read)) return shown;
-  const bool reads_inside =
-      (lo_open ? read > lo : read >= lo) && (hi_open ? read < hi : read <= hi);
-  return reads_inside ? FormatValueExact(value) : shown;
+  return inside(read) != inside(value) ? FormatValueExact(value) : shown;
+}
+
+std::string FormatValueOutside(double value, double lo, double hi, bool lo_open, bool hi_open) {
+  return FormatOnItsSide(value, FormatValue(value), [=](double x) {
+    return (lo_open ? x > lo : x >= lo) && (hi_open ? x < hi : x <= hi);
+  });
 }
 
 std::string FormatBound(double bound, bool upper, bool open) {
-  const std::string shown = FormatValue(bound);
-  double read = 0.0;
-  if (open || !std::isfinite(bound) || !ParseNumber(shown, read)) return shown;
-  return (upper ? read > bound : read < bound) ? FormatValueExact(bound) : shown;
+  if (open) return FormatValue(bound);
+  return FormatOnItsSide(bound, FormatValue(bound),
+                         [=](double x) { return upper ? x <= bound : x >= bound; });
 }
 
 namespace {

@@ -2,6 +2,7 @@
 /// @file Bad user input (docs/conventions.md, "Error handling"): an exception whose message
 /// names the field, the value and what is allowed. Bugs in our own code are assertions instead,
 /// never this.
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -37,6 +38,11 @@ std::string FormatValueExact(double value);
 /// Reads a whole string as a number in the C locale's form (the forms FormatValue writes),
 /// whatever the process's locale; false (value untouched) when it is not one or out of range.
 bool ParseNumber(std::string_view text, double& value);
+/// `shown`, a short form of `value`, or every digit `value` needs (FormatValueExact) where
+/// `shown`, read back, would land on the other side of `inside` than `value` itself: a number
+/// shown as allowed is allowed when typed back, one shown as refused is refused.
+std::string FormatOnItsSide(double value, const std::string& shown,
+                            const std::function<bool(double)>& inside);
 /// A value refused for lying outside [lo, hi] (or an open end): FormatValue's, or every digit it
 /// needs where that would read as inside ("720.0000000000001", not "720", against [0, 720]).
 std::string FormatValueOutside(double value, double lo, double hi, bool lo_open = false,

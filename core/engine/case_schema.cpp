@@ -1299,6 +1299,15 @@ void CaseField::Check(double value, const std::string& field) const {
   }
 }
 
+bool CaseField::Allows(double si_value) const {
+  try {
+    Check(si_value);
+    return true;
+  } catch (const InputError&) {
+    return false;
+  }
+}
+
 std::string CaseField::AllowedText() const {
   try {
     Check(std::numeric_limits<double>::quiet_NaN());  // refused by every number field's check

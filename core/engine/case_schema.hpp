@@ -86,6 +86,8 @@ struct CaseField {
   /// Throws InputError naming `field` (the path, or path.k for a list element), the value and
   /// the allowed range when `si_value` is not allowed; the one check of a field's own range.
   void Check(double si_value, const std::string& field = {}) const;
+  /// Whether Check lets si_value through.
+  bool Allows(double si_value) const;
   /// "> 0 [m]", "[1e-14, 0.01] [-]", "integer in [8, 5000]", ... (docs and tooltips).
   std::string RangeText() const;
   /// What Check says a number or integer field allows ("must be a finite number in (0, 100]

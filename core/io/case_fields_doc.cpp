@@ -14,15 +14,7 @@ namespace {
 // those, typed back, would fall outside the field's range (a default at a range's end, such as
 // 8 pi).
 std::string Shown(const engine::CaseField& field, double value) {
-  const std::string shown = FormatValue(value);
-  double read = 0.0;
-  if (!ParseNumber(shown, read)) return shown;
-  try {
-    field.Check(read);
-    return shown;
-  } catch (const InputError&) {
-    return FormatValueExact(value);
-  }
+  return FormatOnItsSide(value, FormatValue(value), [&field](double x) { return field.Allows(x); });
 }
 
 std::string DefaultText(const engine::CaseField& field, engine::EngineCase& c) {

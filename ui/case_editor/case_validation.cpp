@@ -69,16 +69,7 @@ std::string InDisplayUnits(const InputError& e) {
     return ParseNumber(number, v) ? DisplayTypable(v, *f).toStdString() : shown(number);
   };
   // The refused value: six digits, or every digit where those would read as allowed.
-  std::string refused = six(si);
-  double typed = 0.0;
-  try {
-    if (ParseNumber(refused, typed)) {
-      f->Check(f->FromDisplay(typed), e.field());
-      refused = FormatValueExact(f->ToDisplay(si));
-    }
-  } catch (const InputError&) {
-  }
-  const std::string value = refused + " " + f->display_unit;
+  const std::string value = DisplayOnItsSide(si, *f, six(si)) + " " + f->display_unit;
   // Every quantity "<number> [<SI unit>]" of the rule, and an interval's two ends before it
   // (not for a unit with a shifted zero: a rule's temperature may be a difference).
   const std::string allowed = e.allowed();

@@ -40,18 +40,15 @@ const engine::EngineCase& DefaultCase() {
 
 }  // namespace
 
+std::string DisplayOnItsSide(double si, const engine::CaseField& field, const std::string& shown) {
+  return FormatOnItsSide(field.ToDisplay(si), shown, [&field](double display) {
+    return field.Allows(field.FromDisplay(display));
+  });
+}
+
 QString DisplayTypable(double si, const engine::CaseField& field) {
-  const QString shown = DisplayNumber(si, field);
-  bool ok = false;
-  const double typed = shown.toDouble(&ok);  // QString reads the C locale's form
-  try {
-    if (ok) {
-      field.Check(field.FromDisplay(typed));
-      return shown;
-    }
-  } catch (const InputError&) {
-  }
-  return QString::fromStdString(FormatValueExact(field.ToDisplay(si)));
+  return QString::fromStdString(
+      DisplayOnItsSide(si, field, DisplayNumber(si, field).toStdString()));
 }
 
 QString DisplayRangeText(const engine::CaseField& field) {

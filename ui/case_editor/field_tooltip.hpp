@@ -16,6 +16,9 @@ QString DisplayRangeText(const engine::CaseField& field);
 /// where those, typed back, would fall outside the field's range (a value at a range's end, such
 /// as 1/9 or 8 pi).
 QString DisplayTypable(double si, const engine::CaseField& field);
+/// `shown`, a short form of si in display units, or every digit where `shown`, typed back, would
+/// land on the other side of the field's range than si itself (core's FormatOnItsSide).
+std::string DisplayOnItsSide(double si, const engine::CaseField& field, const std::string& shown);
 /// The value of the default case (File → New) in display units with the unit: "25 µm",
 /// "0, 7, 14, 21, 28 mm", "lubricated"; empty for long text.
 QString DisplayDefaultText(const engine::CaseField& field);
