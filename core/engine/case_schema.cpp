@@ -161,7 +161,8 @@ void AddOilFields(std::vector<CaseField>& f, const std::string& prefix, FieldGro
       {"cross_exponent", "Cross m"},
       {"cross_rate", "Cross rate"},  // γ̇c: the combining dot is lost in many fonts
       {"hths", "HTHS"},
-      {"bulk_modulus", "β"}};
+      {"bulk_modulus", "β"},
+      {"density_law", "density law"}};
   auto number = [&](const char* name, double OilSpec::*member, const Info& info,
                     std::string description) {
     CaseField field = Base(prefix + name, FieldKind::kNumber, info);
@@ -327,9 +328,25 @@ void AddOilFields(std::vector<CaseField>& f, const std::string& prefix, FieldGro
           "0 = incompressible, else at least 0.01 GPa; mineral oils about 1.7 GPa "
           "(Dowson–Higginson's density law at low pressure); a JFO film's full zone then stores "
           "oil as its pressure rises; not with a pressure–viscosity law"},
-         "Bulk modulus of the oil in the full zone of a mass-conserving (JFO) film: density "
-         "ρ₀ (1 + p/β), so that the film stores oil as its pressure rises and a collapsing void "
-         "is cushioned; 0 keeps the oil incompressible (Reynolds films always are) " +
+         "Bulk modulus of the oil in the full zone of a mass-conserving (JFO) film, at low "
+         "pressure: the film stores oil as its pressure rises (density_law) and a collapsing "
+         "void is cushioned; 0 keeps the oil incompressible (Reynolds films always are) " +
+             whose);
+  using lubrication::DensityLaw;
+  choice("density_law", &OilSpec::density_law,
+         {ToString(DensityLaw::kLinear), ToString(DensityLaw::kDowsonHigginson)},
+         {group,
+          "Density law (compressible oil)",
+          "",
+          "",
+          1.0,
+          {},
+          "\"linear\": ρ/ρ₀ = 1 + p/β, for p/β of a few per cent; \"dowson_higginson\": "
+          "ρ/ρ₀ = 1 + (p/β)/(1 + p/(0.353 β)), stiffening with pressure (at most 35 % "
+          "denser), for film pressures of 0.1 GPa and more"},
+         "How a compressible oil's density rises with the film pressure: linearly with the bulk "
+         "modulus β, or by Dowson and Higginson's law ρ/ρ₀ = 1 + 0.6p/(1 + 1.7p) (p in GPa) with "
+         "its low-pressure slope set to 1/β " +
              whose);
 }
 
@@ -1408,6 +1425,8 @@ std::string CaseField::ChoiceTitle(std::size_t k) const {
       {"roelands", "Roelands"},
       {"cross", "Cross (critical shear rate)"},
       {"hths", "Cross, from the HTHS viscosity"},
+      {"linear", "linear (constant β)"},
+      {"dowson_higginson", "Dowson–Higginson"},
   };
   const std::string& name = choices.at(k);
   if (const auto it = kTitles.find(name); it != kTitles.end()) return it->second;
@@ -1659,6 +1678,17 @@ std::string UnusedReason(const EngineCase& c, const std::string& path, ChoiceWor
       return reynolds;
     if (path == "skirt.oil.bulk_modulus" && !skirt_jfo && !skirt_lubricant) return reynolds;
     if (path == "big_end.oil.bulk_modulus" && !big_end_jfo && !big_end_lubricant) return reynolds;
+    // The density law: as the bulk modulus, and only for a compressible oil.
+    for (const auto& [oil_prefix, oil_spec] :
+         {std::pair<std::string, const lubrication::OilSpec*>{"lubricant.", &c.lubricant},
+          std::pair<std::string, const lubrication::OilSpec*>{"skirt.oil.", &c.skirt.oil.own},
+          std::pair<std::string, const lubrication::OilSpec*>{"big_end.oil.",
+                                                              &c.big_end.oil.own}}) {
+      if (path != oil_prefix + "density_law") continue;
+      const std::string modulus = oil_prefix + "bulk_modulus";
+      if (std::string why = UnusedReason(c, modulus, wording); !why.empty()) return why;
+      if (oil_spec->bulk_modulus == 0.0) return "the oil is incompressible (" + modulus + " = 0)";
+    }
   }
   if (path.rfind("lubricant.", 0) == 0) return oil_reason(c.lubricant, path.substr(10));
   for (const auto& [joint, oil] : {std::pair{std::string("skirt"), &c.skirt.oil},

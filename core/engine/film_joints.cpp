@@ -115,6 +115,7 @@ lubrication::SkirtConfig SkirtConfigFromCase(const EngineCase& c,
   config.pressure_viscosity = oil.pressure;
   config.shear_thinning = oil.shear;
   config.bulk_modulus = JointBulkModulus(c, sk.oil, "skirt", sk.cavitation);
+  config.density_law = JointOilSpec(c, sk.oil).density_law;
   config.mesh.n_thrust = sk.mesh_thrust;
   config.mesh.n_relief = sk.mesh_relief;
   config.mesh.n_anti = sk.mesh_anti;
@@ -198,6 +199,7 @@ lubrication::BearingConfig BearingConfigFromCase(const EngineCase& c,
   config.pressure_viscosity = oil.pressure;
   config.shear_thinning = oil.shear;
   config.bulk_modulus = JointBulkModulus(c, be.oil, "big_end", be.cavitation);
+  config.density_law = JointOilSpec(c, be.oil).density_law;
   config.mesh.n_theta = be.mesh_theta;
   // The half has the same nodes and half the unknowns; the outputs show the whole width.
   config.mesh.symmetric_half = BigEndSolvesSymmetricHalf(be);

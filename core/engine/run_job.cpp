@@ -151,15 +151,19 @@ std::string WithCauseHint(std::string trouble, const EngineCase& c,
   const double step_peak =
       skirt_trouble ? sample.skirt.step_peak_pressure : sample.bearing.step_peak_pressure;
   if (std::isfinite(step_peak)) peak = std::max(peak, step_peak);
-  if (beta > 0.0 && peak > beta) {
+  const std::string prefix = JointOilPrefix(oil, joint);
+  if (beta > 0.0 && peak > beta &&
+      JointOilSpec(c, oil).density_law == lubrication::DensityLaw::kLinear) {
     trouble += fmt::format(
         "; the film's pressures (up to {:.3g} Pa) passed its oil's bulk modulus ({}bulk_modulus "
-        "= {:.3g} Pa), far beyond the small density changes the compressible film's linearised "
-        "density stands for",
-        peak, JointOilPrefix(oil, joint), beta);
+        "= {:.3g} Pa), far beyond the small density changes the linear density law stands for "
+        "({}density_law = \"{}\" stiffens with pressure as oils do",
+        peak, prefix, beta, prefix,
+        lubrication::ToString(lubrication::DensityLaw::kDowsonHigginson));
     if (beta < lubrication::OilSpec::kMineralOilBulkModulus)
-      trouble += fmt::format(" (mineral oils: about {:.2g} Pa)",
+      trouble += fmt::format("; mineral oils: about {:.2g} Pa",
                              lubrication::OilSpec::kMineralOilBulkModulus);
+    trouble += ")";
   }
   return trouble;
 }

@@ -88,7 +88,7 @@ RunSummary SummarizeRun(const std::string& case_name, const engine::RunConfig& c
     if (balanced) oil.temperature = *balanced;  // from the joint's heat balance
     const auto at = engine::JointOilAt(config.engine_case, oil, joint);
     const lubrication::OilSpec& spec = engine::JointOilSpec(config.engine_case, oil);
-    return JointOilUsed{
+    JointOilUsed used{
         oil.temperature,
         at.viscosity,
         oil.source == engine::OilSource::kOwn ? "own" : "lubricant",
@@ -105,6 +105,8 @@ RunSummary SummarizeRun(const std::string& case_name, const engine::RunConfig& c
         engine::JointBulkModulus(config.engine_case, oil, joint,
                                  joint == "skirt" ? config.engine_case.skirt.cavitation
                                                   : config.engine_case.big_end.cavitation)};
+    if (used.bulk_modulus > 0.0) used.density_law = lubrication::ToString(spec.density_law);
+    return used;
   };
   if (s.kpis.skirt) {
     const engine::JointFit fit = engine::SkirtFit(config.engine_case);
@@ -396,6 +398,7 @@ json SummaryToJson(const RunSummary& s) {
                  {"shear_thinning", u.shear_thinning},
                  {"bulk_modulus[Pa]", u.bulk_modulus}};
     if (!u.grade.empty()) oil[name]["grade"] = u.grade;
+    if (!u.density_law.empty()) oil[name]["density_law"] = u.density_law;
     if (u.shear_thinning != "none") {
       oil[name]["cross_ratio[-]"] = u.cross_ratio;
       oil[name]["cross_exponent[-]"] = u.cross_exponent;
@@ -593,6 +596,7 @@ RunSummary FromJson(const json& j) {
     if (o.contains("grade")) Read(o, "grade", at, &u.grade);
     if (o.contains("shear_thinning")) Read(o, "shear_thinning", at, &u.shear_thinning);
     if (o.contains("bulk_modulus[Pa]")) Read(o, "bulk_modulus[Pa]", at, &u.bulk_modulus);
+    if (o.contains("density_law")) Read(o, "density_law", at, &u.density_law);
     if (u.shear_thinning != "none") {
       Read(o, "cross_ratio[-]", at, &u.cross_ratio);
       Read(o, "cross_exponent[-]", at, &u.cross_exponent);

@@ -62,6 +62,8 @@ struct JointOilUsed {
   /// The bulk modulus the film ran with [Pa]: 0 = incompressible (every Reynolds film; a
   /// mass-conserving film with an incompressible oil).
   double bulk_modulus = 0.0;
+  /// With a bulk modulus: "linear" or "dowson_higginson" (lubrication::DensityLaw).
+  std::string density_law;
 };
 
 /// The film-temperature iteration of joints in heat-balance mode ("heat_balance" in the file,

@@ -452,6 +452,7 @@ const BearingResult& BearingSolver::SolveStep(const BearingState& s, double time
   params.film = config_.film.get();
   params.time_step = time_step;
   params.bulk_modulus = config_.bulk_modulus;
+  params.density_law = config_.density_law;
   // An imported compliance is fixed in the bearing body: the film's theta = 0 lies at the body
   // angle phi + pi - (bearing orientation).
   elastic_.SetOffset(R * WrapTwoPi(s.line_of_centres_angle + kPi - s.bearing_angle -

@@ -105,6 +105,7 @@ struct BearingConfig {
   /// Bulk modulus [Pa] of a compressible oil in a transient mass-conserving film
   /// (ReynoldsParams::bulk_modulus); 0 = incompressible.
   double bulk_modulus = 0.0;
+  DensityLaw density_law = DensityLaw::kLinear;  ///< ReynoldsParams::density_law
   BearingMeshSpec mesh;
   OilFeed feed;
   ReynoldsOptions solver;

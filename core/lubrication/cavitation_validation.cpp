@@ -140,6 +140,7 @@ SqueezeRun RunStrip(const std::function<double(double)>& gap,
   ReynoldsParams params;
   params.viscosity = 1.0 / 6.0;  // h^3 / (12 mu) = h^3 / 2
   params.bulk_modulus = options.bulk_modulus;
+  params.density_law = options.density_law;
   SqueezeRun run;
   const double dx = 1.0 / options.cells;
   const int i_probe = std::min(static_cast<int>(x_probe / dx), nx - 2);

@@ -53,6 +53,7 @@ struct SqueezeRunOptions {
   double end_time = 0.8;
   CavitationModel model = CavitationModel::kJfo;
   double bulk_modulus = 0.0;  ///< ReynoldsParams::bulk_modulus (0: incompressible)
+  DensityLaw density_law = DensityLaw::kLinear;  ///< ReynoldsParams::density_law
 };
 struct SqueezeRun {
   std::vector<double> t;         ///< step end times

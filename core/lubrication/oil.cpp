@@ -197,6 +197,25 @@ double CrossLaw::CriticalRateForHths(double mu1_hths, double hths, double ratio,
   return kHthsShearRate / std::pow(x_m, 1.0 / exponent);
 }
 
+const char* ToString(DensityLaw law) {
+  switch (law) {
+    case DensityLaw::kLinear:
+      return "linear";
+    case DensityLaw::kDowsonHigginson:
+      return "dowson_higginson";
+  }
+  return "?";
+}
+
+Compression Compression::Of(double bulk_modulus, DensityLaw law) {
+  Compression g;
+  if (bulk_modulus > 0.0) {
+    g.compressibility = 1.0 / bulk_modulus;
+    g.limit = law == DensityLaw::kDowsonHigginson ? kDowsonHigginsonLimit : 0.0;
+  }
+  return g;
+}
+
 const char* ToString(ShearThinning model) {
   switch (model) {
     case ShearThinning::kNone:

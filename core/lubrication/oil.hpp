@@ -118,6 +118,39 @@ enum class ShearThinning {
 };
 const char* ToString(ShearThinning model);
 
+/// How a compressible oil's density follows its gauge pressure p >= 0 in a mass-conserving
+/// film's full zone (OilSpec::bulk_modulus beta > 0).
+enum class DensityLaw {
+  /// rho / rho0 = 1 + p / beta: constant beta, good while p / beta is small (a few per cent).
+  kLinear,
+  /// Dowson and Higginson's rho / rho0 = 1 + 0.6 p / (1 + 1.7 p) (p in GPa), scaled to the oil's
+  /// own beta at low pressure: rho / rho0 = 1 + (p / beta) / (1 + p / (kappa beta)), kappa =
+  /// 0.6 / 1.7 the compression it tends to; beta = 1 / 0.6 GPa gives their law itself.
+  kDowsonHigginson
+};
+const char* ToString(DensityLaw law);
+
+/// The compression rho / rho0 - 1 of an oil in a full film, g(p), and its slope: what a
+/// compressible mass-conserving film stores beyond its gap per unit gap (reynolds_jfo.cpp).
+struct Compression {
+  static constexpr double kDowsonHigginsonLimit = 0.6 / 1.7;  ///< kappa
+  double compressibility = 0.0;  ///< 1 / beta [1/Pa]; 0: incompressible (g = 0)
+  double limit = 0.0;            ///< kappa (kDowsonHigginson), or 0: linear
+  static Compression Of(double bulk_modulus, DensityLaw law);
+  /// g(p); for p < 0 (a trial pressure of the film's solve, never a result) the linear law's.
+  double At(double p) const {
+    if (limit == 0.0 || p <= 0.0) return compressibility * p;
+    const double x = compressibility * p;
+    return x / (1.0 + x / limit);
+  }
+  /// dg/dp [1/Pa].
+  double Slope(double p) const {
+    if (limit == 0.0 || p <= 0.0) return compressibility;
+    const double d = 1.0 + compressibility * p / limit;
+    return compressibility / (d * d);
+  }
+};
+
 /// kGrade: Vogel's law fitted to a catalogue oil (oil_catalogue.hpp).
 enum class ViscosityModel { kConstant, kVogel, kGrade };
 const char* ToString(ViscosityModel model);
@@ -142,9 +175,11 @@ struct OilSpec {
   double cross_rate = 1.0e6;    ///< kCross: gamma_c at the HTHS temperature [1/s]
   /// kHths: viscosity at 150 °C and 10^6 1/s [Pa s]; 0 with a grade: the grade's
   double hths = 0.0;
-  /// Bulk modulus beta [Pa] of the oil in a mass-conserving film's full zone, density
-  /// rho0 (1 + p / beta); 0 = incompressible. 0 or within [kMinBulkModulus, kMaxBulkModulus].
+  /// Bulk modulus beta [Pa] of the oil in a mass-conserving film's full zone, at low pressure
+  /// (density_law); 0 = incompressible. 0 or within [kMinBulkModulus, kMaxBulkModulus].
   double bulk_modulus = 0.0;
+  /// With bulk_modulus > 0: how the density rises with the pressure.
+  DensityLaw density_law = DensityLaw::kLinear;
   static constexpr double kMinBulkModulus = 1e7;
   static constexpr double kMaxBulkModulus = 1e11;
   /// A mineral oil's at low pressure (the slope of Dowson and Higginson's density law) [Pa].

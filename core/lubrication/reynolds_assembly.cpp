@@ -321,8 +321,8 @@ void ReynoldsFem::Assemble(const ReynoldsParams& params) {
   }
   u_sum_ = params.u_sum;
   time_step_ = jfo ? params.time_step : 0.0;
-  compressibility_ =
-      time_step_ > 0.0 && params.bulk_modulus > 0.0 ? 1.0 / params.bulk_modulus : 0.0;
+  compression_ =
+      time_step_ > 0.0 ? Compression::Of(params.bulk_modulus, params.density_law) : Compression{};
   // Flow scale for relative tolerances: the Couette and squeeze flows through one cell.
   double scale = f_.cwiseAbs().maxCoeff();
   for (int k = 0; k < n; ++k) {

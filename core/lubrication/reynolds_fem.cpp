@@ -77,7 +77,7 @@ const ReynoldsSolution& ReynoldsFem::Solve(const ReynoldsParams& params) {
   // previous solution, the warm start, in q too), then recover p node by node.
   const PressureViscosity* pv = params.pressure_viscosity;
   if (pv != nullptr && !pv->active()) pv = nullptr;
-  if (pv != nullptr && compressibility_ > 0.0)
+  if (pv != nullptr && compression_.compressibility > 0.0)
     throw std::logic_error("ReynoldsFem::Solve: a compressible film with a pressure-viscosity law");
   if (pv != nullptr) {
     boundary_saved_ = p_fixed_;

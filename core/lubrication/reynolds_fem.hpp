@@ -101,11 +101,12 @@ struct ReynoldsParams {
   /// JFO only: 0 = quasi-static; > 0 = transient, the time [s] since the state whose void
   /// content is in ReynoldsFem::void_history().
   double time_step = 0.0;
-  /// JFO transient only: the oil's bulk modulus beta [Pa] (0 = incompressible). The full film
-  /// then stores h_T p / beta more oil than its gap holds at the cavitation pressure
-  /// (density rho0 (1 + p / beta)); the fluxes keep the density rho0. Not with a
-  /// pressure-dependent viscosity (the solve is in the reduced pressure there).
+  /// JFO transient only: the oil's bulk modulus beta [Pa] at low pressure (0 = incompressible).
+  /// The full film then stores h_T g(p) more oil than its gap holds at the cavitation pressure,
+  /// g = rho / rho0 - 1 after `density_law` (Compression, oil.hpp); the fluxes keep the density
+  /// rho0. Not with a pressure-dependent viscosity (the solve is in the reduced pressure there).
   double bulk_modulus = 0.0;
+  DensityLaw density_law = DensityLaw::kLinear;
   /// Pressure-dependent viscosity (nullptr or law kNone: mu = viscosity everywhere): the film is
   /// solved for the reduced pressure and the pressure recovered (oil.hpp); `viscosity` is mu at
   /// zero gauge pressure.
@@ -149,7 +150,7 @@ struct ReynoldsSolution {
   Eigen::VectorXd fluid_fraction;       ///< JFO theta = 1 - r (1 in the full film) [-]
   /// JFO: the oil the node's film lacks against a full film at the cavitation pressure, per
   /// unit area [m]: the void content (1 - theta) h_T (h_T the mean gap), less the compressed oil
-  /// h_T p / beta of a compressible full film (ReynoldsParams::bulk_modulus; negative there); 0 on
+  /// h_T g(p) of a compressible full film (ReynoldsParams::bulk_modulus; negative there); 0 on
   /// fixed nodes. The next transient step's void_history().
   Eigen::VectorXd void_content;
   Eigen::VectorXd residual;             ///< w = K p - f (+B r): nodal net outflow [m^3/s]; at
@@ -298,8 +299,10 @@ class ReynoldsFem {
   Eigen::VectorXd h_, dhdt_, p_fixed_, f_, rhs_, x_, work_, theta_fixed_, void_old_, oil_fixed_;
   Eigen::VectorXd reduced_, boundary_saved_;  // pressure-dependent viscosity: q, and p_fixed_
   double time_step_ = 0.0;
-  double compressibility_ = 0.0;  // JFO transient: 1 / bulk modulus [1/Pa] (0: incompressible)
-  Eigen::VectorXd compress_;      // JFO: each free node's compressed-oil storage A phi h/(beta dt)
+  Compression compression_;  // JFO transient: the oil's g(p) (none: incompressible)
+  // JFO: each free node's compressed-oil storage A h_T g'(p*) / dt, and the part of its
+  // linearisation about p* that is known, A h_T (g(p*) - g'(p*) p*) / dt (0 for a linear law).
+  Eigen::VectorXd compress_, compress_known_, compress_about_;
   std::vector<EmbeddedCut> cuts_;
   std::vector<std::uint8_t> extra_fixed_, fixed_, active_, prev_active_, next_active_;
   bool have_prev_ = false;

@@ -91,14 +91,43 @@ bool ReynoldsFem::SolveJfo() {
     boff[k] = a;
     r_fixed[k] = fixed_[k] ? 1.0 - theta_fixed_[k] : 0.0;
   }
-  // A compressible full film (transient) stores h_T p / beta more oil at node k: the
-  // backward difference of that content adds A_k h_T,k / (beta dt) to its pressure column's
-  // diagonal (its old part is in the node's old content, V_old, below).
+  // A compressible full film (transient) stores h_T g(p) more oil at node k (g = rho/rho0 - 1,
+  // Compression): the backward difference of that content, A_k h_T,k g(p_k) / dt, is in node k's
+  // row (its old part is in the node's old content, V_old, below). A linear law (g = p / beta)
+  // adds A_k h_T,k / (beta dt) to the pressure column's diagonal. A nonlinear one is linearised
+  // about the last iterate p*, g(p*) + g'(p*) (p - p*): the slope on the diagonal, the known
+  // rest on the right-hand side of a full node, and the iterations below go on until the
+  // linearisation's error is below kCompressionTolerance (Newton's method on the full nodes;
+  // g is increasing and concave, so each linear system keeps the structure of the linear law's).
   Eigen::VectorXd& compress = compress_;
+  Eigen::VectorXd& compress_known = compress_known_;
   compress.setZero(n);  // allocated once per solver
-  if (compressibility_ > 0.0)
+  compress_known.setZero(n);
+  const Compression& g = compression_;
+  const bool compressible = g.compressibility > 0.0;
+  const bool nonlinear_density = compressible && g.limit > 0.0;
+  constexpr double kCompressionTolerance = 1e-12;  // of g, i.e. of the oil a full gap holds
+  Eigen::VectorXd& p_star = compress_about_;
+  auto linearise = [&](const Eigen::VectorXd& about) {
+    for (int k = 0; k < n; ++k) {
+      if (fixed_[k]) continue;
+      const double scale = lumped_area_[k] * h_mean_[k] * inv_dt;
+      compress[k] = scale * g.Slope(about[k]);
+      compress_known[k] = scale * (g.At(about[k]) - g.Slope(about[k]) * about[k]);
+    }
+  };
+  if (nonlinear_density) {
+    // About the last solve's pressures (a nearby state's; none: p* = 0, the linear law's slope).
+    const Eigen::VectorXd& last = sol_.pressure;
+    p_star.setZero(n);
+    if (last.size() == n)
+      for (int k = 0; k < n; ++k)
+        if (std::isfinite(last[k])) p_star[k] = std::max(last[k], 0.0);
+    linearise(p_star);
+  } else if (compressible) {
     for (int k = 0; k < n; ++k)
-      if (!fixed_[k]) compress[k] = lumped_area_[k] * h_mean_[k] * compressibility_ * inv_dt;
+      if (!fixed_[k]) compress[k] = lumped_area_[k] * h_mean_[k] * g.compressibility * inv_dt;
+  }
   // Second-order transport (ReynoldsOptions::void_transport_order): the fraction carried
   // through the face from k to d is the upwind node's, 1 - r_k, less the limited slope's part
   // over the half gap to the face, c_k = (gap_kd / 2) minmod(s_uk, s_kd), where the slopes come
@@ -202,6 +231,9 @@ bool ReynoldsFem::SolveJfo() {
       return false;
     }
     x_ = base;
+    if (nonlinear_density)
+      for (int k = 0; k < n; ++k)
+        if (!fixed_[k] && !cav[k]) x_[k] -= compress_known[k];
     lu_->Solve(x_);
     double p_max = 0.0;
     for (int k = 0; k < n; ++k)
@@ -219,6 +251,21 @@ bool ReynoldsFem::SolveJfo() {
       const bool next = cav[k] ? (r[k] > -1e-12) : (p[k] < -p_tol);
       changed |= next != static_cast<bool>(cav[k]);
       next_active_[k] = next;
+    }
+    if (nonlinear_density) {
+      // The linearisation's error at the new pressures; then linearise about them.
+      double error = 0.0;
+      for (int k = 0; k < n; ++k) {
+        if (fixed_[k] || cav[k]) continue;
+        const double about = p_star[k];
+        error =
+            std::max(error, std::abs(g.At(p[k]) - g.At(about) - g.Slope(about) * (p[k] - about)));
+      }
+      for (int k = 0; k < n; ++k) p_star[k] = fixed_[k] || next_active_[k] ? 0.0 : p[k];
+      if (error > kCompressionTolerance) {
+        changed = true;
+        linearise(p_star);
+      }
     }
     std::swap(cav, next_active_);
     st.complementarity_s += Seconds(t2, Clock::now());
@@ -243,7 +290,11 @@ bool ReynoldsFem::SolveJfo() {
     // that has moved onto it) the supply fills it within the step, which its residual (the
     // supply flow) counts.
     if (transient) work_[k] += lumped_area_[k] * void_old_[k] * inv_dt;
-    work_[k] += compress[k] * p[k];
+    if (nonlinear_density) {
+      if (!fixed_[k]) work_[k] += lumped_area_[k] * h_mean_[k] * g.At(p[k]) * inv_dt;
+    } else {
+      work_[k] += compress[k] * p[k];
+    }
     if (correction[k] != 0.0) {  // the second-order part of the Couette flow from k to d
       work_[k] -= boff[k] * correction[k];
       work_[bnode[k]] += boff[k] * correction[k];
@@ -272,7 +323,7 @@ bool ReynoldsFem::SolveJfo() {
   sol_.fluid_fraction = Eigen::VectorXd::Ones(n) - r;
   capacity_rate_ = 0.0;
   for (int k = 0; k < n; ++k) {
-    sol_.void_content[k] = fixed_[k] ? 0.0 : h_mean_[k] * (r[k] - compressibility_ * p[k]);
+    sol_.void_content[k] = fixed_[k] ? 0.0 : h_mean_[k] * (r[k] - g.At(p[k]));
     if (transient && !fixed_[k])
       capacity_rate_ += lumped_area_[k] * r[k] * (capacity[k] - h_mean_[k]) * inv_dt;
   }

@@ -249,6 +249,7 @@ void SkirtSolver::SolvePanel(Panel& pa, const SkirtState& s, double time_step) {
   params.film = config_.film.get();
   params.time_step = time_step;
   params.bulk_modulus = config_.bulk_modulus;
+  params.density_law = config_.density_law;
   // The film's inputs for the deformation's predictor (ElasticFilm): the piston's secondary
   // motion and speed, and where a starved skirt's leading edge meets the liner's oil.
   Eigen::VectorXd inputs(config_.supply == SkirtSupply::kStarved ? 6 : 5);

@@ -48,6 +48,7 @@ struct SkirtConfig {
   /// Bulk modulus [Pa] of a compressible oil in a transient mass-conserving film
   /// (ReynoldsParams::bulk_modulus); 0 = incompressible.
   double bulk_modulus = 0.0;
+  DensityLaw density_law = DensityLaw::kLinear;  ///< ReynoldsParams::density_law
   SkirtMeshSpec mesh;
   ReynoldsOptions solver{.cold_start = ReynoldsOptions::ColdStart::kUnconstrained};
   /// Roughness factors; nullptr = smooth. Surface 1 = skirt, surface 2 = liner.
