@@ -37,6 +37,12 @@ inline constexpr double kHighestSupplyPressure = 2.0e6;
 /// at 6000 rpm 79 MPa, not warned).
 inline constexpr double kRigidBigEndPeakPressure = 250e6;
 
+/// The film pressure, as a fraction of its oil's bulk modulus, above which a compressible oil on
+/// the linear density law is warned of: there the linear law compresses the oil by 28 % more
+/// than Dowson and Higginson's law (0.1 against 0.078), and the gap grows fast beyond
+/// (docs/validation/cavitation.md, section 1c).
+inline constexpr double kLinearDensityPressureRatio = 0.1;
+
 /// A supply hole of a mass-conserving big end is resolved when the film's node rows within 0.9
 /// of its radius across the width number at least kHoleRowsAcross and the hole spans at least
 /// kHoleElementsAround mean elements around (docs/validation/errors.md, section 6: with one row
@@ -56,7 +62,10 @@ inline constexpr double kHoleElementsAround = 4.0;
 /// elastic half-spaces, a model engine runs outgrow), "high_supply_pressure" (the big end's
 /// supply pressure above kHighestSupplyPressure; value: its peak [Pa], with the crank angle of a
 /// curve's peak), "rigid_big_end_pressure" (a rigid big end's film pressure above
-/// kRigidBigEndPeakPressure in the reported cycle's samples; value: the peak [Pa]).
+/// kRigidBigEndPeakPressure in the reported cycle's samples; value: the peak [Pa]),
+/// "linear_density_law" (a compressible oil on the linear density law whose film pressure, in the
+/// samples or at the steps, passed kLinearDensityPressureRatio of its bulk modulus; value: the
+/// peak [Pa], limit: that fraction of the bulk modulus [Pa]).
 struct RunWarning {
   std::string code;
   std::string joint;    ///< "skirt", "big_end", or empty (the whole run)

@@ -424,6 +424,68 @@ class TestRunWarnings : public QObject {
     QVERIFY(!found());
   }
 
+  // A compressible oil on the linear density law whose film pressure (sampled or at the steps)
+  // passed a tenth of its bulk modulus: the warning names the joint, the peak and where, both
+  // laws' compression there and the field to change; none on Dowson and Higginson's law, below
+  // the ratio, with an incompressible oil or on a Reynolds film.
+  void aLinearDensityLawBeyondItsRangeWarns() {
+    engine::RunResult result;
+    for (double p : {100e6, 150e6, 50e6}) {
+      engine::CrankTrainSample s;
+      s.crank_angle = (360.0 + 10.0 * double(result.samples.size())) * M_PI / 180.0;
+      s.bearing.present = true;
+      s.bearing.max_pressure = p;
+      result.samples.push_back(s);
+    }
+    result.samples[2].bearing.step_peak_pressure = 850e6;  // between the samples, before 380 °CA
+    engine::EngineCase c = CoarseCase();
+    c.big_end.compliance = lubrication::ComplianceModel::kElasticLayer;  // no rigid-peak warning
+    c.big_end.cavitation = lubrication::CavitationModel::kJfo;
+    c.lubricant.bulk_modulus = 1.7e9;
+    auto found = [&]() -> std::optional<io::RunWarning> {
+      for (const io::RunWarning& w :
+           io::RunWarnings(Config(c, engine::Model::kOnlyLbrbe, 6000.0), result))
+        if (w.code == "linear_density_law") return w;
+      return std::nullopt;
+    };
+    std::optional<io::RunWarning> w = found();
+    QVERIFY(w.has_value());
+    QCOMPARE(w->joint, std::string("big_end"));
+    QCOMPARE(w->value, 850e6);
+    QCOMPARE(w->limit, io::kLinearDensityPressureRatio * 1.7e9);
+    QVERIFY(w->crank_angle_deg && std::abs(*w->crank_angle_deg - 380.0) < 1e-9);
+    // 850 MPa is half of 1.7 GPa: the linear law 50 %, Dowson–Higginson's 0.5/(1 + 0.5/0.353)
+    // = 21 %.
+    QVERIFY2(QString::fromStdString(w->message)
+                 .startsWith("the big-end film pressure reached 850 MPa at 380 °CA, 50 % of its "
+                             "oil's bulk modulus (lubricant.bulk_modulus = 1.7 GPa): there the "
+                             "linear density law compresses the oil by 50 %, an oil by Dowson and "
+                             "Higginson's law 21 %"),
+             w->message.c_str());
+    QVERIFY(QString::fromStdString(w->message)
+                .contains("lubricant.density_law = \"dowson_higginson\""));
+    QCOMPARE(io::WarningShortText(*w), std::string("linear density law big end"));
+    // The joint's own oil is named by its own field.
+    c.big_end.oil.source = engine::OilSource::kOwn;
+    c.big_end.oil.own = c.lubricant;
+    w = found();
+    QVERIFY(w.has_value());
+    QVERIFY2(QString::fromStdString(w->message).contains("(big_end.oil.bulk_modulus = 1.7 GPa)"),
+             w->message.c_str());
+    c.big_end.oil.own.density_law = lubrication::DensityLaw::kDowsonHigginson;
+    QVERIFY(!found());
+    c.big_end.oil.source = engine::OilSource::kLubricant;
+    QVERIFY(found());
+    result.samples[2].bearing.step_peak_pressure = 160e6;  // below 170 MPa
+    QVERIFY(!found());
+    result.samples[2].bearing.step_peak_pressure = 850e6;
+    c.lubricant.bulk_modulus = 0.0;
+    QVERIFY(!found());
+    c.lubricant.bulk_modulus = 1.7e9;
+    c.big_end.cavitation = lubrication::CavitationModel::kReynolds;
+    QVERIFY(!found());
+  }
+
   // A high eccentricity says how close the journal runs to the wall; past ε = 1 (elastic
   // surfaces) its rigid position is past the wall, not "within −5.6 µm" of it.
   void aHighEccentricitySaysWhereTheJournalRuns() {
