@@ -125,11 +125,11 @@ namespace {
 // (the default case's big end at 6000 rpm fails in the first degrees of its run-in at beta =
 // 0.1 GPa, its pressures reaching 23 GPa; at a mineral oil's 1.7 GPa it runs, its steps' peaks
 // about 0.8 GPa).
-std::string WithCauseHint(std::string trouble, const EngineCase& c,
+std::string WithCauseHint(const FilmFailure& failure, const EngineCase& c,
                           const CrankTrainSample& sample) {
-  const bool skirt_trouble =
-      trouble.rfind("piston skirt", 0) == 0 || trouble.rfind("skirt", 0) == 0;
-  const bool big_end_trouble = trouble.rfind("big-end", 0) == 0;
+  std::string trouble = failure.message;
+  const bool skirt_trouble = failure.joint == "skirt";
+  const bool big_end_trouble = failure.joint == "big_end";
   if (skirt_trouble && c.skirt.supply == lubrication::SkirtSupply::kStarved) {
     const std::string film = c.skirt.oil_film_values.empty()
                                  ? fmt::format("skirt.oil_film = {:.3g} um", c.skirt.oil_film * 1e6)
@@ -542,7 +542,7 @@ RunResult RunSingle(const RunConfig& config, const RunMonitor& monitor,
         result.stats = integrator.Stats();
         result.reynolds_solves = solves();
         const std::string where = where_now();
-        if (const std::string trouble = FilmTrouble(current.samples.back()); !trouble.empty()) {
+        if (const FilmFailure trouble = FilmTrouble(current.samples.back()); trouble.failed()) {
           result.status = RunStatus::kFailed;
           result.message = WithCauseHint(trouble, c, current.samples.back()) + where;
           failure_frame(0, j, t, current.samples.back());
@@ -581,7 +581,7 @@ RunResult RunSingle(const RunConfig& config, const RunMonitor& monitor,
             std::max(result.max_constraint_violation, sample.constraint_violation);
         result.stats = integrator.Stats();
         result.reynolds_solves = solves();
-        if (const std::string trouble = FilmTrouble(sample); !trouble.empty()) {
+        if (const FilmFailure trouble = FilmTrouble(sample); trouble.failed()) {
           result.status = RunStatus::kFailed;
           result.message = WithCauseHint(trouble, c, sample) + where_now();
           result.cycles = cycle;
@@ -680,45 +680,53 @@ void CheckRunMemory(const RunConfig& config) {
                 AvailableMemoryBytes());
 }
 
-std::string FilmTrouble(const CrankTrainSample& s) {
+FilmFailure FilmTrouble(const CrankTrainSample& s) {
   if (s.bearing.present && (!std::isfinite(s.bearing.eps) || s.bearing.eps >= s.bearing.eps_max)) {
-    return fmt::format(
-        "big-end journal touches the bearing (eps = {:.5f}): the film cannot carry the load "
-        "with this clearance/viscosity",
-        s.bearing.eps);
+    return {
+        "big_end",
+        fmt::format(
+            "big-end journal touches the bearing (eps = {:.5f}): the film cannot carry the load "
+            "with this clearance/viscosity",
+            s.bearing.eps)};
   }
   if (s.skirt.present &&
       (!std::isfinite(s.skirt.min_gap) || s.skirt.min_gap <= s.skirt.min_gap_allowed)) {
-    return fmt::format(
-        "piston skirt touches the liner (smallest gap {:.3g} um): the skirt film cannot carry "
-        "the side force with this clearance/profile",
-        s.skirt.min_gap * 1e6);
+    return {
+        "skirt",
+        fmt::format(
+            "piston skirt touches the liner (smallest gap {:.3g} um): the skirt film cannot carry "
+            "the side force with this clearance/profile",
+            s.skirt.min_gap * 1e6)};
   }
-  for (const auto& [present, excess, joint] :
-       {std::tuple{s.bearing.present, s.bearing.fraction_excess, "big-end"},
-        std::tuple{s.skirt.present, s.skirt.fraction_excess, "skirt"}}) {
+  for (const auto& [present, excess, joint, name] :
+       {std::tuple{s.bearing.present, s.bearing.fraction_excess, "big_end", "big-end"},
+        std::tuple{s.skirt.present, s.skirt.fraction_excess, "skirt", "skirt"}}) {
     if (present && excess > coupling::kFractionTolerance) {
-      return fmt::format(
-          "{} film fraction left [0, 1] by {:.3g} (more than {:g}): the mass-conserving "
-          "cavitation solve failed; refine the film mesh or tighten solver.relative_tolerance",
-          joint, excess, coupling::kFractionTolerance);
+      return {
+          joint,
+          fmt::format(
+              "{} film fraction left [0, 1] by {:.3g} (more than {:g}): the mass-conserving "
+              "cavitation solve failed; refine the film mesh or tighten solver.relative_tolerance",
+              name, excess, coupling::kFractionTolerance)};
     }
   }
-  for (const auto& [present, capped, joint] :
-       {std::tuple{s.bearing.present, s.bearing.capped_nodes, "big-end"},
-        std::tuple{s.skirt.present, s.skirt.capped_nodes, "skirt"}}) {
+  for (const auto& [present, capped, joint, name] :
+       {std::tuple{s.bearing.present, s.bearing.capped_nodes, "big_end", "big-end"},
+        std::tuple{s.skirt.present, s.skirt.capped_nodes, "skirt", "skirt"}}) {
     if (present && capped > 0) {
-      return fmt::format(
-          "{} film beyond the pressure-viscosity limit at {} nodes: with this oil's pressure "
-          "law no finite pressure carries the load (the isoviscous pressure exceeds the law's "
-          "limit, 1/alpha for Barus): a smaller coefficient (lubricant.barus_alpha or "
-          "lubricant.roelands_z, or the joint's own oil's) or pressure_viscosity \"none\"",
-          joint, capped);
+      return {
+          joint,
+          fmt::format(
+              "{} film beyond the pressure-viscosity limit at {} nodes: with this oil's pressure "
+              "law no finite pressure carries the load (the isoviscous pressure exceeds the law's "
+              "limit, 1/alpha for Barus): a smaller coefficient (lubricant.barus_alpha or "
+              "lubricant.roelands_z, or the joint's own oil's) or pressure_viscosity \"none\"",
+              name, capped)};
     }
   }
   if (!std::isfinite(s.piston_lateral) || !std::isfinite(s.crank_torque) ||
       !std::isfinite(s.big_end_force_on_rod.norm())) {
-    return "the solution diverged (non-finite state)";
+    return {"", "the solution diverged (non-finite state)"};
   }
   return {};
 }

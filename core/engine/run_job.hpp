@@ -215,11 +215,20 @@ struct RunResult {
 double HeatBalanceTemperature(double supply_temperature, double share, double friction_power,
                               double density, double heat_capacity, double outflow);
 
-/// The physical failure of a film joint at an output sample, or empty: the journal on the
-/// bearing, the skirt on the liner, a mass-conserving film fraction outside [0, 1] by more than
-/// coupling::kFractionTolerance, a non-finite state. RunJob ends a run with it (status failed,
-/// the message followed by where).
-std::string FilmTrouble(const CrankTrainSample& sample);
+/// The physical failure of a film joint at an output sample: the joint it is in ("skirt",
+/// "big_end", or empty: the whole run's state) and what happened; no message, no failure.
+struct FilmFailure {
+  std::string joint;
+  std::string message;
+  bool failed() const { return !message.empty(); }
+};
+
+/// The physical failure at an output sample, if any: the journal on the bearing, the skirt on
+/// the liner, a mass-conserving film fraction outside [0, 1] by more than
+/// coupling::kFractionTolerance, a film beyond its pressure-viscosity limit, a non-finite state.
+/// RunJob ends a run with it (status failed, the message followed by what in the case may have
+/// caused it and where).
+FilmFailure FilmTrouble(const CrankTrainSample& sample);
 
 /// Runs cycles from the assembled start until the periodic steady state (cycle-to-cycle change of
 /// the monitored outputs below solver.steady_state_tolerance of their range) or max_cycles, and

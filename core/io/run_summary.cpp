@@ -104,7 +104,8 @@ RunSummary SummarizeRun(const std::string& case_name, const engine::RunConfig& c
         at.shear.critical_rate,
         engine::JointBulkModulus(config.engine_case, oil, joint,
                                  joint == "skirt" ? config.engine_case.skirt.cavitation
-                                                  : config.engine_case.big_end.cavitation)};
+                                                  : config.engine_case.big_end.cavitation),
+        std::string()};
     if (used.bulk_modulus > 0.0) used.density_law = lubrication::ToString(spec.density_law);
     return used;
   };

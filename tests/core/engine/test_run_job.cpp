@@ -8,6 +8,7 @@
 #include <atomic>
 #include <fstream>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <sstream>
 
@@ -86,25 +87,50 @@ class TestRunJob : public QObject {
   Q_OBJECT
  private slots:
   // The check that ends a run at an output sample: a mass-conserving film fraction outside
-  // [0, 1] by more than the tolerance names the joint and the excess; within it, nothing.
+  // [0, 1] by more than the tolerance names the joint and the excess; within it, nothing. Each
+  // failure says which joint it is in (the cause hints are chosen by it), a non-finite state none.
   void filmFractionOutsideItsRangeIsTrouble() {
     engine::CrankTrainSample s;
     s.piston_lateral = s.crank_torque = 0.0;
     s.bearing.present = true;
     s.bearing.eps = 0.5;
-    QVERIFY(engine::FilmTrouble(s).empty());
+    QVERIFY(!engine::FilmTrouble(s).failed());
     s.bearing.fraction_excess = 0.9 * coupling::kFractionTolerance;
-    QVERIFY(engine::FilmTrouble(s).empty());
+    QVERIFY(!engine::FilmTrouble(s).failed());
     s.bearing.fraction_excess = 2e-3;
-    const QString bearing = QString::fromStdString(engine::FilmTrouble(s));
-    QVERIFY2(bearing.contains("big-end film fraction left [0, 1] by 0.002"), qPrintable(bearing));
+    engine::FilmFailure f = engine::FilmTrouble(s);
+    QVERIFY2(
+        QString::fromStdString(f.message).contains("big-end film fraction left [0, 1] by 0.002"),
+        f.message.c_str());
+    QCOMPARE(f.joint, std::string("big_end"));
     s.bearing.fraction_excess = 0.0;
     s.skirt.present = true;
     s.skirt.min_gap = 5e-6;
     s.skirt.fraction_excess = 0.5;
-    const QString skirt = QString::fromStdString(engine::FilmTrouble(s));
+    f = engine::FilmTrouble(s);
+    const QString skirt = QString::fromStdString(f.message);
     QVERIFY2(skirt.contains("skirt film fraction left [0, 1] by 0.5"), qPrintable(skirt));
     QVERIFY2(skirt.contains("refine the film mesh"), qPrintable(skirt));
+    QCOMPARE(f.joint, std::string("skirt"));
+    s.skirt.fraction_excess = 0.0;
+    s.skirt.capped_nodes = 3;
+    QCOMPARE(engine::FilmTrouble(s).joint, std::string("skirt"));
+    s.skirt.capped_nodes = 0;
+    s.skirt.min_gap = -1.0;  // on the liner
+    f = engine::FilmTrouble(s);
+    QVERIFY2(f.message.starts_with("piston skirt touches the liner"), f.message.c_str());
+    QCOMPARE(f.joint, std::string("skirt"));
+    s.skirt.min_gap = 5e-6;
+    s.bearing.eps = std::numeric_limits<double>::quiet_NaN();
+    QCOMPARE(engine::FilmTrouble(s).joint, std::string("big_end"));
+    s.bearing.eps = 0.5;
+    s.bearing.capped_nodes = 1;
+    QCOMPARE(engine::FilmTrouble(s).joint, std::string("big_end"));
+    s.bearing.capped_nodes = 0;
+    s.crank_torque = std::numeric_limits<double>::infinity();
+    f = engine::FilmTrouble(s);
+    QVERIFY(f.failed());
+    QCOMPARE(f.joint, std::string());
   }
   void idealRunReachesSteadyStateAndWritesFolder() {
     const engine::RunConfig config = DefaultConfig(6000);

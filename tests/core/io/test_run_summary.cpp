@@ -117,10 +117,11 @@ io::RunSummary Full() {
   big_end.max_eps = 0.97;
   big_end.max_eps_crank_angle_deg = 373.0;
   s.kpis = {skirt, big_end};
-  s.oil_skirt = io::JointOilUsed{393.15,  0.0061, "own", "grade", "barus", 2e-8,
-                                 "5w-30", "hths", 0.7,   1.0,     2.5e5};
+  s.oil_skirt = io::JointOilUsed{393.15, 0.0061, "own", "grade", "barus", 2e-8, "5w-30",
+                                 "hths", 0.7,    1.0,   2.5e5,   0.0,     ""};
   s.clearance_skirt = io::RunSummary::Clearance{25e-6, 18.5e-6};
-  s.oil_big_end = io::JointOilUsed{373.15, 0.02, "lubricant", "constant", "none", 0.0, ""};
+  s.oil_big_end = io::JointOilUsed{373.15, 0.02, "lubricant", "constant", "none", 0.0, "",
+                                   "none", 1.0,  1.0,         0.0,        0.0,    ""};
   return s;
 }
 

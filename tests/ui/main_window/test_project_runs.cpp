@@ -326,7 +326,7 @@ class TestProjectRuns : public QObject {
     const QString a_folder = t->runs()[0]->storedFolder();
     const QDir runs_folder(filmdyn::ui::RunsFolderFor(project));
     QVERIFY(runs_folder.mkpath("run-97") && runs_folder.mkpath("run-98"));
-    for (const QString& file : {"run-97/results.csv", "run-98/results.csv", "run-98.samples.csv"}) {
+    for (const char* file : {"run-97/results.csv", "run-98/results.csv", "run-98.samples.csv"}) {
       QFile f(runs_folder.filePath(file));
       QVERIFY(f.open(QIODevice::WriteOnly));
     }
