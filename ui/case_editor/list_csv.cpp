@@ -97,7 +97,8 @@ double ParseValue(const std::string& cell, const engine::CaseField& field,
 std::string ListCsvHeader(const CaseListTable& table) {
   std::string header;
   for (const engine::CaseField* field : table.columns) {
-    header += (header.empty() ? "" : ",") + ColumnTitle(*field);
+    if (!header.empty()) header += ',';
+    header += ColumnTitle(*field);
   }
   return header;
 }
@@ -190,7 +191,8 @@ std::string ListCsvText(const CaseListTable& table, const engine::EngineCase& c)
                          row < values.size() ? FormatValue(values[row]) : "(missing)",
                          "must be a number to be exported: correct the table first");
       }
-      line += (line.empty() ? "" : ",") + QString::number(display, 'g', 15).toStdString();
+      if (!line.empty()) line += ',';
+      line += QString::number(display, 'g', 15).toStdString();
     }
     text += line + "\n";
   }

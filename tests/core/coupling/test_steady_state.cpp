@@ -27,7 +27,7 @@ class TestSteadyState : public QObject {
   Q_OBJECT
  private slots:
   void convergesWhenChangeFallsBelowTolerance() {
-    PeriodicSteadyState monitor({{"e0", 0.0}, {"flat", 1e-9}}, 360, 0.01);
+    PeriodicSteadyState monitor({{"e0", 0.0, ""}, {"flat", 1e-9, ""}}, 360, 0.01);
     const double amplitude = 1.0, decay = 1.0;
     int converged_at = -1;
     for (int cycle = 0; cycle < 20 && converged_at < 0; ++cycle) {
@@ -44,7 +44,7 @@ class TestSteadyState : public QObject {
   }
 
   void flatQuantityUsesItsFloor() {
-    PeriodicSteadyState monitor({{"x", 1e-3}}, 10, 0.01);
+    PeriodicSteadyState monitor({{"x", 1e-3, ""}}, 10, 0.01);
     for (int cycle = 0; cycle < 2; ++cycle) {
       for (int k = 0; k < 10; ++k) monitor.Record(k, {1.0 + cycle * 1e-6});
       const auto verdict = monitor.EndCycle();
@@ -56,7 +56,7 @@ class TestSteadyState : public QObject {
   }
 
   void nanOrIncompleteCycleNeverConverges() {
-    PeriodicSteadyState monitor({{"x", 1.0}}, 4, 0.01);
+    PeriodicSteadyState monitor({{"x", 1.0, ""}}, 4, 0.01);
     for (int k = 0; k < 4; ++k) monitor.Record(k, {0.0});
     monitor.EndCycle();
     for (int k = 0; k < 4; ++k) monitor.Record(k, {k == 2 ? std::nan("") : 0.0});
@@ -66,7 +66,7 @@ class TestSteadyState : public QObject {
   }
 
   void reportsWorstQuantity() {
-    PeriodicSteadyState monitor({{"a", 0.0}, {"b", 0.0}}, 4, 0.01);
+    PeriodicSteadyState monitor({{"a", 0.0, ""}, {"b", 0.0, ""}}, 4, 0.01);
     for (int k = 0; k < 4; ++k) monitor.Record(k, {double(k), double(k)});
     monitor.EndCycle();
     for (int k = 0; k < 4; ++k) monitor.Record(k, {double(k) + 0.001, double(k) + 0.3});
@@ -77,9 +77,9 @@ class TestSteadyState : public QObject {
   }
 
   void badSettingsAreInputErrors() {
-    QVERIFY_THROWS_EXCEPTION(filmdyn::InputError, PeriodicSteadyState({{"x", 0}}, 1, 0.01));
-    QVERIFY_THROWS_EXCEPTION(filmdyn::InputError, PeriodicSteadyState({{"x", 0}}, 10, 0.0));
-    QVERIFY_THROWS_EXCEPTION(filmdyn::InputError, PeriodicSteadyState({{"x", 0}}, 10, NAN));
+    QVERIFY_THROWS_EXCEPTION(filmdyn::InputError, PeriodicSteadyState({{"x", 0, ""}}, 1, 0.01));
+    QVERIFY_THROWS_EXCEPTION(filmdyn::InputError, PeriodicSteadyState({{"x", 0, ""}}, 10, 0.0));
+    QVERIFY_THROWS_EXCEPTION(filmdyn::InputError, PeriodicSteadyState({{"x", 0, ""}}, 10, NAN));
   }
 };
 
