@@ -526,16 +526,15 @@ void RigidBigEndPressureWarning(const std::vector<engine::CrankTrainSample>& sam
 // kLinearDensityPressureRatio of its bulk modulus: the law compresses the oil far more there than
 // an oil is compressed, and the compressed oil's cushion of the film's peaks is the law's (the
 // default case's JFO big end at 6000 rpm: the steps' peak 810 MPa on the linear law, 1558 MPa on
-// Dowson and Higginson's, as on an incompressible film). The samples' and the steps' peaks.
+// Dowson and Higginson's, as on an incompressible film). engine::SampledPeaks gives each film's
+// peak, in the samples or at the steps between them.
 void LinearDensityLawWarning(const engine::EngineCase& c,
-                             const std::vector<engine::CrankTrainSample>& samples,
+                             const std::vector<engine::CrankTrainSample>& samples, bool whole_cycle,
                              std::vector<RunWarning>* out) {
-  for (const char* joint : {"skirt", "big_end"}) {
-    const bool skirt = joint == std::string("skirt");
+  for (const engine::SampledPeak& sampled : engine::SampledPeaks(samples, whole_cycle)) {
+    const bool skirt = !sampled.figure.big_end;
+    const char* joint = skirt ? "skirt" : "big_end";
     const engine::JointOil& oil = skirt ? c.skirt.oil : c.big_end.oil;
-    const bool lubricated =
-        (skirt ? c.skirt.model : c.big_end.model) == engine::JointModel::kLubricated;
-    if (!lubricated) continue;
     double beta = 0.0;
     try {
       beta = engine::JointBulkModulus(c, oil, joint,
@@ -545,20 +544,10 @@ void LinearDensityLawWarning(const engine::EngineCase& c,
     }
     const lubrication::OilSpec& spec = engine::JointOilSpec(c, oil);
     if (!(beta > 0.0) || spec.density_law != lubrication::DensityLaw::kLinear) continue;
-    double peak = -1.0;
-    std::size_t at = 0;
-    for (std::size_t k = 0; k < samples.size(); ++k) {
-      const engine::CrankTrainSample& s = samples[k];
-      if (!(skirt ? s.skirt.present : s.bearing.present)) continue;
-      const double sampled = skirt ? s.skirt.max_pressure : s.bearing.max_pressure;
-      const double steps = skirt ? s.skirt.step_peak_pressure : s.bearing.step_peak_pressure;
-      for (double p : {sampled, steps}) {
-        if (std::isfinite(p) && p > peak) {
-          peak = p;
-          at = k;
-        }
-      }
-    }
+    // The higher of the samples' peak and the steps' between them.
+    const bool at_steps = sampled.step_peak > sampled.figure.value;
+    const double peak = at_steps ? sampled.step_peak : sampled.figure.value;
+    const std::size_t at = at_steps ? sampled.step_index : sampled.index;
     if (!(peak > kLinearDensityPressureRatio * beta)) continue;
     const lubrication::Compression linear =
         lubrication::Compression::Of(beta, lubrication::DensityLaw::kLinear);
@@ -673,7 +662,7 @@ std::vector<RunWarning> RunWarnings(const engine::RunConfig& config,
   if (big_end && c.big_end.compliance == lubrication::ComplianceModel::kRigid)
     RigidBigEndPressureWarning(samples, &out);
   UnresolvedPeakWarnings(samples, c.solver.output_interval, whole_cycle, &out);
-  LinearDensityLawWarning(c, samples, &out);
+  LinearDensityLawWarning(c, samples, whole_cycle, &out);
   if (result.status == engine::RunStatus::kNotConverged) {
     RunWarning w;
     w.code = "not_periodic";
