@@ -22,9 +22,20 @@ function(filmdyn_target_pch target)
   endif()
 endfunction()
 
+#   With clang (the sanitizer builds) the core's suites share a PCH per test folder instead: Qt
+#   Test's macros QT_TESTCASE_BUILDDIR and QT_TESTCASE_SOURCEDIR are the folder's, and every core
+#   suite links the same libraries, so within a folder the command lines' macros agree
+#   (filmdyn_folder_test_pch in cmake/FilmDynTesting.cmake). The GUI's and the app's suites, a
+#   few per folder and with differing libraries, are built without one there.
+
 # Whether the test suites reuse the donor's PCH (see above).
 if(FILMDYN_PCH AND CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
   set(FILMDYN_TEST_PCH ON)
 else()
   set(FILMDYN_TEST_PCH OFF)
+endif()
+if(FILMDYN_PCH AND CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
+  set(FILMDYN_FOLDER_TEST_PCH ON)
+else()
+  set(FILMDYN_FOLDER_TEST_PCH OFF)
 endif()

@@ -3,6 +3,38 @@
 # a real X server (Qt 6.4 segfaults rendering a QOpenGLWidget offscreen), so they are wrapped in
 # xvfb-run automatically unless a DISPLAY is already set.
 find_program(XVFB_RUN_EXECUTABLE xvfb-run)
+
+# The suites' common compile definitions (FILMDYN_INSTRUMENTED: see filmdyn_add_qtest).
+function(filmdyn_test_definitions target)
+  target_compile_definitions(${target} PRIVATE
+    FILMDYN_SOURCE_DIR="${PROJECT_SOURCE_DIR}" FILMDYN_BINARY_DIR="${PROJECT_BINARY_DIR}")
+  if(CMAKE_CXX_FLAGS MATCHES "-fsanitize=")
+    target_compile_definitions(${target} PRIVATE FILMDYN_INSTRUMENTED=1)
+  endif()
+endfunction()
+
+# filmdyn_folder_test_pch(<suite>): with clang, a core suite reuses the PCH of its folder's donor
+# (cmake/FilmDynPch.cmake says why one per folder), made with the first suite of the folder.
+function(filmdyn_folder_test_pch name)
+  string(MAKE_C_IDENTIFIER "${CMAKE_CURRENT_SOURCE_DIR}" folder)
+  string(MD5 folder "${folder}")
+  string(SUBSTRING "${folder}" 0 10 folder)
+  set(donor filmdyn_test_pch_${folder})
+  if(NOT TARGET ${donor})
+    add_executable(${donor} "${PROJECT_SOURCE_DIR}/tests/pch/pch_donor.cpp")
+    target_link_libraries(${donor} PRIVATE FilmDyn::core Qt6::Test)
+    filmdyn_test_definitions(${donor})
+    filmdyn_warnings(${donor})
+    set_target_properties(${donor} PROPERTIES AUTOMOC OFF)
+    target_precompile_headers(${donor} PRIVATE ${FILMDYN_PCH_COMMON} <nlohmann/json.hpp>
+                              <QtCore/QtCore>)
+  endif()
+  target_precompile_headers(${name} REUSE_FROM ${donor})
+  set_source_files_properties("${CMAKE_CURRENT_BINARY_DIR}/${name}_autogen/mocs_compilation.cpp"
+                              PROPERTIES SKIP_PRECOMPILE_HEADERS ON)
+  target_compile_options(${name} PRIVATE -Winvalid-pch)
+endfunction()
+
 function(filmdyn_add_qtest name)
   cmake_parse_arguments(T "GL" "LABEL;TIMEOUT" "SOURCES;LIBS" ${ARGN})
   if(NOT T_LABEL)
@@ -13,8 +45,7 @@ function(filmdyn_add_qtest name)
   endif()
   add_executable(${name} ${T_SOURCES})
   target_link_libraries(${name} PRIVATE ${T_LIBS} Qt6::Test)
-  target_compile_definitions(${name} PRIVATE
-    FILMDYN_SOURCE_DIR="${PROJECT_SOURCE_DIR}" FILMDYN_BINARY_DIR="${PROJECT_BINARY_DIR}")
+  filmdyn_test_definitions(${name})
   set_target_properties(${name} PROPERTIES AUTOMOC ON)
   filmdyn_warnings(${name})
   # The donor's PCH (tests/CMakeLists.txt) for the suites that link FilmDyn's libraries (the
@@ -26,6 +57,8 @@ function(filmdyn_add_qtest name)
     set_source_files_properties("${CMAKE_CURRENT_BINARY_DIR}/${name}_autogen/mocs_compilation.cpp"
                                 PROPERTIES SKIP_PRECOMPILE_HEADERS ON)
     target_compile_options(${name} PRIVATE -Winvalid-pch)
+  elseif(FILMDYN_FOLDER_TEST_PCH AND T_LABEL STREQUAL "core" AND "${T_LIBS}" STREQUAL "FilmDyn::core")
+    filmdyn_folder_test_pch(${name})
   endif()
   set(labels ${T_LABEL})
   if(T_GL)
@@ -44,9 +77,7 @@ function(filmdyn_add_qtest name)
   math(EXPR function_timeout_ms "${T_TIMEOUT} * 1000")
   set_property(TEST ${name} APPEND PROPERTY ENVIRONMENT "QTEST_FUNCTION_TIMEOUT=${function_timeout_ms}")
   # Instrumented builds (the sanitizer scripts' -fsanitize=...) run 3-6x slower: a suite may
-  # leave out there what only checks numbers the Release suites check (FILMDYN_INSTRUMENTED).
-  if(CMAKE_CXX_FLAGS MATCHES "-fsanitize=")
-    target_compile_definitions(${name} PRIVATE FILMDYN_INSTRUMENTED=1)
-  endif()
+  # leave out there what only checks numbers the Release suites check (FILMDYN_INSTRUMENTED,
+  # defined by filmdyn_test_definitions).
   set_tests_properties(${name} PROPERTIES LABELS "${labels}" TIMEOUT ${T_TIMEOUT})
 endfunction()
