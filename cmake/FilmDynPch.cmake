@@ -9,7 +9,13 @@
 #   built with the same options; GCC accepts a PCH whose command line differs only by macros the
 #   headers in it never test (each test's QT_TESTCASE_BUILDDIR, FILMDYN_EXECUTABLE, QT_*_LIB),
 #   which is why QtTest (which tests several of them) is not in it. clang rejects any difference
-#   in the command line's macros, so with clang the tests are built without one.
+#   in the command line's macros.
+#   With clang (the sanitizer builds) the core's suites share a PCH per test folder instead: Qt
+#   Test's macros QT_TESTCASE_BUILDDIR and QT_TESTCASE_SOURCEDIR are the folder's, and every core
+#   suite links the same libraries, so within a folder the command lines' macros agree
+#   (filmdyn_folder_test_pch in cmake/FilmDynTesting.cmake). The GUI's and the app's suites, a
+#   few per folder and with differing libraries, are built without one there.
+# - With GCC the core's packages likewise share one PCH, the base package's (core/CMakeLists.txt).
 option(FILMDYN_PCH "Use precompiled headers" ON)
 
 set(FILMDYN_PCH_COMMON
@@ -22,17 +28,11 @@ function(filmdyn_target_pch target)
   endif()
 endfunction()
 
-#   With clang (the sanitizer builds) the core's suites share a PCH per test folder instead: Qt
-#   Test's macros QT_TESTCASE_BUILDDIR and QT_TESTCASE_SOURCEDIR are the folder's, and every core
-#   suite links the same libraries, so within a folder the command lines' macros agree
-#   (filmdyn_folder_test_pch in cmake/FilmDynTesting.cmake). The GUI's and the app's suites, a
-#   few per folder and with differing libraries, are built without one there.
-
-# Whether the test suites reuse the donor's PCH (see above).
+# Whether PCHs are shared across targets (GCC; see above): the core's and the suites'.
 if(FILMDYN_PCH AND CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
-  set(FILMDYN_TEST_PCH ON)
+  set(FILMDYN_SHARED_PCH ON)
 else()
-  set(FILMDYN_TEST_PCH OFF)
+  set(FILMDYN_SHARED_PCH OFF)
 endif()
 if(FILMDYN_PCH AND CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
   set(FILMDYN_FOLDER_TEST_PCH ON)

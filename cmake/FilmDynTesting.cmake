@@ -68,7 +68,7 @@ function(filmdyn_add_qtest name)
   filmdyn_warnings(${name})
   # The donor's PCH (tests/CMakeLists.txt) for the suites that link FilmDyn's libraries (the
   # donor's macros and include paths come from them); a rejected PCH is a warning.
-  if(FILMDYN_TEST_PCH AND "${T_LIBS}" MATCHES "FilmDyn::|filmdyn_cli")
+  if(FILMDYN_SHARED_PCH AND "${T_LIBS}" MATCHES "FilmDyn::|filmdyn_cli")
     target_precompile_headers(${name} REUSE_FROM filmdyn_test_pch)
     # AUTOMOC's mocs_compilation.cpp is empty for a suite whose Q_OBJECT is in its .cpp: loading
     # the header would cost more than it saves.
