@@ -778,6 +778,11 @@ double HeatBalanceTemperature(double supply_temperature, double share, double fr
   return supply_temperature + share * friction_power / (density * heat_capacity * outflow);
 }
 
+double ReportedTimeOrigin(const RunResult& result) {
+  if (result.samples.empty() || result.reported_cycle == 0) return 0.0;
+  return result.samples.front().time;
+}
+
 RunResult RunJob(const RunConfig& config, const RunMonitor& monitor,
                  const std::atomic<bool>* cancel) {
   const EngineCase& c0 = config.engine_case;

@@ -230,6 +230,12 @@ struct FilmFailure {
 /// caused it and where).
 FilmFailure FilmTrouble(const CrankTrainSample& sample);
 
+/// The origin of results.csv's and motion.csv's time[s] for the reported samples: the start of
+/// the reported cycle (its first output step, at 0 °CA), or for the part of the run-in a run
+/// stopped in (reported_cycle 0) the run's start, t = 0, the start state before its first output
+/// step — so that time[s] and crank_angle[deg] tell the same interval in every row.
+double ReportedTimeOrigin(const RunResult& result);
+
 /// Runs cycles from the assembled start until the periodic steady state (cycle-to-cycle change of
 /// the monitored outputs below solver.steady_state_tolerance of their range) or max_cycles, and
 /// keeps the last cycle. With solver.error_estimate = 1 and a film joint, a coarse companion

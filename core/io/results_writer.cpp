@@ -209,7 +209,7 @@ OutputRow RowFromMotion(const engine::MotionSample& s, engine::Model model,
 
 std::vector<OutputRow> MotionRows(const engine::RunResult& result, engine::Model model) {
   std::vector<OutputRow> rows;
-  const double start = result.samples.empty() ? 0.0 : result.samples.front().time;
+  const double start = engine::ReportedTimeOrigin(result);
   rows.reserve(result.motion.size());
   for (const auto& m : result.motion) rows.push_back(RowFromMotion(m, model, start));
   return rows;
@@ -364,7 +364,7 @@ std::vector<OutputRow> WriteRunFiles(const std::filesystem::path& directory,
   CreateFolder(directory, "--out");
   WriteRunCase(directory, config);
   std::vector<OutputRow> rows;
-  const double start = result.samples.empty() ? 0.0 : result.samples.front().time;
+  const double start = engine::ReportedTimeOrigin(result);
   for (const auto& s : result.samples) rows.push_back(RowFromSample(s, config.model, start));
   std::ostringstream csv;
   WriteResultsCsv(csv, rows);

@@ -108,7 +108,7 @@ RunBackend CoreRunBackend() {
     };
     const engine::RunResult result = engine::RunJob(config, monitor, &cancel);
     std::vector<RunSample> reported;
-    const double report_start = result.samples.empty() ? 0.0 : result.samples.front().time;
+    const double report_start = engine::ReportedTimeOrigin(result);
     for (const engine::CrankTrainSample& sample : result.samples) {
       reported.push_back(ToRunSample(sample, model, report_start));
     }

@@ -321,6 +321,19 @@ class TestRunJob : public QObject {
       QCOMPARE(stopped.samples.size(), std::size_t(count));
       QCOMPARE(stopped.reported_cycle, 0);  // the run-in's part
       QVERIFY(!engine::SamplesSpanACycle(stopped.samples));
+      // Its rows' time[s] counts from the run's start (the start state, at 720 - 900 = -180 °CA,
+      // has no row), so that each row's time and crank angle tell the same interval: the first
+      // row at 541 °CA is one output interval in (it was at time 0 before).
+      QCOMPARE(engine::ReportedTimeOrigin(stopped), 0.0);
+      const double omega = 6000.0 * M_PI / 30.0, degree = (M_PI / 180.0) / omega;
+      for (std::size_t k = 0; k < stopped.samples.size(); ++k) {
+        const io::OutputRow row = io::RowFromSample(stopped.samples[k], config.model,
+                                                    engine::ReportedTimeOrigin(stopped));
+        QVERIFY2(std::abs(*row.time - (k + 1.0) * degree) < 1e-12 * degree * (k + 1.0),
+                 std::to_string(k).c_str());
+        const double angle = std::fmod(540.0 + (k + 1.0), 720.0);
+        QVERIFY2(std::abs(*row.crank_angle_deg - angle) < 1e-9, std::to_string(k).c_str());
+      }
       const io::RunKpis part = io::RunKpisOf(config, stopped);
       QVERIFY(part.big_end.has_value());
       QVERIFY2(!part.big_end->oil_in_per_cycle && !part.big_end->oil_out_per_cycle,
@@ -374,6 +387,12 @@ class TestRunJob : public QObject {
     QCOMPARE(second.cycles, 2);
     QCOMPARE(second.reported_cycle, 1);
     QVERIFY(engine::SamplesSpanACycle(second.samples));
+    // A reported cycle's time[s] counts from its own start, its first row at 0 °CA.
+    QCOMPARE(engine::ReportedTimeOrigin(second), second.samples.front().time);
+    QCOMPARE(
+        io::RowFromSample(second.samples.front(), config.model, engine::ReportedTimeOrigin(second))
+            .time.value(),
+        0.0);
     const io::RunKpis cycle = io::RunKpisOf(config, second);
     QVERIFY(cycle.big_end && cycle.big_end->oil_in_per_cycle &&
             *cycle.big_end->oil_in_per_cycle > 0.0);

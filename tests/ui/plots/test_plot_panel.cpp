@@ -48,7 +48,7 @@ PlotRun RealRun(int id, engine::Model model, double rpm) {
   c.solver.max_cycles = 1;
   const engine::RunResult result = engine::RunJob(config);
   std::vector<io::OutputRow> rows;
-  const double start = result.samples.empty() ? 0.0 : result.samples.front().time;
+  const double start = engine::ReportedTimeOrigin(result);
   for (const auto& s : result.samples) rows.push_back(io::RowFromSample(s, model, start));
   return filmdyn::ui::PlotRunFromRows(id, config.engine_case, engine::ModelName(model), rpm, rows,
                                       io::MotionRows(result, model));
