@@ -70,8 +70,6 @@ function(filmdyn_add_qtest name)
   # donor's macros and include paths come from them); a rejected PCH is a warning.
   if(FILMDYN_SHARED_PCH AND "${T_LIBS}" MATCHES "FilmDyn::|filmdyn_cli")
     target_precompile_headers(${name} REUSE_FROM filmdyn_test_pch)
-    # AUTOMOC's mocs_compilation.cpp is empty for a suite whose Q_OBJECT is in its .cpp: loading
-    # the header would cost more than it saves.
     target_compile_options(${name} PRIVATE -Winvalid-pch)
   elseif(FILMDYN_FOLDER_TEST_PCH AND T_LABEL STREQUAL "core" AND "${T_LIBS}" STREQUAL "FilmDyn::core")
     filmdyn_folder_test_pch(${name})

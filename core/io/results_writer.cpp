@@ -207,6 +207,14 @@ OutputRow RowFromMotion(const engine::MotionSample& s, engine::Model model,
   return r;
 }
 
+std::vector<OutputRow> ResultRows(const engine::RunResult& result, engine::Model model) {
+  std::vector<OutputRow> rows;
+  const double start = engine::ReportedTimeOrigin(result);
+  rows.reserve(result.samples.size());
+  for (const auto& s : result.samples) rows.push_back(RowFromSample(s, model, start));
+  return rows;
+}
+
 std::vector<OutputRow> MotionRows(const engine::RunResult& result, engine::Model model) {
   std::vector<OutputRow> rows;
   const double start = engine::ReportedTimeOrigin(result);
@@ -363,9 +371,7 @@ std::vector<OutputRow> WriteRunFiles(const std::filesystem::path& directory,
                                      const BeforeSummary& before_summary) {
   CreateFolder(directory, "--out");
   WriteRunCase(directory, config);
-  std::vector<OutputRow> rows;
-  const double start = engine::ReportedTimeOrigin(result);
-  for (const auto& s : result.samples) rows.push_back(RowFromSample(s, config.model, start));
+  std::vector<OutputRow> rows = ResultRows(result, config.model);
   std::ostringstream csv;
   WriteResultsCsv(csv, rows);
   WriteFileAtomically(directory / "results.csv", csv.str());

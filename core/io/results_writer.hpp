@@ -66,6 +66,9 @@ std::vector<std::string> ResultsHeader();
 OutputRow RowFromSample(const engine::CrankTrainSample& sample, engine::Model model,
                         double cycle_start_time);
 
+/// The results.csv rows of a run's reported samples, time[s] from engine::ReportedTimeOrigin.
+std::vector<OutputRow> ResultRows(const engine::RunResult& result, engine::Model model);
+
 void WriteResultsCsv(std::ostream& out, const std::vector<OutputRow>& rows);
 
 /// The columns of motion.csv, in results.csv's order: crank angle, time, the piston's secondary

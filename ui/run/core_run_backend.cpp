@@ -107,13 +107,8 @@ RunBackend CoreRunBackend() {
       return !cancel.load();
     };
     const engine::RunResult result = engine::RunJob(config, monitor, &cancel);
-    std::vector<RunSample> reported;
-    const double report_start = engine::ReportedTimeOrigin(result);
-    for (const engine::CrankTrainSample& sample : result.samples) {
-      reported.push_back(ToRunSample(sample, model, report_start));
-    }
     sink.ReportMotion(RunSamplesFromRows(io::MotionRows(result, model)));
-    sink.Report(std::move(reported));
+    sink.Report(RunSamplesFromRows(io::ResultRows(result, model)));
     // A cancelled run stays in the run list with its curves and figures; its film fields (one
     // cycle of frames, tens of MB on fine meshes) are dropped, so that runs started and cancelled
     // again and again do not pile up memory.
@@ -144,13 +139,9 @@ RunBackend CoreRunBackend() {
       }
       recorder->Write(dir);
     };
-    writers.csv = [shared_config, shared_result, model, report_start]() {
-      std::vector<io::OutputRow> rows;
-      for (const auto& sample : shared_result->samples) {
-        rows.push_back(io::RowFromSample(sample, model, report_start));
-      }
+    writers.csv = [shared_result, model]() {
       std::ostringstream out;
-      io::WriteResultsCsv(out, rows);
+      io::WriteResultsCsv(out, io::ResultRows(*shared_result, model));
       return out.str();
     };
     sink.SetWriters(std::move(writers));

@@ -47,11 +47,8 @@ PlotRun RealRun(int id, engine::Model model, double rpm) {
   c.solver.error_estimate = 0;
   c.solver.max_cycles = 1;
   const engine::RunResult result = engine::RunJob(config);
-  std::vector<io::OutputRow> rows;
-  const double start = engine::ReportedTimeOrigin(result);
-  for (const auto& s : result.samples) rows.push_back(io::RowFromSample(s, model, start));
-  return filmdyn::ui::PlotRunFromRows(id, config.engine_case, engine::ModelName(model), rpm, rows,
-                                      io::MotionRows(result, model));
+  return filmdyn::ui::PlotRunFromRows(id, config.engine_case, engine::ModelName(model), rpm,
+                                      io::ResultRows(result, model), io::MotionRows(result, model));
 }
 
 bool IsRoundStep(double step) {
