@@ -13,6 +13,7 @@
 #include <numbers>
 #include <vector>
 
+#include "core/base/angles.hpp"
 #include "core/lubrication/bearing_solver.hpp"
 #include "core/lubrication/skirt_solver.hpp"
 
@@ -94,7 +95,7 @@ SkirtConfig Skirt(LdltBackend backend) {
   g.skirt_length = 0.032;
   g.radial_clearance = 20e-6;
   g.pin_position = 0.014;
-  g.alpha1 = g.alpha2 = 46.0 * std::numbers::pi / 180.0;
+  g.alpha1 = g.alpha2 = 46.0 * filmdyn::kRadiansPerDegree;
   g.profile = {{0.0, 0.008, 0.016, 0.024, 0.032}, {25e-6, 6e-6, 0.0, 4e-6, 15e-6}};
   cfg.viscosity = 0.008;
   cfg.solver.backend = backend;

@@ -12,6 +12,7 @@
 
 #include "app/commands/commands.hpp"
 #include "app/commands/run_common.hpp"
+#include "core/base/angles.hpp"
 #include "core/engine/case_schema.hpp"
 #include "core/engine/film_joints.hpp"
 #include "core/io/case_file.hpp"
@@ -43,7 +44,7 @@ std::string WritePressureFigure(const io::LoadedCase& loaded, const std::filesys
     series->setName(QString::fromStdString(RpmText(rpm) + " rpm"));
     for (int k = 0; k <= 1440; ++k) {
       const double deg = 0.5 * k;
-      const double p = curve.Pressure(deg * std::numbers::pi / 180.0) * 1e-6;
+      const double p = curve.Pressure(deg * kRadiansPerDegree) * 1e-6;
       series->append(deg, p);
       peak = std::max(peak, p);
     }

@@ -1,5 +1,6 @@
 #include "core/base/input_file.hpp"
 
+#include <cctype>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -56,6 +57,17 @@ std::string ReadInputFile(const std::filesystem::path& path, const std::string& 
   const bool failed = std::ferror(in) != 0;
   std::fclose(in);
   if (failed) throw InputError(field, path.string(), "cannot read the file");
+  return text;
+}
+
+std::string Trim(std::string_view text) {
+  const auto begin = text.find_first_not_of(" \t\r\n");
+  if (begin == std::string_view::npos) return {};
+  return std::string(text.substr(begin, text.find_last_not_of(" \t\r\n") - begin + 1));
+}
+
+std::string Lower(std::string text) {
+  for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   return text;
 }
 

@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <string_view>
 
 namespace filmdyn {
 
@@ -17,5 +18,11 @@ void RequireInputFile(const std::filesystem::path& path, const std::string& fiel
 /// reading: a file that grows). Throws InputError.
 std::string ReadInputFile(const std::filesystem::path& path, const std::string& field,
                           std::uintmax_t max_bytes);
+
+/// A line or cell of an input file without the spaces, tabs and line ends around it.
+std::string Trim(std::string_view text);
+
+/// `text` with its ASCII letters in lower case (a header or keyword compared without case).
+std::string Lower(std::string text);
 
 }  // namespace filmdyn

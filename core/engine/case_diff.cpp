@@ -99,16 +99,16 @@ std::vector<CaseDifference> DiffRunInputs(const RunInputs& a, const RunInputs& b
     switch (field.kind) {
       case FieldKind::kNumber:
       case FieldKind::kInteger: {
+        if (field.SameValue(ca, cb)) break;
         const double va = field.get(ca), vb = field.get(cb);
-        if (va == vb || (std::isnan(va) && std::isnan(vb))) break;
         auto [ta, tb] = DisplayPair(field, va, vb);
         out.push_back({field.path, field.symbol, ta, tb, Phrase(field.symbol, tb)});
         break;
       }
       case FieldKind::kText: {
+        if (field.SameValue(ca, cb)) break;
         const std::string& ta = field.text(ca);
         const std::string& tb = field.text(cb);
-        if (ta == tb) break;
         // Free text can be long: the label says it changed, the values hold it.
         const bool short_text = tb.size() <= 24 && tb.find('\n') == std::string::npos;
         out.push_back({field.path, field.symbol, ta, tb,
@@ -120,7 +120,7 @@ std::vector<CaseDifference> DiffRunInputs(const RunInputs& a, const RunInputs& b
         // The joint models are said by the run model's name when one is given.
         const bool joint_model = field.path == "skirt.model" || field.path == "big_end.model";
         if (models_given && joint_model) break;
-        if (field.choice(ca) == field.choice(cb)) break;
+        if (field.SameValue(ca, cb)) break;
         const std::string& nb = field.ChoiceName(cb);
         out.push_back(
             {field.path, field.symbol, field.ChoiceName(ca), nb, Phrase(field.symbol, nb)});
@@ -136,7 +136,7 @@ std::vector<CaseDifference> DiffRunInputs(const RunInputs& a, const RunInputs& b
           if (member.kind != FieldKind::kNumberList || GroupPath(member.path) != group) continue;
           const std::vector<double>& la = member.list(ca);
           const std::vector<double>& lb = member.list(cb);
-          differs = differs || la != lb;
+          differs = differs || !member.SameValue(ca, cb);
           na = std::max(na, la.size());
           nb = std::max(nb, lb.size());
         }

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <limits>
@@ -9,6 +10,7 @@
 #include <numbers>
 #include <type_traits>
 
+#include "core/base/angles.hpp"
 #include "core/base/input_error.hpp"
 #include "core/engine/film_joints.hpp"
 #include "core/engine/pressure_curve.hpp"
@@ -22,7 +24,7 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kPi = std::numbers::pi;
-constexpr double kMm = 1e-3, kUm = 1e-6, kDeg = kPi / 180.0, kMPa = 1e6, kGPa = 1e9;
+constexpr double kMm = 1e-3, kUm = 1e-6, kMPa = 1e6, kGPa = 1e9;
 
 // A length of the mechanism: up to 100 m (the largest engines' strokes are ~3.5 m) — a value
 // near the double range would only fail later, inside the solver's assembly.
@@ -921,12 +923,12 @@ std::vector<CaseField> MakeSchema() {
   f.push_back(
       Scalar("skirt.length", sk, &S::length,
              {G::kSkirt, "Skirt length L_skirt", "m", "mm", kMm, Length(), "Table I: 28 mm"}));
-  f.push_back(Scalar(
-      "skirt.thrust_half_width", sk, &S::thrust_half_width,
-      {G::kSkirt, "Thrust panel half-width α₁", "rad", "°", kDeg, Open(0.0, kPi / 2, true, false),
-       "half-width of the thrust panel; α₁ + α₂ < π; Table I: 46°"}));
+  f.push_back(Scalar("skirt.thrust_half_width", sk, &S::thrust_half_width,
+                     {G::kSkirt, "Thrust panel half-width α₁", "rad", "°", kRadiansPerDegree,
+                      Open(0.0, kPi / 2, true, false),
+                      "half-width of the thrust panel; α₁ + α₂ < π; Table I: 46°"}));
   f.push_back(Scalar("skirt.anti_thrust_half_width", sk, &S::anti_thrust_half_width,
-                     {G::kSkirt, "Anti-thrust panel half-width α₂", "rad", "°", kDeg,
+                     {G::kSkirt, "Anti-thrust panel half-width α₂", "rad", "°", kRadiansPerDegree,
                       Open(0.0, kPi / 2, true, false),
                       "half-width of the anti-thrust panel; the relief lies between α₁ and "
                       "π − α₂; Table I: 46°"}));
@@ -1038,9 +1040,10 @@ std::vector<CaseField> MakeSchema() {
   f.push_back(List("skirt.profile_h", sk, &S::profile_h,
                    {G::kSkirt, "Skirt profile: radial drop h", "m", "µm", kUm, Gap(),
                     "barrel profile: extra radial gap at y, linear between rows"}));
-  f.push_back(List("skirt.ovality_alpha", sk, &S::ovality_alpha,
-                   {G::kSkirt, "Skirt ovality: angle α", "rad", "°", kDeg, Between(0.0, kPi),
-                    "from the thrust axis, strictly increasing; empty with ovality_h = round"}));
+  f.push_back(
+      List("skirt.ovality_alpha", sk, &S::ovality_alpha,
+           {G::kSkirt, "Skirt ovality: angle α", "rad", "°", kRadiansPerDegree, Between(0.0, kPi),
+            "from the thrust axis, strictly increasing; empty with ovality_h = round"}));
   f.push_back(List("skirt.ovality_h", sk, &S::ovality_h,
                    {G::kSkirt, "Skirt ovality: extra gap h", "m", "µm", kUm, Gap(),
                     "extra radial gap at α, linear between rows, constant beyond the ends"}));
@@ -1149,31 +1152,31 @@ std::vector<CaseField> MakeSchema() {
                      {G::kBigEnd, "Oil-supply pressure (gauge)", "Pa", "MPa", kMPa, GaugePressure(),
                       "at the holes or groove (constant; see supply_pressure_* for a curve)"}));
   f.push_back(List("big_end.supply_pressure_angles", be, &B::supply_pressure_angles,
-                   {G::kBigEnd, "Supply pressure curve: crank angle", "rad", "°CA", kDeg,
-                    Open(0.0, 4.0 * kPi, false, true),
+                   {G::kBigEnd, "Supply pressure curve: crank angle", "rad", "°CA",
+                    kRadiansPerDegree, Open(0.0, 4.0 * kPi, false, true),
                     "crank angles of the supply-pressure curve (empty: constant pressure): at "
                     "least 8, increasing, covering the cycle with gaps of at most 10 °CA "
                     "(counting the one from the last round to the first)"}));
   f.push_back(List("big_end.supply_pressure_values", be, &B::supply_pressure_values,
                    {G::kBigEnd, "Supply pressure curve: gauge pressure", "Pa", "MPa", kMPa,
                     GaugePressure(), "the supply pressure at each angle"}));
-  f.push_back(
-      List("big_end.supply_hole_angles", be, &B::supply_hole_angles,
-           {G::kBigEnd, "Supply holes: angles", "rad", "°", kDeg, Between(-2.0 * kPi, 2.0 * kPi),
-            "shell holes from the rod axis toward the small end, pin holes from the crank "
-            "web axis, counter-clockwise"}));
+  f.push_back(List("big_end.supply_hole_angles", be, &B::supply_hole_angles,
+                   {G::kBigEnd, "Supply holes: angles", "rad", "°", kRadiansPerDegree,
+                    Between(-2.0 * kPi, 2.0 * kPi),
+                    "shell holes from the rod axis toward the small end, pin holes from the crank "
+                    "web axis, counter-clockwise"}));
   f.push_back(
       Scalar("big_end.supply_hole_diameter", be, &B::supply_hole_diameter,
              {G::kBigEnd, "Supply holes: diameter", "m", "mm", kMm, Open(0.0, 1.0, true, false),
               "of each hole; less than the bearing width and than half its circumference"}));
-  f.push_back(
-      Scalar("big_end.groove_start_angle", be, &B::groove_start_angle,
-             {G::kBigEnd, "Groove: start angle", "rad", "°", kDeg, Between(-2.0 * kPi, 2.0 * kPi),
-              "from the rod axis toward the small end, counter-clockwise"}));
-  f.push_back(
-      Scalar("big_end.groove_end_angle", be, &B::groove_end_angle,
-             {G::kBigEnd, "Groove: end angle", "rad", "°", kDeg, Between(-2.0 * kPi, 4.0 * kPi),
-              "after the start angle by at most 360° (a whole-circle groove)"}));
+  f.push_back(Scalar("big_end.groove_start_angle", be, &B::groove_start_angle,
+                     {G::kBigEnd, "Groove: start angle", "rad", "°", kRadiansPerDegree,
+                      Between(-2.0 * kPi, 2.0 * kPi),
+                      "from the rod axis toward the small end, counter-clockwise"}));
+  f.push_back(Scalar("big_end.groove_end_angle", be, &B::groove_end_angle,
+                     {G::kBigEnd, "Groove: end angle", "rad", "°", kRadiansPerDegree,
+                      Between(-2.0 * kPi, 4.0 * kPi),
+                      "after the start angle by at most 360° (a whole-circle groove)"}));
   f.push_back(
       Scalar("big_end.groove_width", be, &B::groove_width,
              {G::kBigEnd, "Groove: axial width", "m", "mm", kMm, Open(0.0, 1.0, true, false),
@@ -1218,9 +1221,10 @@ std::vector<CaseField> MakeSchema() {
   f.push_back(Scalar("operating.crankcase_pressure", op, &OperatingCase::crankcase_pressure,
                      {G::kOperating, "Crankcase pressure (absolute)", "Pa", "MPa", kMPa,
                       GaugePressure(), "acts under the crown: gas force (p − p_cc) π R_l²"}));
-  f.push_back(Scalar("operating.start_crank_angle", op, &OperatingCase::start_crank_angle,
-                     {G::kOperating, "Start crank angle", "rad", "°CA", kDeg, Between(0.0, 4 * kPi),
-                      "where the first monitored cycle starts (a run-in starts before it)"}));
+  f.push_back(Scalar(
+      "operating.start_crank_angle", op, &OperatingCase::start_crank_angle,
+      {G::kOperating, "Start crank angle", "rad", "°CA", kRadiansPerDegree, Between(0.0, 4 * kPi),
+       "where the first monitored cycle starts (a run-in starts before it)"}));
   f.push_back(
       Scalar("solver.baumgarte_alpha", sol, &SolverCase::baumgarte_alpha,
              {G::kSolver, "Baumgarte velocity feedback G", "1/s", "1/s", 1.0, Between(0.0, 1e9),
@@ -1240,8 +1244,8 @@ std::vector<CaseField> MakeSchema() {
               "absolute local error of positions (angles ×10 rad/m, velocities scaled: "
               "docs/performance.md)"}));
   f.push_back(Scalar("solver.output_interval", sol, &SolverCase::output_interval,
-                     {G::kSolver, "Output interval", "rad", "°CA", kDeg, Between(1e-4, 0.2),
-                      "crank angle between output steps (1 °CA)"}));
+                     {G::kSolver, "Output interval", "rad", "°CA", kRadiansPerDegree,
+                      Between(1e-4, 0.2), "crank angle between output steps (1 °CA)"}));
   f.push_back(
       Scalar("solver.steady_state_tolerance", sol, &SolverCase::steady_state_tolerance,
              {G::kSolver, "Steady-state tolerance", "-", "–", 1.0, Open(0.0, 1.0, true, false),
@@ -1251,12 +1255,14 @@ std::vector<CaseField> MakeSchema() {
                       "cycles before a run stops as not converged"}));
   f.push_back(Scalar(
       "solver.run_in_angle", sol, &SolverCase::run_in_angle,
-      {G::kSolver, "Run-in before the first cycle", "rad", "°CA", kDeg, Between(0.0, 8 * kPi),
+      {G::kSolver, "Run-in before the first cycle", "rad", "°CA", kRadiansPerDegree,
+       Between(0.0, 8 * kPi),
        "integrated at 10× looser tolerances before the first monitored cycle; below 1e-9 rad, "
        "none"}));
   f.push_back(Scalar(
       "solver.jfo_run_in_angle", sol, &SolverCase::jfo_run_in_angle,
-      {G::kSolver, "Run-in with a mass-conserving film", "rad", "°CA", kDeg, Between(0.0, 8 * kPi),
+      {G::kSolver, "Run-in with a mass-conserving film", "rad", "°CA", kRadiansPerDegree,
+       Between(0.0, 8 * kPi),
        "instead of the run-in above when a lubricated film is JFO: its oil "
        "content drains from the flooded start over about two cycles; below 1e-9 rad, none"}));
   f.push_back(
@@ -1314,6 +1320,32 @@ void CaseField::Check(double value, const std::string& field) const {
   } else {
     RequireInRange(name, value, r.lo, r.hi, r.lo_open, r.hi_open, unit);
   }
+}
+
+bool CaseField::SameValue(const EngineCase& a, const EngineCase& b, double relative) const {
+  auto same = [relative](double x, double y) {
+    return x == y || (std::isnan(x) && std::isnan(y)) ||
+           std::abs(x - y) <= relative * std::max(std::abs(x), std::abs(y));
+  };
+  // The list and text accessors take a mutable case to locate the member; nothing is changed.
+  auto& ma = const_cast<EngineCase&>(a);
+  auto& mb = const_cast<EngineCase&>(b);
+  switch (kind) {
+    case FieldKind::kNumber:
+    case FieldKind::kInteger:
+      return get && same(get(a), get(b));
+    case FieldKind::kNumberList: {
+      if (!list) return false;
+      const std::vector<double>& x = list(ma);
+      const std::vector<double>& y = list(mb);
+      return std::equal(x.begin(), x.end(), y.begin(), y.end(), same);
+    }
+    case FieldKind::kText:
+      return text && text(ma) == text(mb);
+    case FieldKind::kChoice:
+      return choice && choice(a) == choice(b);
+  }
+  return false;
 }
 
 bool CaseField::Allows(double si_value) const {

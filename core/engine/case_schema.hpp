@@ -88,6 +88,10 @@ struct CaseField {
   void Check(double si_value, const std::string& field = {}) const;
   /// Whether Check lets si_value through.
   bool Allows(double si_value) const;
+  /// Whether this field holds the same value in both cases: numbers equal, or within `relative`
+  /// of the larger in magnitude when given (a NaN equals a NaN); lists of the same length, element
+  /// by element alike; texts and choices equal. The one comparison of a field's values.
+  bool SameValue(const EngineCase& a, const EngineCase& b, double relative = 0.0) const;
   /// "> 0 [m]", "[1e-14, 0.01] [-]", "integer in [8, 5000]", ... (docs and tooltips).
   std::string RangeText() const;
   /// What Check says a number or integer field allows ("must be a finite number in (0, 100]

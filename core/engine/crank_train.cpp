@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/base/angles.hpp"
 #include "core/base/input_error.hpp"
 #include "core/coupling/lubricated_big_end_element.hpp"
 #include "core/multibody/joints.hpp"
@@ -265,7 +266,7 @@ std::size_t LapStart(const std::vector<double>& crank_angles_deg, std::size_t fr
 }
 
 double CycleCrankAngleDeg(double crank_angle) {
-  double deg = std::fmod(crank_angle * (180.0 / std::numbers::pi), 720.0);
+  double deg = std::fmod(crank_angle * kDegreesPerRadian, 720.0);
   if (deg < 0) deg += 720.0;
   // To 1e-9 °CA, far below what any run resolves: an output step's angle reads 411, not the
   // 411.0000000000002 of radians turned into degrees.

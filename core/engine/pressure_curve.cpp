@@ -5,16 +5,18 @@
 #include <numbers>
 #include <string>
 
+#include "core/base/angles.hpp"
 #include "core/base/input_error.hpp"
 
 namespace filmdyn::engine {
 
 namespace {
 constexpr double kCycle = 4.0 * std::numbers::pi;
-constexpr double kDeg = std::numbers::pi / 180.0;
 // An angle in crank degrees for a message, to 1e-4 °CA: angles typed in rad to a few decimals
 // convert to degrees with float noise ("50.00000023 °CA") the user never wrote.
-std::string Degrees(double rad) { return FormatValue(std::round(rad / kDeg * 1e4) / 1e4); }
+std::string Degrees(double rad) {
+  return FormatValue(std::round(rad * kDegreesPerRadian * 1e4) / 1e4);
+}
 }  // namespace
 
 CurveFields CurveFields::Points(const std::string& field) {
@@ -71,7 +73,7 @@ PressureCurve::PressureCurve(std::vector<double> angles, std::vector<double> pre
   // The largest gap. Angles typed in rad to four decimals (a 10 °CA grid as 0.1745, 0.3491, …)
   // are each off by up to 5e-5 rad, so their gaps by up to 1e-4 rad (0.006 °CA): such a grid is
   // accepted as the 10 °CA grid it stands for.
-  constexpr double kLargestGap = 10.0 * kDeg + 1.01e-4;
+  constexpr double kLargestGap = 10.0 * kRadiansPerDegree + 1.01e-4;
   for (std::size_t k = 1; k < angles.size(); ++k) {
     if (angles[k] - angles[k - 1] > kLargestGap) {
       throw InputError(fields.point(k, true), angle_text(angles[k]),

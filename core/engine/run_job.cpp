@@ -16,6 +16,7 @@
 #include <unistd.h>
 #endif
 
+#include "core/base/angles.hpp"
 #include "core/base/input_error.hpp"
 #include "core/base/vector_unit.hpp"
 #include "core/coupling/lubricated_big_end_element.hpp"
@@ -224,7 +225,7 @@ Tracked TrackedFor(const EngineCase& c) {
 // (cycle_start, the case's start crank angle [rad]); the message names the crank angle as the
 // results label it (CycleCrankAngleDeg).
 std::string AtAngle(int cycle, double crank_deg, double cycle_start) {
-  const double label = CycleCrankAngleDeg(cycle_start + crank_deg * std::numbers::pi / 180.0);
+  const double label = CycleCrankAngleDeg(cycle_start + crank_deg * kRadiansPerDegree);
   if (cycle < 1) {
     return fmt::format(" (run-in, at {:.1f} °CA, {:.1f} °CA before the first cycle)", label,
                        -crank_deg);
@@ -483,7 +484,7 @@ RunResult RunSingle(const RunConfig& config, const RunMonitor& monitor,
       double work = 0.0;
       if (cycle == 0) {
         progress.run_in = true;
-        progress.crank_angle_deg = -(t_start - t) * omega * 180.0 / std::numbers::pi;
+        progress.crank_angle_deg = -(t_start - t) * omega * kDegreesPerRadian;
         work = run_in_cycles * t / t_start;
       } else {
         const double cycle_start = t_start + (cycle - 1) * cycle_time;
@@ -536,7 +537,7 @@ RunResult RunSingle(const RunConfig& config, const RunMonitor& monitor,
           std::max(1, static_cast<int>(std::ceil(run_in / c.solver.output_interval - 1e-9)));
       for (int j = 1; j < chunks; ++j) {
         const double t = t_start * j / chunks;
-        crank_deg = -(run_in - run_in * j / chunks) * 180.0 / std::numbers::pi;
+        crank_deg = -(run_in - run_in * j / chunks) * kDegreesPerRadian;
         t_target = t;
         current.Add(SampleCrankTrain(train, c, t, integrator.AdvanceTo(t)));
         result.stats = integrator.Stats();

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "core/base/angles.hpp"
 #include "core/engine/crank_train.hpp"
 #include "core/engine/engine_case.hpp"
 #include "core/engine/error_estimate.hpp"
@@ -71,7 +72,7 @@ using FieldCallback = std::function<void(const FieldFrame&)>;
 
 /// Default RunConfig::motion_interval: 1/8 °CA (a journal crossing its clearance in ~20 °CA
 /// near firing is drawn through ~160 points).
-inline constexpr double kMotionInterval = std::numbers::pi / 180.0 / 8.0;
+inline constexpr double kMotionInterval = kRadiansPerDegree / 8.0;
 
 /// The progress displays' heartbeat (RunConfig::heartbeat_interval) [s].
 inline constexpr double kHeartbeatInterval = 1.0;

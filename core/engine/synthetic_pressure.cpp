@@ -4,12 +4,12 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/base/angles.hpp"
 #include "core/engine/slider_crank_reference.hpp"
 
 namespace filmdyn::engine {
 
 namespace {
-constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr double kGasConstant = 287.0;  // air [J/(kg·K)]
 }  // namespace
 
@@ -41,7 +41,7 @@ std::vector<double> SyntheticCylinderPressure(const CrankTrainGeometry& g,
                                               const std::vector<double>& crank_angle_deg) {
   const double area = std::numbers::pi * g.liner_radius * g.liner_radius;
   auto height = [&](double deg) {
-    return ExactSliderCrank(g, deg * kDeg, 0.0, 0.0).piston_position;
+    return ExactSliderCrank(g, deg * kRadiansPerDegree, 0.0, 0.0).piston_position;
   };
   double top = 0.0, bottom = 1e9;
   for (double deg = 0; deg < 360; deg += 0.05) {

@@ -5,6 +5,7 @@
 #include <numbers>
 #include <string>
 
+#include "core/base/angles.hpp"
 #include "core/engine/crank_train.hpp"
 #include "core/engine/slider_crank_reference.hpp"
 #include "core/multibody/integrator.hpp"
@@ -21,7 +22,7 @@ constexpr double kPi = std::numbers::pi;
 PressureCurve FiringCurve(double peak) {
   std::vector<double> a, p;
   for (int k = 0; k < 720; ++k) {
-    a.push_back(k * kPi / 180);
+    a.push_back(k * kRadiansPerDegree);
     p.push_back(1e5 + peak * std::exp(-std::pow((k - 372.0) / 25.0, 2)));
   }
   return PressureCurve(a, p, "validation curve");

@@ -10,6 +10,7 @@
 #include <set>
 #include <sstream>
 
+#include "core/base/angles.hpp"
 #include "core/base/input_error.hpp"
 #include "core/base/input_file.hpp"
 #include "core/engine/case_schema.hpp"
@@ -651,7 +652,7 @@ engine::EngineCase CaseFileKeepingValid(const std::filesystem::path& path,
 namespace {
 
 // An inline curve's angle [°CA] in radians: the one conversion of the case reader.
-double InlineAngle(double deg) { return deg * std::numbers::pi / 180.0; }
+double InlineAngle(double deg) { return deg * kRadiansPerDegree; }
 
 engine::PressureCurve CurveFromSource(const LoadedCase& loaded,
                                       const engine::PressureCurveSource& source,
@@ -684,7 +685,7 @@ engine::PressureCurveSource InlinePressureCurve(const engine::PressureCurve& cur
   engine::PressureCurveSource source;
   source.rpm = rpm;
   for (double angle : curve.Angles()) {
-    double deg = angle * 180.0 / std::numbers::pi;
+    double deg = angle * kDegreesPerRadian;
     // A few ulps either way find the degrees that convert back to exactly this angle.
     for (int k = 0; k < 8 && InlineAngle(deg) != angle; ++k)
       deg = std::nextafter(deg, InlineAngle(deg) < angle ? HUGE_VAL : -HUGE_VAL);

@@ -1,5 +1,6 @@
 #include "core/io/pressure_csv.hpp"
 
+#include "core/base/angles.hpp"
 #include "core/io/output_files.hpp"
 
 #include <fmt/format.h>
@@ -17,18 +18,6 @@
 namespace filmdyn::io {
 
 namespace {
-
-std::string Trim(const std::string& text) {
-  const auto begin = text.find_first_not_of(" \t\r\n");
-  if (begin == std::string::npos) return "";
-  return text.substr(begin, text.find_last_not_of(" \t\r\n") - begin + 1);
-}
-
-std::string Lower(std::string text) {
-  std::transform(text.begin(), text.end(), text.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return text;
-}
 
 double ParseCell(const std::string& cell, const std::string& where, const char* column) {
   const std::string text = Trim(cell);
@@ -87,7 +76,7 @@ engine::PressureCurve ReadPressureCsv(std::istream& in, const std::string& sourc
   if (!header_seen) throw InputError(source, "empty", "needs a header and rows covering 0–720 °CA");
   std::vector<double> angles(angles_deg.size());
   std::transform(angles_deg.begin(), angles_deg.end(), angles.begin(),
-                 [](double d) { return d * std::numbers::pi / 180.0; });
+                 [](double d) { return d * kRadiansPerDegree; });
   // A point's error names its line, as the cells' errors above do.
   engine::CurveFields fields;
   fields.curve = source;

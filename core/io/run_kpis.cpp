@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "core/base/angles.hpp"
 #include "core/engine/error_estimate.hpp"
 #include "core/engine/slider_crank_reference.hpp"
 #include "core/io/results_writer.hpp"
@@ -13,8 +14,6 @@
 namespace filmdyn::io {
 
 namespace {
-
-constexpr double kDeg = 180.0 / std::numbers::pi;
 
 // Index of the output step where `value` is smallest (largest when `largest`) among the samples
 // where `present` holds and the value is finite; the first on a tie. samples.size() when none.
@@ -138,11 +137,11 @@ std::optional<double> ReportedOilPerCycle(const std::optional<JointKpis>& joint)
 FilmPosition MinFilmPosition(const engine::CrankTrainSample& s, bool skirt) {
   FilmPosition p;
   if (skirt) {
-    p.angle_deg = s.skirt.moft_alpha * kDeg;
+    p.angle_deg = s.skirt.moft_alpha * kDegreesPerRadian;
     p.axial_m = s.skirt.moft_y;
   } else {
     const Eigen::Vector2d& e = s.bearing.journal_ecc_rod;
-    p.angle_deg = std::atan2(e.y(), e.x()) * kDeg;
+    p.angle_deg = std::atan2(e.y(), e.x()) * kDegreesPerRadian;
     if (p.angle_deg < 0.0) p.angle_deg += 360.0;
   }
   return p;

@@ -8,6 +8,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "core/base/angles.hpp"
 #include "core/base/version.hpp"
 #include "core/engine/error_estimate.hpp"
 #include "core/engine/film_joints.hpp"
@@ -140,7 +141,7 @@ RunSummary SummarizeRun(const std::string& case_name, const engine::RunConfig& c
   v.baumgarte_beta = config.engine_case.solver.baumgarte_beta;
   v.relative_tolerance = config.integrator.relative_tolerance;
   s.pressure_peak_pa = config.pressure.PeakPressure();
-  s.pressure_peak_crank_angle_deg = config.pressure.PeakAngle() * 180.0 / std::numbers::pi;
+  s.pressure_peak_crank_angle_deg = config.pressure.PeakAngle() * kDegreesPerRadian;
   return s;
 }
 
@@ -534,12 +535,11 @@ RunSummary FromJson(const json& j) {
     Read(f, "resolved_in_time", at, &fe.resolved_in_time);  // absent before: resolved
     Read(f, "far_companion", at, &fe.far_companion);        // absent before: not far
     // A curve's extreme (absent for the other figures and in older summaries).
-    constexpr double kRadPerDeg = std::numbers::pi / 180.0;
     const std::optional<double> own = GetOptional(f, "crank_angle[deg]", at);
     const std::optional<double> extrapolated = GetOptional(f, "extrapolated_crank_angle[deg]", at);
     if (own && extrapolated) {
-      fe.crank_angle = *own * kRadPerDeg;
-      fe.extrapolated_crank_angle = *extrapolated * kRadPerDeg;
+      fe.crank_angle = *own * kRadiansPerDegree;
+      fe.extrapolated_crank_angle = *extrapolated * kRadiansPerDegree;
       Read(f, "extreme_elsewhere", at, &fe.extreme_elsewhere);
     }
     e.figures.push_back(fe);

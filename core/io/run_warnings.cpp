@@ -9,6 +9,7 @@
 #include <tuple>
 #include <utility>
 
+#include "core/base/angles.hpp"
 #include "core/base/input_error.hpp"
 #include "core/engine/case_schema.hpp"
 #include "core/engine/error_estimate.hpp"
@@ -22,8 +23,6 @@
 namespace filmdyn::io {
 
 namespace {
-
-constexpr double kDeg = 180.0 / std::numbers::pi;
 
 // The crank angle of a sample within the reported cycle [°CA] (results.csv's first column).
 double CrankAngleDeg(const engine::CrankTrainSample& s) {
@@ -144,7 +143,7 @@ void UnresolvedPeakWarnings(const std::vector<engine::CrankTrainSample>& samples
         "whatever the samples caught (an impact: a big-end journal or a skirt crossing a "
         "cavitated or starved film onto the full film beyond it); a smaller "
         "solver.output_interval resolves it",
-        output_interval * kDeg);
+        output_interval * kDegreesPerRadian);
     if (missed) {
       // The steps saw more than the samples did: the cycle's highest pressure is there.
       w.crank_angle_deg = step_at;
@@ -186,35 +185,9 @@ const LoadedCase* DefaultCase() {
   return loaded ? &*loaded : nullptr;
 }
 
-// Whether field `f` has the same value in both cases (the schema's list and text accessors
-// take a mutable case; nothing is changed).
-bool SameValue(const engine::CaseField& f, engine::EngineCase& a, engine::EngineCase& b) {
-  auto same = [](double x, double y) {
-    return x == y || std::abs(x - y) <= 1e-12 * std::max(std::abs(x), std::abs(y));
-  };
-  switch (f.kind) {
-    case engine::FieldKind::kNumber:
-    case engine::FieldKind::kInteger:
-      return f.get && same(f.get(a), f.get(b));
-    case engine::FieldKind::kNumberList: {
-      if (!f.list) return false;
-      const std::vector<double>& x = f.list(a);
-      const std::vector<double>& y = f.list(b);
-      if (x.size() != y.size()) return false;
-      for (std::size_t k = 0; k < x.size(); ++k) {
-        if (!same(x[k], y[k])) return false;
-      }
-      return true;
-    }
-    case engine::FieldKind::kText:
-      return f.text && f.text(a) == f.text(b);
-    case engine::FieldKind::kChoice:
-      // A choice the default case marks assumed (its big end's oil supply: none given) is one
-      // like a number; the others (the joints' models) are not in its assumed list.
-      return f.choice && f.choice(a) == f.choice(b);
-  }
-  return false;
-}
+// A value counts as the default case's within this share of it: a case saved by the editor,
+// whose values were typed in display units (µm, mm), can differ from it in the last bits.
+constexpr double kSameAsDefault = 1e-12;
 
 // Whether `path` is a field of a joint that is ideal in this case (a case keeps its films' data
 // when a model switches them off: not the run's inputs).
@@ -229,13 +202,13 @@ bool OfAnIdealJoint(const std::string& path, const engine::EngineCase& c) {
 void AssumedInputsWarning(const engine::EngineCase& c, std::vector<RunWarning>* out) {
   const LoadedCase* reference = DefaultCase();
   if (!reference) return;
-  engine::EngineCase run_case = c, assumed_case = reference->value;
+  const engine::EngineCase& assumed_case = reference->value;
   RunWarning w;
   for (const auto& [path, reason] : assumed_case.assumed) {
     const engine::CaseField* f = engine::FindCaseField(path);
     if (!f || f->group == engine::FieldGroup::kSolver || OfAnIdealJoint(path, c)) continue;
-    if (!engine::UnusedReason(run_case, path).empty()) continue;  // the run does not read it
-    if (SameValue(*f, run_case, assumed_case)) w.fields.push_back(path);
+    if (!engine::UnusedReason(c, path).empty()) continue;  // the run does not read it
+    if (f->SameValue(c, assumed_case, kSameAsDefault)) w.fields.push_back(path);
   }
   if (w.fields.empty()) return;
   w.code = "assumed_inputs";
@@ -257,13 +230,12 @@ void AssumedInputsWarning(const engine::EngineCase& c, std::vector<RunWarning>* 
 void UnusedInputsWarning(const engine::EngineCase& c, std::vector<RunWarning>* out) {
   const LoadedCase* reference = DefaultCase();
   if (!reference) return;
-  engine::EngineCase run_case = c, default_case = reference->value;
   RunWarning w;
   std::string list;
   for (const engine::CaseField& f : engine::CaseSchema()) {
     if (OfAnIdealJoint(f.path, c)) continue;
-    const std::string why = engine::UnusedReason(run_case, f.path);
-    if (why.empty() || SameValue(f, run_case, default_case)) continue;
+    const std::string why = engine::UnusedReason(c, f.path);
+    if (why.empty() || f.SameValue(c, reference->value, kSameAsDefault)) continue;
     w.fields.push_back(f.path);
     list += (list.empty() ? "" : "; ") + f.path + " (" + why + ")";
   }
@@ -287,7 +259,7 @@ void SyntheticPressureWarning(const engine::RunConfig& config, std::vector<RunWa
   }
   const double peak = synthetic.PeakPressure();
   for (int k = 0; k < 720; ++k) {
-    const double phi = k * std::numbers::pi / 180.0;
+    const double phi = k * kRadiansPerDegree;
     if (std::abs(config.pressure.Pressure(phi) - synthetic.Pressure(phi)) > 1e-9 * peak) return;
   }
   // Between the speeds of the synthetic curves the run's curve is blended from the two beside
@@ -309,7 +281,7 @@ void SyntheticPressureWarning(const engine::RunConfig& config, std::vector<RunWa
   RunWarning w;
   w.code = "synthetic_pressure";
   w.value = config.pressure.PeakPressure();
-  w.crank_angle_deg = config.pressure.PeakAngle() * kDeg;
+  w.crank_angle_deg = config.pressure.PeakAngle() * kDegreesPerRadian;
   w.message = fmt::format(
       "the cylinder pressure is {} (peak {:.2f} MPa, {:.1f} bar, at {:.0f} °CA), not a measured "
       "one (docs/pressure-model.md); give a measured curve with --pressure-curve or the case's "
@@ -328,7 +300,7 @@ void LowCylinderPressureWarning(const engine::RunConfig& config, std::vector<Run
   w.code = "low_cylinder_pressure";
   w.value = peak;
   w.limit = kLowestPeakCylinderPressure;
-  w.crank_angle_deg = config.pressure.PeakAngle() * kDeg;
+  w.crank_angle_deg = config.pressure.PeakAngle() * kDegreesPerRadian;
   w.message = fmt::format(
       "the cylinder pressure peaks at {:.4g} Pa ({:.3g} bar) at {:.0f} °CA, below the {:g} bar "
       "any running engine compresses to (the crankcase is at {:.3g} bar): is the curve in bar or "
@@ -593,7 +565,7 @@ void HighSupplyPressureWarning(const engine::EngineCase& c, std::vector<RunWarni
     w.value = *peak;
     const auto k = static_cast<std::size_t>(peak - be.supply_pressure_values.begin());
     if (k < be.supply_pressure_angles.size())
-      w.crank_angle_deg = be.supply_pressure_angles[k] * kDeg;
+      w.crank_angle_deg = be.supply_pressure_angles[k] * kDegreesPerRadian;
   }
   if (!(w.value > kHighestSupplyPressure)) return;
   w.code = "high_supply_pressure";

@@ -7,6 +7,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "core/base/angles.hpp"
 #include "core/io/field_output.hpp"
 #include "core/io/field_series.hpp"
 
@@ -15,7 +16,6 @@ namespace filmdyn::io {
 using lubrication::SkirtPoint;
 
 const std::vector<SkirtQuantity>& SkirtQuantities() {
-  constexpr double kDeg = 180.0 / std::numbers::pi;
   static const std::vector<SkirtQuantity> quantities = {
       {"e0", "m", "e0", "lateral displacement e0 (+ toward thrust)",
        [](const SkirtPoint& p) { return p.state.e0; }, 1e6, "µm"},
@@ -52,7 +52,7 @@ const std::vector<SkirtQuantity>& SkirtQuantities() {
       {"moft", "m", "MOFT", "minimum oil film thickness (MOFT)",
        [](const SkirtPoint& p) { return p.film.moft; }, 1e6, "µm"},
       {"moft_alpha", "rad", "MOFT angle", "  where: angle from the thrust side",
-       [](const SkirtPoint& p) { return p.film.moft_alpha; }, kDeg, "°"},
+       [](const SkirtPoint& p) { return p.film.moft_alpha; }, kDegreesPerRadian, "°"},
       {"moft_y", "m", "MOFT depth", "  where: distance below the skirt top",
        [](const SkirtPoint& p) { return p.film.moft_y; }, 1e3, "mm"},
       {"cavitated_fraction", "-", "Cavitated fraction", "cavitated fraction of the skirt panels",

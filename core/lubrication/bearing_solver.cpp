@@ -6,6 +6,7 @@
 #include <numbers>
 #include <tuple>
 
+#include "core/base/angles.hpp"
 #include "core/base/input_error.hpp"
 #include "core/lubrication/film_integrals.hpp"
 
@@ -482,7 +483,7 @@ const BearingResult& BearingSolver::SolveStep(const BearingState& s, double time
   r.force_x = r.force_n * cphi - r.force_t * sphi;
   r.force_y = r.force_n * sphi + r.force_t * cphi;
   r.load = std::hypot(r.force_n, r.force_t);
-  r.attitude_deg = std::atan2(r.force_t, -r.force_n) * 180.0 / kPi;
+  r.attitude_deg = std::atan2(r.force_t, -r.force_n) * kDegreesPerRadian;
   r.friction_torque_journal = R * fi.friction.surface1;
   r.friction_torque_bearing = R * fi.friction.surface2;
   r.friction_power_loss = std::abs(r.friction_torque_journal * (s.omega_journal - s.omega_bearing));

@@ -20,18 +20,6 @@ namespace filmdyn::lubrication {
 
 namespace {
 
-std::string Lower(std::string s) {
-  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return s;
-}
-
-std::string Trim(const std::string& s) {
-  const auto a = s.find_first_not_of(" \t\r\n");
-  if (a == std::string::npos) return {};
-  const auto b = s.find_last_not_of(" \t\r\n");
-  return s.substr(a, b - a + 1);
-}
-
 double Number(const std::string& where, const std::string& text) {
   // strtod, not stod: a value below the smallest normal double (1e-309) reads as what it is,
   // a finite number, where stod throws.

@@ -9,13 +9,13 @@
 #include <numbers>
 #include <optional>
 
+#include "core/base/angles.hpp"
 #include "core/base/input_error.hpp"
 
 namespace filmdyn::lubrication {
 
 namespace {
 
-constexpr double kDeg = 180.0 / std::numbers::pi;
 constexpr int kMaxNewtonIterations = 60;
 constexpr double kTolerance = 1e-8;      // scaled residual: film + applied, over the load scale
 constexpr int kCapacityBisections = 12;  // the largest load carried to 2^-12 = 0.025 %
@@ -98,7 +98,7 @@ void SkirtCalculator::CheckState(const SkirtState& s) const {
   const std::string where = fmt::format(
       "puts the skirt into the liner at {:.1f}° from the thrust side, {:.2f} mm below the skirt "
       "top (film {:.3g} µm)",
-      gap.alpha * kDeg, gap.y * 1e3, gap.gap * 1e6);
+      gap.alpha * kDegreesPerRadian, gap.y * 1e3, gap.gap * 1e6);
   const auto [lo, hi] = E0Range(s.gamma);
   if (lo < hi) {
     throw InputError(

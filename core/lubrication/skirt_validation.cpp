@@ -7,6 +7,8 @@
 #include <string>
 #include <utility>
 
+#include "core/base/angles.hpp"
+
 namespace filmdyn::lubrication {
 
 namespace {
@@ -21,7 +23,7 @@ SkirtConfig LimitSkirt(double skirt_length, Table1D profile) {
   g.skirt_length = skirt_length;
   g.radial_clearance = 20e-6;
   g.pin_position = 0.5 * skirt_length;
-  g.alpha1 = g.alpha2 = 46.0 * kPi / 180.0;
+  g.alpha1 = g.alpha2 = 46.0 * kRadiansPerDegree;
   g.profile = std::move(profile);
   cfg.viscosity = 0.008;
   return cfg;

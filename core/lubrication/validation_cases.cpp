@@ -7,6 +7,7 @@
 
 #include <boost/math/quadrature/gauss.hpp>
 
+#include "core/base/angles.hpp"
 #include "core/lubrication/bearing_calculator.hpp"
 
 namespace filmdyn::lubrication {
@@ -64,7 +65,7 @@ double OcvirkSommerfeld(double l_over_d, double eps) {
 }
 
 double OcvirkAttitudeDeg(double eps) {
-  return std::atan2(kPi * std::sqrt(1.0 - eps * eps), 4.0 * eps) * 180.0 / kPi;
+  return std::atan2(kPi * std::sqrt(1.0 - eps * eps), 4.0 * eps) * kDegreesPerRadian;
 }
 
 // Short-bearing squeeze (Booker 1965, Hamrock et al. ch. 20): d/dz(h^3/(12 mu) dp/dz) =

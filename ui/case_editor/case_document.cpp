@@ -41,31 +41,6 @@ class CaseSnapshotCommand : public QUndoCommand {
 
 namespace {
 
-bool SameNumber(double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); }
-
-// Whether the field holds the same value in both cases.
-bool SameValue(const engine::CaseField& f, const engine::EngineCase& a,
-               const engine::EngineCase& b) {
-  // The list and text accessors take a mutable case; they only locate the member.
-  auto& ma = const_cast<engine::EngineCase&>(a);
-  auto& mb = const_cast<engine::EngineCase&>(b);
-  switch (f.kind) {
-    case engine::FieldKind::kNumber:
-    case engine::FieldKind::kInteger:
-      return SameNumber(f.get(a), f.get(b));
-    case engine::FieldKind::kChoice:
-      return f.choice(a) == f.choice(b);
-    case engine::FieldKind::kText:
-      return f.text(ma) == f.text(mb);
-    case engine::FieldKind::kNumberList: {
-      const std::vector<double>& x = f.list(ma);
-      const std::vector<double>& y = f.list(mb);
-      return std::equal(x.begin(), x.end(), y.begin(), y.end(), SameNumber);
-    }
-  }
-  return false;
-}
-
 // An edit makes the "assumed" note of every field it changes stale: the value is the user's now,
 // so the note goes with the edit (undo brings it back) and is neither shown nor saved. The
 // columns of a list table go together: a change to any of them (a cell, a row, an import) drops
@@ -74,13 +49,13 @@ void DropStaleAssumptions(const engine::EngineCase& before, engine::EngineCase* 
   if (after->assumed.empty()) return;
   std::vector<std::string> stale;
   for (const engine::CaseField& f : engine::CaseSchema()) {
-    if (f.kind == engine::FieldKind::kNumberList || SameValue(f, before, *after)) continue;
+    if (f.kind == engine::FieldKind::kNumberList || f.SameValue(before, *after)) continue;
     stale.push_back(f.path);
   }
   for (const CaseListTable& table : CaseListTables()) {
     const bool changed =
         std::any_of(table.columns.begin(), table.columns.end(),
-                    [&](const engine::CaseField* f) { return !SameValue(*f, before, *after); });
+                    [&](const engine::CaseField* f) { return !f->SameValue(before, *after); });
     if (!changed) continue;
     for (const engine::CaseField* f : table.columns) stale.push_back(f->path);
   }

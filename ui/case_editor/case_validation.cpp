@@ -7,6 +7,7 @@
 #include <numbers>
 #include <regex>
 
+#include "core/base/angles.hpp"
 #include "core/base/input_error.hpp"
 #include "core/engine/case_schema.hpp"
 #include "core/engine/pressure_curve.hpp"
@@ -138,7 +139,7 @@ CaseIssues ValidateCase(const engine::EngineCase& c) {
       if (curve.file.empty()) {
         std::vector<double> angles;
         angles.reserve(curve.crank_angle_deg.size());
-        for (double a : curve.crank_angle_deg) angles.push_back(a * std::numbers::pi / 180.0);
+        for (double a : curve.crank_angle_deg) angles.push_back(a * kRadiansPerDegree);
         engine::PressureCurve checked(angles, curve.pressure, key);
       }
     } catch (const InputError& e) {

@@ -19,12 +19,6 @@ namespace {
 
 constexpr std::uintmax_t kMaxCsvBytes = std::uintmax_t{16} << 20;
 
-std::string Trim(const std::string& text) {
-  const auto begin = text.find_first_not_of(" \t\r\n");
-  if (begin == std::string::npos) return "";
-  return text.substr(begin, text.find_last_not_of(" \t\r\n") - begin + 1);
-}
-
 // A cell without the spaces around it and one pair of double quotes (a spreadsheet's quoting).
 std::string Cell(const std::string& text) {
   std::string cell = Trim(text);

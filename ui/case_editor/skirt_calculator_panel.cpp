@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <numbers>
 
+#include "core/base/angles.hpp"
 #include "core/base/input_error.hpp"
 #include "core/base/stop.hpp"
 #include "core/engine/film_joints.hpp"
@@ -24,8 +25,6 @@
 namespace filmdyn::ui {
 
 namespace {
-
-constexpr double kDeg = 180.0 / std::numbers::pi;
 
 struct InputSpec {
   std::string key;
@@ -124,7 +123,7 @@ SkirtCalculation Calculate(const engine::EngineCase& engine_case, std::string ca
     const lubrication::SkirtSolver& solver = calc.solver();
     const lubrication::TriMesh& mesh = solver.mesh();
     const double radius = solver.config().geometry.radius;
-    for (double x : mesh.x_lines) out.alpha_deg.push_back(x / radius * kDeg);
+    for (double x : mesh.x_lines) out.alpha_deg.push_back(x / radius * kDegreesPerRadian);
     for (double y : mesh.y_lines) out.y_mm.push_back(y * 1e3);
     const lubrication::ReynoldsSolution& fields = solver.fields();
     for (int j = 0; j < mesh.ny_nodes(); ++j) {
@@ -136,7 +135,7 @@ SkirtCalculation Calculate(const engine::EngineCase& engine_case, std::string ca
       }
     }
     const auto& g = solver.config().geometry;
-    out.relief_deg.push_back({g.alpha1 * kDeg, 180.0 - g.alpha2 * kDeg});
+    out.relief_deg.push_back({g.alpha1 * kDegreesPerRadian, 180.0 - g.alpha2 * kDegreesPerRadian});
   } catch (const InputError& e) {
     out.ok = false;
     out.message = QString::fromStdString(e.what());

@@ -1,6 +1,7 @@
 #include "ui/charts/round_ticks.hpp"
 
 #include <QStringList>
+#include <QValueAxis>
 
 #include <algorithm>
 #include <cmath>
@@ -102,6 +103,18 @@ QString FormatReadout(double value, const QString& unit) {
   if (!std::isfinite(value)) return QStringLiteral("–");
   QString text = QString::number(value, 'g', 4);
   return unit.isEmpty() ? text : text + QChar(0x202F) + unit;
+}
+
+void SetRoundAxis(QValueAxis* axis, double lo, double hi, double step) {
+  axis->setTickType(QValueAxis::TicksDynamic);
+  axis->setTickAnchor(0.0);
+  axis->setTickInterval(step);
+  axis->setLabelFormat(QString("%.%1f").arg(DecimalsFor(step)));
+  axis->setRange(lo, hi);
+}
+
+void SetRoundAxis(QValueAxis* axis, const RoundRange& range) {
+  SetRoundAxis(axis, range.min, range.max, range.step);
 }
 
 }  // namespace filmdyn::ui

@@ -6,6 +6,8 @@
 #include <utility>
 #include <vector>
 
+class QValueAxis;
+
 namespace filmdyn::ui {
 
 /// The smallest round step (1, 2, 2.5 or 5 × 10ⁿ) not below span / target; 1 for a bad span.
@@ -23,6 +25,12 @@ RoundRange RoundRangeCovering(double lo, double hi, int target);
 /// Digits after the point needed to write multiples of `step` exactly (0 for 10, 1 for 0.5 and
 /// 2.5, 2 for 0.25).
 int DecimalsFor(double step);
+
+/// Puts `axis` on [lo, hi] with a tick every `step` counted from 0 and labels with the decimals
+/// the step needs: the value axes of the result plots and the study charts.
+void SetRoundAxis(QValueAxis* axis, double lo, double hi, double step);
+/// The same over `range`.
+void SetRoundAxis(QValueAxis* axis, const RoundRange& range);
 
 /// Round tick positions covering [lo, hi]: steps of 1, 2, 2.5 or 5 × 10ⁿ, about `target` of them.
 std::vector<double> RoundTicks(double lo, double hi, int target = 6);

@@ -6,14 +6,13 @@
 #include <numeric>
 #include <string_view>
 
+#include "core/base/angles.hpp"
 #include "core/engine/case_schema.hpp"
 #include "core/engine/error_estimate.hpp"
 
 namespace filmdyn::ui {
 
 namespace {
-
-constexpr double kDeg = 180.0 / M_PI;
 
 bool Turned(const JointFieldFrames& joint) {
   for (double r : joint.frame_rotation) {
@@ -43,7 +42,8 @@ void SetLabels(const JointFieldFrames& joint, FilmMapData* d) {
     d->x_title = QObject::tr("Angle in the rod frame (bearing-fixed) [°]");
     d->x_marks = {{90.0, QObject::tr("rod side")}, {270.0, QObject::tr("cap side")}};
   }
-  for (const auto& [a, b] : joint.no_film) d->no_film_x.push_back({a * kDeg, b * kDeg});
+  for (const auto& [a, b] : joint.no_film)
+    d->no_film_x.push_back({a * kDegreesPerRadian, b * kDegreesPerRadian});
 }
 
 }  // namespace
@@ -99,7 +99,7 @@ std::pair<double, double> ValueRange(const JointFieldFrames& joint, const FieldA
 }
 
 double ColumnAngleDeg(const JointFieldFrames& joint, size_t column, size_t frame) {
-  const double a = (joint.angle_lines[column] + joint.Rotation(frame)) * kDeg;
+  const double a = (joint.angle_lines[column] + joint.Rotation(frame)) * kDegreesPerRadian;
   if (!joint.periodic) return a;
   const double w = std::fmod(a, 360.0);
   return w < 0 ? w + 360.0 : w;
@@ -147,7 +147,7 @@ FilmMapData UnrolledMap(const JointFieldFrames& joint, size_t frame, const Field
     const auto& f = joint.load[frame];
     const double magnitude = std::hypot(f[0], f[1]);
     if (magnitude > 0) {
-      double a = std::atan2(f[1], f[0]) * kDeg;
+      double a = std::atan2(f[1], f[0]) * kDegreesPerRadian;
       if (a < 0) a += 360.0;
       d.x_line = a;
       d.x_line_label = QObject::tr("load %1 kN").arg(magnitude / 1e3, 0, 'f', 1);
@@ -207,7 +207,7 @@ FilmMapData CrankAngleMap(const FieldFrames& frames, size_t joint_index,
   if (resample) {
     for (size_t i = 0; i <= nx; ++i) d.x.push_back(360.0 * double(i) / double(nx));
   } else {
-    for (size_t i = 0; i < nx; ++i) d.x.push_back(joint.angle_lines[i] * kDeg);
+    for (size_t i = 0; i < nx; ++i) d.x.push_back(joint.angle_lines[i] * kDegreesPerRadian);
     if (joint.periodic) d.x.push_back(360.0);
   }
   for (size_t k : rows) {
@@ -216,7 +216,7 @@ FilmMapData CrankAngleMap(const FieldFrames& frames, size_t joint_index,
     const std::vector<double> extremes = ColumnExtremes(joint, k, info);
     d.y.push_back(angle);
     if (k < joint.load.size() && (joint.load[k][0] != 0 || joint.load[k][1] != 0)) {
-      const double a = std::atan2(joint.load[k][1], joint.load[k][0]) * kDeg;
+      const double a = std::atan2(joint.load[k][1], joint.load[k][0]) * kDegreesPerRadian;
       d.points.push_back({a < 0 ? a + 360.0 : a, angle});
     }
     if (resample) {
@@ -235,7 +235,7 @@ FilmMapData CrankAngleMap(const FieldFrames& frames, size_t joint_index,
   const size_t row = d.x.size(), n = d.y.size();
   if (n >= 2 && d.values.size() == row * n) {
     const double step = (d.y.back() - d.y.front()) / double(n - 1);
-    if (engine::SpanIsACycle(n, step / kDeg)) {
+    if (engine::SpanIsACycle(n, step * kRadiansPerDegree)) {
       const std::vector<double> first(d.values.begin(), d.values.begin() + long(row));
       const std::vector<double> last(d.values.end() - long(row), d.values.end());
       if (d.y.back() < 720.0 - 1e-9) {

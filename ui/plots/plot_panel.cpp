@@ -46,14 +46,6 @@ QValueAxis* AxisY(QChart* chart) {
   return static_cast<QValueAxis*>(chart->axes(Qt::Vertical).first());
 }
 
-void SetRoundAxis(QValueAxis* axis, double lo, double hi, double step) {
-  axis->setTickType(QValueAxis::TicksDynamic);
-  axis->setTickAnchor(0.0);
-  axis->setTickInterval(step);
-  axis->setLabelFormat(QString("%.%1f").arg(DecimalsFor(step)));
-  axis->setRange(lo, hi);
-}
-
 // One lap of a run's samples in crank-angle order, as the plots draw them: the samples of the last
 // 720 °CA the run computed (all of a cycle's; of a run stopped late in a run-in longer than a
 // cycle, whose crank angles are taken round 720 °CA, its last 720 °CA), from the lowest crank

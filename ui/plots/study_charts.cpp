@@ -76,16 +76,6 @@ QString Readout(double value, const QString& unit) {
   return FormatReadout(value, unit);
 }
 
-// The axis on round steps, as the result plots have them (labels with the decimals the step
-// needs).
-void SetRoundAxis(QValueAxis* axis, const RoundRange& range) {
-  axis->setTickType(QValueAxis::TicksDynamic);
-  axis->setTickAnchor(0.0);
-  axis->setTickInterval(range.step);
-  axis->setLabelFormat(QString("%.%1f").arg(range.decimals));
-  axis->setRange(range.min, range.max);
-}
-
 // The axis over [lo, hi] with a little room either side, so that markers on the extremes are
 // drawn whole; ticks on round steps (a constant gets a round step either side).
 void SetPaddedAxis(QValueAxis* axis, double lo, double hi, int target) {

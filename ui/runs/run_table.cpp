@@ -11,6 +11,7 @@
 #include <limits>
 #include <numbers>
 
+#include "core/base/angles.hpp"
 #include "core/engine/case_diff.hpp"
 #include "core/engine/error_estimate.hpp"
 #include "core/io/run_kpis.hpp"
@@ -462,7 +463,7 @@ void RunTable::updateRun(const RunHandle& run) {
       engine::SpanIsACycle(samples.size(), std::fmod(samples[1][Column::kCrankAngle] -
                                                          samples[0][Column::kCrankAngle] + 720.0,
                                                      720.0) *
-                                               std::numbers::pi / 180.0);
+                                               kRadiansPerDegree);
   if (run->status() != RunStatus::kRunning && !whole_cycle)
     f.mean_skirt_fpl = f.mean_bearing_fpl = std::numeric_limits<double>::quiet_NaN();
   const auto stats = run->statistics();
