@@ -124,6 +124,29 @@ class IntervalFlows {
   double last_time_ = 0.0, last_supplied_ = 0.0, last_lost_ = 0.0;
 };
 
+/// A mass-conserving film's books of its accepted steps, kept by both joints: the oil account,
+/// the peak film pressure of each step, and from them what each output sample reports of the
+/// interval before it.
+struct FilmStepBooks {
+  OilAccount oil;
+  StepPeaks peaks;
+  IntervalFlows flows;
+  /// Books the accepted step ending at t [s], of length dt from the last one: the film solved at
+  /// t — its supply and loss rates and full-film storage rate [m^3/s], its void volume [m^3], its
+  /// film fraction's excursion outside [0, 1] and its peak pressure [Pa].
+  void Book(double t, double dt, double supply_rate, double loss_rate, double squeeze_rate,
+            double void_volume, double fraction_excess, double peak_pressure) {
+    oil.Book(t, dt, supply_rate, loss_rate, squeeze_rate, void_volume, fraction_excess);
+    peaks.Book(t, peak_pressure);
+  }
+  /// At the output time t [s]: the peak pressure of the steps since the last output (NaN: none)
+  /// and the interval's mean supply and loss rates (IntervalFlows::Take; left alone without).
+  void Take(double t, double* step_peak_pressure, double* supply_rate, double* loss_rate) {
+    *step_peak_pressure = peaks.Take(t);
+    flows.Take(t, oil, supply_rate, loss_rate);
+  }
+};
+
 /// Film quantities of the lubricated skirt at one instant (present = false with an ideal liner).
 /// Forces on the piston: lateral along +X (thrust side), friction along the bore, + toward the
 /// crank (skirt solver convention), moment about the pin (generalised force on the tilt).

@@ -17,14 +17,6 @@ namespace {
 
 constexpr double kEpsFloor = 1e-3;  // line-of-centres regularisation (see header)
 
-// With a film history (JFO) the result also depends on the time (the step it is taken from), and
-// while a pressure law is phased in.
-bool SameInput(const multibody::JointForceInput& a, const multibody::JointForceInput& b,
-               bool timed) {
-  return (!timed || a.t == b.t) && a.body_i.q == b.body_i.q && a.body_i.v == b.body_i.v &&
-         a.body_j.q == b.body_j.q && a.body_j.v == b.body_j.v;
-}
-
 }  // namespace
 
 LubricatedBigEndElement::LubricatedBigEndElement(lubrication::BearingConfig config,
@@ -87,16 +79,13 @@ BigEndKinematics LubricatedBigEndElement::Kinematics(const BodyState& crank,
 }
 
 void LubricatedBigEndElement::PhaseIn(double law_end_time, double compliance_end_time) {
-  ramp_ = PressureLawRamp(solver_->config().pressure_viscosity, law_end_time);
-  compliance_end_time_ = solver_->config().compliance.rigid() ? 0.0 : compliance_end_time;
+  phase_in_ = FilmPhaseIn(solver_->config().pressure_viscosity, law_end_time,
+                          solver_->config().compliance.rigid(), compliance_end_time);
 }
 
 const lubrication::BearingResult& LubricatedBigEndElement::SolveFilm(
     const lubrication::BearingState& state, double t) {
-  if (ramp_.Update(t)) solver_->SetPressureViscosity(ramp_.law());
-  // Elastic surfaces meet the start's violent squeeze (the journal hits its film at metres per
-  // second, GPa isoviscous pressures) rigid, and become elastic over the same run-in.
-  if (compliance_end_time_ > 0.0) solver_->SetComplianceScale(RunInScale(t, compliance_end_time_));
+  phase_in_.Apply(t, *solver_);
   return solver_->SolveAt(state, t);
 }
 
@@ -120,13 +109,8 @@ Eigen::Vector4d LubricatedBigEndElement::Loads(const Eigen::Matrix<double, 6, 1>
 
 void LubricatedBigEndElement::EvaluateJoint(const multibody::JointForceInput& in,
                                             bool want_jacobian, multibody::JointForceOutput* out) {
-  const bool timed = solver_->Transient() || ramp_.VariesAfter(std::min(in.t, cached_in_.t)) ||
-                     std::min(in.t, cached_in_.t) < compliance_end_time_;
-  if (cache_valid_ && SameInput(in, cached_in_, timed) && (!want_jacobian || cache_has_jacobian_)) {
-    *out = cached_out_;
-    if (!want_jacobian) out->jacobian.setZero();
-    return;
-  }
+  const bool timed = solver_->Transient() || phase_in_.VariesAfter(std::min(in.t, last_.input().t));
+  if (last_.Serve(in, timed, want_jacobian, out)) return;
   const BodyState& crank = in.body_i;
   const BodyState& rod = in.body_j;
   const Eigen::Vector2d a_c = Rotation(crank.Angle()) * mount_.journal_point;
@@ -142,14 +126,8 @@ void LubricatedBigEndElement::EvaluateJoint(const multibody::JointForceInput& in
   out->wrench_i << f, Cross(a_c, f) + g[2];
   out->wrench_j << -f, -Cross(a_r, f) + g[3];
   out->jacobian.setZero();
-  cached_in_ = in;
-  cache_valid_ = true;
-  cache_has_jacobian_ = false;
-  solver_at_cache_ = true;
-  if (!want_jacobian) {
-    cached_out_ = *out;
-    return;
-  }
+  last_.Keep(in, *out);
+  if (!want_jacobian) return;
   // ∂g/∂z by forward differences of the solver in the Cartesian unknowns, each increment 1e-4 of
   // its unknown's own scale: the clearance for e, for ė the clearance times the surfaces' angular
   // speeds plus 1 rad/s (the rate at which the film's wedge moves the journal) plus |ė|. A fixed
@@ -167,7 +145,7 @@ void LubricatedBigEndElement::EvaluateJoint(const multibody::JointForceInput& in
     zp[k] += steps[k];
     dg.col(k) = (Loads(zp, rod_angle_, &scratch) - g) / steps[k];
   }
-  solver_at_cache_ = false;
+  last_.SolverMovedOn();
   // dz/dx for x = (q_crank, q_rod, v_crank, v_rod).
   Eigen::Matrix<double, 6, 12> dz = Eigen::Matrix<double, 6, 12>::Zero();
   dz.block<2, 2>(0, 0).setIdentity();
@@ -191,8 +169,7 @@ void LubricatedBigEndElement::EvaluateJoint(const multibody::JointForceInput& in
   out->jacobian = dw * dg * dz;
   out->jacobian(2, 2) += Cross(Perp(a_c), f);  // moment arms turn with the bodies
   out->jacobian(5, 5) += -Cross(Perp(a_r), f);
-  cached_out_ = *out;
-  cache_has_jacobian_ = true;
+  last_.KeepJacobian(*out);
 }
 
 void LubricatedBigEndElement::OnStepAccepted(double t, const multibody::SystemState& state) {
@@ -201,7 +178,7 @@ void LubricatedBigEndElement::OnStepAccepted(double t, const multibody::SystemSt
   // The integrator's last evaluation at t (its last Newton iterate, within the Newton tolerance
   // of the accepted state) is what the step was accepted with: book that solve rather than a
   // new one (a third of the film solves).
-  if (!(solver_at_cache_ && cache_valid_ && cached_in_.t == t)) {
+  if (!last_.SolverHoldsAt(t)) {
     const BigEndKinematics kin = Kinematics(state.Body(BodyI()), state.Body(BodyJ()));
     factorizations_ += SolveFilm(kin.state, t).stats.factorizations;
     ++solves_;
@@ -209,25 +186,22 @@ void LubricatedBigEndElement::OnStepAccepted(double t, const multibody::SystemSt
                          &solver_->result().elastic);
   }
   const lubrication::BearingResult& r = solver_->result();
-  oil_.Book(t, dt, r.feed_flow, r.side_flow, r.squeeze_rate, r.void_volume,
-            r.stats.fraction_excess);
-  step_peaks_.Book(t, r.max_pressure);
+  books_.Book(t, dt, r.feed_flow, r.side_flow, r.squeeze_rate, r.void_volume,
+              r.stats.fraction_excess, r.max_pressure);
   solver_->AcceptStep(t);
-  // Evaluations after this step from the new history; the fields are no longer the cache's.
-  cache_valid_ = false;
-  solver_at_cache_ = false;
+  // Evaluations after this step from the new history; the fields are no longer the last's.
+  last_.Drop();
 }
 
 void LubricatedBigEndElement::TakeSteps(double t, SkirtFilmSample*, BearingFilmSample* bearing) {
-  bearing->step_peak_pressure = step_peaks_.Take(t);
-  interval_flows_.Take(t, oil_, &bearing->supply_flow, &bearing->side_flow);
+  books_.Take(t, &bearing->step_peak_pressure, &bearing->supply_flow, &bearing->side_flow);
 }
 
 void LubricatedBigEndElement::RefreshFields() {
-  if (solver_at_cache_ || !cache_valid_) return;
-  SolveFilm(kin_.state, cached_in_.t);
+  if (!last_.SolverMovedOnFromIt()) return;
+  SolveFilm(kin_.state, last_.input().t);
   ++solves_;
-  solver_at_cache_ = true;
+  last_.SolverHoldsIt();
 }
 
 namespace {
@@ -270,7 +244,7 @@ void LubricatedBigEndElement::ReportFilm(SkirtFilmSample*, BearingFilmSample* be
   b.capped_nodes = result_.stats.capped_nodes;
   b.supply_flow = result_.feed_flow;
   b.side_flow = result_.side_flow;
-  b.oil = oil_;
+  b.oil = books_.oil;
   b.power = loads_.head<2>().dot(kin_.ecc_rate) + loads_[2] * kin_.state.omega_journal +
             loads_[3] * kin_.state.omega_bearing;
 }

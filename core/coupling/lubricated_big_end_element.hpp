@@ -15,8 +15,8 @@
 #include <functional>
 #include <memory>
 
+#include "core/coupling/film_joint.hpp"
 #include "core/coupling/film_report.hpp"
-#include "core/coupling/pressure_law_ramp.hpp"
 #include "core/lubrication/bearing_solver.hpp"
 #include "core/multibody/force_element.hpp"
 
@@ -103,19 +103,14 @@ class LubricatedBigEndElement final : public multibody::JointForceElement,
   double eval_time_ = 0.0;          ///< time of the evaluation in progress (film history)
   double journal_angle_ = 0.0;      ///< crank orientation of that evaluation (pin holes)
   std::function<double(double)> supply_pressure_;
-  multibody::JointForceInput cached_in_;
-  multibody::JointForceOutput cached_out_;
-  bool cache_valid_ = false, cache_has_jacobian_ = false, solver_at_cache_ = false;
+  LastEvaluation last_;
   lubrication::BearingResult result_;
   BigEndKinematics kin_;
   Eigen::Vector4d loads_ = Eigen::Vector4d::Zero();
   double rod_angle_ = 0.0;
   long solves_ = 0, factorizations_ = 0;
-  OilAccount oil_;  ///< kept at accepted steps when the film conserves oil (JFO)
-  IntervalFlows interval_flows_;  ///< the flows of output samples (JFO)
-  StepPeaks step_peaks_;  ///< peak film pressure of the accepted steps (JFO)
-  PressureLawRamp ramp_;
-  double compliance_end_time_ = 0.0;  // elastic surfaces: phased in until then (0: at once)
+  FilmStepBooks books_;  ///< kept at accepted steps when the film conserves oil (JFO)
+  FilmPhaseIn phase_in_;
 };
 
 }  // namespace filmdyn::coupling

@@ -10,17 +10,6 @@ namespace filmdyn::coupling {
 
 using multibody::BodyState;
 
-namespace {
-
-// With a film history (JFO) the result also depends on the time (the step it is taken from), and
-// while a pressure law is phased in.
-bool SameInput(const multibody::JointForceInput& a, const multibody::JointForceInput& b,
-               bool timed) {
-  return (!timed || a.t == b.t) && a.body_j.q == b.body_j.q && a.body_j.v == b.body_j.v;
-}
-
-}  // namespace
-
 LubricatedSkirtElement::LubricatedSkirtElement(lubrication::SkirtConfig config,
                                                multibody::BodyIndex piston, SkirtMounting mounting)
     : JointForceElement("lubricated skirt", multibody::kGround, piston),
@@ -57,15 +46,12 @@ double LubricatedSkirtElement::MinGapAllowed() const {
 }
 
 void LubricatedSkirtElement::PhaseIn(double law_end_time, double compliance_end_time) {
-  ramp_ = PressureLawRamp(solver_->config().pressure_viscosity, law_end_time);
-  compliance_end_time_ = solver_->config().compliance.rigid() ? 0.0 : compliance_end_time;
+  phase_in_ = FilmPhaseIn(solver_->config().pressure_viscosity, law_end_time,
+                          solver_->config().compliance.rigid(), compliance_end_time);
 }
 
 void LubricatedSkirtElement::SolveAt(const lubrication::SkirtState& state) {
-  if (ramp_.Update(eval_time_)) solver_->SetPressureViscosity(ramp_.law());
-  // Elastic surfaces phased in over the run-in, as the big end's (LubricatedBigEndElement).
-  if (compliance_end_time_ > 0.0)
-    solver_->SetComplianceScale(RunInScale(eval_time_, compliance_end_time_));
+  phase_in_.Apply(eval_time_, *solver_);
   factorizations_ += solver_->SolveAt(state, eval_time_).stats.factorizations;
   ++solves_;
   RequireConvergedFilm(solver_->result().stats, "skirt", solver_->config().solver.cavitation,
@@ -78,13 +64,8 @@ Eigen::Vector3d LubricatedSkirtElement::Generalised(const lubrication::SkirtResu
 
 void LubricatedSkirtElement::EvaluateJoint(const multibody::JointForceInput& in, bool want_jacobian,
                                            multibody::JointForceOutput* out) {
-  const bool timed = solver_->Transient() || ramp_.VariesAfter(std::min(in.t, cached_in_.t)) ||
-                     std::min(in.t, cached_in_.t) < compliance_end_time_;
-  if (cache_valid_ && SameInput(in, cached_in_, timed) && (!want_jacobian || cache_has_jacobian_)) {
-    *out = cached_out_;
-    if (!want_jacobian) out->jacobian.setZero();
-    return;
-  }
+  const bool timed = solver_->Transient() || phase_in_.VariesAfter(std::min(in.t, last_.input().t));
+  if (last_.Serve(in, timed, want_jacobian, out)) return;
   kin_ = Kinematics(in.body_j);
   eval_time_ = in.t;
   SolveAt(kin_.state);
@@ -93,14 +74,8 @@ void LubricatedSkirtElement::EvaluateJoint(const multibody::JointForceInput& in,
   out->wrench_j = kin_.jac.transpose() * g;
   out->wrench_i << -out->wrench_j[0], -out->wrench_j[1], 0.0;  // ground: force only
   out->jacobian.setZero();
-  cached_in_ = in;
-  cache_valid_ = true;
-  cache_has_jacobian_ = false;
-  solver_at_cache_ = true;
-  if (!want_jacobian) {
-    cached_out_ = *out;
-    return;
-  }
+  last_.Keep(in, *out);
+  if (!want_jacobian) return;
   // ∂G/∂z by forward differences of the solver, z = (e0, γ, ė0, γ̇, u_p), each increment 1e-4 of
   // its unknown's own scale: the clearance for e0 (over the skirt length for γ), for ė0 the
   // clearance times the sliding's frequency |u_p|/L plus 1 s⁻¹ (the lateral rate at which the
@@ -122,7 +97,7 @@ void LubricatedSkirtElement::EvaluateJoint(const multibody::JointForceInput& in,
     SolveAt(z);
     dg.col(k) = (Generalised(solver_->result()) - g) / steps[k];
   }
-  solver_at_cache_ = false;
+  last_.SolverMovedOn();
   // Chain rule: z_pos = (e0, γ) = f(q), z_vel = (ė0, γ̇, u_p) = J(q) v.
   const double th = in.body_j.Angle(), c = std::cos(th), s = std::sin(th);
   const double cg = mount_.com_lateral_offset,
@@ -144,8 +119,7 @@ void LubricatedSkirtElement::EvaluateJoint(const multibody::JointForceInput& in,
   out->jacobian.block<3, 3>(3, 9) = dv_force;
   out->jacobian.block<2, 3>(0, 3) = -dq_force.topRows<2>();
   out->jacobian.block<2, 3>(0, 9) = -dv_force.topRows<2>();
-  cached_out_ = *out;
-  cache_has_jacobian_ = true;
+  last_.KeepJacobian(*out);
 }
 
 void LubricatedSkirtElement::OnStepAccepted(double t, const multibody::SystemState& state) {
@@ -154,29 +128,27 @@ void LubricatedSkirtElement::OnStepAccepted(double t, const multibody::SystemSta
   // The integrator's last evaluation at t (its last Newton iterate, within the Newton tolerance
   // of the accepted state) is what the step was accepted with: book that solve rather than a
   // new one (a third of the film solves).
-  if (!(solver_at_cache_ && cache_valid_ && cached_in_.t == t)) {
+  if (!last_.SolverHoldsAt(t)) {
     eval_time_ = t;
     SolveAt(Kinematics(state.Body(BodyJ())).state);
   }
   const lubrication::SkirtResult& r = solver_->result();
-  oil_.Book(t, dt, r.inflow, r.outflow, r.squeeze_rate, r.void_volume, r.stats.fraction_excess);
-  step_peaks_.Book(t, r.max_pressure);
+  books_.Book(t, dt, r.inflow, r.outflow, r.squeeze_rate, r.void_volume, r.stats.fraction_excess,
+              r.max_pressure);
   solver_->AcceptStep(t);
-  // Evaluations after this step from the new history; the fields are no longer the cache's.
-  cache_valid_ = false;
-  solver_at_cache_ = false;
+  // Evaluations after this step from the new history; the fields are no longer the last's.
+  last_.Drop();
 }
 
 void LubricatedSkirtElement::TakeSteps(double t, SkirtFilmSample* skirt, BearingFilmSample*) {
-  skirt->step_peak_pressure = step_peaks_.Take(t);
-  interval_flows_.Take(t, oil_, &skirt->inflow, &skirt->outflow);
+  books_.Take(t, &skirt->step_peak_pressure, &skirt->inflow, &skirt->outflow);
 }
 
 void LubricatedSkirtElement::RefreshFields() {
-  if (solver_at_cache_ || !cache_valid_) return;
-  eval_time_ = cached_in_.t;
+  if (!last_.SolverMovedOnFromIt()) return;
+  eval_time_ = last_.input().t;
   SolveAt(kin_.state);
-  solver_at_cache_ = true;
+  last_.SolverHoldsIt();
 }
 
 void LubricatedSkirtElement::ReportFilm(SkirtFilmSample* skirt, BearingFilmSample*) const {
@@ -212,7 +184,7 @@ void LubricatedSkirtElement::ReportFilm(SkirtFilmSample* skirt, BearingFilmSampl
   f.inflow = result_.inflow;
   f.outflow = result_.outflow;
   f.wetted_fraction = result_.wetted_fraction;
-  f.oil = oil_;
+  f.oil = books_.oil;
   f.power = result_.lateral_force * kin_.state.e0_dot +
             result_.moment_about_pin * kin_.state.gamma_dot +
             result_.friction_force * kin_.state.piston_velocity;

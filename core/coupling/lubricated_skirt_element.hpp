@@ -17,8 +17,8 @@
 /// increment scaled to its unknown (EvaluateJoint), chained with J and its derivative.
 #include <memory>
 
+#include "core/coupling/film_joint.hpp"
 #include "core/coupling/film_report.hpp"
-#include "core/coupling/pressure_law_ramp.hpp"
 #include "core/lubrication/skirt_solver.hpp"
 #include "core/multibody/force_element.hpp"
 
@@ -98,17 +98,11 @@ class LubricatedSkirtElement final : public multibody::JointForceElement,
 
   std::unique_ptr<lubrication::SkirtSolver> solver_;
   SkirtMounting mount_;
-  // Cache of the last base evaluation (the integrator asks twice for the same state).
   double eval_time_ = 0.0;  ///< time of the evaluation in progress (film history)
-  multibody::JointForceInput cached_in_;
-  multibody::JointForceOutput cached_out_;
-  bool cache_valid_ = false, cache_has_jacobian_ = false, solver_at_cache_ = false;
+  LastEvaluation last_;
   lubrication::SkirtResult result_;
-  OilAccount oil_;  ///< kept at accepted steps when the film conserves oil (JFO)
-  IntervalFlows interval_flows_;  ///< the flows of output samples (JFO)
-  StepPeaks step_peaks_;  ///< peak film pressure of the accepted steps (JFO)
-  PressureLawRamp ramp_;
-  double compliance_end_time_ = 0.0;  // elastic surfaces: phased in until then (0: at once)
+  FilmStepBooks books_;  ///< kept at accepted steps when the film conserves oil (JFO)
+  FilmPhaseIn phase_in_;
   SkirtKinematics kin_;
   long solves_ = 0, factorizations_ = 0;
 };

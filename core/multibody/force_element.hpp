@@ -83,6 +83,14 @@ struct JointForceInput {
   BodyState body_j;
 };
 
+/// Whether a joint given `a` gets the same result as given `b`: both bodies' positions and
+/// velocities equal, and the time too when `timed` (a film with a history, whose result depends
+/// on the step it is taken from, or a law being phased in). A joint caches its last result by it.
+inline bool SameJointInput(const JointForceInput& a, const JointForceInput& b, bool timed) {
+  return (!timed || a.t == b.t) && a.body_i.q == b.body_i.q && a.body_i.v == b.body_i.v &&
+         a.body_j.q == b.body_j.q && a.body_j.v == b.body_j.v;
+}
+
 /// Wrenches on both bodies and, optionally, their derivatives.
 struct JointForceOutput {
   Eigen::Vector3d wrench_i = Eigen::Vector3d::Zero();  ///< (F_x, F_y, M_z about CoM_i), global

@@ -1,11 +1,14 @@
 // The lubricated joints as force elements: kinematics of e0/γ and of the
 // eccentricity, Jacobians against central differences (JointJacobianMismatch), robustness at
 // ε → 0 and past ε_max, virtual-work consistency of the skirt wrench; the case's ovality table and
-// per-surface E, ν reach the solvers. Coarse meshes: fast.
+// per-surface E, ν reach the solvers; the phase-in of a film and the last evaluation both joints
+// keep. Coarse meshes: fast.
 #include <QtTest>
 
 #include <cmath>
+#include <vector>
 
+#include "core/coupling/film_joint.hpp"
 #include "core/coupling/lubricated_big_end_element.hpp"
 #include "core/coupling/lubricated_skirt_element.hpp"
 #include "core/coupling/pressure_law_ramp.hpp"
@@ -109,6 +112,88 @@ class TestFilmElements : public QObject {
     coupling::PressureLawRamp at_once(barus, 0.0);
     QVERIFY(!at_once.Update(0.0));
     QCOMPARE(at_once.law().InitialCoefficient(), 2e-8);
+  }
+
+  // A film's phase-in: the law as the ramp gives it, the compliance scale from 0 to 1 over the
+  // run-in for elastic surfaces (never set for rigid ones), and results time-dependent until the
+  // later of the two ends.
+  void filmPhaseInSetsTheLawAndTheComplianceOfTheTime() {
+    struct Recorder {
+      std::vector<double> law_coefficients, compliance_scales;
+      void SetPressureViscosity(const lubrication::PressureViscosity& law) {
+        law_coefficients.push_back(law.InitialCoefficient());
+      }
+      void SetComplianceScale(double scale) { compliance_scales.push_back(scale); }
+    };
+    const lubrication::PressureViscosity barus = lubrication::PressureViscosity::Barus(2e-8);
+    coupling::FilmPhaseIn elastic(barus, 0.01, false, 0.02);
+    Recorder r;
+    elastic.Apply(0.005, r);
+    elastic.Apply(0.01, r);
+    elastic.Apply(0.03, r);
+    QCOMPARE(r.law_coefficients.size(), std::size_t{2});  // set when the law changes only
+    QCOMPARE(r.law_coefficients[0], 1e-8);
+    QCOMPARE(r.law_coefficients[1], 2e-8);
+    QCOMPARE(r.compliance_scales,
+             (std::vector<double>{coupling::RunInScale(0.005, 0.02), 0.5, 1.0}));
+    QVERIFY(elastic.VariesAfter(0.015));  // the law is whole, the compliance not yet
+    QVERIFY(!elastic.VariesAfter(0.02));
+    coupling::FilmPhaseIn rigid(barus, 0.01, true, 0.02);
+    Recorder rr;
+    rigid.Apply(0.005, rr);
+    QVERIFY(rr.compliance_scales.empty());
+    QVERIFY(!rigid.VariesAfter(0.01));
+    QVERIFY(!coupling::FilmPhaseIn().VariesAfter(0.0));
+  }
+
+  // A joint's last evaluation serves a repeated request for the same state (the time too when
+  // results depend on it), with a Jacobian only when one was kept; an evaluation whose Jacobian
+  // was never completed (its film solves failed) still serves its own wrenches, never an earlier
+  // state's; an accepted step drops it.
+  void lastEvaluationServesOnlyItsOwnState() {
+    coupling::LastEvaluation last;
+    multibody::JointForceOutput out;
+    multibody::JointForceInput a;
+    a.t = 1.0;
+    a.body_j.q << 1e-6, 0.0, 0.0;
+    QVERIFY(!last.Serve(a, false, false, &out));  // nothing kept
+    multibody::JointForceOutput first;
+    first.wrench_j << 1.0, 2.0, 3.0;
+    last.Keep(a, first);
+    QVERIFY(last.Serve(a, true, false, &out));
+    QCOMPARE(out.wrench_j, first.wrench_j);
+    QVERIFY(!last.Serve(a, true, true, &out));  // no Jacobian kept
+    multibody::JointForceInput later = a;
+    later.t = 2.0;
+    QVERIFY(last.Serve(later, false, false, &out));  // the time does not matter
+    QVERIFY(!last.Serve(later, true, false, &out));  // it does
+    multibody::JointForceInput moved = a;
+    moved.body_i.v[2] = 1.0;  // either body's state counts
+    QVERIFY(!last.Serve(moved, false, false, &out));
+    QVERIFY(last.SolverHoldsAt(1.0) && !last.SolverHoldsAt(2.0));
+
+    // The next state's wrenches kept, its Jacobian's difference solves begun and never finished.
+    multibody::JointForceOutput second;
+    second.wrench_j << 4.0, 5.0, 6.0;
+    second.jacobian.setConstant(7.0);
+    last.Keep(moved, second);
+    last.SolverMovedOn();
+    QVERIFY(!last.SolverHoldsAt(1.0) && last.SolverMovedOnFromIt());
+    QVERIFY(last.Serve(moved, true, false, &out));
+    QCOMPARE(out.wrench_j, second.wrench_j);
+    QVERIFY(out.jacobian.isZero());  // a Jacobian not kept is never served
+    last.KeepJacobian(second);
+    QVERIFY(last.Serve(moved, true, true, &out));
+    QCOMPARE(out.jacobian, second.jacobian);
+    QVERIFY(last.Serve(moved, true, false, &out));
+    QVERIFY(out.jacobian.isZero());  // not asked for
+    last.SolverHoldsIt();
+    QVERIFY(last.SolverHoldsAt(1.0) && !last.SolverMovedOnFromIt());
+
+    last.Drop();
+    QVERIFY(!last.Serve(moved, false, false, &out));
+    QVERIFY(!last.SolverHoldsAt(1.0) && !last.SolverMovedOnFromIt());
+    QCOMPARE(last.input().t, 1.0);  // the time of the last evaluation stays readable
   }
 
   void skirtOvalityFromTheCaseWidensTheFilm() {
