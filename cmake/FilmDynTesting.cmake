@@ -1,4 +1,5 @@
-# filmdyn_add_qtest(<name> SOURCES <files...> LIBS <targets...> LABEL core|ui|app [GL] [TIMEOUT s])
+# filmdyn_add_qtest(<name> SOURCES <files...> LIBS <targets...> LABEL core|ui|app [GL] [TIMEOUT s]
+#                   [COST s])
 # Every test is a Qt Test executable. Non-GL tests run on the `offscreen` platform; GL tests need
 # a real X server (Qt 6.4 segfaults rendering a QOpenGLWidget offscreen), so they are wrapped in
 # xvfb-run automatically unless a DISPLAY is already set.
@@ -54,7 +55,7 @@ function(filmdyn_folder_test_pch name)
 endfunction()
 
 function(filmdyn_add_qtest name)
-  cmake_parse_arguments(T "GL" "LABEL;TIMEOUT" "SOURCES;LIBS" ${ARGN})
+  cmake_parse_arguments(T "GL" "LABEL;TIMEOUT;COST" "SOURCES;LIBS" ${ARGN})
   if(NOT T_LABEL)
     message(FATAL_ERROR "filmdyn_add_qtest(${name}): LABEL is required")
   endif()
@@ -94,4 +95,10 @@ function(filmdyn_add_qtest name)
   # leave out there what only checks numbers the Release suites check (FILMDYN_INSTRUMENTED,
   # defined by filmdyn_test_definitions).
   set_tests_properties(${name} PROPERTIES LABELS "${labels}" TIMEOUT ${T_TIMEOUT})
+  # COST: the suite's wall time in seconds, measured in a Release build. `ctest -j` starts the
+  # costliest suites first, so that a fresh build directory (CI's, with no timings of earlier
+  # runs) does not end with two long suites running one after the other.
+  if(T_COST)
+    set_tests_properties(${name} PROPERTIES COST ${T_COST})
+  endif()
 endfunction()
