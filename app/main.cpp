@@ -4,6 +4,7 @@
 #include <QApplication>
 #include <QTimer>
 
+#include <clocale>
 #include <cstdlib>
 #include <iostream>
 #include <string>
@@ -39,6 +40,13 @@ void EnsureRuntimeDirectory() {
   }
 }
 
+// Qt's application object sets the C library's locale from the environment (setlocale(LC_ALL,
+// "")). Under a German or French LC_NUMERIC the C library then reads "1.5" as 1 and writes 1.5
+// as "1,5" — in FilmDyn's own code every number is read and written locale-free, but libraries
+// (VTK, HDF5, SUNDIALS' messages) use the C library's: numbers stay in the C form. QLocale, which
+// formats the dates the GUI shows, still follows the user's settings.
+void KeepNumbersInTheCForm() { std::setlocale(LC_NUMERIC, "C"); }
+
 void SetApplicationIdentity() {
   QCoreApplication::setOrganizationName("FilmDyn");
   QCoreApplication::setApplicationName("FilmDyn");
@@ -65,6 +73,7 @@ int main(int argc, char** argv) {
         if (!HasDisplay()) setenv("QT_QPA_PLATFORM", "offscreen", 1);
         EnsureRuntimeDirectory();
         QApplication app(argc, argv);
+        KeepNumbersInTheCForm();
         SetApplicationIdentity();
         return filmdyn::cli::RunCommand(launch.command, launch.args);
       }
@@ -80,6 +89,7 @@ int main(int argc, char** argv) {
   }
   filmdyn::ui::VtkViewWidget::SetDefaultSurfaceFormat();
   QApplication app(argc, argv);
+  KeepNumbersInTheCForm();
   SetApplicationIdentity();
   filmdyn::ui::MainWindow window;
   window.show();

@@ -9,6 +9,7 @@ packages=(
   libeigen3-dev libsuitesparse-dev libvtk9-dev nlohmann-json3-dev
   libsundials-dev libfmt-dev libtbb-dev libcli11-dev libboost-math-dev libhdf5-dev
   xvfb xauth libgl1-mesa-dri fonts-dejavu-core
+  locales  # the definitions the tests compile a German locale from (decimal comma)
 )
 # Deliberately NOT libvtk9-qt-dev: Debian builds VTK's Qt module against Qt 5, which cannot share
 # a process with Qt 6 (docs/design.md). FilmDyn has its own VTK-in-Qt-6 widget.

@@ -1,7 +1,6 @@
 #include <CLI/CLI.hpp>
 
 #include <cerrno>
-#include <charconv>
 #include <cmath>
 #include <cstdlib>
 #include <map>
@@ -188,13 +187,9 @@ std::optional<long> Args::Integer(const std::string& name) const {
 }
 
 double ParseDouble(const std::string& field, const std::string& text) {
-  // Decimal only (strtod also read "0x1770" as 6000), an optional leading '+'.
-  const bool plus = !text.empty() && text.front() == '+';
-  const std::string_view digits = plus ? std::string_view(text).substr(1) : text;
+  // Decimal only (strtod also read "0x1770" as 6000), an optional leading '+', in any locale.
   double value = 0.0;
-  const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
-  if (digits.empty() || (plus && digits.front() == '-') || error != std::errc() ||
-      end != digits.data() + digits.size() || !std::isfinite(value)) {
+  if (!ParseNumber(text, value) || !std::isfinite(value)) {
     throw InputError(field, "'" + text + "'", "must be a finite number");
   }
   return value;

@@ -95,6 +95,11 @@ std::string FormatValueExact(double value) {
 }
 
 bool ParseNumber(std::string_view text, double& value) {
+  // from_chars takes no '+'; one is allowed before a digit or a point ("+-1" is no number).
+  if (!text.empty() && text.front() == '+') {
+    text.remove_prefix(1);
+    if (text.empty() || text.front() == '-' || text.front() == '+') return false;
+  }
   double read = 0.0;
   const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), read);
   if (text.empty() || error != std::errc() || end != text.data() + text.size()) return false;

@@ -35,8 +35,10 @@ void RequireUtf8(const std::string& field, std::string_view text);
 std::string FormatValue(double value);
 /// Every digit a double needs to be read back exactly (the shortest such form).
 std::string FormatValueExact(double value);
-/// Reads a whole string as a number in the C locale's form (the forms FormatValue writes),
-/// whatever the process's locale; false (value untouched) when it is not one or out of range.
+/// Reads a whole string as a number in the C locale's form (the forms FormatValue writes, with
+/// an optional leading '+'), whatever the process's locale — the GUI runs under the user's, where
+/// the C library's strtod reads "1.5" as 1 in a German one; false (value untouched) when it is
+/// not one or out of range. The one reader of numbers in text: files, options, table cells.
 bool ParseNumber(std::string_view text, double& value);
 /// `shown`, a short form of `value`, or every digit `value` needs (FormatValueExact) where
 /// `shown`, read back, would land on the other side of `inside` than `value` itself: a number

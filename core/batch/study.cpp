@@ -608,9 +608,8 @@ std::string StudyJson(const Study& s) {
     for (const std::string& o : s.base_overrides) {
       const auto eq = o.find('=');
       const std::string value = o.substr(eq + 1);
-      char* end = nullptr;
-      const double number = std::strtod(value.c_str(), &end);
-      if (end != value.c_str() && *end == '\0') {
+      double number = 0.0;
+      if (ParseNumber(value, number)) {
         set[o.substr(0, eq)] = number;
       } else if (json list = json::parse(value, nullptr, false); list.is_array()) {
         set[o.substr(0, eq)] = list;  // a list field, as the file gave it

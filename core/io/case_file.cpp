@@ -360,8 +360,7 @@ namespace {
 // text for them, so that the field's range check refuses them naming the field.
 json OverrideNumber(const std::string& path, std::string_view text) {
   double value = 0.0;
-  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (text.empty() || error != std::errc() || end != text.data() + text.size()) {
+  if (!ParseNumber(text, value)) {
     if (text == "nan" || text == "inf" || text == "-inf") return std::string(text);
     // A number with a unit ("130mm") is the usual slip: say the unit the field takes (SI).
     const engine::CaseField* field = engine::FindCaseField(path);

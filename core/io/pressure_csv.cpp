@@ -6,7 +6,6 @@
 #include <fmt/format.h>
 #include <algorithm>
 #include <cctype>
-#include <charconv>
 #include <cmath>
 #include <fstream>
 #include <numbers>
@@ -22,9 +21,7 @@ namespace {
 double ParseCell(const std::string& cell, const std::string& where, const char* column) {
   const std::string text = Trim(cell);
   double value = 0.0;
-  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (text.empty() || error != std::errc() || end != text.data() + text.size() ||
-      !std::isfinite(value)) {
+  if (!ParseNumber(text, value) || !std::isfinite(value)) {
     throw InputError(where + " " + column, "\"" + text + "\"", "must be a finite number");
   }
   return value;

@@ -111,14 +111,8 @@ std::string ResultsCsvInDisplayUnits(const std::string& si_csv) {
       }
       if (c > 0) converted += ",";
       if (cell.empty()) continue;  // the model lacks the quantity: stays empty
-      std::size_t used = 0;
       double value = 0.0;
-      try {
-        value = std::stod(cell, &used);
-      } catch (const std::exception&) {
-        used = 0;
-      }
-      if (used != cell.size()) {
+      if (!ParseNumber(cell, value)) {
         throw InputError(
             "results.csv row " + std::to_string(row) + ", column " + std::to_string(c + 1),
             "'" + cell + "'", "a number or an empty cell");

@@ -129,7 +129,7 @@ BearingCalcResult RunBearingCalculator(const BearingCalcInput& in) {
       !std::isfinite(out.max_pressure) || !std::isfinite(out.side_flow)) {
     // Inputs at the edge of floating point: no figure to report.
     out.converged = false;
-    out.status = "the film's figures are not finite numbers (load " + std::to_string(out.load) +
+    out.status = "the film's figures are not finite numbers (load " + FormatValue(out.load) +
                  " N): the inputs are beyond what the calculation can represent";
   } else if (!r.elastic.converged) {
     out.converged = false;

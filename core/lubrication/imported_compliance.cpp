@@ -21,13 +21,10 @@ namespace filmdyn::lubrication {
 namespace {
 
 double Number(const std::string& where, const std::string& text) {
-  // strtod, not stod: a value below the smallest normal double (1e-309) reads as what it is,
-  // a finite number, where stod throws.
-  char* end = nullptr;
-  const double v = text.empty() || std::isspace(static_cast<unsigned char>(text[0]))
-                       ? NAN
-                       : std::strtod(text.c_str(), &end);
-  if (end == text.c_str() + text.size() && std::isfinite(v)) return v;
+  // ParseNumber, not strtod: the same in every locale (the GUI runs under the user's), and a value
+  // below the smallest normal double (1e-309) reads as what it is, a finite number.
+  double v = 0.0;
+  if (ParseNumber(text, v) && std::isfinite(v)) return v;
   throw InputError(where, "\"" + text + "\"", "must be a finite number");
 }
 

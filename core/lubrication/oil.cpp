@@ -1,8 +1,10 @@
 #include "core/lubrication/oil.hpp"
 
+#include <fmt/format.h>
 #include <algorithm>
 #include <boost/math/quadrature/gauss.hpp>
 #include <cmath>
+
 #include <cstdio>
 #include <limits>
 
@@ -12,11 +14,7 @@
 namespace filmdyn::lubrication {
 
 namespace {
-std::string Kelvin(double t) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.6g K (%.4g °C)", t, t - kZeroCelsius);
-  return buf;
-}
+std::string Kelvin(double t) { return fmt::format("{:.6g} K ({:.4g} °C)", t, t - kZeroCelsius); }
 
 // Cubic Hermite on [x0, x1] with values y0, y1 and slopes d0, d1.
 double Hermite(double x, double x0, double x1, double y0, double y1, double d0, double d1) {

@@ -10,6 +10,8 @@
 #include <exception>
 #include <stdexcept>
 
+#include "core/base/input_error.hpp"
+
 namespace filmdyn::multibody {
 
 struct Integrator::Impl {
@@ -182,7 +184,7 @@ SystemState Integrator::AdvanceTo(double t_out) {
       if (++steps > m.config.max_steps_per_output)
         throw std::runtime_error(
             "CVODE step failed: " + std::to_string(m.config.max_steps_per_output) +
-            " steps taken before reaching t = " + std::to_string(t_out));
+            " steps taken before reaching t = " + FormatValue(t_out));
       const int flag = CVode(m.cvode, t_out, m.y, &t_step, CV_ONE_STEP);
       if (m.error) std::rethrow_exception(m.error);
       m.Check(flag, "step");

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/base/input_error.hpp"
+
 namespace filmdyn::multibody {
 
 BodyIndex MultibodySystem::AddBody(Body body) {
@@ -191,7 +193,7 @@ void MultibodySystem::Assemble(double t, SystemState* state, double tolerance) c
     if (sys.phi.lpNorm<Eigen::Infinity>() <= tolerance) break;
     if (iteration >= 50) {
       throw std::runtime_error("the joints cannot be assembled: constraint violation " +
-                               std::to_string(sys.phi.lpNorm<Eigen::Infinity>()) +
+                               FormatValue(sys.phi.lpNorm<Eigen::Infinity>()) +
                                " after 50 Newton iterations");
     }
     // Least-norm correction Δq = −Φ_qᵀ (Φ_q Φ_qᵀ)⁻¹ Φ.

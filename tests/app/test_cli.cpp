@@ -24,6 +24,7 @@
 #include "core/io/field_series.hpp"
 
 #include "run_filmdyn.hpp"
+#include "tests/comma_locale.hpp"
 
 namespace {
 
@@ -38,6 +39,40 @@ Result Run(const QStringList& arguments,
 class TestCli : public QObject {
   Q_OBJECT
  private slots:
+  // A user whose locale writes decimals with a comma (LANG=de_DE.UTF-8, which Qt hands to the C
+  // library): a run reads the shipped CalculiX compliance (it was refused: "must be a finite
+  // number") and writes its numbers with a point, as under "C".
+  void aRunUnderACommaLocaleReadsAndWritesAsInC() {
+    QTemporaryDir dir;
+    const auto locale =
+        filmdyn::testing::FindCommaDecimalLocale(dir.filePath("locales").toStdString());
+    QVERIFY2(locale, filmdyn::testing::kNoCommaLocale);
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    if (!locale->locpath.empty()) env.insert("LOCPATH", QString::fromStdString(locale->locpath));
+    env.insert("LANG", QString::fromStdString(locale->name));
+    env.insert("LC_ALL", QString::fromStdString(locale->name));
+    const QString out = dir.filePath("run");
+    const Result r =
+        Run({"run", "--model", "only-lbrbe", "--set", "big_end.compliance=imported", "--set",
+             "big_end.compliance_file=" FILMDYN_SOURCE_DIR
+             "/examples/calculix-bearing-shell/shell_compliance.mtx",
+             "--set", "solver.error_estimate=0", "--time-limit", "1.5", "--no-fields", "--out", out,
+             "--quiet"},
+            env);
+    // Completed, or stopped by the time limit with what it computed (exit 1): not refused (2).
+    QVERIFY2(r.exit_code == 0 || r.exit_code == 1, qPrintable(r.err));
+    QVERIFY2(!r.err.contains("must be a finite number"), qPrintable(r.err));
+    QFile results(out + "/results.csv");
+    QVERIFY(results.open(QIODevice::ReadOnly));
+    const QStringList lines = QString::fromUtf8(results.readAll()).split('\n', Qt::SkipEmptyParts);
+    QVERIFY(lines.size() >= 2);
+    const qsizetype columns = lines[0].count(',');
+    for (qsizetype k = 1; k < lines.size(); ++k) {
+      QCOMPARE(lines[k].count(','), columns);  // a decimal comma would add cells
+    }
+    QVERIFY2(lines[1].contains('.'), qPrintable(lines[1]));
+  }
+
   void helpListsRegisteredCommands() {
     const Result result = Run({"--help"});
     QCOMPARE(result.exit_code, 0);

@@ -2,7 +2,6 @@
 
 #include <QObject>
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <exception>
 #include <filesystem>
@@ -67,12 +66,8 @@ std::string CellsText(const CaseListTable& table) {
 double ParseValue(const std::string& cell, const engine::CaseField& field,
                   const std::string& where) {
   const std::string column = where + " " + ColumnTitle(field);
-  const char* begin = cell.data();
-  const char* end = cell.data() + cell.size();
-  if (begin != end && *begin == '+') ++begin;
   double value = 0.0;
-  const auto [stop, error] = std::from_chars(begin, end, value);
-  if (cell.empty() || error != std::errc() || stop != end || !std::isfinite(value)) {
+  if (!ParseNumber(cell, value) || !std::isfinite(value)) {
     throw InputError(column, "\"" + cell + "\"",
                      "must be a finite number (with '.' as the decimal point)");
   }

@@ -167,7 +167,9 @@ double FactorPosition(const batch::StudyFactor& factor, const batch::StudyRow& r
   if (!factor.is_text()) {
     const double scale = FactorDisplay(factor).scale;
     if (f < row.point.numbers.size() && row.point.numbers[f]) return *row.point.numbers[f] / scale;
-    return std::strtod(row.point.values[f].c_str(), nullptr) / scale;
+    double value = std::numeric_limits<double>::quiet_NaN();
+    ParseNumber(row.point.values[f], value);
+    return value / scale;
   }
   const std::string& value = row.point.values[f];
   auto it = std::find(categories->begin(), categories->end(), value);

@@ -17,6 +17,7 @@
 #include <stdexcept>
 #include <string_view>
 
+#include "core/base/input_error.hpp"
 #include "core/io/case_file.hpp"
 #include "core/io/field_series.hpp"
 #include "core/io/output_files.hpp"
@@ -107,8 +108,7 @@ std::vector<RunSample> ParseSamplesCsv(const std::string& text, const fs::path& 
       if (columns[c] >= 0 && end > start) {  // (< 0: a column this version does not show)
         const char* name = kColumnHeaders[size_t(columns[c])];
         double v = 0;
-        const auto result = std::from_chars(line.data() + start, line.data() + end, v);
-        if (result.ec != std::errc() || result.ptr != line.data() + end) {
+        if (!ParseNumber(std::string_view(line).substr(start, end - start), v)) {
           throw std::runtime_error(path.string() + ": row " + std::to_string(row) + ", column " +
                                    name + " is not a number");
         }
@@ -317,7 +317,7 @@ void AddBigEndLoads(const fs::path& results_csv, FieldFrames* frames) {
     for (int k = 0; k < 4; ++k) {
       const std::string& cell = cells[from[k]];
       row[size_t(k)] = std::numeric_limits<double>::quiet_NaN();
-      std::from_chars(cell.data(), cell.data() + cell.size(), row[size_t(k)]);
+      ParseNumber(cell, row[size_t(k)]);  // a cell that is no number stays NaN
     }
     rows.push_back(row);
   }
