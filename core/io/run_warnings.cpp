@@ -186,7 +186,9 @@ const LoadedCase* DefaultCase() {
 }
 
 // A value counts as the default case's within this share of it: a case saved by the editor,
-// whose values were typed in display units (µm, mm), can differ from it in the last bits.
+// whose values were typed in display units (µm, mm), can differ from it in the last bits. A
+// choice the default case marks assumed (its big end's oil supply: none given) counts like a
+// number; the others (the joints' models) are not in its assumed list.
 constexpr double kSameAsDefault = 1e-12;
 
 // Whether `path` is a field of a joint that is ideal in this case (a case keeps its films' data
