@@ -5,7 +5,8 @@
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$root/scripts/install-deps.sh"
-"$root/scripts/build.sh"
+# The application alone: the test suites and benches are built by the test command.
+"$root/scripts/build.sh" filmdyn
 filmdyn="${FILMDYN_BUILD_DIR:-$root/build}/app/filmdyn"
 if [ -n "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ]; then
   exec "$filmdyn"

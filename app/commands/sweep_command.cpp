@@ -1,6 +1,7 @@
 // `filmdyn sweep`: several runs (speeds × models) in parallel, one folder each (results.csv,
 // summary.json, plots/), plus a comparison: comparison.csv, comparison.md and overlay plots.
 // The runs are computed by core (batch::SweepRunner); plots are drawn here on the main thread.
+#include <algorithm>
 #include <sstream>
 
 #include "app/commands/commands.hpp"
@@ -31,7 +32,9 @@ Command MakeSweepCommand() {
   command.max_positional = 1;
   command.needs_gui_application = true;
   command.options = {
-      {"rpm", "N1,N2,...", "crank speeds [rpm] (default: 1000,2000,4000,6000)"},
+      {"rpm", "N1,N2,...",
+       "crank speeds [rpm] (default: the speeds of the case's pressure curves; the default "
+       "case's 1000,2000,4000,6000)"},
       {"models", "M1,M2,...", "skirt-lbrbe, only-skirt, only-lbrbe, ideal (default: the case's)"},
       {"jobs", "N", "runs computed at the same time (default: number of cores)"},
       {"out", "DIR", "folder of the sweep (default: ./results/sweep-<case>)"},
@@ -58,8 +61,21 @@ Command MakeSweepCommand() {
     const io::LoadedCase loaded = LoadCaseArgument(args, &streams.err);
     const engine::EngineCase& c = loaded.value;
 
-    const std::vector<double> speeds =
-        ParseDoubleList("--rpm", args.Value("rpm").value_or("1000,2000,4000,6000"));
+    // Without --rpm: the speeds the case's cylinder pressure is given at (its pressure curves').
+    std::vector<double> speeds;
+    if (const auto list = args.Value("rpm")) {
+      speeds = ParseDoubleList("--rpm", *list);
+    } else {
+      for (const engine::PressureCurveSource& curve : c.pressure_curves)
+        speeds.push_back(curve.rpm);
+      std::sort(speeds.begin(), speeds.end());
+      speeds.erase(std::unique(speeds.begin(), speeds.end()), speeds.end());
+      if (speeds.empty()) {
+        throw InputError("--rpm", "(not given)",
+                         "the speeds of the runs: the case has no pressure curve to take them "
+                         "from (give --rpm N1,N2,… and the case's pressure_curves)");
+      }
+    }
     std::vector<engine::Model> models;
     if (const auto list = args.Value("models")) {
       for (const auto& name : SplitList(*list)) models.push_back(engine::ParseModel(name));

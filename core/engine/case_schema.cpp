@@ -1322,6 +1322,12 @@ void CaseField::Check(double value, const std::string& field) const {
   }
 }
 
+bool CaseField::SameListTable(const CaseField& other) const {
+  if (&other == this) return true;
+  return kind == FieldKind::kNumberList && other.kind == FieldKind::kNumberList &&
+         !symbol.empty() && group == other.group && symbol == other.symbol;
+}
+
 bool CaseField::SameValue(const EngineCase& a, const EngineCase& b, double relative) const {
   auto same = [relative](double x, double y) {
     return x == y || (std::isnan(x) && std::isnan(y)) ||
@@ -1401,6 +1407,22 @@ const CaseField* FindCaseField(std::string_view path) {
     if (f.path == path) return &f;
   }
   return nullptr;
+}
+
+const CaseField* FieldOfPath(std::string_view path) {
+  if (const CaseField* field = FindCaseField(path)) return field;
+  const std::size_t dot = path.rfind('.');
+  if (dot == std::string_view::npos) return nullptr;
+  const CaseField* list = FindCaseField(path.substr(0, dot));
+  return list && list->kind == FieldKind::kNumberList ? list : nullptr;
+}
+
+std::vector<const CaseField*> FieldsSetWith(const CaseField& field) {
+  std::vector<const CaseField*> fields;
+  for (const CaseField& f : CaseSchema()) {
+    if (field.SameListTable(f)) fields.push_back(&f);
+  }
+  return fields;
 }
 
 namespace {

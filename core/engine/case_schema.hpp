@@ -92,6 +92,9 @@ struct CaseField {
   /// of the larger in magnitude when given (a NaN equals a NaN); lists of the same length, element
   /// by element alike; texts and choices equal. The one comparison of a field's values.
   bool SameValue(const EngineCase& a, const EngineCase& b, double relative = 0.0) const;
+  /// Whether this field and `other` are columns of one table, set together (the skirt profile's
+  /// y and h): number lists of the same group and symbol. A field is in its own table.
+  bool SameListTable(const CaseField& other) const;
   /// "> 0 [m]", "[1e-14, 0.01] [-]", "integer in [8, 5000]", ... (docs and tooltips).
   std::string RangeText() const;
   /// What Check says a number or integer field allows ("must be a finite number in (0, 100]
@@ -111,6 +114,13 @@ double ScaleFromDisplay(double display, double scale);
 const std::vector<CaseField>& CaseSchema();
 /// The field with this dotted path, or nullptr.
 const CaseField* FindCaseField(std::string_view path);
+
+/// The field a `--set` path sets: the field itself, or the list whose element it names
+/// ("skirt.profile_h.2" → skirt.profile_h); nullptr when the path names no field.
+const CaseField* FieldOfPath(std::string_view path);
+/// The fields whose "assumed" note a new value of `field` makes stale: the field, and for a list
+/// every column of its table (a new profile h makes its y the user's too).
+std::vector<const CaseField*> FieldsSetWith(const CaseField& field);
 
 /// "ideal" / "lubricated" (the choices of the joint-model fields).
 const char* JointModelName(JointModel model);

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <fstream>
 #include <limits>
+#include <map>
 #include <numbers>
 #include <set>
 #include <sstream>
@@ -215,6 +216,39 @@ engine::PressureCurveSource CurveFromJson(const json& j, const std::string& path
 constexpr const char* kOldPistonRadius = "skirt.piston_radius";
 constexpr const char* kColdClearance = "skirt.cold_clearance";
 
+// The embedded default case's "assumed" notes, read from its text (not through CaseFromJson,
+// which hands them on to the fields another case file leaves out).
+const std::map<std::string, std::string>& DefaultAssumptions() {
+  static const std::map<std::string, std::string> notes = [] {
+    std::map<std::string, std::string> read;
+    const auto text = ReadResource("cases/default.json");
+    if (!text) return read;
+    const json root = json::parse(*text, nullptr, /*allow_exceptions=*/false);
+    if (!root.is_object() || !root.contains("assumed") || !root["assumed"].is_object())
+      return read;
+    for (auto it = root["assumed"].begin(); it != root["assumed"].end(); ++it) {
+      if (it->is_string()) read[it.key()] = it->get<std::string>();
+    }
+    return read;
+  }();
+  return notes;
+}
+
+// Whether the file gives the field `path` a value: the field, or another column of its table (a
+// profile's h gives its y), or an older key that the reader turns into it (the piston radius for
+// the clearance, a feed pressure for the supply it implies).
+bool GivenByFile(const json& root, const std::string& path, const EngineCase& c) {
+  if (const engine::CaseField* field = engine::FindCaseField(path)) {
+    for (const engine::CaseField* f : engine::FieldsSetWith(*field)) {
+      if (Find(root, f->path)) return true;
+    }
+  }
+  if (path == kColdClearance) return Find(root, kOldPistonRadius) != nullptr;
+  if (path == "big_end.supply")
+    return Find(root, "big_end.oil_feed_pressure") && c.big_end.oil_feed_pressure > 0.0;
+  return false;
+}
+
 // Reads an older file's piston radius as the cold skirt clearance it implies, R_l − R; the radius
 // derived back from it (engine::PistonRadius) is the file's to the last bit. Errors name the old
 // key, which is the one the user sees in the file.
@@ -327,6 +361,12 @@ EngineCase CaseFromJson(const json& root, std::vector<std::string>* notes) {
       // An older file's note on the piston radius belongs to the clearance that replaces it.
       c.assumed[it.key() == kOldPistonRadius ? kColdClearance : it.key()] = it->get<std::string>();
     }
+  }
+  // A field the file leaves out takes the default case's value, and with it the default case's
+  // assumption: the run's warnings and the editor's notes say so as they do for the default case.
+  for (const auto& [path, reason] : DefaultAssumptions()) {
+    if (c.assumed.count(path) || GivenByFile(root, path, c)) continue;
+    c.assumed[path] = "not given: the default case's value (" + reason + ")";
   }
   engine::CheckCaseConsistency(c);
   return c;
@@ -479,6 +519,13 @@ void ApplyOverride(json* root, const std::string& assignment) {
     *node = text == "true";
   } else {
     throw InputError("--set " + path, text, "names an object or array, not a scalar field");
+  }
+  // The value is the user's now: the "assumed" notes of the field (and of its table's other
+  // columns) no longer hold.
+  const engine::CaseField* set = engine::FieldOfPath(path);
+  json* notes = root->contains("assumed") ? &(*root)["assumed"] : nullptr;
+  if (set && notes && notes->is_object()) {
+    for (const engine::CaseField* f : engine::FieldsSetWith(*set)) notes->erase(f->path);
   }
 }
 

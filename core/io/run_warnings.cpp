@@ -198,15 +198,18 @@ bool OfAnIdealJoint(const std::string& path, const engine::EngineCase& c) {
          (c.big_end.model != engine::JointModel::kLubricated && path.rfind("big_end.", 0) == 0);
 }
 
-// The physical inputs the default case marks as assumed and this run still uses at that value.
-// Numerical settings (solver group: meshes, tolerances) are left out: the discretisation-error
-// estimate judges those. Fields of a joint that is ideal in this run do not count.
+// The physical inputs this run's case notes as assumed — its own notes, or the default case's
+// for a field its file leaves out (io::CaseFromJson) — that it still uses at the default case's
+// value. A value the user gave (a file that states it, `--set`, an edit in the editor) carries
+// no note. Numerical settings (solver group: meshes, tolerances) are left out: the
+// discretisation-error estimate judges those. Fields of a joint that is ideal in this run do not
+// count.
 void AssumedInputsWarning(const engine::EngineCase& c, std::vector<RunWarning>* out) {
   const LoadedCase* reference = DefaultCase();
   if (!reference) return;
   const engine::EngineCase& assumed_case = reference->value;
   RunWarning w;
-  for (const auto& [path, reason] : assumed_case.assumed) {
+  for (const auto& [path, reason] : c.assumed) {
     const engine::CaseField* f = engine::FindCaseField(path);
     if (!f || f->group == engine::FieldGroup::kSolver || OfAnIdealJoint(path, c)) continue;
     if (!engine::UnusedReason(c, path).empty()) continue;  // the run does not read it
@@ -218,8 +221,9 @@ void AssumedInputsWarning(const engine::EngineCase& c, std::vector<RunWarning>* 
   std::string names;
   for (std::size_t k = 0; k < w.fields.size(); ++k) names += (k ? ", " : "") + w.fields[k];
   w.message = fmt::format(
-      "{} input{} still at the value the default case assumes because the paper does not give "
-      "it (docs/case-file.md gives each reason): {}",
+      "{} input{} at the default case's assumed value, not a known one (the case's \"assumed\" "
+      "notes: a field the case file leaves out takes the default case's; the editor's notes and "
+      "docs/case-file.md give each reason): {}",
       w.fields.size(), w.fields.size() == 1 ? " is" : "s are", names);
   out->push_back(std::move(w));
 }

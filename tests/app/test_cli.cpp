@@ -305,6 +305,25 @@ class TestCli : public QObject {
     QVERIFY2(s["message"].toString().contains("FE surface"), qPrintable(s["message"].toString()));
   }
 
+  // Without --rpm a sweep runs at the speeds of the case's pressure curves (it used to take fixed
+  // speeds, and a case whose curves did not cover 1000 rpm failed on a speed nobody asked for).
+  void sweepWithoutSpeedsRunsAtTheCurvesSpeeds() {
+    QTemporaryDir dir;
+    const QString out = dir.filePath("s");
+    const Result result = Run({"sweep", "--models", "ideal", "--set", "pressure_curves.0.rpm=1500",
+                               "--set", "solver.max_cycles=2", "--out", out, "--quiet"});
+    QVERIFY2(result.exit_code == 0, qPrintable(result.err));
+    QFile csv(out + "/comparison.csv");
+    QVERIFY(csv.open(QIODevice::ReadOnly));
+    const QStringList lines = QString::fromUtf8(csv.readAll()).trimmed().split('\n');
+    QCOMPARE(lines.size(), 5);  // header + the four curves' speeds, in order
+    const char* speeds[] = {"1500", "2000", "4000", "6000"};
+    for (int k = 0; k < 4; ++k) {
+      QVERIFY2(lines[k + 1].contains(QString(",ideal,%1,completed,").arg(speeds[k])),
+               qPrintable(lines[k + 1]));
+    }
+  }
+
   void sweepRejectsBadJobs() {
     const Result result = Run({"sweep", "--jobs", "0"});
     QCOMPARE(result.exit_code, 2);

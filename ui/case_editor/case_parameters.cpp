@@ -76,8 +76,7 @@ std::vector<CaseListTable> MakeListTables() {
   for (const engine::CaseField& field : engine::CaseSchema()) {
     if (field.kind != engine::FieldKind::kNumberList) continue;
     auto same = std::find_if(tables.begin(), tables.end(), [&field](const CaseListTable& t) {
-      const engine::CaseField& first = *t.columns.front();
-      return !field.symbol.empty() && first.group == field.group && first.symbol == field.symbol;
+      return t.columns.front()->SameListTable(field);
     });
     if (same != tables.end()) {
       same->columns.push_back(&field);

@@ -315,6 +315,56 @@ class TestRunWarnings : public QObject {
     QVERIFY(unused(c, engine::Model::kIdeal).code.empty());
   }
 
+  // The assumed inputs are those the case notes as assumed: a value the user states is theirs,
+  // even when it equals the default case's; a field the file leaves out takes the default case's
+  // value and its note.
+  void assumedInputsAreThoseTheCaseDoesNotState() {
+    const engine::RunResult none;
+    auto assumed = [&](const engine::EngineCase& c) {
+      const auto w = io::RunWarnings(Config(c, engine::Model::kSkirtLbrbe, 2000.0), none);
+      const auto it = std::find_if(
+          w.begin(), w.end(), [](const io::RunWarning& x) { return x.code == "assumed_inputs"; });
+      return it == w.end() ? std::vector<std::string>{} : it->fields;
+    };
+    auto has = [](const std::vector<std::string>& fields, const char* path) {
+      return std::count(fields.begin(), fields.end(), path) == 1;
+    };
+    // The default case: its own notes.
+    const std::vector<std::string> all = assumed(Loaded().value);
+    QVERIFY(has(all, "geometry.gravity") && has(all, "skirt.profile_h") &&
+            has(all, "skirt.modulus_skirt") && has(all, "operating.crankcase_pressure"));
+    // A user's file that states the gravity and the crankcase pressure at the default case's
+    // values, and its own skirt profile; everything else left out.
+    nlohmann::json file = {
+        {"filmdyn_case_version", 1},
+        {"geometry", {{"gravity", 9.81}}},
+        {"operating", {{"crankcase_pressure", 1.0e5}}},
+        {"skirt",
+         {{"profile_y", {0.0, 0.0095, 0.019}}, {"profile_h", {2.0e-5, 0.0, 2.0e-5}}}}};
+    const engine::EngineCase own = io::LoadCaseText(file.dump(), "own.json");
+    QCOMPARE(own.geometry.gravity, Loaded().value.geometry.gravity);
+    const std::vector<std::string> mine = assumed(own);
+    QVERIFY(!has(mine, "geometry.gravity") && !has(mine, "operating.crankcase_pressure"));
+    QVERIFY(!has(mine, "skirt.profile_h") && !has(mine, "skirt.profile_y"));
+    // What it leaves out is the default case's assumption, and says so.
+    QVERIFY(has(mine, "skirt.modulus_skirt") && has(mine, "big_end.peklenik"));
+    QVERIFY(QString::fromStdString(own.assumed.at("skirt.modulus_skirt")).startsWith("not given"));
+    // --set makes a value the user's, at the default case's value too; an element of a list
+    // makes its whole table the user's (the profile's y with its h).
+    const engine::EngineCase set = io::LoadCaseText(
+        file.dump(), "own.json",
+        {"skirt.modulus_skirt=75e9", "big_end.peklenik=1", "skirt.ovality_h=[]"});
+    const std::vector<std::string> after = assumed(set);
+    QVERIFY(!has(after, "skirt.modulus_skirt") && !has(after, "big_end.peklenik"));
+    QVERIFY(!has(after, "skirt.ovality_h") && !has(after, "skirt.ovality_alpha"));
+    QVERIFY(has(after, "skirt.poisson_skirt"));
+    const auto default_text = filmdyn::io::CaseToJson(Loaded().value).dump();
+    const engine::EngineCase element =
+        io::LoadCaseText(default_text, "default", {"skirt.profile_h.2=0"});
+    QVERIFY(!element.assumed.count("skirt.profile_h") && !element.assumed.count("skirt.profile_y"));
+    QVERIFY(element.assumed.count("skirt.ovality_h"));
+  }
+
   void massConservingBigEndOnTheFilmStartLineWarns() {
     // The supply warning is the configuration's: judged without a run.
     const engine::RunResult none;
