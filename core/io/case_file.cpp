@@ -224,8 +224,7 @@ const std::map<std::string, std::string>& DefaultAssumptions() {
     const auto text = ReadResource("cases/default.json");
     if (!text) return read;
     const json root = json::parse(*text, nullptr, /*allow_exceptions=*/false);
-    if (!root.is_object() || !root.contains("assumed") || !root["assumed"].is_object())
-      return read;
+    if (!root.is_object() || !root.contains("assumed") || !root["assumed"].is_object()) return read;
     for (auto it = root["assumed"].begin(); it != root["assumed"].end(); ++it) {
       if (it->is_string()) read[it.key()] = it->get<std::string>();
     }

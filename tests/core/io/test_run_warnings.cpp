@@ -339,8 +339,7 @@ class TestRunWarnings : public QObject {
         {"filmdyn_case_version", 1},
         {"geometry", {{"gravity", 9.81}}},
         {"operating", {{"crankcase_pressure", 1.0e5}}},
-        {"skirt",
-         {{"profile_y", {0.0, 0.0095, 0.019}}, {"profile_h", {2.0e-5, 0.0, 2.0e-5}}}}};
+        {"skirt", {{"profile_y", {0.0, 0.0095, 0.019}}, {"profile_h", {2.0e-5, 0.0, 2.0e-5}}}}};
     const engine::EngineCase own = io::LoadCaseText(file.dump(), "own.json");
     QCOMPARE(own.geometry.gravity, Loaded().value.geometry.gravity);
     const std::vector<std::string> mine = assumed(own);
@@ -351,9 +350,9 @@ class TestRunWarnings : public QObject {
     QVERIFY(QString::fromStdString(own.assumed.at("skirt.modulus_skirt")).startsWith("not given"));
     // --set makes a value the user's, at the default case's value too; an element of a list
     // makes its whole table the user's (the profile's y with its h).
-    const engine::EngineCase set = io::LoadCaseText(
-        file.dump(), "own.json",
-        {"skirt.modulus_skirt=75e9", "big_end.peklenik=1", "skirt.ovality_h=[]"});
+    const engine::EngineCase set =
+        io::LoadCaseText(file.dump(), "own.json",
+                         {"skirt.modulus_skirt=75e9", "big_end.peklenik=1", "skirt.ovality_h=[]"});
     const std::vector<std::string> after = assumed(set);
     QVERIFY(!has(after, "skirt.modulus_skirt") && !has(after, "big_end.peklenik"));
     QVERIFY(!has(after, "skirt.ovality_h") && !has(after, "skirt.ovality_alpha"));
