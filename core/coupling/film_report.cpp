@@ -12,8 +12,10 @@ namespace filmdyn::coupling {
 void RequireConvergedFilm(const lubrication::ReynoldsStats& stats, const char* joint,
                           lubrication::CavitationModel model,
                           const lubrication::ElasticSolveStats* elastic) {
-  if (elastic != nullptr && !elastic->converged)
-    throw multibody::EvaluationFailure(std::string(joint) + " elastic film: " + elastic->message);
+  if (elastic != nullptr && !elastic->converged) {
+    throw multibody::EvaluationFailure(std::string(joint) + " elastic film: " + elastic->message,
+                                       elastic->surfaces_touch ? joint : "");
+  }
   if (stats.capped_nodes > 0) {
     throw multibody::EvaluationFailure(std::string(joint) +
                                        " film beyond the pressure-viscosity "

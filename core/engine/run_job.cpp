@@ -120,6 +120,23 @@ RunConfig MakeRunConfig(const EngineCase& engine_case, Model model, double rpm,
 
 namespace {
 
+// The skirt on the liner: where (the sample's thinnest film), the piston's attitude there, and
+// what moves it. A contact at a skirt end with the piston tilted is the tilting moment's doing
+// (pin height, centre of mass, the profile's end relief), one along the skirt the side force's
+// (clearance, profile, viscosity). `at` says which sample it is when not the contact's own.
+std::string SkirtContactText(const CrankTrainSample& s, const std::string& how,
+                             const std::string& at) {
+  return fmt::format(
+      "piston skirt touches the liner ({}) at {:.0f}° from the thrust axis, {:.1f} mm below the "
+      "skirt top{}, the piston {:.3g} µm off the bore axis and tilted {:.3g} mrad: the skirt "
+      "film cannot carry the side force or hold the tilt there. What moves it: the clearance and "
+      "the profile (skirt.cold_clearance, skirt.profile_h: more relief at the end that touches), "
+      "the oil's viscosity, and the tilting moment (geometry.skirt_top_to_pin, "
+      "geometry.skirt_top_to_com, geometry.piston_inertia)",
+      how, s.skirt.moft_alpha * kDegreesPerRadian, s.skirt.moft_y * 1e3, at, s.piston_lateral * 1e6,
+      s.piston_tilt * 1e3);
+}
+
 // A film failure's message with what in the case may have caused it: a starved skirt's liner
 // film; a compressible oil whose bulk modulus the film's pressures passed, far beyond the small
 // density changes the mass-conserving film's linearised density rho0 (1 + p / beta) stands for
@@ -652,6 +669,31 @@ RunResult RunSingle(const RunConfig& config, const RunMonitor& monitor,
     result.message = (cancelled ? "cancelled" : "wall-time limit reached") + where_now();
     result.cycles = std::max(cycle, 0);
     keep(previous.empty() ? current : previous);
+  } catch (const multibody::SurfacesInContact& contact) {
+    // Elastic surfaces that meet past their rigid position: the contact, not the integrator.
+    result.status = RunStatus::kFailed;
+    const bool skirt = contact.Joint() == "skirt";
+    const std::string how =
+        "the elastic surfaces meet past their rigid position and their deformation does not "
+        "open the film";
+    FilmFailure failure{
+        skirt ? "skirt" : "big_end",
+        fmt::format(
+            "{} ({})",
+            skirt ? "piston skirt touches the liner" : "big-end journal touches the bearing", how)};
+    if (!current.empty()) {
+      const CrankTrainSample& last = current.samples.back();
+      if (skirt) {
+        failure.message = SkirtContactText(
+            last, how,
+            fmt::format(" at the last output ({:.1f} °CA)", CycleCrankAngleDeg(last.crank_angle)));
+      }
+      failure.message = WithCauseHint(failure, c, last);
+    }
+    result.message =
+        failure.message + where_now() + "; the integrator's account: " + contact.what();
+    result.cycles = std::max(cycle, 0);
+    keep(current.empty() ? previous : current);
   } catch (const std::exception& error) {
     result.status = RunStatus::kFailed;
     result.message = std::string("integration failed: ") + error.what() + where_now();
@@ -692,12 +734,8 @@ FilmFailure FilmTrouble(const CrankTrainSample& s) {
   }
   if (s.skirt.present &&
       (!std::isfinite(s.skirt.min_gap) || s.skirt.min_gap <= s.skirt.min_gap_allowed)) {
-    return {
-        "skirt",
-        fmt::format(
-            "piston skirt touches the liner (smallest gap {:.3g} um): the skirt film cannot carry "
-            "the side force with this clearance/profile",
-            s.skirt.min_gap * 1e6)};
+    return {"skirt",
+            SkirtContactText(s, fmt::format("smallest gap {:.3g} µm", s.skirt.min_gap * 1e6), "")};
   }
   for (const auto& [present, excess, joint, name] :
        {std::tuple{s.bearing.present, s.bearing.fraction_excess, "big_end", "big-end"},

@@ -344,6 +344,7 @@ const ElasticSolveStats& ElasticFilm::Solve(ReynoldsFem& fem, const ReynoldsPara
     if (!compliance_.rigid() && fem.film_thickness().minCoeff() <= 0.0) {
       stats_.converged = false;
       stats_.message = "the film is closed (h <= 0) and the surfaces are rigid";
+      stats_.surfaces_touch = true;
       return stats_;
     }
     fem.Solve(params);
@@ -412,6 +413,7 @@ const ElasticSolveStats& ElasticFilm::Solve(ReynoldsFem& fem, const ReynoldsPara
   }
   if (closed > 0) {
     stats_.converged = false;
+    stats_.surfaces_touch = true;
     stats_.message =
         "the rigid film is closed at " + std::to_string(closed) +
         " nodes (the surfaces are past each other's rigid position) and the deformation " +

@@ -137,6 +137,9 @@ struct ElasticSolveStats {
   double tolerance = 0.0;        ///< the residual allowed [m]
   double max_deformation = 0.0;  ///< max_k delta_k [m]
   std::string message;           ///< why it did not converge (empty when it did)
+  /// Not converged because the surfaces meet: the film is closed past the rigid surfaces'
+  /// position and no deformation opens it (or the surfaces are rigid). No smaller step cures it.
+  bool surfaces_touch = false;
 };
 
 /// The coupled film solve of one joint, holding the deformation between solves (the next

@@ -352,6 +352,7 @@ const SkirtResult& SkirtSolver::SolveStep(const SkirtState& s, double time_step)
     if (!es.converged && r.elastic.converged) {
       r.elastic.converged = false;
       r.elastic.message = (p == 0 ? "thrust panel: " : "anti-thrust panel: ") + es.message;
+      r.elastic.surfaces_touch = es.surfaces_touch;
     }
     r.lateral_force -= fi.load[kLateral];
     r.contact_lateral_force -= fi.contact_load[kLateral];

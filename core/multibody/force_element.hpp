@@ -26,7 +26,13 @@ struct ForceJacobian {
 /// up, reports this message with its own. The message names the element and the failure.
 class EvaluationFailure : public std::runtime_error {
  public:
-  using std::runtime_error::runtime_error;
+  /// `contact_joint`: the joint whose surfaces meet when that is the failure (empty otherwise).
+  explicit EvaluationFailure(const std::string& what, std::string contact_joint = {})
+      : std::runtime_error(what), contact_joint_(std::move(contact_joint)) {}
+  const std::string& ContactJoint() const { return contact_joint_; }
+
+ private:
+  std::string contact_joint_;
 };
 
 class ForceElement {

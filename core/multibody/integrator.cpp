@@ -26,6 +26,7 @@ struct Integrator::Impl {
   std::exception_ptr error;
   std::string cvode_message;
   std::string last_failure;  // the last EvaluationFailure CVODE recovered from (or not)
+  std::string last_failure_contact;  // its joint whose surfaces meet, if that was the failure
   SystemState scratch;
   SystemState accepted;  // the end of the last accepted step (AdvanceTo, step by step)
   double applied_max_step = 0.0;  // CVODE's largest step now (0: none)
@@ -55,6 +56,7 @@ struct Integrator::Impl {
       return eval.acceleration.allFinite() ? 0 : 1;  // recoverable: CVODE retries smaller
     } catch (const EvaluationFailure& failure) {
       self->last_failure = failure.what();
+      self->last_failure_contact = failure.ContactJoint();
       return 1;
     } catch (...) {
       self->error = std::current_exception();
@@ -81,6 +83,7 @@ struct Integrator::Impl {
       return 0;
     } catch (const EvaluationFailure& failure) {
       self->last_failure = failure.what();
+      self->last_failure_contact = failure.ContactJoint();
       return 1;  // recoverable: CVODE retries the step smaller
     } catch (...) {
       self->error = std::current_exception();
@@ -124,6 +127,8 @@ struct Integrator::Impl {
         std::string("CVODE ") + what + " failed (" + std::to_string(flag) + ") " + cvode_message +
         (last_failure.empty() ? "" : "; the last failed evaluation: " + last_failure);
     if (flag == CV_TOO_MUCH_ACC) throw TolerancesTooTight(message);
+    if (!last_failure.empty() && !last_failure_contact.empty())
+      throw SurfacesInContact(message, last_failure_contact);
     throw std::runtime_error(message);
   }
 };
@@ -170,6 +175,7 @@ SystemState Integrator::AdvanceTo(double t_out) {
   double t_reached = t_;
   m.error = nullptr;
   m.last_failure.clear();
+  m.last_failure_contact.clear();
   if (!m.system->WantsAcceptedSteps()) {
     const int flag = CVode(m.cvode, t_out, m.y, &t_reached, CV_NORMAL);
     if (m.error) std::rethrow_exception(m.error);

@@ -54,6 +54,18 @@ class TolerancesTooTight : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// The integration stopped while the last evaluation it retried failed because a joint's
+/// surfaces meet (EvaluationFailure::ContactJoint): no smaller step cures it.
+class SurfacesInContact : public std::runtime_error {
+ public:
+  SurfacesInContact(const std::string& what, std::string joint)
+      : std::runtime_error(what), joint_(std::move(joint)) {}
+  const std::string& Joint() const { return joint_; }
+
+ private:
+  std::string joint_;
+};
+
 /// Integrates a MultibodySystem; the system must outlive the integrator.
 class Integrator {
  public:
@@ -66,7 +78,8 @@ class Integrator {
   void Initialize(double t0, const SystemState& state);
   /// Advances to t_out (interpolating inside the last step) and returns the state there.
   /// Throws std::runtime_error with CVODE's reason when the integration cannot continue
-  /// (TolerancesTooTight when they ask for more than double precision gives).
+  /// (TolerancesTooTight when they ask for more than double precision gives, SurfacesInContact
+  /// when the evaluations failed last because a joint's surfaces meet).
   SystemState AdvanceTo(double t_out);
   /// Changes the error tolerances (relative and absolute) from the next step on; the other
   /// fields of `config` are ignored.

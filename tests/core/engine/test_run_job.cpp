@@ -3,6 +3,7 @@
 // monitor stop, cancel flag, the film models' run-in (progress, cancel, where the first cycle
 // starts), and a lubricated model without film factories rejected naming the field.
 #include <QtTest>
+#include <numbers>
 
 #include <QTemporaryDir>
 #include <atomic>
@@ -116,9 +117,16 @@ class TestRunJob : public QObject {
     s.skirt.capped_nodes = 3;
     QCOMPARE(engine::FilmTrouble(s).joint, std::string("skirt"));
     s.skirt.capped_nodes = 0;
-    s.skirt.min_gap = -1.0;  // on the liner
+    s.skirt.min_gap = -0.649e-6;  // on the liner: at the anti-thrust side's bottom edge, tilted
+    s.skirt.moft_alpha = std::numbers::pi;
+    s.skirt.moft_y = 0.09;
+    s.piston_tilt = -2.66e-3;
     f = engine::FilmTrouble(s);
-    QVERIFY2(f.message.starts_with("piston skirt touches the liner"), f.message.c_str());
+    QVERIFY2(f.message.starts_with("piston skirt touches the liner (smallest gap -0.649 µm) at "
+                                   "180° from the thrust axis, 90.0 mm below the skirt top"),
+             f.message.c_str());
+    QVERIFY2(f.message.find("tilted -2.66 mrad") != std::string::npos, f.message.c_str());
+    QVERIFY2(f.message.find("geometry.skirt_top_to_pin") != std::string::npos, f.message.c_str());
     QCOMPARE(f.joint, std::string("skirt"));
     s.skirt.min_gap = 5e-6;
     s.bearing.eps = std::numeric_limits<double>::quiet_NaN();
@@ -944,6 +952,26 @@ class TestRunJob : public QObject {
     QVERIFY(last.moft_y >= 0.0 && last.moft_y <= c.skirt.length + 1e-12);
     for (std::size_t k = 0; k + 1 < r.samples.size(); ++k)  // the rows before: films
       QVERIFY(r.samples[k].skirt.moft > 0.0);
+  }
+
+  // The same with an elastic skirt: its surfaces meet past their rigid position and no
+  // deformation opens the film. The run says the skirt touches the liner, where, and what moves
+  // it (it used to end as "integration failed: CVODE step failed (-10)").
+  void anElasticSkirtOnTheLinerSaysSo() {
+    const io::LoadedCase loaded = io::LoadCase({});
+    engine::EngineCase c = loaded.value;
+    c.solver.error_estimate = 0;
+    c.skirt.compliance = lubrication::ComplianceModel::kElasticLayer;
+    const engine::RunConfig config = engine::MakeRunConfig(c, engine::Model::kOnlySkirt, 100,
+                                                           io::PressureCurveForSpeed(loaded, 1000));
+    const engine::RunResult r = engine::RunJob(config);
+    QCOMPARE(engine::StatusName(r.status), std::string("failed"));
+    QVERIFY2(r.message.starts_with("piston skirt touches the liner (the elastic surfaces meet"),
+             r.message.c_str());
+    QVERIFY2(r.message.find("below the skirt top at the last output") != std::string::npos,
+             r.message.c_str());
+    QVERIFY2(r.message.find("geometry.skirt_top_to_pin") != std::string::npos, r.message.c_str());
+    QVERIFY(!r.samples.empty());
   }
 
   // A cranking speed with a cold, thick oil (100 rpm, 0.2 Pa·s; both joints lubricated, the

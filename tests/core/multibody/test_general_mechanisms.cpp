@@ -100,6 +100,40 @@ class TestGeneralMechanisms : public QObject {
     }
   }
 
+  // An element whose evaluations fail because its surfaces meet (a film closed past the rigid
+  // wall) ends the integration with that joint named, not as a bare CVODE flag; one that fails
+  // otherwise does not claim a contact.
+  void evaluationsFailingOnAContactNameTheJoint() {
+    class Wall final : public JointForceElement {
+     public:
+      explicit Wall(std::string contact)
+          : JointForceElement("wall", kGround, 0), contact_(std::move(contact)) {}
+      void EvaluateJoint(const JointForceInput& in, bool, JointForceOutput* out) override {
+        if (in.body_j.q[0] > 0.01) throw EvaluationFailure("the film is closed", contact_);
+        out->wrench_j << 1.0, 0.0, 0.0;  // pushes the body into the wall
+      }
+      std::string contact_;
+    };
+    for (const std::string contact : {"skirt", ""}) {
+      MultibodySystem sys;
+      sys.AddBody(Body{"slider", 1.0, 1.0});
+      sys.AddForceElement(std::make_unique<Wall>(contact));
+      SystemState s(1);
+      Integrator integrator(sys, IntegratorConfig{.relative_tolerance = 1e-6});
+      integrator.Initialize(0.0, s);
+      try {
+        integrator.AdvanceTo(1.0);  // x = t²/2 reaches the wall at t ≈ 0.14 s
+        QFAIL("no error");
+      } catch (const filmdyn::multibody::SurfacesInContact& e) {
+        QCOMPARE(e.Joint(), contact);
+        QVERIFY2(std::string(e.what()).find("the film is closed") != std::string::npos, e.what());
+      } catch (const std::runtime_error& e) {
+        QVERIFY2(contact.empty(), e.what());
+        QVERIFY2(std::string(e.what()).find("the film is closed") != std::string::npos, e.what());
+      }
+    }
+  }
+
   void pendulumConservesEnergyAndConstraint() {
     Pendulum p(2.5);  // nearly inverted
     Integrator integrator(p.system, IntegratorConfig{.relative_tolerance = 1e-9});
