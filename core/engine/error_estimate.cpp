@@ -627,17 +627,29 @@ std::string ErrorEstimate::Summary() const {
     return fmt::format("estimated discretisation error <= {:.2g} % (largest: {}){}",
                        100.0 * worst_relative, worst_label, notes);
   }
-  const FigureError* worst = nullptr;
-  for (const FigureError& e : figures) {
-    if (e.resolved_in_time && (!worst || e.relative > worst->relative)) worst = &e;
+  // Every figure above the threshold, largest first, and the meshes of their joints. The
+  // companion coarsens all of a mesh's directions together, so the estimate cannot say which
+  // direction limits: refine them together.
+  std::vector<const FigureError*> above;
+  for (const FigureError& e : figures)
+    if (e.resolved_in_time && e.relative > threshold) above.push_back(&e);
+  std::stable_sort(above.begin(), above.end(), [](const FigureError* a, const FigureError* b) {
+    return a->relative > b->relative;
+  });
+  std::vector<std::string> listed;
+  bool big_end = false, skirt = false;
+  for (const FigureError* e : above) {
+    listed.push_back(fmt::format("{:.2g} % in the {}", 100.0 * e->relative, e->figure.label));
+    (e->figure.big_end ? big_end : skirt) = true;
   }
-  const std::string refine = worst && worst->figure.big_end
-                                 ? "big_end.mesh_theta / big_end.mesh_z"
-                                 : "skirt.mesh_thrust / mesh_anti / mesh_axial";
+  std::vector<std::string> meshes;
+  if (skirt) meshes.push_back("the skirt's mesh (skirt.mesh_thrust, mesh_anti and mesh_axial)");
+  if (big_end) meshes.push_back("the big end's mesh (big_end.mesh_theta and mesh_z)");
   return fmt::format(
-      "warning: estimated discretisation error {:.2g} % in the {} (above {:.0f} %): refine the "
-      "mesh ({}) or tighten solver.relative_tolerance{}",
-      100.0 * worst_relative, worst_label, 100.0 * threshold, refine, notes);
+      "warning: estimated discretisation error {} (above {:.0f} %): refine {} in all directions "
+      "together (the estimate coarsens them together, so it cannot say which one limits) or "
+      "tighten solver.relative_tolerance{}",
+      join(listed), 100.0 * threshold, join(meshes), notes);
 }
 
 }  // namespace filmdyn::engine

@@ -288,6 +288,46 @@ class TestErrorEstimate : public QObject {
         !find(engine::EstimateErrors(fine, far, companion), "bearing_fpl_mean[W]").far_companion);
   }
 
+  // Every figure above the threshold is named, largest first, with the meshes of their joints
+  // to refine in all directions together (it named only the largest, and its mesh's fields as
+  // if either one would do).
+  void everyFigureAboveTheThresholdIsNamed() {
+    constexpr int n = 72;
+    constexpr double cycle = 4.0 * std::numbers::pi;
+    std::vector<engine::CrankTrainSample> fine(n), coarse(n);
+    for (int k = 0; k < n; ++k) {
+      for (auto* s : {&fine[k], &coarse[k]}) {
+        s->bearing.present = s->skirt.present = true;
+        s->bearing.moft = 2e-6;
+        s->bearing.eps = 0.9;
+        s->skirt.moft = 10e-6;
+        s->bearing.fpl = s->skirt.fpl = 50.0;
+        s->crank_angle = 2 * cycle + k * cycle / n;
+      }
+    }
+    fine[20].bearing.moft = 1.00e-6;  // 4 % → 1.3 % estimated (order 2, ratio 2)
+    coarse[20].bearing.moft = 1.04e-6;
+    fine[30].skirt.moft = 5.0e-6;  // 30 % → 10 % estimated
+    coarse[30].skirt.moft = 6.5e-6;
+    engine::CoarseCompanion companion;
+    companion.big_end_ratio = companion.skirt_ratio = 2.0;
+    const std::string text = engine::EstimateErrors(fine, coarse, companion).Summary();
+    const auto skirt = text.find("10 % in the min skirt MOFT");
+    const auto big_end = text.find("1.3 % in the min big-end MOFT");
+    QVERIFY2(skirt != std::string::npos && big_end != std::string::npos && skirt < big_end,
+             text.c_str());
+    QVERIFY2(text.find("refine the skirt's mesh (skirt.mesh_thrust, mesh_anti and mesh_axial) "
+                       "and the big end's mesh (big_end.mesh_theta and mesh_z) in all "
+                       "directions together") != std::string::npos,
+             text.c_str());
+    // The big end's figure alone above: its mesh alone.
+    coarse[30].skirt.moft = 5.0e-6;
+    const std::string one = engine::EstimateErrors(fine, coarse, companion).Summary();
+    QVERIFY2(one.find("skirt") == std::string::npos &&
+                 one.find("big_end.mesh_theta") != std::string::npos,
+             one.c_str());
+  }
+
   void headlineFiguresAreTheirDefinitions() {
     std::vector<engine::CrankTrainSample> samples(4);
     const double moft[] = {3e-6, 1e-6, 2e-6, 4e-6}, fpl[] = {10, 20, 30, 60};
