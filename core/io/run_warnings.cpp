@@ -316,6 +316,29 @@ void LowCylinderPressureWarning(const engine::RunConfig& config, std::vector<Run
   out->push_back(std::move(w));
 }
 
+// A cylinder pressure peaking far from firing TDC (360 °CA): most likely a curve whose firing
+// TDC is at 0 °CA, which the run reads a whole revolution late.
+void FiringAngleWarning(const engine::RunConfig& config, std::vector<RunWarning>* out) {
+  if (config.pressure.Empty()) return;
+  const double peak = config.pressure.PeakPressure();
+  if (peak < kLowestPeakCylinderPressure) return;  // that warning says what is wrong
+  const double at = engine::CycleCrankAngleDeg(config.pressure.PeakAngle());
+  const double from_firing = at - 360.0;
+  if (std::abs(from_firing) <= kPeakFromFiringTdc) return;
+  RunWarning w;
+  w.code = "pressure_peak_off_firing";
+  w.value = from_firing;
+  w.limit = kPeakFromFiringTdc;
+  w.crank_angle_deg = at;
+  w.message = fmt::format(
+      "the cylinder pressure peaks ({:.3g} bar) at {:.0f} °CA, {:.0f} °CA {} firing TDC, which "
+      "this program's cycle puts at 360 °CA (0 °CA is the TDC of intake); a fired engine peaks "
+      "within some 40 °CA after it: is the curve's firing TDC at 0 °CA? Then add 360 °CA to its "
+      "angles",
+      peak * 1e-5, at, std::abs(from_firing), from_firing > 0.0 ? "after" : "before");
+  out->push_back(std::move(w));
+}
+
 // Adds a warning on one joint that the case alone raises (no value, no crank angle).
 void AddJointWarning(std::vector<RunWarning>* out, const char* code, const char* joint,
                      std::string message) {
@@ -707,6 +730,7 @@ std::vector<RunWarning> RunWarnings(const engine::RunConfig& config,
   UnusedInputsWarning(c, &out);
   SyntheticPressureWarning(config, &out);
   LowCylinderPressureWarning(config, &out);
+  FiringAngleWarning(config, &out);
   FilmStartSupplyWarning(c, &out);
   SupplyHoleMeshWarning(c, &out);
   HighSupplyPressureWarning(c, &out);
@@ -733,6 +757,9 @@ std::string WarningShortText(const RunWarning& w) {
   }
   if (w.code == "low_cylinder_pressure") {
     return fmt::format("cylinder peak {:.3g} bar", w.value * 1e-5);
+  }
+  if (w.code == "pressure_peak_off_firing") {
+    return fmt::format("cylinder peak at {:.0f} °CA", w.crank_angle_deg.value_or(0.0));
   }
   if (w.code == "half_space_big_end") return "half-space big end";
   if (w.code == "heat_balance_constant_viscosity") return "heat balance, constant viscosity";

@@ -24,6 +24,10 @@ inline constexpr double kHighEccentricity = 0.95;
 /// compression ratio 8 compresses 1 bar to some 15 bar; below 5 bar the curve is more likely in
 /// bar or MPa, or gauge, than a real cylinder's.
 inline constexpr double kLowestPeakCylinderPressure = 5.0e5;
+/// How far [°CA] a cylinder pressure's peak may lie from firing TDC (360 °CA): a fired engine
+/// peaks some 5–40 °CA after it, a motored one just before it; a peak farther away is most likely
+/// a curve whose firing TDC is at 0 °CA (a cycle counted from firing, not from intake TDC).
+inline constexpr double kPeakFromFiringTdc = 90.0;
 
 /// The highest oil-supply pressure [Pa, gauge] an engine's oil system delivers: galleries run at
 /// 0.2–0.7 MPa, relief valves open below 1 MPa; above 2 MPa the value is more likely in the

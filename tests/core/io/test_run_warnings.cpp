@@ -416,6 +416,35 @@ class TestRunWarnings : public QObject {
              io::WarningShortText(*w).c_str());
   }
 
+  // A curve whose firing TDC is at 0 °CA (a cycle counted from firing) peaks a revolution away
+  // from this program's firing TDC at 360 °CA: it runs without complaint, so it warns.
+  void aCurveFiringAtZeroWarns() {
+    const engine::RunResult none;
+    const engine::EngineCase c = CoarseCase();
+    engine::RunConfig config = Config(c, engine::Model::kOnlyLbrbe, 6000.0);
+    auto off = [&]() -> std::optional<io::RunWarning> {
+      for (const io::RunWarning& w : io::RunWarnings(config, none))
+        if (w.code == "pressure_peak_off_firing") return w;
+      return std::nullopt;
+    };
+    QVERIFY(!off());  // the synthetic curve peaks after 360 °CA
+    const double peak_at = config.pressure.PeakAngle() * 180.0 / std::numbers::pi;
+    std::vector<double> angles, shifted;
+    for (int k = 0; k < 720; ++k) {
+      angles.push_back(k * std::numbers::pi / 180.0);
+      shifted.push_back(config.pressure.Pressure((k + 360) * std::numbers::pi / 180.0));
+    }
+    config.pressure = engine::PressureCurve(angles, shifted, "firing-at-zero.csv");
+    const std::optional<io::RunWarning> w = off();
+    QVERIFY(w.has_value());
+    QVERIFY2(std::abs(*w->crank_angle_deg - (peak_at - 360.0)) <= 1.0,
+             qPrintable(QString::number(*w->crank_angle_deg)));
+    QVERIFY2(QString::fromStdString(w->message).contains("add 360 °CA to its angles"),
+             w->message.c_str());
+    QVERIFY2(io::WarningShortText(*w).starts_with("cylinder peak at "),
+             io::WarningShortText(*w).c_str());
+  }
+
   // The synthetic curve's warning says which curve the run has: at a curve's speed that curve,
   // between two speeds the blend of the two (it said "the curve at 1500 rpm", which is none).
   void theSyntheticCurveIsNamedAsUsed() {
