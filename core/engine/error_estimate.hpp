@@ -205,15 +205,10 @@ inline constexpr const char* kUnresolvedPeakNote = "not estimated (a spike betwe
 /// What the estimate's summary adds for a run with a mass-conserving big end.
 inline constexpr const char* kMassConservingNote =
     "a mass-conserving big end's oil per cycle converges more slowly with the mesh than its film "
-    "(order 1.6), and at 4000 rpm and below a mass-conserving big end's figures are not "
-    "in the asymptotic range of these meshes (fed only by its film-start line, at 2000 rpm its "
-    "minimum film fell by a quarter from 100 to 200 elements around while this estimate gave "
-    "11 %; fed by a crank-pin hole its figures but the oil are estimated at order 1: at 2000 rpm "
-    "its minimum film fell by 17 % from 100 x 10 to 400 x 20 elements, not yet converged, and "
-    "this estimate gives 42 %, at 4000 rpm by 2.1 % from 100 x 10 to 200 x 20 while it gives "
-    "0.9 %; its oil per cycle, 7 % below the finest meshes', is estimated at 8 %): there this "
-    "estimate can understate the film's error by half or more, or overstate it twice "
-    "(docs/validation/errors.md, section 6)";
+    "(order 1.6); where its film is starved or fed by a hole its figures can lie outside the "
+    "range where these meshes' difference measures the error (the default case at 4000 rpm and "
+    "below), and there this estimate can understate the error by half or more, or overstate it "
+    "twice (docs/validation/errors.md, section 6)";
 
 struct ErrorEstimate {
   /// "estimated"; "off" (solver.error_estimate = 0); "not-applicable" (no lubricated joint);

@@ -361,14 +361,12 @@ void FilmStartSupplyWarning(const engine::EngineCase& c, std::vector<RunWarning>
   AddJointWarning(
       out, "film_start_supply", "big_end",
       "the mass-conserving big end is fed only by its film-start line at ambient pressure "
-      "(big_end.supply = line_of_centres): at low speed that starves its film, whose figures "
-      "then depend on the mesh beyond the error estimate (at 2000 rpm its minimum film fell by "
-      "a quarter from 100 to 200 elements around, with no limit in sight; fed by a crank-pin "
-      "hole at 0.3 MPa its minimum film converges, within 1 % from 200 elements around and 20 "
-      "across: "
-      "docs/validation/errors.md, section 6), and its oil content settles slowly (the default "
-      "case at 2000 and 4000 rpm: 7 cycles to the periodic state, against 2–3 fed by a "
-      "crank-pin hole: docs/performance.md); give the engine's oil supply (big_end.supply, "
+      "(big_end.supply = line_of_centres), an idealisation without the engine's supply: where "
+      "that line cannot replace the oil the film loses at its sides, the film starves, its "
+      "figures depend on the mesh beyond the error estimate and its oil content settles "
+      "slowly (the default case below 6000 rpm: its minimum film fell by a quarter from 100 to "
+      "200 elements around at 2000 rpm, and 7 cycles to the periodic state; "
+      "docs/validation/errors.md, section 6); give the engine's oil supply (big_end.supply, "
       "big_end.oil_feed_pressure)");
 }
 
