@@ -124,7 +124,8 @@ StudyFactor ParseFactor(const Study& s, const json& j, const std::string& key) {
   const engine::CaseField* field = f.path == kModelFactor ? nullptr : engine::FindCaseField(f.path);
   if (f.path != kModelFactor && field == nullptr) {
     Bad(s, key + ".path", "\"" + f.path + "\"",
-        "is not a case field (`filmdyn case-fields` lists every path) nor \"model\"");
+        "is not a case field (`filmdyn case-fields` lists every path) nor \"model\"" +
+            engine::SimilarFieldsText(f.path));
   }
   const bool text = f.path == kModelFactor || field->kind == engine::FieldKind::kChoice;
   if (!text && field->kind != engine::FieldKind::kNumber &&

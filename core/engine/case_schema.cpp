@@ -1409,6 +1409,51 @@ const CaseField* FindCaseField(std::string_view path) {
   return nullptr;
 }
 
+namespace {
+// Edits (insertions, deletions, substitutions, swaps of neighbours) from a to b.
+std::size_t EditDistance(std::string_view a, std::string_view b) {
+  const std::size_t n = a.size(), m = b.size();
+  std::vector<std::vector<std::size_t>> d(n + 1, std::vector<std::size_t>(m + 1));
+  for (std::size_t i = 0; i <= n; ++i) d[i][0] = i;
+  for (std::size_t j = 0; j <= m; ++j) d[0][j] = j;
+  for (std::size_t i = 1; i <= n; ++i) {
+    for (std::size_t j = 1; j <= m; ++j) {
+      d[i][j] = std::min(
+          {d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
+        d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+    }
+  }
+  return d[n][m];
+}
+
+std::string_view LastName(std::string_view path) {
+  const std::size_t dot = path.rfind('.');
+  return dot == std::string_view::npos ? path : path.substr(dot + 1);
+}
+}  // namespace
+
+std::string SimilarFieldsText(std::string_view path) {
+  if (path.empty() || FindCaseField(path) != nullptr) return {};
+  std::vector<std::string> near;
+  std::size_t best = 3;
+  for (const CaseField& f : CaseSchema()) {
+    std::size_t d = EditDistance(path, f.path);
+    if (d > 2 || 3 * d > f.path.size()) d = 3;
+    // The same name in another section counts as one slip.
+    if (d == 3 && LastName(path) == LastName(f.path)) d = 1;
+    if (d > best) continue;
+    if (d < best) near.clear();
+    best = d;
+    near.push_back(f.path);
+  }
+  if (near.empty() || near.size() > 3) return {};
+  std::string text = "; did you mean ";
+  for (std::size_t k = 0; k < near.size(); ++k)
+    text += (k == 0 ? "" : k + 1 == near.size() ? " or " : ", ") + near[k];
+  return text + "?";
+}
+
 const CaseField* FieldOfPath(std::string_view path) {
   if (const CaseField* field = FindCaseField(path)) return field;
   const std::size_t dot = path.rfind('.');

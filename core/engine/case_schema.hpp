@@ -115,6 +115,11 @@ const std::vector<CaseField>& CaseSchema();
 /// The field with this dotted path, or nullptr.
 const CaseField* FindCaseField(std::string_view path);
 
+/// For a path that names no field: "; did you mean skirt.length?" naming the fields a slip of
+/// the keyboard away (at most two letters typed, left out, swapped or wrong, and at most a
+/// third of the name's length), or the field of that name in another section
+/// ("geometry.cold_clearance" → skirt.cold_clearance); empty when none is.
+std::string SimilarFieldsText(std::string_view path);
 /// The field a `--set` path sets: the field itself, or the list whose element it names
 /// ("skirt.profile_h.2" → skirt.profile_h); nullptr when the path names no field.
 const CaseField* FieldOfPath(std::string_view path);

@@ -339,7 +339,7 @@ EngineCase CaseFromJson(const json& root, std::vector<std::string>* notes) {
                          "must be an object of the section's fields (see docs/case-file.md)");
       }
       throw InputError(path, node ? Dump(*node).substr(0, 60) : "?",
-                       "unknown field (see docs/case-file.md)");
+                       "unknown field (see docs/case-file.md)" + engine::SimilarFieldsText(path));
     }
   }
   if (root.contains("pressure_curves")) {
@@ -492,7 +492,9 @@ void ApplyOverride(json* root, const std::string& assignment) {
                        "is not a case field: the run model is chosen with --model (or the joints' "
                        "models with skirt.model and big_end.model)");
     } else {
-      throw InputError("--set " + path, text, "no such field in the case (see docs/case-file.md)");
+      throw InputError(
+          "--set " + path, text,
+          "no such field in the case (see docs/case-file.md)" + engine::SimilarFieldsText(path));
     }
     if (dot == std::string::npos) break;
     start = dot + 1;

@@ -346,6 +346,39 @@ class TestCaseFile : public QObject {
   // A key given twice in one object is refused, named by its path: the JSON parser would keep
   // the last value and silently drop the other (a case once ran with "rod_mass": 99 after a
   // "rod_mass": 0.345 above it).
+  // A name that is no field suggests the fields a slip of the keyboard away, or the same name in
+  // another section; a name near none suggests nothing.
+  void unknownFieldsSuggestTheNearOnes() {
+    auto message = [](const json& j) -> std::string {
+      try {
+        io::CaseFromJson(j);
+      } catch (const InputError& e) {
+        return e.what();
+      }
+      return "";
+    };
+    json typo = DefaultJson();
+    typo["skirt"]["lenght"] = 0.09;
+    QVERIFY2(message(typo).find("unknown field (see docs/case-file.md); did you mean "
+                                "skirt.length?") != std::string::npos,
+             message(typo).c_str());
+    json section = DefaultJson();
+    section["geometry"]["cold_clearance"] = 2e-5;
+    QVERIFY2(message(section).find("did you mean skirt.cold_clearance?") != std::string::npos,
+             message(section).c_str());
+    json far = DefaultJson();
+    far["skirt"]["zqxwv"] = 1.0;
+    QVERIFY2(message(far).find("did you mean") == std::string::npos, message(far).c_str());
+    try {
+      io::LoadCaseText(DefaultJson().dump(), "case", {"big_end.widht=0.02"});
+      QFAIL("no error");
+    } catch (const InputError& e) {
+      QVERIFY2(std::string(e.what()).find("did you mean big_end.width?") != std::string::npos,
+               e.what());
+    }
+    QCOMPARE(engine::SimilarFieldsText("skirt.length"), std::string());  // a field itself
+  }
+
   void aRepeatedKeyIsRefused() {
     auto error_of = [](const std::string& text) -> std::string {
       try {
