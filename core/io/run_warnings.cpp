@@ -370,6 +370,50 @@ void FilmStartSupplyWarning(const engine::EngineCase& c, std::vector<RunWarning>
       "big_end.oil_feed_pressure)");
 }
 
+// Proportions no engine joint has, most likely a length typed in the wrong unit (mm as m: the
+// fields' own ranges are wide enough for any engine, so a slip passes them): the big end's
+// width over its diameter, the skirt's length over the bore, and the clearances over their radii.
+// Each band is an order of magnitude or more beyond the engines' own.
+void ProportionsWarning(const engine::EngineCase& c, std::vector<RunWarning>* out) {
+  struct Ratio {
+    const char* field;
+    const char* what;
+    double value, lo, hi;
+  };
+  std::vector<Ratio> ratios;
+  if (c.big_end.model == engine::JointModel::kLubricated) {
+    const double r = c.big_end.bearing_radius;
+    ratios.push_back({"big_end.width", "the big end's width over its diameter, L/D",
+                      c.big_end.width / (2.0 * r), 0.1, 2.0});
+    ratios.push_back({"big_end.journal_radius",
+                      "the big end's radial clearance over its radius, c/R",
+                      (r - c.big_end.journal_radius) / r, 1e-4, 1e-2});
+  }
+  if (c.skirt.model == engine::JointModel::kLubricated) {
+    const double r = c.geometry.liner_radius;
+    ratios.push_back(
+        {"skirt.length", "the skirt's length over the bore", c.skirt.length / (2.0 * r), 0.1, 2.0});
+    ratios.push_back({"skirt.cold_clearance", "the skirt's cold clearance over the bore radius",
+                      c.skirt.cold_clearance / r, 1e-5, 1e-2});
+  }
+  RunWarning w;
+  std::string list;
+  for (const Ratio& q : ratios) {
+    if (q.value >= q.lo && q.value <= q.hi) continue;
+    w.fields.push_back(q.field);
+    list += fmt::format("{}{} = {:.3g} (engines: {:g}–{:g}; {})", list.empty() ? "" : "; ", q.what,
+                        q.value, q.lo, q.hi, q.field);
+  }
+  if (w.fields.empty()) return;
+  w.code = "implausible_proportions";
+  w.value = static_cast<double>(w.fields.size());
+  w.message = fmt::format(
+      "{}: no engine joint is so proportioned — is a length in the wrong unit? The case is in "
+      "SI units (m)",
+      list);
+  out->push_back(std::move(w));
+}
+
 // A big end on elastic half-spaces in an engine run: Boussinesq's half-space assumes a loaded
 // zone small against the surface's radius, which a journal bearing's film is not; wrapped round
 // the whole bearing it gives way far more than a shell does, and the default case's runs end in
@@ -734,6 +778,7 @@ std::vector<RunWarning> RunWarnings(const engine::RunConfig& config,
   HighSupplyPressureWarning(c, &out);
   HalfSpaceBigEndWarning(c, &out);
   ConstantViscosityHeatBalanceWarning(c, &out);
+  ProportionsWarning(c, &out);
   return out;
 }
 
@@ -760,6 +805,8 @@ std::string WarningShortText(const RunWarning& w) {
     return fmt::format("cylinder peak at {:.0f} °CA", w.crank_angle_deg.value_or(0.0));
   }
   if (w.code == "half_space_big_end") return "half-space big end";
+  if (w.code == "implausible_proportions")
+    return fmt::format("{:.0f} implausible proportions", w.value);
   if (w.code == "heat_balance_constant_viscosity") return "heat balance, constant viscosity";
   if (w.code == "unresolved_peak") {
     return fmt::format("peak spike ×{:.2g} {}", w.value, w.joint == "skirt" ? "skirt" : "big end");

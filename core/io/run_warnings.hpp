@@ -87,7 +87,8 @@ struct RunWarning {
   /// [deg], no axial position (the film is uniform across an aligned bearing).
   std::optional<double> position_angle_deg;
   std::optional<double> position_axial_m;
-  /// assumed_inputs: the dotted case paths still at their assumed values.
+  /// assumed_inputs: the dotted case paths still at their assumed values; unused_inputs,
+  /// implausible_proportions: the fields concerned.
   std::vector<std::string> fields;
 };
 

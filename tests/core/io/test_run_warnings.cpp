@@ -416,6 +416,32 @@ class TestRunWarnings : public QObject {
              io::WarningShortText(*w).c_str());
   }
 
+  // A length in the wrong unit that the field's wide range lets through (a big-end width of
+  // 40 m for 40 mm) gives proportions no engine has: it warns, naming the field; the default
+  // case's proportions do not, and an ideal joint's data are not the run's.
+  void implausibleProportionsWarn() {
+    const engine::RunResult none;
+    auto proportions = [&](const engine::EngineCase& c, engine::Model model) {
+      for (const io::RunWarning& w : io::RunWarnings(Config(c, model, 2000.0), none))
+        if (w.code == "implausible_proportions") return w;
+      return io::RunWarning{};
+    };
+    engine::EngineCase c = CoarseCase();
+    QVERIFY(proportions(c, engine::Model::kSkirtLbrbe).code.empty());
+    c.big_end.width = 0.040 * 1000.0 * c.big_end.bearing_radius / 0.0475;  // "40" for 40 mm
+    c.skirt.cold_clearance = 1e-3 * c.geometry.liner_radius * 0.9;         // 0.9e-3 R: fine
+    io::RunWarning w = proportions(c, engine::Model::kSkirtLbrbe);
+    QCOMPARE(w.code, std::string("implausible_proportions"));
+    QCOMPARE(w.fields, std::vector<std::string>{"big_end.width"});
+    QVERIFY2(QString::fromStdString(w.message).contains("L/D = 421"), w.message.c_str());
+    QVERIFY2(QString::fromStdString(w.message).contains("wrong unit"), w.message.c_str());
+    QCOMPARE(io::WarningShortText(w), std::string("1 implausible proportions"));
+    QVERIFY(proportions(c, engine::Model::kOnlySkirt).code.empty());  // an ideal big end
+    c.skirt.length = 90.0;                                            // m
+    QCOMPARE(proportions(c, engine::Model::kSkirtLbrbe).fields,
+             (std::vector<std::string>{"big_end.width", "skirt.length"}));
+  }
+
   // A curve whose firing TDC is at 0 °CA (a cycle counted from firing) peaks a revolution away
   // from this program's firing TDC at 360 °CA: it runs without complaint, so it warns.
   void aCurveFiringAtZeroWarns() {
