@@ -734,6 +734,32 @@ std::vector<RunWarning> RunWarnings(const engine::RunConfig& config,
       w.message += "; " + scatter->Summary();
     out.push_back(std::move(w));
   }
+  // A periodic run whose headline figures still moved over its last cycles by more than the
+  // steady-state tolerance: the test judges each quantity's change against its range over the
+  // cycle, which can hide a minimum film's scatter (a mass-conserving big end's 1.6 % between
+  // two cycles passed at 0.63 % of the range).
+  if (result.status == engine::RunStatus::kCompleted) {
+    const auto scatter =
+        engine::ScatterOverCycles(result.cycle_headlines, result.samples, whole_cycle);
+    double largest = 0.0;
+    if (scatter) {
+      for (const engine::FigureScatter& f : scatter->figures)
+        if (f.resolved_in_time) largest = std::max(largest, f.RelativeHalfSpread());
+    }
+    if (largest > c.solver.steady_state_tolerance) {
+      RunWarning w;
+      w.code = "cycle_scatter";
+      w.value = largest;
+      w.limit = c.solver.steady_state_tolerance;
+      w.message = fmt::format(
+          "periodic by the cycle-to-cycle test (the change {} % of each quantity's range over "
+          "the cycle, below {:g} %), yet {}: read the figures to that scatter, or tighten "
+          "solver.steady_state_tolerance for more cycles",
+          engine::PercentText(result.cycle_change), 100.0 * c.solver.steady_state_tolerance,
+          scatter->Summary());
+      out.push_back(std::move(w));
+    }
+  }
   // A catalogue oil at a film temperature outside its fit's range.
   for (const auto& [lubricated, oil, joint, balanced] :
        {std::tuple{skirt, c.skirt.oil, "skirt", result.skirt_film_temperature},
@@ -789,6 +815,7 @@ std::string WarningShortText(const RunWarning& w) {
   }
   if (w.code == "high_eccentricity") return fmt::format("ε {:.3f} > {:g}", w.value, w.limit);
   if (w.code == "not_periodic") return fmt::format("not periodic ({:.2g} %)", 100.0 * w.value);
+  if (w.code == "cycle_scatter") return fmt::format("cycles scatter ±{:.2g} %", 100.0 * w.value);
   if (w.code == "assumed_inputs") return fmt::format("{:.0f} assumed inputs", w.value);
   if (w.code == "unused_inputs") return fmt::format("{:.0f} unused inputs", w.value);
   if (w.code == "synthetic_pressure") return "synthetic pressure";

@@ -416,6 +416,40 @@ class TestRunWarnings : public QObject {
              io::WarningShortText(*w).c_str());
   }
 
+  // A completed run whose headline figures still moved over its last cycles by more than the
+  // steady-state tolerance says so (the periodic test judges a quantity against its range, which
+  // let a minimum film move by ±1.6 % at a change of 0.63 %); within the tolerance, nothing.
+  void aPeriodicRunWhoseFiguresStillMoveWarns() {
+    const engine::EngineCase c = CoarseCase();
+    const engine::RunConfig config = Config(c, engine::Model::kOnlyLbrbe, 2000.0);
+    engine::RunResult r;
+    r.status = engine::RunStatus::kCompleted;
+    r.cycles = 2;
+    r.cycle_change = 0.0063;
+    auto cycle = [](double moft) {
+      return std::vector<engine::HeadlineFigure>{
+          engine::HeadlineFigureFor("bearing_moft_min[m]", moft),
+          engine::HeadlineFigureFor("bearing_fpl_mean[W]", 595.0)};
+    };
+    auto scatter = [&]() -> std::optional<io::RunWarning> {
+      for (const io::RunWarning& w : io::RunWarnings(config, r))
+        if (w.code == "cycle_scatter") return w;
+      return std::nullopt;
+    };
+    r.cycle_headlines = {cycle(1.634e-6), cycle(1.582e-6)};
+    const std::optional<io::RunWarning> w = scatter();
+    QVERIFY(w.has_value());
+    QVERIFY(std::abs(w->value - 0.026 / 1.582) < 1e-9);
+    QVERIFY2(QString::fromStdString(w->message)
+                 .contains("periodic by the cycle-to-cycle test (the change 0.63 % of each "
+                           "quantity's range over the cycle, below 1 %), yet over cycles 1–2 the "
+                           "headline figures moved by up to ±1.6 %"),
+             w->message.c_str());
+    QCOMPARE(io::WarningShortText(*w), std::string("cycles scatter ±1.6 %"));
+    r.cycle_headlines = {cycle(1.590e-6), cycle(1.582e-6)};  // ±0.25 %
+    QVERIFY(!scatter());
+  }
+
   // A length in the wrong unit that the field's wide range lets through (a big-end width of
   // 40 m for 40 mm) gives proportions no engine has: it warns, naming the field; the default
   // case's proportions do not, and an ideal joint's data are not the run's.
