@@ -332,7 +332,7 @@ void FiringAngleWarning(const engine::RunConfig& config, std::vector<RunWarning>
   w.crank_angle_deg = at;
   w.message = fmt::format(
       "the cylinder pressure peaks ({:.3g} bar) at {:.0f} °CA, {:.0f} °CA {} firing TDC, which "
-      "this program's cycle puts at 360 °CA (0 °CA is the TDC of intake); a fired engine peaks "
+      "FilmDyn's cycle puts at 360 °CA (0 °CA is the TDC of intake); a fired engine peaks "
       "within some 40 °CA after it: is the curve's firing TDC at 0 °CA? Then add 360 °CA to its "
       "angles",
       peak * 1e-5, at, std::abs(from_firing), from_firing > 0.0 ? "after" : "before");

@@ -284,7 +284,7 @@ class TestMainWindowAfterRun : public QObject {
       QTableWidgetItem* error_cell = window.runTable()->item(window.runTable()->rowOf(run->id()),
                                                              filmdyn::ui::RunTable::kError);
       QVERIFY(Qt::mightBeRichText(error_cell->toolTip()));
-      QVERIFY2(error_cell->toolTip().contains("not in the asymptotic range"),
+      QVERIFY2(error_cell->toolTip().contains("outside the range where these meshes' difference"),
                qPrintable(error_cell->toolTip()));
       // One line per figure, a dimensionless one without a unit's gap ("0.97272, −0.075 %").
       QVERIFY2(error_cell->toolTip().contains("max big-end eccentricity ratio: 0.") &&
