@@ -1652,7 +1652,36 @@ void CheckSkirtSupply(const SkirtCase& s, double liner) {
 
 }  // namespace
 
+std::vector<JointProportion> JointProportions(const EngineCase& c) {
+  std::vector<JointProportion> out;
+  if (c.big_end.model == JointModel::kLubricated) {
+    const double r = c.big_end.bearing_radius;
+    out.push_back({"big_end.width", "the big end's width over its diameter, L/D", "L/D",
+                   c.big_end.width / (2.0 * r), 0.1, 2.0});
+    out.push_back({"big_end.journal_radius", "the big end's radial clearance over its radius, c/R",
+                   "c/R", (r - c.big_end.journal_radius) / r, 1e-4, 1e-2});
+  }
+  if (c.skirt.model == JointModel::kLubricated) {
+    const double r = c.geometry.liner_radius;
+    out.push_back({"skirt.length", "the skirt's length over the bore", "length/bore",
+                   c.skirt.length / (2.0 * r), 0.1, 2.0});
+    out.push_back({"skirt.cold_clearance", "the skirt's cold clearance over the bore radius",
+                   "clearance/radius", c.skirt.cold_clearance / r, 1e-5, 1e-2});
+  }
+  return out;
+}
+
 std::string DerivedNote(const EngineCase& c, const std::string& path) {
+  // A proportion outside any engine's band first: the likely unit slip is what matters.
+  for (const JointProportion& p : JointProportions(c)) {
+    if (p.field != path || p.Plausible()) continue;
+    return fmt::format("{} = {:.3g}: engines lie within {:g}–{:g}; a length in the wrong unit?",
+                       p.symbol, p.value, p.lo, p.hi);
+  }
+  if (path == "big_end.width" || path == "skirt.length") {
+    for (const JointProportion& p : JointProportions(c))
+      if (p.field == path) return fmt::format("{} = {:.3g}", p.symbol, p.value);
+  }
   auto note = [](const JointFit& fit) -> std::string {
     if (fit.hot_clearance == fit.cold_clearance) return {};
     return fmt::format("hot: {:.2f} µm (cold {:.2f} µm)", fit.hot_clearance * 1e6,

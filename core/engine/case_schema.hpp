@@ -133,6 +133,20 @@ const char* JointModelName(JointModel model);
 /// The rules that tie fields together (rod longer than crank + |pin offset|, clearances > 0,
 /// panel widths, profile and ovality tables). Throws InputError naming the field to fix.
 void CheckCaseConsistency(const EngineCase& engine_case);
+/// A proportion of a lubricated joint that its lengths give, and the band engine joints lie well
+/// inside (an order of magnitude or more beyond their own): outside it a length is most likely in
+/// the wrong unit (mm typed as m passes the fields' wide ranges).
+struct JointProportion {
+  std::string field;   ///< the field the editor and the warning name
+  std::string what;    ///< e.g. "the big end's width over its diameter, L/D"
+  std::string symbol;  ///< e.g. "L/D"
+  double value = 0.0, lo = 0.0, hi = 0.0;
+  bool Plausible() const { return value >= lo && value <= hi; }
+};
+/// The big end's L/D and c/R, the skirt's length over the bore and cold clearance over the bore
+/// radius, for the joints that are lubricated.
+std::vector<JointProportion> JointProportions(const EngineCase& engine_case);
+
 /// What a field implies beyond its own value, for the editor's note column, e.g. the hot
 /// clearance beside the cold one ("hot: 6.41 µm (cold 25.00 µm)"); empty when there is nothing
 /// to add.

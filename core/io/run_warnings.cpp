@@ -370,36 +370,13 @@ void FilmStartSupplyWarning(const engine::EngineCase& c, std::vector<RunWarning>
       "big_end.oil_feed_pressure)");
 }
 
-// Proportions no engine joint has, most likely a length typed in the wrong unit (mm as m: the
-// fields' own ranges are wide enough for any engine, so a slip passes them): the big end's
-// width over its diameter, the skirt's length over the bore, and the clearances over their radii.
-// Each band is an order of magnitude or more beyond the engines' own.
+// Proportions no engine joint has, most likely a length typed in the wrong unit
+// (engine::JointProportions).
 void ProportionsWarning(const engine::EngineCase& c, std::vector<RunWarning>* out) {
-  struct Ratio {
-    const char* field;
-    const char* what;
-    double value, lo, hi;
-  };
-  std::vector<Ratio> ratios;
-  if (c.big_end.model == engine::JointModel::kLubricated) {
-    const double r = c.big_end.bearing_radius;
-    ratios.push_back({"big_end.width", "the big end's width over its diameter, L/D",
-                      c.big_end.width / (2.0 * r), 0.1, 2.0});
-    ratios.push_back({"big_end.journal_radius",
-                      "the big end's radial clearance over its radius, c/R",
-                      (r - c.big_end.journal_radius) / r, 1e-4, 1e-2});
-  }
-  if (c.skirt.model == engine::JointModel::kLubricated) {
-    const double r = c.geometry.liner_radius;
-    ratios.push_back(
-        {"skirt.length", "the skirt's length over the bore", c.skirt.length / (2.0 * r), 0.1, 2.0});
-    ratios.push_back({"skirt.cold_clearance", "the skirt's cold clearance over the bore radius",
-                      c.skirt.cold_clearance / r, 1e-5, 1e-2});
-  }
   RunWarning w;
   std::string list;
-  for (const Ratio& q : ratios) {
-    if (q.value >= q.lo && q.value <= q.hi) continue;
+  for (const engine::JointProportion& q : engine::JointProportions(c)) {
+    if (q.Plausible()) continue;
     w.fields.push_back(q.field);
     list += fmt::format("{}{} = {:.3g} (engines: {:g}–{:g}; {})", list.empty() ? "" : "; ", q.what,
                         q.value, q.lo, q.hi, q.field);

@@ -24,6 +24,7 @@
 #include <optional>
 
 #include "core/coupling/film_report.hpp"
+#include "core/engine/case_schema.hpp"
 #include "core/engine/run_job.hpp"
 #include "core/io/case_file.hpp"
 #include "core/io/results_writer.hpp"
@@ -470,6 +471,12 @@ class TestRunWarnings : public QObject {
     QVERIFY2(QString::fromStdString(w.message).contains("L/D = 421"), w.message.c_str());
     QVERIFY2(QString::fromStdString(w.message).contains("wrong unit"), w.message.c_str());
     QCOMPARE(io::WarningShortText(w), std::string("1 implausible proportions"));
+    // The editor's note beside the field says the same while it is typed; a plausible width
+    // shows its L/D.
+    QCOMPARE(engine::DerivedNote(c, "big_end.width"),
+             std::string("L/D = 421: engines lie within 0.1–2; a length in the wrong unit?"));
+    QCOMPARE(engine::DerivedNote(CoarseCase(), "big_end.width"), std::string("L/D = 0.733"));
+    QCOMPARE(engine::DerivedNote(CoarseCase(), "skirt.length"), std::string("length/bore = 0.384"));
     QVERIFY(proportions(c, engine::Model::kOnlySkirt).code.empty());  // an ideal big end
     c.skirt.length = 90.0;                                            // m
     QCOMPARE(proportions(c, engine::Model::kSkirtLbrbe).fields,
