@@ -1672,15 +1672,16 @@ std::vector<JointProportion> JointProportions(const EngineCase& c) {
 }
 
 std::string DerivedNote(const EngineCase& c, const std::string& path) {
-  // A proportion outside any engine's band first: the likely unit slip is what matters.
+  // A proportion outside any engine's band first: the likely unit slip is what matters. A
+  // length shows its proportion; a clearance its hot value (below).
   for (const JointProportion& p : JointProportions(c)) {
-    if (p.field != path || p.Plausible()) continue;
-    return fmt::format("{} = {:.3g}: engines lie within {:g}–{:g}; a length in the wrong unit?",
-                       p.symbol, p.value, p.lo, p.hi);
-  }
-  if (path == "big_end.width" || path == "skirt.length") {
-    for (const JointProportion& p : JointProportions(c))
-      if (p.field == path) return fmt::format("{} = {:.3g}", p.symbol, p.value);
+    if (p.field != path) continue;
+    if (!p.Plausible()) {
+      return fmt::format("{} = {:.3g}: engines lie within {:g}–{:g}; a length in the wrong unit?",
+                         p.symbol, p.value, p.lo, p.hi);
+    }
+    if (path == "big_end.width" || path == "skirt.length")
+      return fmt::format("{} = {:.3g}", p.symbol, p.value);
   }
   auto note = [](const JointFit& fit) -> std::string {
     if (fit.hot_clearance == fit.cold_clearance) return {};

@@ -683,6 +683,9 @@ std::vector<RunWarning> RunWarnings(const engine::RunConfig& config,
     RigidBigEndPressureWarning(samples, &out);
   UnresolvedPeakWarnings(samples, c.solver.output_interval, whole_cycle, &out);
   LinearDensityLawWarning(c, samples, whole_cycle, &out);
+  // How far the headline figures moved over the last cycles: said by both warnings below.
+  const auto scatter =
+      engine::ScatterOverCycles(result.cycle_headlines, result.samples, whole_cycle);
   if (result.status == engine::RunStatus::kNotConverged) {
     RunWarning w;
     w.code = "not_periodic";
@@ -706,23 +709,17 @@ std::vector<RunWarning> RunWarnings(const engine::RunConfig& config,
             engine::CycleChangeTrend(result.cycle_changes, c.solver.steady_state_tolerance);
         !trend.empty())
       w.message += "; " + trend;
-    if (const auto scatter =
-            engine::ScatterOverCycles(result.cycle_headlines, result.samples, whole_cycle))
-      w.message += "; " + scatter->Summary();
+    if (scatter) w.message += "; " + scatter->Summary();
     out.push_back(std::move(w));
   }
   // A periodic run whose headline figures still moved over its last cycles by more than the
   // steady-state tolerance: the test judges each quantity's change against its range over the
   // cycle, which can hide a minimum film's scatter (a mass-conserving big end's 1.6 % between
   // two cycles passed at 0.63 % of the range).
-  if (result.status == engine::RunStatus::kCompleted) {
-    const auto scatter =
-        engine::ScatterOverCycles(result.cycle_headlines, result.samples, whole_cycle);
+  if (result.status == engine::RunStatus::kCompleted && scatter) {
     double largest = 0.0;
-    if (scatter) {
-      for (const engine::FigureScatter& f : scatter->figures)
-        if (f.resolved_in_time) largest = std::max(largest, f.RelativeHalfSpread());
-    }
+    for (const engine::FigureScatter& f : scatter->figures)
+      if (f.resolved_in_time) largest = std::max(largest, f.RelativeHalfSpread());
     if (largest > c.solver.steady_state_tolerance) {
       RunWarning w;
       w.code = "cycle_scatter";
